@@ -550,11 +550,10 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
 fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let pool = unsafe {
-        s.device
-            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-    }
-    .expect("pool");
+    let pool = s
+        .device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
     let mut cb = s
         .device
         .allocate_command_buffers(
@@ -590,11 +589,10 @@ fn a_buffer_of_a_pool_without_reset_is_recorded_once() {
 fn reset_of_a_buffer_of_a_pool_without_reset_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let pool = unsafe {
-        s.device
-            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-    }
-    .expect("pool");
+    let pool = s
+        .device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
     let mut cb = s
         .device
         .allocate_command_buffers(
@@ -4132,4 +4130,58 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     }
     .expect("a layout at the per-stage limit");
     assert_silent(&s.messages);
+}
+
+/// A command pool for a queue family the device has no queue of, or a protected pool
+/// without the protectedMemory feature, is refused before Vulkan sees it (the driver
+/// would hand out command buffers no queue can run), and the layer names the same
+/// rules for the `_unchecked` call.
+#[test]
+fn a_command_pool_the_device_cannot_use_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let families = s
+        .physical
+        .get_physical_device_queue_family_properties()
+        .expect("queue families")
+        .len();
+    let other = u32::try_from(families).expect("few families");
+    let cases = [
+        (
+            tuff::CommandPoolCreateInfo::new().queue_family_index(other),
+            "VUID-vkCreateCommandPool-queueFamilyIndex-01937",
+        ),
+        (
+            tuff::CommandPoolCreateInfo::new()
+                .queue_family_index(s.family)
+                .flags(vk::CommandPoolCreateFlags::PROTECTED),
+            "VUID-VkCommandPoolCreateInfo-flags-02860",
+        ),
+    ];
+    for (info, expected) in &cases {
+        match s.device.create_command_pool(info) {
+            Err(tuff::Error::Validation { vuid, .. }) => assert_eq!(vuid, *expected),
+            Err(other) => panic!("expected {expected}, got {other}"),
+            Ok(_) => panic!("a pool breaking {expected} was made"),
+        }
+    }
+    let pool = s
+        .device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("a pool of the device's queue family");
+    drop(pool);
+    assert_silent(&s.messages);
+
+    s.messages.abort_on_error(true);
+    for (info, expected) in &cases {
+        // SAFETY: the messenger makes the layer skip the call, which breaks only the
+        // rule under test.
+        let made = unsafe { s.device.create_command_pool_unchecked(info) };
+        assert!(
+            made.is_err(),
+            "the layer let a pool breaking {expected} through"
+        );
+        assert_layer_reports(&s, expected);
+    }
+    s.messages.abort_on_error(false);
 }

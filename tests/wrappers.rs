@@ -141,10 +141,9 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     .expect("query pool");
     let slot = unsafe { d.create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new()) }
         .expect("private data slot");
-    let command_pool = unsafe {
-        d.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-    }
-    .expect("command pool");
+    let command_pool = d
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("command pool");
     let cbs = d
         .allocate_command_buffers(
             &command_pool,
@@ -256,10 +255,9 @@ fn parents_dropped_before_children_stay_alive() {
         ..
     } = setup(true);
     let _ = (memory_types, queue);
-    let pool = unsafe {
-        device.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(family))
-    }
-    .expect("pool");
+    let pool = device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(family))
+        .expect("pool");
     let cbs = device
         .allocate_command_buffers(
             &pool,
@@ -542,12 +540,10 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
             vk::TRUE,
             "the graphics queue family presents to X11"
         );
-        let pool = unsafe {
-            s.device.create_command_pool(
-                &tuff::CommandPoolCreateInfo::new().queue_family_index(s.family),
-            )
-        }
-        .expect("pool");
+        let pool = s
+            .device
+            .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+            .expect("pool");
         let first = unsafe {
             s.device
                 .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
@@ -1043,7 +1039,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let s = setup(true);
     let d = &s.device;
     let gpu = d.gpu_allocator().expect("gpu allocator");
-    let mut frames = unsafe { d.frames_in_flight(s.family, 3) }.expect("frames in flight");
+    let mut frames = d.frames_in_flight(s.family, 3).expect("frames in flight");
     assert_eq!(frames.len(), 3);
     let targets: Vec<_> = (0..3)
         .map(|_| {

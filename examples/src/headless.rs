@@ -75,8 +75,7 @@ pub fn render<S: Scene>(
         vk::BufferUsageFlags::TRANSFER_DST,
         tuff::MemoryLocation::Readback,
     )?;
-    // SAFETY: the device was created with a queue of this family.
-    let mut ring = unsafe { gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT) }?;
+    let mut ring = gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?;
     let start = Instant::now();
     for n in 0..frames {
         let mut frame = ring.next_frame()?;

@@ -169,8 +169,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             rendered: Vec::new(),
             images: Vec::new(),
             swapchain: None,
-            // SAFETY: the device was created with a queue of this family.
-            frames: unsafe { gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT) }?,
+            frames: gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?,
             acquired: (0..FRAMES_IN_FLIGHT)
                 // SAFETY: a binary semaphore with no chain.
                 .map(|_| unsafe {

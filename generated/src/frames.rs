@@ -12,8 +12,7 @@
 //!
 //! ```no_run
 //! # fn f(device: &tuff::Device, queue: &tuff::Queue, family: u32) -> tuff::Result<()> {
-//! // SAFETY: the device was created with a queue of `family`.
-//! let mut frames = unsafe { device.frames_in_flight(family, 2) }?;
+//! let mut frames = device.frames_in_flight(family, 2)?;
 //! for _ in 0..100 {
 //!     let mut frame = frames.next_frame()?;
 //!     // frame.index picks this frame's uniform buffer, descriptor set, ...
@@ -51,32 +50,26 @@ impl Device {
     /// A ring of `count` frames in flight (at least one) whose command buffers are
     /// submitted to queues of family `queue_family_index`.
     ///
-    /// # Safety
-    ///
-    /// The device was created with a queue of family `queue_family_index`
-    /// (`VUID-vkCreateCommandPool-queueFamilyIndex-01937`).
+    /// Fails with `VUID-vkCreateCommandPool-queueFamilyIndex-01937` when the device
+    /// has no queue of that family.
     ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// // SAFETY: the device was created with a queue of family 0.
-    /// let frames = unsafe { device.frames_in_flight(0, 2) }?;
+    /// let frames = device.frames_in_flight(0, 2)?;
     /// assert_eq!(frames.len(), 2);
     /// # Ok(()) }
     /// ```
-    pub unsafe fn frames_in_flight(
+    pub fn frames_in_flight(
         &self,
         queue_family_index: u32,
         count: usize,
     ) -> Result<FramesInFlight> {
         let count = count.max(1);
-        // SAFETY: the caller promises the family; the pool is not protected.
-        let pool = unsafe {
-            self.create_command_pool(
-                &CommandPoolCreateInfo::new()
-                    .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
-                    .queue_family_index(queue_family_index),
-            )
-        }?;
+        let pool = self.create_command_pool(
+            &CommandPoolCreateInfo::new()
+                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+                .queue_family_index(queue_family_index),
+        )?;
         let buffers = self.allocate_command_buffers(
             &pool,
             &CommandBufferAllocateInfo::new(&pool)

@@ -1155,7 +1155,52 @@ pub(crate) fn device_created(
         next = node.p_next;
     }
     device.live().set_features(features);
+    let queues = if info.p_queue_create_infos.is_null() {
+        &[][..]
+    } else {
+        // SAFETY: the safe setter stores a slice, with its length, that outlives the
+        // create info.
+        unsafe {
+            core::slice::from_raw_parts(
+                info.p_queue_create_infos,
+                info.queue_create_info_count as usize,
+            )
+        }
+    };
+    device.live().set_queue_infos(
+        queues
+            .iter()
+            .map(|q| (q.queue_family_index, q.queue_count, q.flags))
+            .collect(),
+    );
     device
+}
+
+/// A command pool is made for a queue family the device has queues of, and is
+/// protected only where the protectedMemory feature is enabled.
+pub(crate) fn create_command_pool_checks(
+    device: &Device,
+    create_info: &CommandPoolCreateInfo<'_>,
+) -> Result<()> {
+    let family = create_info.queue_family_index;
+    if !device.live().queue_infos().iter().any(|q| q.0 == family) {
+        refuse(
+            "VUID-vkCreateCommandPool-queueFamilyIndex-01937",
+            format!("the device was created with no queue of family {family}"),
+        )?;
+    }
+    let protected = create_info
+        .flags
+        .contains(vk::CommandPoolCreateFlags::PROTECTED);
+    if protected && device.live().with_features(|f| f.v11.protected_memory) != vk::TRUE {
+        refuse(
+            "VUID-VkCommandPoolCreateInfo-flags-02860",
+            "a protected command pool needs the protectedMemory feature, which the device \
+             did not enable"
+                .into(),
+        )?;
+    }
+    Ok(())
 }
 
 /// The pool remembers its flags (whether its sets may be freed one by one).

@@ -85,6 +85,9 @@ pub(crate) struct Live {
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
     /// The core features the device was created with.
     features: std::sync::OnceLock<crate::validation::Features>,
+    /// The queue families the device was created with, each with its queue count
+    /// and create flags, one per `VkDeviceQueueCreateInfo`.
+    queue_infos: std::sync::OnceLock<Vec<(u32, u32, vk::DeviceQueueCreateFlags)>>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
@@ -223,6 +226,7 @@ impl Default for Live {
             sets_layouts: Vutex::new(HashMap::default()),
             limits: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
+            queue_infos: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::default()),
         }
     }
@@ -421,6 +425,17 @@ impl Live {
     /// The record of a live pipeline layout made through the wrappers.
     pub(crate) fn pipeline_layout(&self, raw: vk::PipelineLayout) -> Option<Vrc<LayoutRecord>> {
         self.pipeline_layouts.lock().get(&raw.as_raw()).cloned()
+    }
+
+    /// Records the queues the device was created with: (family, count, flags) for
+    /// each of its queue create infos.
+    pub(crate) fn set_queue_infos(&self, queues: Vec<(u32, u32, vk::DeviceQueueCreateFlags)>) {
+        let _ = self.queue_infos.set(queues);
+    }
+
+    /// The queues the device was created with (none, before they are recorded).
+    pub(crate) fn queue_infos(&self) -> &[(u32, u32, vk::DeviceQueueCreateFlags)] {
+        self.queue_infos.get().map_or(&[], Vec::as_slice)
     }
 
     /// Records the core features the device was created with.

@@ -57,14 +57,13 @@ fn bench(validation: bool) -> Bench {
     let target = s.color_target(64, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(&s, &target);
     let d = &s.device;
-    let pool = unsafe {
-        d.create_command_pool(
+    let pool = d
+        .create_command_pool(
             &tuff::CommandPoolCreateInfo::new()
                 .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
                 .queue_family_index(s.family),
         )
-    }
-    .expect("pool");
+        .expect("pool");
     let mut cbs = d
         .allocate_command_buffers(
             &pool,

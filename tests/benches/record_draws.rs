@@ -41,10 +41,9 @@ fn main() {
     // scissor.
     let p = pipelines::pipelines(&s, &target);
     let (layout, pipeline) = (&p.graphics_layout, &p.graphics);
-    let pool = unsafe {
-        d.create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
-    }
-    .expect("pool");
+    let pool = d
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
     let mut cbs = d
         .allocate_command_buffers(
             &pool,

@@ -191,14 +191,14 @@ impl Setup {
         &self,
         level: vk::CommandBufferLevel,
     ) -> (tuff::CommandPool, tuff::CommandBuffer) {
-        let pool = unsafe {
-            self.device.create_command_pool(
+        let pool = self
+            .device
+            .create_command_pool(
                 &tuff::CommandPoolCreateInfo::new()
                     .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
                     .queue_family_index(self.family),
             )
-        }
-        .expect("pool");
+            .expect("pool");
         let cb = self
             .device
             .allocate_command_buffers(

@@ -132,6 +132,10 @@ const TIMELINE_VALUES: &str =
     "checks each batch gives one value per timeline semaphore it waits on or signals";
 const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
+const POOL_FAMILY: &str =
+    "checks the family against the queue create infos the device recorded at its creation";
+const POOL_PROTECTED: &str =
+    "checks the protectedMemory feature the device recorded at its creation";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
 const QUERIES: &str = "checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride";
@@ -1065,7 +1069,12 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateCommandPool",
+        check: call("hooks::create_command_pool_checks", &["self", "create_info"]),
         created: call("hooks::command_pool_created", &["self", "created", "create_info"]),
+        settles: &[
+            ("VUID-vkCreateCommandPool-queueFamilyIndex-01937", How::Dynamic(POOL_FAMILY)),
+            ("VUID-VkCommandPoolCreateInfo-flags-02860", How::Dynamic(POOL_PROTECTED)),
+        ],
         ..NONE
     },
     Special {

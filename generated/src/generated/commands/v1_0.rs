@@ -555,28 +555,21 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
     }
     /**`vkCreateCommandPool`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: `pCreateInfo->queueFamilyIndex` must be the index of a queue family available in the logical device `device`
-- `VUID-VkCommandPoolCreateInfo-flags-02860`: If the `protectedMemory` feature is not enabled, the `VK_COMMAND_POOL_CREATE_PROTECTED_BIT` bit of `flags` must not be set
-
 # Valid usage
 
 The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
 
+- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: dynamic (checks the family against the queue create infos the device recorded at its creation)
 - `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_command_pool<'a>(
+    pub fn create_command_pool<'a>(
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
+        crate::hooks::create_command_pool_checks(self, create_info)?;
         {
             let r = self.validate_create_command_pool(create_info);
             r?;
@@ -589,7 +582,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_command_pool`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_command_pool`] checks at run time: `VUID-vkCreateCommandPool-queueFamilyIndex-01937`, `VUID-VkCommandPoolCreateInfo-flags-02860`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_command_pool_unchecked<'a>(
         &self,

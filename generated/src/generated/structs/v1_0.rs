@@ -594,11 +594,10 @@ impl<'a> CommandBufferInheritanceInfo<'a> {
 
 The rules are on [`VkCommandPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandPoolCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkCommandPoolCreateInfo-flags-02860`: dynamic (checks the protectedMemory feature the device recorded at its creation)
 - `VUID-VkCommandPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCommandPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandPoolCreateInfo<'a> {
