@@ -751,6 +751,9 @@ oracle_cases! {
         "VUID-VkBufferCreateInfo-flags-01887" => |v, l, o| {
             v.flags |= vk::BufferCreateFlags::from_raw(0x8);
         },
+        "VUID-VkBufferCreateInfo-flags-06549" => |v, l, o| {
+            v.flags |= vk::BufferCreateFlags::from_raw(0x10);
+        },
     },
     buffer_view_create_info: vk::BufferViewCreateInfo<'_> {
         "VUID-VkBufferViewCreateInfo-offset-00925" => |v, l, o| {
@@ -838,8 +841,14 @@ oracle_cases! {
         },
     },
     push_constant_range: vk::PushConstantRange {
+        "VUID-VkPushConstantRange-offset-00295" => |v, l, o| {
+            v.offset += 1;
+        },
         "VUID-VkPushConstantRange-size-00296" => |v, l, o| {
             v.size = 0;
+        },
+        "VUID-VkPushConstantRange-size-00297" => |v, l, o| {
+            v.size += 1;
         },
     },
     descriptor_pool_create_info: vk::DescriptorPoolCreateInfo<'_> {
@@ -866,6 +875,9 @@ oracle_cases! {
     query_pool_create_info: vk::QueryPoolCreateInfo<'_> {
         "VUID-VkQueryPoolCreateInfo-queryType-00791" => |v, l, o| {
             v.query_type = vk::QueryType::from_raw(1);
+        },
+        "VUID-VkQueryPoolCreateInfo-queryCount-02763" => |v, l, o| {
+            v.query_count = 0;
         },
     },
     cmd_copy_query_pool_results: args::CmdCopyQueryPoolResults {
@@ -1335,6 +1347,9 @@ oracle_cases! {
         "VUID-vkCmdDrawIndirect-buffer-02709" => |v, l, o| {
             o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
         },
+        "VUID-vkCmdDrawIndirect-offset-02710" => |v, l, o| {
+            v.offset += 1;
+        },
         "VUID-vkCmdDrawIndirect-drawCount-02718" => |v, l, o| {
             v.draw_count = 2;
         },
@@ -1345,6 +1360,9 @@ oracle_cases! {
         },
         "VUID-vkCmdDrawIndexedIndirect-buffer-02709" => |v, l, o| {
             o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndexedIndirect-offset-02710" => |v, l, o| {
+            v.offset += 1;
         },
         "VUID-vkCmdDrawIndexedIndirect-drawCount-02718" => |v, l, o| {
             v.draw_count = 2;
@@ -1399,6 +1417,9 @@ oracle_cases! {
         },
         "VUID-vkCmdDispatchIndirect-buffer-02709" => |v, l, o| {
             o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDispatchIndirect-offset-02710" => |v, l, o| {
+            v.offset += 1;
         },
     },
 }

@@ -895,10 +895,13 @@ mod args {
     }
     pub type CmdBlitImage = CmdCopyImage;
     pub struct CmdDrawIndirect {
+        pub offset: vk::DeviceSize,
         pub draw_count: u32,
     }
     pub type CmdDrawIndexedIndirect = CmdDrawIndirect;
-    pub struct CmdDispatchIndirect;
+    pub struct CmdDispatchIndirect {
+        pub offset: vk::DeviceSize,
+    }
     pub struct CmdCopyQueryPoolResults {
         pub dst_offset: vk::DeviceSize,
     }
@@ -1272,6 +1275,11 @@ const LAYER_NAMES: &[(&str, &str)] = &[
     (
         "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
         "[ vkCmdCopyImageToBuffer-dstBuffer2-00192 ]",
+    ),
+    // The rule's VUID for the same feature under VK_EXT_buffer_device_address.
+    (
+        "VUID-VkBufferCreateInfo-flags-06549",
+        "[ VUID-VkBufferCreateInfo-flags-03338 ]",
     ),
 ];
 
@@ -1664,15 +1672,18 @@ fn cmd_draw_indirect(
     limits: &Limits,
     change: &dyn Fn(&mut args::CmdDrawIndirect, &Limits, &mut Objects),
 ) -> Outcome {
-    let mut a = args::CmdDrawIndirect { draw_count: 1 };
+    let mut a = args::CmdDrawIndirect {
+        offset: 0,
+        draw_count: 1,
+    };
     let mut o = Objects::default();
     change(&mut a, limits, &mut o);
     let (buffer, _memory) = make_buffer(s, &o.buffer);
     draw(
         s,
-        |r| unsafe { r.cmd_draw_indirect(&buffer, 0, a.draw_count, 16) },
+        |r| unsafe { r.cmd_draw_indirect(&buffer, a.offset, a.draw_count, 16) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| drop(unsafe { r.cmd_draw_indirect_unchecked(&buffer, 0, a.draw_count, 16) }),
+        |r| drop(unsafe { r.cmd_draw_indirect_unchecked(&buffer, a.offset, a.draw_count, 16) }),
     )
 }
 
@@ -1681,7 +1692,10 @@ fn cmd_draw_indexed_indirect(
     limits: &Limits,
     change: &dyn Fn(&mut args::CmdDrawIndexedIndirect, &Limits, &mut Objects),
 ) -> Outcome {
-    let mut a = args::CmdDrawIndexedIndirect { draw_count: 1 };
+    let mut a = args::CmdDrawIndexedIndirect {
+        offset: 0,
+        draw_count: 1,
+    };
     let mut o = Objects::default();
     change(&mut a, limits, &mut o);
     let (buffer, _memory) = make_buffer(s, &o.buffer);
@@ -1692,13 +1706,15 @@ fn cmd_draw_indexed_indirect(
         s,
         |r| {
             unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
-            unsafe { r.cmd_draw_indexed_indirect(&buffer, 0, a.draw_count, 20) }
+            unsafe { r.cmd_draw_indexed_indirect(&buffer, a.offset, a.draw_count, 20) }
         },
         |r| {
             unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
-            drop(unsafe { r.cmd_draw_indexed_indirect_unchecked(&buffer, 0, a.draw_count, 20) })
+            drop(unsafe {
+                r.cmd_draw_indexed_indirect_unchecked(&buffer, a.offset, a.draw_count, 20)
+            })
         },
     )
 }
@@ -1708,8 +1724,9 @@ fn cmd_dispatch_indirect(
     limits: &Limits,
     change: &dyn Fn(&mut args::CmdDispatchIndirect, &Limits, &mut Objects),
 ) -> Outcome {
+    let mut a = args::CmdDispatchIndirect { offset: 0 };
     let mut o = Objects::default();
-    change(&mut args::CmdDispatchIndirect, limits, &mut o);
+    change(&mut a, limits, &mut o);
     let (buffer, _memory) = make_buffer(s, &o.buffer);
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
@@ -1731,13 +1748,13 @@ fn cmd_dispatch_indirect(
         s,
         |r| {
             bind(r);
-            result = unsafe { r.cmd_dispatch_indirect(&buffer, 0) };
+            result = unsafe { r.cmd_dispatch_indirect(&buffer, a.offset) };
         },
         |r| {
             bind(r);
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
-            drop(unsafe { r.cmd_dispatch_indirect_unchecked(&buffer, 0) });
+            drop(unsafe { r.cmd_dispatch_indirect_unchecked(&buffer, a.offset) });
         },
     );
     // A dispatch returns its refusal itself, rather than through `end`.

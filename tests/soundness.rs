@@ -2230,7 +2230,8 @@ fn private_data_names_live_objects_only() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let slot = unsafe { d.create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new()) }
+    let slot = d
+        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
         .expect("slot");
     let (buffer, _memory) = host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_DST);
     let dropped = {

@@ -139,7 +139,8 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         )
     }
     .expect("query pool");
-    let slot = unsafe { d.create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new()) }
+    let slot = d
+        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
         .expect("private data slot");
     let command_pool = d
         .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))

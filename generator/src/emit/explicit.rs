@@ -252,6 +252,33 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                 }
             }
         }
+        Pred::MultipleOf { member: m, rhs } => {
+            let m = member(m);
+            let is = match rhs {
+                // The recogniser reads only a constant above 0.
+                Rhs::Const(c) => {
+                    let c = number(c, false);
+                    return if negated {
+                        quote!(#m % #c != 0)
+                    } else {
+                        quote!(#m % #c == 0)
+                    };
+                }
+                // A limit of 0 has 0 alone as a multiple.
+                _ => {
+                    let l = match rhs {
+                        Rhs::Limit(l) => field_ident(l),
+                        _ => field_ident("minMemoryMapAlignment"),
+                    };
+                    quote!((#m as i128).checked_rem(l.#l as i128).map_or(#m == 0, |r| r == 0))
+                }
+            };
+            if negated {
+                quote!(s.limits().is_some_and(|l| !#is))
+            } else {
+                quote!(s.limits().is_none_or(|l| #is))
+            }
+        }
         Pred::Usage {
             handle: h,
             object,
@@ -485,6 +512,7 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
                         crate::names::type_name(ty).replace("FlagBits", "Flags")
                     ),
                     Assign::Number { member, expr } => format!("{} = {expr};", path(member)),
+                    Assign::Increment { member } => format!("{} += 1;", path(member)),
                     // The fixture makes its objects from `o` after the change, so
                     // the handle's name is the spec's (a parameter as the method
                     // names it).

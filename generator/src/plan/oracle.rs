@@ -96,6 +96,8 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkFramebufferCreateInfo-width-00886", PAST_ATTACHMENT),
     ("VUID-VkFramebufferCreateInfo-height-00888", PAST_ATTACHMENT),
     ("VUID-VkFramebufferCreateInfo-layers-00890", PAST_ATTACHMENT),
+    ("VUID-VkImageViewCreateInfo-viewType-02961", "a cube-array view also breaks `viewType-01004` on a device without `imageCubeArray`, which the fixtures' device does not enable"),
+    ("VUID-VkSamplerCreateInfo-anisotropyEnable-01071", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
     ("VUID-VkImageViewCreateInfo-viewType-01004", "a cube-array view of the fixture's one layer also breaks `viewType-02961` (a multiple of six layers)"),
     ("VUID-VkImageViewCreateInfo-subresourceRange-01478", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01718` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
@@ -202,6 +204,11 @@ pub enum Assign {
         /// The value.
         value: i64,
     },
+    /// Add one to a number member.
+    Increment {
+        /// The member path.
+        member: String,
+    },
     /// Create the object a handle names without these usage bits.
     ClearUsage {
         /// The handle's path.
@@ -234,7 +241,8 @@ impl Assign {
             | Assign::Bits { member, .. }
             | Assign::ClearBits { member, .. }
             | Assign::Enum { member, .. }
-            | Assign::Number { member, .. } => member,
+            | Assign::Number { member, .. }
+            | Assign::Increment { member } => member,
             Assign::ClearUsage { handle, .. } | Assign::Unbound { handle } => handle,
         }
     }
@@ -491,6 +499,16 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         // Of `x and (y + x) must both be in [0, extent]`, break the last: the sum
         // past the level's extent.
         Pred::All(ps) => make_false(at, ps.last()?, out)?,
+        // One more than the fixture's value is a multiple of nothing above 1.
+        Pred::MultipleOf { member, .. } => out.push(Assign::Increment {
+            member: member.clone(),
+        }),
+        // The fixtures' device lacks every feature it does not list.
+        Pred::Feature {
+            name,
+            enabled: true,
+            ..
+        } => (!FIXTURE_FEATURES.contains(&name.as_str())).then_some(())?,
         // `a + b <= n` breaks at `a = n - b + 1`; `a <= n` at `a = n + 1`.
         Pred::Compare {
             member,

@@ -185,6 +185,13 @@ pub enum Pred {
         /// The member is an unsigned integer.
         unsigned: bool,
     },
+    /// A whole-number member is a multiple of a constant or a limit.
+    MultipleOf {
+        /// The member.
+        member: String,
+        /// Of what: [`Rhs::Const`] or [`Rhs::Limit`].
+        rhs: Rhs,
+    },
     /// The object a handle names was created with every one of these usage bits.
     Usage {
         /// The handle's path.
@@ -280,7 +287,8 @@ impl Pred {
             Pred::AnyBit { member, .. }
             | Pred::NoBit { member, .. }
             | Pred::OneOf { member, .. }
-            | Pred::NoneOf { member, .. } => vec![member],
+            | Pred::NoneOf { member, .. }
+            | Pred::MultipleOf { member, .. } => vec![member],
             Pred::Compare {
                 member, plus, rhs, ..
             } => {
@@ -329,6 +337,9 @@ impl Pred {
             | Pred::Compare {
                 rhs: Rhs::Limit(_) | Rhs::Created { .. } | Rhs::Extent { .. },
                 ..
+            }
+            | Pred::MultipleOf {
+                rhs: Rhs::Limit(_), ..
             } => true,
             Pred::All(ps) => ps.iter().any(Pred::reads_device),
             _ => false,
@@ -341,7 +352,8 @@ impl Pred {
             Pred::AnyBit { member, .. }
             | Pred::NoBit { member, .. }
             | Pred::OneOf { member, .. }
-            | Pred::NoneOf { member, .. } => vec![member],
+            | Pred::NoneOf { member, .. }
+            | Pred::MultipleOf { member, .. } => vec![member],
             Pred::Compare {
                 member, plus, rhs, ..
             } => {
@@ -434,6 +446,9 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
     ),
     ("offsets inside an image subresource", inside_req),
     ("aspects present in an image's format", aspects_req),
+    ("number between two bounds, inclusive", between_req),
+    ("number a multiple of a constant or limit", multiple_req),
+    ("feature must be enabled", feature_req),
 ];
 
 /// Rules whose text, read as written, refuses values that the specification
@@ -468,6 +483,7 @@ pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
         let Some((each, body)) = elements(model, &rule.item, &text) else {
             continue;
         };
+        let body = normalised(&body);
         let input = Input {
             text: &body,
             item: &rule.item,
@@ -514,6 +530,25 @@ pub fn plain(html: &str) -> String {
     static SUM: OnceLock<Regex> = OnceLock::new();
     let s = re(&SUM, r"the sum of (`[\w.]+`) and (`[\w.]+`) must").replace_all(&s, "$1 + $2 must");
     s.trim_end_matches('.').to_owned()
+}
+
+/// The rule's text with synonyms written one way, so that one pattern reads both:
+/// `must equal` is `must be equal to`, and a bare number (`greater than 0`, `must
+/// be zero`) is a code span like the others.
+fn normalised(text: &str) -> String {
+    let s = text
+        .replace(" must not equal ", " must not be equal to ")
+        .replace(" must equal ", " must be equal to ");
+    static BARE: OnceLock<Regex> = OnceLock::new();
+    let bare = re(
+        &BARE,
+        r"(must (?:not )?be(?: (?:greater|less) than(?: or equal to)?)?) (\d+(?:\.\d+)?|zero)(,| and |$)",
+    );
+    bare.replace_all(&s, |c: &regex::Captures| {
+        let n = if &c[2] == "zero" { "0" } else { &c[2] };
+        format!("{} `{n}`{}", &c[1], &c[3])
+    })
+    .into_owned()
 }
 
 fn re(cell: &'static OnceLock<Regex>, pattern: &str) -> &'static Regex {
@@ -1158,6 +1193,73 @@ fn summand(input: &Input, path: &str) -> Option<Option<String>> {
     }
     let m = member(input, path)?;
     (numeric(&m.type_name) && m.type_name != "float").then(|| Some(path.to_owned()))
+}
+
+/// `` `x` must be between `0.0` and `1.0`, inclusive ``, `` ... between `1.0` and
+/// `VkPhysicalDeviceLimits::maxY`, inclusive ``: both comparisons.
+fn between_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.\[\]]+)` must be between `([\w:.]+)` and `([\w:.]+)`,? inclusive$",
+    );
+    let c = whole(r, text)?;
+    let low = compare_req(
+        input,
+        &format!("`{}` must be greater than or equal to `{}`", c[0], c[1]),
+    )?;
+    let high = compare_req(
+        input,
+        &format!("`{}` must be less than or equal to `{}`", c[0], c[2]),
+    )?;
+    Some(Pred::All(vec![low, high]))
+}
+
+/// `` `offset` must be a multiple of `4` ``, `` ... an integer multiple of
+/// `VkPhysicalDeviceLimits::minY` ``.
+fn multiple_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.\[\]]+)` must be (?:an integer |a )?multiple of `([\w:.]+)`$",
+    );
+    let c = whole(r, text)?;
+    let m = member(input, &c[0])?;
+    (numeric(&m.type_name) && m.type_name != "float").then_some(())?;
+    let rhs = if c[1].chars().all(|ch| ch.is_ascii_digit()) {
+        (c[1] != "0").then_some(())?;
+        Rhs::Const(c[1].clone())
+    } else {
+        let name = c[1]
+            .strip_prefix("VkPhysicalDeviceLimits::")
+            .unwrap_or(&c[1]);
+        let limits = input.model.types.get("VkPhysicalDeviceLimits")?;
+        limits.members.iter().find(|l| {
+            l.name == name
+                && l.static_array.is_none()
+                && numeric(&l.type_name)
+                && l.type_name != "float"
+        })?;
+        Rhs::Limit(name.to_owned())
+    };
+    Some(Pred::MultipleOf {
+        member: c[0].clone(),
+        rhs,
+    })
+}
+
+/// `` The `synchronization2` feature must be enabled `` (alone or after
+/// conditions).
+fn feature_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(&R, r"^[Tt]he `(\w+)` feature must be enabled$");
+    let c = whole(r, text)?;
+    let (name, core) = feature(input, &c[0])?;
+    Some(Pred::Feature {
+        name,
+        core,
+        enabled: true,
+    })
 }
 
 /// A number as the text writes it, written as a Rust literal of the compared type

@@ -295,11 +295,25 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            1000060004 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_group_command_buffer_begin_info(
+                    unsafe { &*(p as *const vk::DeviceGroupCommandBufferBeginInfo<'_>) },
+                    s,
+                )?
+            }
             #[cfg(feature = "khr_swapchain")]
             1000060011 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_device_group_present_info_khr(
                     unsafe { &*(p as *const vk::DeviceGroupPresentInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            1000060003 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_group_render_pass_begin_info(
+                    unsafe { &*(p as *const vk::DeviceGroupRenderPassBeginInfo<'_>) },
                     s,
                 )?
             }

@@ -488,7 +488,11 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_set_depth_bounds(
+        &self,
+        min_depth_bounds: f32,
+        max_depth_bounds: f32,
+    ) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -498,6 +502,32 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
                     "the command buffer's pool does not support graphics operations"
                         .into(),
+                ),
+            );
+        }
+        if (min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
+            || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-minDepthBounds-02508",
+                    format!(
+                        "`minDepthBounds` must be between `0.0` and `1.0`, inclusive (`minDepthBounds` = {:?})",
+                        min_depth_bounds
+                    ),
+                ),
+            );
+        }
+        if (max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
+            || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509",
+                    format!(
+                        "`maxDepthBounds` must be between `0.0` and `1.0`, inclusive (`maxDepthBounds` = {:?})",
+                        max_depth_bounds
+                    ),
                 ),
             );
         }
@@ -1507,6 +1537,7 @@ impl<'c> Recorder<'c, Outside> {
         &self,
         image: &Image,
         image_layout: vk::ImageLayout,
+        depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -1596,6 +1627,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
+        crate::checks::check_clear_depth_stencil_value(depth_stencil, s)?;
         for x in ranges.iter() {
             crate::checks::check_image_subresource_range(x, s)?;
         }
@@ -2681,7 +2713,11 @@ impl<'c> Recorder<'c, Outside> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_dispatch_indirect`], run before the call.
-    pub(crate) fn validate_cmd_dispatch_indirect(&self, buffer: &Buffer) -> Result<()> {
+    pub(crate) fn validate_cmd_dispatch_indirect(
+        &self,
+        buffer: &Buffer,
+        offset: vk::DeviceSize,
+    ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -2725,6 +2761,16 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdDispatchIndirect-buffer-02709",
                     "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
                         .into(),
+                ),
+            );
+        }
+        if offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatchIndirect-offset-02710",
+                    format!(
+                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
+                    ),
                 ),
             );
         }
@@ -3489,6 +3535,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
     pub(crate) fn validate_cmd_draw_indexed_indirect(
         &self,
         buffer: &Buffer,
+        offset: vk::DeviceSize,
         draw_count: u32,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -3537,6 +3584,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        if offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirect-offset-02710",
+                    format!(
+                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
+                    ),
+                ),
+            );
+        }
         if !s.feature(|f| f.v10.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
             return Err(
                 fail(
@@ -3568,6 +3625,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
     pub(crate) fn validate_cmd_draw_indirect(
         &self,
         buffer: &Buffer,
+        offset: vk::DeviceSize,
         draw_count: u32,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -3613,6 +3671,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
                     "VUID-vkCmdDrawIndirect-buffer-02709",
                     "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
                         .into(),
+                ),
+            );
+        }
+        if offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirect-offset-02710",
+                    format!(
+                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
+                    ),
                 ),
             );
         }

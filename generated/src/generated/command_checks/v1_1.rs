@@ -56,6 +56,14 @@ impl Device {
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        if !s.feature(|f| f.v11.sampler_ycbcr_conversion) {
+            return Err(
+                fail(
+                    "VUID-vkCreateSamplerYcbcrConversion-None-01648",
+                    "The `samplerYcbcrConversion` feature must be enabled".into(),
+                ),
+            );
+        }
         crate::checks::check_sampler_ycbcr_conversion_create_info(create_info, s)?;
         Ok(())
     }

@@ -22,7 +22,7 @@ impl<'c> Recorder<'c, Outside> {
 }
 impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_device_mask(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_set_device_mask(&self, device_mask: u32) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
@@ -32,6 +32,17 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
                     "the command buffer's pool does not support graphics,compute,transfer operations"
                         .into(),
+                ),
+            );
+        }
+        if device_mask == 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDeviceMask-deviceMask-00109",
+                    format!(
+                        "`deviceMask` must not be zero (`deviceMask` = {:?})",
+                        device_mask
+                    ),
                 ),
             );
         }

@@ -12,6 +12,47 @@ impl Device {
         crate::checks::check_render_pass_create_info2(create_info, s)?;
         Ok(())
     }
+    ///The dynamic checks of [`Self::get_buffer_device_address`], run before the call.
+    pub(crate) fn validate_get_buffer_device_address(&self) -> Result<()> {
+        let s = &self.scope();
+        if !s.feature(|f| f.v12.buffer_device_address) {
+            return Err(
+                fail(
+                    "VUID-vkGetBufferDeviceAddress-None-06542",
+                    "The `bufferDeviceAddress` feature must be enabled".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_buffer_opaque_capture_address`], run before the call.
+    pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
+        let s = &self.scope();
+        if !s.feature(|f| f.v12.buffer_device_address) {
+            return Err(
+                fail(
+                    "VUID-vkGetBufferOpaqueCaptureAddress-None-03326",
+                    "The `bufferDeviceAddress` feature must be enabled".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_memory_opaque_capture_address`], run before the call.
+    pub(crate) fn validate_get_device_memory_opaque_capture_address(
+        &self,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.feature(|f| f.v12.buffer_device_address) {
+            return Err(
+                fail(
+                    "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334",
+                    "The `bufferDeviceAddress` feature must be enabled".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::get_semaphore_counter_value`], run before the call.
     pub(crate) fn validate_get_semaphore_counter_value(
         &self,
@@ -39,6 +80,14 @@ impl Device {
                 fail(
                     "VUID-vkResetQueryPool-queryPool-parent",
                     "`queryPool` does not come from `device`".into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v12.host_query_reset) {
+            return Err(
+                fail(
+                    "VUID-vkResetQueryPool-None-02665",
+                    "The `hostQueryReset` feature must be enabled".into(),
                 ),
             );
         }

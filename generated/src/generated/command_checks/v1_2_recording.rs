@@ -40,7 +40,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
     pub(crate) fn validate_cmd_draw_indexed_indirect_count(
         &self,
         buffer: &Buffer,
+        offset: vk::DeviceSize,
         count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
     ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
@@ -97,6 +99,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        if offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirectCount-offset-02710",
+                    format!(
+                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
+                    ),
+                ),
+            );
+        }
         if s
             .buffer(count_buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -121,13 +133,26 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        if count_buffer_offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716",
+                    format!(
+                        "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
+                        count_buffer_offset
+                    ),
+                ),
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_draw_indirect_count`], run before the call.
     pub(crate) fn validate_cmd_draw_indirect_count(
         &self,
         buffer: &Buffer,
+        offset: vk::DeviceSize,
         count_buffer: &Buffer,
+        count_buffer_offset: vk::DeviceSize,
     ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
@@ -184,6 +209,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        if offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirectCount-offset-02710",
+                    format!(
+                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
+                    ),
+                ),
+            );
+        }
         if s
             .buffer(count_buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -205,6 +240,17 @@ impl<'c, S: Inside> Recorder<'c, S> {
                     "VUID-vkCmdDrawIndirectCount-countBuffer-02715",
                     "`countBuffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
                         .into(),
+                ),
+            );
+        }
+        if count_buffer_offset % 4 != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawIndirectCount-countBufferOffset-02716",
+                    format!(
+                        "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
+                        count_buffer_offset
+                    ),
                 ),
             );
         }

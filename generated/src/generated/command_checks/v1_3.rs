@@ -9,6 +9,14 @@ impl Device {
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        if !s.feature(|f| f.v13.private_data) {
+            return Err(
+                fail(
+                    "VUID-vkCreatePrivateDataSlot-privateData-04564",
+                    "The `privateData` feature must be enabled".into(),
+                ),
+            );
+        }
         crate::checks::check_private_data_slot_create_info(create_info, s)?;
         Ok(())
     }
@@ -102,6 +110,14 @@ impl Queue {
                     "VUID-vkQueueSubmit2-commonparent",
                     "`fence` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkQueueSubmit2-synchronization2-03866",
+                    "The `synchronization2` feature must be enabled".into(),
                 ),
             );
         }

@@ -21,6 +21,14 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !s.feature(|f| f.v13.dynamic_rendering) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBeginRendering-dynamicRendering-06446",
+                    "The `dynamicRendering` feature must be enabled".into(),
+                ),
+            );
+        }
         crate::checks::check_rendering_info(rendering_info, s)?;
         Ok(())
     }
@@ -184,6 +192,14 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-synchronization2-03829",
+                    "The `synchronization2` feature must be enabled".into(),
+                ),
+            );
+        }
         if (stage_mask.as_raw() & 16384) != 0 {
             return Err(
                 fail(
@@ -243,6 +259,14 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdSetEvent2-commonparent",
                     "`event` does not come from the VkDevice the command is called on"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent2-synchronization2-03824",
+                    "The `synchronization2` feature must be enabled".into(),
                 ),
             );
         }
@@ -322,6 +346,14 @@ impl<'c, S: State> Recorder<'c, S> {
                     "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
                     "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
                         .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
+                    "The `synchronization2` feature must be enabled".into(),
                 ),
             );
         }
@@ -693,6 +725,14 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWaitEvents2-synchronization2-03836",
+                    "The `synchronization2` feature must be enabled".into(),
+                ),
+            );
+        }
         for x in dependency_infos.iter() {
             crate::checks::check_dependency_info(x, s)?;
         }
@@ -750,6 +790,14 @@ impl<'c, S: State> Recorder<'c, S> {
                         "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
                         stage
                     ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v13.synchronization2) {
+            return Err(
+                fail(
+                    "VUID-vkCmdWriteTimestamp2-synchronization2-03858",
+                    "The `synchronization2` feature must be enabled".into(),
                 ),
             );
         }

@@ -8,7 +8,7 @@ impl Device {
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkAcquireNextImage2KHR-surface-07784`: If forward progress cannot be guaranteed for the `surface` used to create `swapchain`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
 - `VUID-VkAcquireNextImageInfoKHR-swapchain-01675`: `swapchain` must not be in the retired state
@@ -17,7 +17,6 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 - `VUID-VkAcquireNextImageInfoKHR-fence-01289`: If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-01782`: `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
 - `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290`: `deviceMask` must be a valid device mask
-- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01291`: `deviceMask` must not be zero
 
 # Valid usage
 

@@ -402,7 +402,7 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
 
 # Safety
 
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateBuffer-flags-00911`: If the `flags` member of `pCreateInfo` includes `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, creating this `VkBuffer` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
 - `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
@@ -411,7 +411,6 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 - `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
 - `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
 - `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
-- `VUID-VkBufferCreateInfo-flags-06549`: If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
 - `VUID-VkBufferCreateInfo-size-06409`: `size` must be less than or equal to VkPhysicalDeviceMaintenance4Properties::`maxBufferSize`
 
 # Valid usage
@@ -614,7 +613,7 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateComputePipelines-flags-00695`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateComputePipelines-flags-00696`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -655,7 +654,6 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: `requiredSubgroupSize` must be a power-of-two integer
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: `requiredSubgroupSize` must be greater or equal to `minSubgroupSize`
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: `requiredSubgroupSize` must be less than or equal to `maxSubgroupSize`
-- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
 - `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
 - `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
 - `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
@@ -1131,7 +1129,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 158 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 155 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1269,7 +1267,6 @@ The caller upholds these 158 rules that no check of this method enforces (its co
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`: If the graphics pipeline is being created without `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` and `viewportCount` must be identical
 - `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` set then `viewportCount` must be `0`, otherwise it must be greater than `0`
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` must be `0`, otherwise it must be greater than `0`
-- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
 - `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
 - `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
 - `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
@@ -1289,8 +1286,6 @@ The caller upholds these 158 rules that no check of this method enforces (its co
 - `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
 - `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
 - `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-minDepth-02540`: `minDepth` must be between `0.0` and `1.0`, inclusive
-- `VUID-VkViewport-maxDepth-02541`: `maxDepth` must be between `0.0` and `1.0`, inclusive
 
 # Valid usage
 
@@ -1507,7 +1502,7 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageViewCreateInfo-image-01003`: If `image` was not created with `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT` then `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`
@@ -1521,7 +1516,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageViewCreateInfo-subResourceRange-01021`: `viewType` must be compatible with the type of `image` as shown in the view type compatibility table
 - `VUID-VkImageViewCreateInfo-imageViewType-04973`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, then `subresourceRange.layerCount` must be 1
 - `VUID-VkImageViewCreateInfo-imageViewType-04974`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, then the remaining number of layers must be 1
-- `VUID-VkImageViewCreateInfo-viewType-02961`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be a multiple of `6`
 - `VUID-VkImageViewCreateInfo-viewType-02962`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be `6`
 - `VUID-VkImageViewCreateInfo-viewType-02963`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be a multiple of `6`
 - `VUID-VkImageViewCreateInfo-image-06723`: If `image` was created with `VK_IMAGE_TYPE_3D` but without `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set then `viewType` must not be `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
@@ -1677,15 +1671,13 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorUpdateAfterBindInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetUpdateAfterBindInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: Elements of `pSetLayouts` must be valid VkDescriptorSetLayout objects
-- `VUID-VkPushConstantRange-offset-00295`: `offset` must be a multiple of `4`
-- `VUID-VkPushConstantRange-size-00297`: `size` must be a multiple of `4`
 - `VUID-VkPushConstantRange-size-00298`: `size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset`
 
 # Valid usage
@@ -1767,10 +1759,9 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
 
 # Safety
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkQueryPoolCreateInfo-queryType-00792`: If `queryType` is `VK_QUERY_TYPE_PIPELINE_STATISTICS`, `pipelineStatistics` must be a valid combination of VkQueryPipelineStatisticFlagBits values
-- `VUID-VkQueryPoolCreateInfo-queryCount-02763`: `queryCount` must be greater than 0
 
 # Valid usage
 
@@ -1930,11 +1921,10 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
 
 # Safety
 
-The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
 - `VUID-VkSamplerCreateInfo-mipLodBias-01069`: The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias`
-- `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: If `anisotropyEnable` is `VK_TRUE`, `maxAnisotropy` must be between `1.0` and `VkPhysicalDeviceLimits::maxSamplerAnisotropy`, inclusive
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: If `unnormalizedCoordinates` is `VK_TRUE`, `minFilter` and `magFilter` must be equal
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`
@@ -2021,11 +2011,9 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time (t
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: The bits in `handleTypes` must be supported and compatible, as reported by VkExternalSemaphoreProperties
-- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE`
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero
 
 # Valid usage
 
@@ -2086,10 +2074,9 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time 
 
 The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateShaderModule-pCreateInfo-06905`: If `pCreateInfo` is not `NULL`, `pCreateInfo->pNext` must be `NULL`
-- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: `codeSize` must be greater than 0
 - `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
 - `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
 - `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
@@ -3185,7 +3172,7 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
 
 # Safety
 
-The caller upholds these 53 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, elements of the `pTexelBufferView` member of `pDescriptorWrites`[i] must have been created on `device`
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of any element of the `pBufferInfo` member of `pDescriptorWrites`[i] must have been created on `device`
@@ -3236,10 +3223,7 @@ The caller upholds these 53 rules that no check of this method enforces (its com
 - `VUID-VkWriteDescriptorSet-descriptorType-00338`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` set
 - `VUID-VkWriteDescriptorSet-descriptorType-00339`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_STORAGE_BIT` set
 - `VUID-VkWriteDescriptorSet-descriptorType-02752`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable samplers for `dstBinding`
-- `VUID-VkWriteDescriptorSet-descriptorType-02219`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
-- `VUID-VkWriteDescriptorSet-descriptorType-02220`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
 - `VUID-VkWriteDescriptorSet-descriptorType-02221`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, the `pNext` chain must include a VkWriteDescriptorSetInlineUniformBlock structure whose `dataSize` member equals `descriptorCount`
-- `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222`: `dataSize` must be an integer multiple of `4`
 
 # Valid usage
 

@@ -126,10 +126,9 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdSetDeviceMask-deviceMask-00108`: `deviceMask` must be a valid device mask value
-- `VUID-vkCmdSetDeviceMask-deviceMask-00109`: `deviceMask` must not be zero
 - `VUID-vkCmdSetDeviceMask-deviceMask-00110`: `deviceMask` must not include any set bits that were not in the VkDeviceGroupCommandBufferBeginInfo::`deviceMask` value when the command buffer began recording
 - `VUID-vkCmdSetDeviceMask-deviceMask-00111`: If `vkCmdSetDeviceMask` is called inside a render pass instance, `deviceMask` must not include any set bits that were not in the VkDeviceGroupRenderPassBeginInfo::`deviceMask` value when the render pass instance began recording
 
@@ -141,11 +140,14 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_set_device_mask(&mut self, device_mask: u32) {
         {
-            let r = self.validate_cmd_set_device_mask();
+            let r = self.validate_cmd_set_device_mask(device_mask);
             if !self.accept(r) {
                 return;
             }
@@ -158,7 +160,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, `VUID-vkCmdSetDeviceMask-deviceMask-00109`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) {
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;

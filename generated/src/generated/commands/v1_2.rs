@@ -129,9 +129,8 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkGetBufferDeviceAddress-None-06542`: The `bufferDeviceAddress` feature must be enabled
 - `VUID-vkGetBufferDeviceAddress-device-06543`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
@@ -143,9 +142,30 @@ The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.
 - `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn get_buffer_device_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> Result<vk::DeviceAddress> {
+        {
+            let r = self.validate_get_buffer_device_address();
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        Ok(unsafe { self.get_buffer_device_address_unchecked(info) })
+    }
+    /**`vkGetBufferDeviceAddress` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_device_address`] checks at run time: `VUID-vkGetBufferDeviceAddress-None-06542`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_buffer_device_address_unchecked<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> vk::DeviceAddress {
@@ -157,9 +177,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`: The `bufferDeviceAddress` feature must be enabled
 - `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
@@ -171,9 +190,30 @@ The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://re
 - `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> Result<u64> {
+        {
+            let r = self.validate_get_buffer_opaque_capture_address();
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        Ok(unsafe { self.get_buffer_opaque_capture_address_unchecked(info) })
+    }
+    /**`vkGetBufferOpaqueCaptureAddress` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_opaque_capture_address`] checks at run time: `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_buffer_opaque_capture_address_unchecked<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> u64 {
@@ -185,9 +225,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`: The `bufferDeviceAddress` feature must be enabled
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336`: `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
 
@@ -198,9 +237,30 @@ The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](http
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn get_device_memory_opaque_capture_address<'a>(
+        &self,
+        info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
+    ) -> Result<u64> {
+        {
+            let r = self.validate_get_device_memory_opaque_capture_address();
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        Ok(unsafe { self.get_device_memory_opaque_capture_address_unchecked(info) })
+    }
+    /**`vkGetDeviceMemoryOpaqueCaptureAddress` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_device_memory_opaque_capture_address`] checks at run time: `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_device_memory_opaque_capture_address_unchecked<'a>(
         &self,
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> u64 {
@@ -259,9 +319,8 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
 
 # Safety
 
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkResetQueryPool-None-02665`: The `hostQueryReset` feature must be enabled
 - `VUID-vkResetQueryPool-firstQuery-02666`: `firstQuery` must be less than the number of queries in `queryPool`
 - `VUID-vkResetQueryPool-firstQuery-02667`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
 - `VUID-vkResetQueryPool-firstQuery-02741`: Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
@@ -275,7 +334,10 @@ The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.
 - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 4: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn reset_query_pool(
         &self,
@@ -296,7 +358,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, `VUID-vkResetQueryPool-None-02665`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_query_pool_unchecked(
         &self,

@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: Both the `framebuffer` and `renderPass` members of `pRenderPassBegin` must have been created on the same VkDevice that `commandBuffer` was allocated on
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
@@ -22,7 +22,6 @@ The caller upholds these 44 rules that no check of this method enforces (its com
 - `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
 - `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: If any of the `stencilInitialLayout` or `stencilFinalLayout` member of the `VkAttachmentDescriptionStencilLayout` structures or the `stencilLayout` member of the `VkAttachmentReferenceStencilLayout` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: `deviceMask` must be a valid device mask value
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: `deviceMask` must not be zero
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: `deviceRenderAreaCount` must either be zero or equal to the number of physical devices in the logical device
 - `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: The `offset.x` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
@@ -131,7 +130,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 70 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 68 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -158,8 +157,6 @@ The caller upholds these 70 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
-- `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: `offset` must be a multiple of `4`
-- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`: `countBufferOffset` must be a multiple of `4`
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
 - `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129`: (`countBufferOffset` + `sizeof`(uint32_t)) must be less than or equal to the size of `countBuffer`
 - `VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825`: If `robustBufferAccess2` is not enabled, (`indexSize` {times} (`firstIndex` + `indexCount`) + `offset`) must be less than or equal to the size of the bound index buffer, with `indexSize` being based on the type specified by `indexType`, where the index buffer, `indexType`, and `offset` are specified via `vkCmdBindIndexBuffer`
@@ -223,8 +220,8 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
 - 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 197: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 195: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -244,7 +241,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 202.
             None,
         )?;
         {
-            let r = self.validate_cmd_draw_indexed_indirect_count(buffer, count_buffer);
+            let r = self
+                .validate_cmd_draw_indexed_indirect_count(
+                    buffer,
+                    offset,
+                    count_buffer,
+                    count_buffer_offset,
+                );
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -264,7 +267,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 202.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -298,7 +301,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
 
 # Safety
 
-The caller upholds these 69 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 67 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -325,8 +328,6 @@ The caller upholds these 69 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
 - `VUID-vkCmdDrawIndirectCount-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
-- `VUID-vkCmdDrawIndirectCount-offset-02710`: `offset` must be a multiple of `4`
-- `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`: `countBufferOffset` must be a multiple of `4`
 - `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
 - `VUID-vkCmdDrawIndirectCount-countBufferOffset-04129`: (`countBufferOffset` + `sizeof`(uint32_t)) must be less than or equal to the size of `countBuffer`
 - `VUID-vkCmdDrawIndirectCount-stride-03110`: `stride` must be a multiple of `4` and must be greater than or equal to sizeof(`VkDrawIndirectCommand`)
@@ -388,8 +389,8 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 201.
 
 - 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 196: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 194: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -408,7 +409,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 201.
             Some("VUID-vkCmdDrawIndirectCount-None-04007"),
         )?;
         {
-            let r = self.validate_cmd_draw_indirect_count(buffer, count_buffer);
+            let r = self
+                .validate_cmd_draw_indirect_count(
+                    buffer,
+                    offset,
+                    count_buffer,
+                    count_buffer_offset,
+                );
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -428,7 +435,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 201.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,

@@ -5,12 +5,6 @@ use super::*;
 impl Device {
     /**`vkCreatePrivateDataSlot`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCreatePrivateDataSlot-privateData-04564`: The `privateData` feature must be enabled
-
 # Valid usage
 
 The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
@@ -20,9 +14,9 @@ The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.k
 - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
     #[inline]
-    pub unsafe fn create_private_data_slot<'a>(
+    pub fn create_private_data_slot<'a>(
         &self,
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<PrivateDataSlot> {
@@ -38,7 +32,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_private_data_slot`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_private_data_slot`] checks at run time: `VUID-vkCreatePrivateDataSlot-privateData-04564`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_private_data_slot_unchecked<'a>(
         &self,
@@ -64,7 +58,7 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkBufferCreateInfo-flags-00918`: If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`
@@ -72,7 +66,6 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 - `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
 - `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
 - `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
-- `VUID-VkBufferCreateInfo-flags-06549`: If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
 - `VUID-VkBufferCreateInfo-size-06409`: `size` must be less than or equal to VkPhysicalDeviceMaintenance4Properties::`maxBufferSize`
 
 # Valid usage
@@ -471,9 +464,8 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkQueueSubmit2-synchronization2-03866`: The `synchronization2` feature must be enabled
 - `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
 - `VUID-vkQueueSubmit2-semaphore-03868`: The `semaphore` member of any binary semaphore element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
 - `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
@@ -511,7 +503,8 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 12: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 11: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn queue_submit2<'a>(
         &self,
@@ -538,7 +531,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit2_unchecked<'a>(
         &self,

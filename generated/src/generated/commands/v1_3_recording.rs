@@ -7,12 +7,10 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 60 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 58 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdBeginRendering-dynamicRendering-06446`: The `dynamicRendering` feature must be enabled
 - `VUID-vkCmdBeginRendering-commandBuffer-06068`: If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: `deviceMask` must be a valid device mask value
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: `deviceMask` must not be zero
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: `deviceRenderAreaCount` must either be zero or equal to the number of physical devices in the logical device
 - `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: The `offset.x` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
@@ -81,7 +79,10 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_begin_rendering<'a>(
         mut self,
@@ -103,7 +104,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_rendering_unchecked<'a>(
         mut self,
@@ -132,7 +133,7 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
 
 # Safety
 
-The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBlitImage2-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdBlitImage2-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -161,7 +162,6 @@ The caller upholds these 28 rules that no check of this method enforces (its com
 - `VUID-VkImageBlit2-aspectMask-00238`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageBlit2-layerCount-00239`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
 
 # Valid usage
 
@@ -286,7 +286,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
 
 # Safety
 
-The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -297,9 +297,6 @@ The caller upholds these 38 rules that no check of this method enforces (its com
 - `VUID-VkBufferImageCopy2-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
 - `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
 - `VUID-VkBufferImageCopy2-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
-- `VUID-VkBufferImageCopy2-imageExtent-06659`: `imageExtent.width` must not be 0
-- `VUID-VkBufferImageCopy2-imageExtent-06660`: `imageExtent.height` must not be 0
-- `VUID-VkBufferImageCopy2-imageExtent-06661`: `imageExtent.depth` must not be 0
 - `VUID-VkCopyBufferToImageInfo2-pRegions-00172`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `dstImage`
 - `VUID-VkCopyBufferToImageInfo2-pRegions-00173`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyBufferToImageInfo2-dstImage-00179`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
@@ -325,7 +322,6 @@ The caller upholds these 38 rules that no check of this method enforces (its com
 - `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
 - `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
 - `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
 
 # Valid usage
 
@@ -398,7 +394,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
 
 # Safety
 
-The caller upholds these 54 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage2-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage2-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -449,11 +445,7 @@ The caller upholds these 54 rules that no check of this method enforces (its com
 - `VUID-VkCopyImageInfo2-aspect-06663`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `dstImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `dstImage`
 - `VUID-VkCopyImageInfo2-aspect-06664`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `srcImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `srcImage`
 - `VUID-VkCopyImageInfo2-aspect-06665`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `dstImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `dstImage`
-- `VUID-VkImageCopy2-extent-06668`: `extent.width` must not be 0
-- `VUID-VkImageCopy2-extent-06669`: `extent.height` must not be 0
-- `VUID-VkImageCopy2-extent-06670`: `extent.depth` must not be 0
 - `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
 
 # Valid usage
 
@@ -511,7 +503,7 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
 
 # Safety
 
-The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 32 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
@@ -521,9 +513,6 @@ The caller upholds these 36 rules that no check of this method enforces (its com
 - `VUID-VkBufferImageCopy2-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
 - `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
 - `VUID-VkBufferImageCopy2-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
-- `VUID-VkBufferImageCopy2-imageExtent-06659`: `imageExtent.width` must not be 0
-- `VUID-VkBufferImageCopy2-imageExtent-06660`: `imageExtent.height` must not be 0
-- `VUID-VkBufferImageCopy2-imageExtent-06661`: `imageExtent.depth` must not be 0
 - `VUID-VkCopyImageToBufferInfo2-pRegions-00182`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `srcImage`
 - `VUID-VkCopyImageToBufferInfo2-pRegions-00184`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00188`: `srcImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
@@ -548,7 +537,6 @@ The caller upholds these 36 rules that no check of this method enforces (its com
 - `VUID-VkCopyImageToBufferInfo2-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
 - `VUID-VkCopyImageToBufferInfo2-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
 - `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
 
 # Valid usage
 
@@ -621,9 +609,8 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdResetEvent2-synchronization2-03829`: The `synchronization2` feature must be enabled
 - `VUID-vkCmdResetEvent2-event-03831`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent2-event-03832`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent2-commandBuffer-03833`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
@@ -643,7 +630,10 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 13: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_reset_event2(
         &mut self,
@@ -664,7 +654,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_reset_event2_unchecked(
         &mut self,
@@ -680,7 +670,7 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
 
 # Safety
 
-The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdResolveImage2-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdResolveImage2-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -688,7 +678,6 @@ The caller upholds these 22 rules that no check of this method enforces (its com
 - `VUID-VkImageResolve2-aspectMask-00266`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
 - `VUID-VkImageResolve2-layerCount-00267`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceLayers-layerCount-01700`: `layerCount` must be greater than 0
 - `VUID-VkResolveImageInfo2-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkResolveImageInfo2-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkResolveImageInfo2-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
@@ -769,9 +758,8 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
 
 # Safety
 
-The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdSetEvent2-synchronization2-03824`: The `synchronization2` feature must be enabled
 - `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
 - `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
 - `VUID-vkCmdSetEvent2-dstStageMask-03828`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
@@ -820,7 +808,10 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 4: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_set_event2<'a>(
         &mut self,
@@ -841,7 +832,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_set_event2_unchecked<'a>(
         &mut self,
@@ -1015,14 +1006,13 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
 
 # Safety
 
-The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` that expresses a dependency from the current subpass to itself, with synchronization scopes and access scopes that are all supersets of the scopes defined in this command
 - `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
 - `VUID-vkCmdPipelineBarrier2-image-04073`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `image` member of any image memory barrier included in this command must be an attachment used in the current subpass both as an input attachment, and as either a color or depth/stencil attachment
 - `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `oldLayout` and `newLayout` members of any image memory barrier included in this command must be equal
 - `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any image memory barrier included in this command must be equal
-- `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: The `synchronization2` feature must be enabled
 - `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
 - `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
 - `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: If fname:vkCmdPipelineBarrier2 is called outside of a render pass instance, `VK_DEPENDENCY_VIEW_LOCAL_BIT` must not be included in the dependency flags
@@ -1068,7 +1058,10 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 9: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2<'a>(
         &mut self,
@@ -1088,7 +1081,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
         &mut self,
@@ -1669,7 +1662,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
 - `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
@@ -1679,8 +1672,6 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 - `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
 - `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
 - `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-minDepth-02540`: `minDepth` must be between `0.0` and `1.0`, inclusive
-- `VUID-VkViewport-maxDepth-02541`: `maxDepth` must be between `0.0` and `1.0`, inclusive
 
 # Valid usage
 
@@ -1731,9 +1722,8 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
 
 # Safety
 
-The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdWaitEvents2-synchronization2-03836`: The `synchronization2` feature must be enabled
 - `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
 - `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
 - `VUID-vkCmdWaitEvents2-pEvents-03839`: For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
@@ -1787,7 +1777,10 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 9: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_wait_events2<'a>(
         &mut self,
@@ -1815,7 +1808,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_wait_events2_unchecked<'a>(
         &mut self,
@@ -1861,9 +1854,8 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
 
 # Safety
 
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: The `synchronization2` feature must be enabled
 - `VUID-vkCmdWriteTimestamp2-stage-03859`: `stage` must only include a single pipeline stage
 - `VUID-vkCmdWriteTimestamp2-stage-03860`: `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
 - `VUID-vkCmdWriteTimestamp2-queryPool-03861`: `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
@@ -1886,8 +1878,8 @@ The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khro
 
 Left to the caller (listed one by one in the crate's `validation.json`): 21.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 19: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 18: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_write_timestamp2(
         &mut self,
@@ -1909,7 +1901,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 21.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_write_timestamp2_unchecked(
         &mut self,

@@ -242,11 +242,12 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-flags-01887`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferCreateInfo-flags-06549`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 24.
+Left to the caller (listed one by one in the crate's `validation.json`): 23.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 21: explicit rule; the wrappers do not check it*/
+- 20: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -1727,8 +1728,8 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 87.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 85: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 84: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {
@@ -2681,13 +2682,14 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
 The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkQueryPoolCreateInfo-queryType-00791`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkQueryPoolCreateInfo-queryCount-02763`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkQueryPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueryPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkQueryPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {
@@ -2866,8 +2868,8 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 
 Left to the caller (listed one by one in the crate's `validation.json`): 38.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 37: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 36: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {
@@ -3010,7 +3012,10 @@ The rules are on [`VkShaderModuleCreateInfo`'s reference page](https://registry.
 - `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkShaderModuleCreateInfo-pCode-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 12: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ShaderModuleCreateInfo<'a> {
@@ -3504,7 +3509,10 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 39 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 39.
+
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 37: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {

@@ -389,7 +389,10 @@ The rules are on [`VkDeviceGroupCommandBufferBeginInfo`'s reference page](https:
 
 - `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupCommandBufferBeginInfo<'a> {
@@ -446,7 +449,10 @@ The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://r
 - `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8.
+
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
+- 7: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {

@@ -1842,7 +1842,7 @@ The rules are on [`VkSemaphoreTypeCreateInfo`'s reference page](https://registry
 - `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {

@@ -145,7 +145,10 @@ The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khrono
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
+
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -993,7 +996,10 @@ The rules are on [`VkImageCopy2`'s reference page](https://registry.khronos.org/
 - `VUID-VkImageCopy2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCopy2<'a> {
@@ -2372,7 +2378,7 @@ The rules are on [`VkWriteDescriptorSetInlineUniformBlock`'s reference page](htt
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSetInlineUniformBlock<'a> {

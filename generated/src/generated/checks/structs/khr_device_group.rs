@@ -34,6 +34,16 @@ pub fn check_acquire_next_image_info_khr(
             ),
         );
     }
+    if v.device_mask == 0 {
+        return Err(
+            fail(
+                "VUID-VkAcquireNextImageInfoKHR-deviceMask-01291",
+                format!(
+                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkDeviceGroupPresentInfoKHR` that are checked at run time.

@@ -482,12 +482,58 @@ pub fn check_buffer_create_info(
             ),
         );
     }
+    if (v.flags.as_raw() & 16) != 0
+        && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
+    {
+        return Err(
+            fail(
+                "VUID-VkBufferCreateInfo-flags-06549",
+                format!(
+                    "If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
     crate::checks::chain(v.p_next, s, Some("VUID-VkBufferCreateInfo-sType-unique"))?;
     Ok(())
 }
 ///The rules of `VkBufferImageCopy` that are checked at run time.
 pub fn check_buffer_image_copy(v: &vk::BufferImageCopy, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
+    if v.image_extent.width == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy-imageExtent-06659",
+                format!(
+                    "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
+                    .image_extent.width
+                ),
+            ),
+        );
+    }
+    if v.image_extent.height == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy-imageExtent-06660",
+                format!(
+                    "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
+                    .image_extent.height
+                ),
+            ),
+        );
+    }
+    if v.image_extent.depth == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy-imageExtent-06661",
+                format!(
+                    "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
+                    .image_extent.depth
+                ),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     Ok(())
 }
@@ -644,6 +690,26 @@ pub fn check_clear_attachment(v: &vk::ClearAttachment, s: &Scope<'_>) -> Result<
                 format!(
                     "`aspectMask` must not include `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
                     v.aspect_mask
+                ),
+            ),
+        );
+    }
+    Ok(())
+}
+///The rules of `VkClearDepthStencilValue` that are checked at run time.
+pub fn check_clear_depth_stencil_value(
+    v: &vk::ClearDepthStencilValue,
+    _s: &Scope<'_>,
+) -> Result<()> {
+    if (v.depth as f64).is_nan() || v.depth < 0.0 || (v.depth as f64).is_nan()
+        || v.depth > 1.0
+    {
+        return Err(
+            fail(
+                "VUID-VkClearDepthStencilValue-depth-02506",
+                format!(
+                    "`depth` must be between `0.0` and `1.0`, inclusive (`depth` = {:?})",
+                    v.depth
                 ),
             ),
         );
@@ -1424,6 +1490,39 @@ pub fn check_image_blit(v: &vk::ImageBlit, s: &Scope<'_>) -> Result<()> {
 pub fn check_image_copy(v: &vk::ImageCopy, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
+    if v.extent.width == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy-extent-06668",
+                format!(
+                    "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent
+                    .width
+                ),
+            ),
+        );
+    }
+    if v.extent.height == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy-extent-06669",
+                format!(
+                    "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent
+                    .height
+                ),
+            ),
+        );
+    }
+    if v.extent.depth == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy-extent-06670",
+                format!(
+                    "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent
+                    .depth
+                ),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     Ok(())
@@ -1939,6 +2038,17 @@ pub fn check_image_subresource_layers(
             ),
         );
     }
+    if v.layer_count == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageSubresourceLayers-layerCount-01700",
+                format!(
+                    "`layerCount` must be greater than 0 (`layerCount` = {:?})", v
+                    .layer_count
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkImageSubresourceRange` that are checked at run time.
@@ -2072,6 +2182,19 @@ pub fn check_image_view_create_info(
             ),
         );
     }
+    if matches!(v.view_type.as_raw(), 6) && v.subresource_range.layer_count != u32::MAX
+        && v.subresource_range.layer_count % 6 != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkImageViewCreateInfo-viewType-02961",
+                format!(
+                    "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be a multiple of `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
+                    v.view_type, v.subresource_range.layer_count
+                ),
+            ),
+        );
+    }
     crate::checks::check_component_mapping(&v.components, s)?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     crate::checks::chain(v.p_next, s, Some("VUID-VkImageViewCreateInfo-sType-unique"))?;
@@ -2158,6 +2281,14 @@ pub fn check_pipeline_cache_header_version_one(
         s,
         "VUID-VkPipelineCacheHeaderVersionOne-headerVersion-parameter",
     )?;
+    if v.header_size != 32 {
+        return Err(
+            fail(
+                "VUID-VkPipelineCacheHeaderVersionOne-headerSize-04967",
+                format!("`headerSize` must be 32 (`headerSize` = {:?})", v.header_size),
+            ),
+        );
+    }
     if !matches!(v.header_version.as_raw(), 1) {
         return Err(
             fail(
@@ -2702,11 +2833,27 @@ pub fn check_push_constant_range(
             ),
         );
     }
+    if v.offset % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkPushConstantRange-offset-00295",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", v.offset),
+            ),
+        );
+    }
     if v.size == 0 {
         return Err(
             fail(
                 "VUID-VkPushConstantRange-size-00296",
                 format!("`size` must be greater than `0` (`size` = {:?})", v.size),
+            ),
+        );
+    }
+    if v.size % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkPushConstantRange-size-00297",
+                format!("`size` must be a multiple of `4` (`size` = {:?})", v.size),
             ),
         );
     }
@@ -2739,6 +2886,17 @@ pub fn check_query_pool_create_info(
                 format!(
                     "If the `pipelineStatisticsQuery` feature is not enabled, `queryType` must not be `VK_QUERY_TYPE_PIPELINE_STATISTICS` (`queryType` = {:?})",
                     v.query_type
+                ),
+            ),
+        );
+    }
+    if v.query_count == 0 {
+        return Err(
+            fail(
+                "VUID-VkQueryPoolCreateInfo-queryCount-02763",
+                format!(
+                    "`queryCount` must be greater than 0 (`queryCount` = {:?})", v
+                    .query_count
                 ),
             ),
         );
@@ -2869,6 +3027,25 @@ pub fn check_sampler_create_info(
             ),
         );
     }
+    if matches!(v.anisotropy_enable, 1)
+        && ((v.max_anisotropy as f64).is_nan() || v.max_anisotropy < 1.0
+            || (v.max_anisotropy as f64).is_nan()
+            || s
+                .limits()
+                .is_some_and(|l| {
+                    (v.max_anisotropy as f64) > (l.max_sampler_anisotropy as f64)
+                }))
+    {
+        return Err(
+            fail(
+                "VUID-VkSamplerCreateInfo-anisotropyEnable-01071",
+                format!(
+                    "If `anisotropyEnable` is `VK_TRUE`, `maxAnisotropy` must be between `1.0` and `VkPhysicalDeviceLimits::maxSamplerAnisotropy`, inclusive (`anisotropyEnable` = {:?}, `maxAnisotropy` = {:?})",
+                    v.anisotropy_enable, v.max_anisotropy
+                ),
+            ),
+        );
+    }
     if matches!(v.unnormalized_coordinates, 1) && !matches!(v.mipmap_mode.as_raw(), 0) {
         return Err(
             fail(
@@ -2931,6 +3108,16 @@ pub fn check_shader_module_create_info(
             fail(
                 "VUID-VkShaderModuleCreateInfo-flags-zerobitmask",
                 "`flags` is not 0".into(),
+            ),
+        );
+    }
+    if v.code_size == 0 {
+        return Err(
+            fail(
+                "VUID-VkShaderModuleCreateInfo-codeSize-01085",
+                format!(
+                    "`codeSize` must be greater than 0 (`codeSize` = {:?})", v.code_size
+                ),
             ),
         );
     }
@@ -3573,6 +3760,32 @@ pub fn check_viewport(v: &vk::Viewport, _s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
+    if (v.min_depth as f64).is_nan() || v.min_depth < 0.0
+        || (v.min_depth as f64).is_nan() || v.min_depth > 1.0
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-minDepth-02540",
+                format!(
+                    "`minDepth` must be between `0.0` and `1.0`, inclusive (`minDepth` = {:?})",
+                    v.min_depth
+                ),
+            ),
+        );
+    }
+    if (v.max_depth as f64).is_nan() || v.max_depth < 0.0
+        || (v.max_depth as f64).is_nan() || v.max_depth > 1.0
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-maxDepth-02541",
+                format!(
+                    "`maxDepth` must be between `0.0` and `1.0`, inclusive (`maxDepth` = {:?})",
+                    v.max_depth
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkWriteDescriptorSet` that are checked at run time.
@@ -3613,6 +3826,28 @@ pub fn check_write_descriptor_set(
                 ),
             );
         }
+    }
+    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.dst_array_element % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkWriteDescriptorSet-descriptorType-02219",
+                format!(
+                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4` (`descriptorType` = {:?}, `dstArrayElement` = {:?})",
+                    v.descriptor_type, v.dst_array_element
+                ),
+            ),
+        );
+    }
+    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkWriteDescriptorSet-descriptorType-02220",
+                format!(
+                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
+                    v.descriptor_type, v.descriptor_count
+                ),
+            ),
+        );
     }
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_image_info, v.descriptor_count) } {

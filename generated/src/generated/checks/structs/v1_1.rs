@@ -143,6 +143,40 @@ pub fn check_descriptor_update_template_entry(
     )?;
     Ok(())
 }
+///The rules of `VkDeviceGroupCommandBufferBeginInfo` that are checked at run time.
+pub fn check_device_group_command_buffer_begin_info(
+    v: &vk::DeviceGroupCommandBufferBeginInfo<'_>,
+    _s: &Scope<'_>,
+) -> Result<()> {
+    if v.device_mask == 0 {
+        return Err(
+            fail(
+                "VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107",
+                format!(
+                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
+                ),
+            ),
+        );
+    }
+    Ok(())
+}
+///The rules of `VkDeviceGroupRenderPassBeginInfo` that are checked at run time.
+pub fn check_device_group_render_pass_begin_info(
+    v: &vk::DeviceGroupRenderPassBeginInfo<'_>,
+    _s: &Scope<'_>,
+) -> Result<()> {
+    if v.device_mask == 0 {
+        return Err(
+            fail(
+                "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906",
+                format!(
+                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
+                ),
+            ),
+        );
+    }
+    Ok(())
+}
 ///The rules of `VkDeviceQueueInfo2` that are checked at run time.
 pub fn check_device_queue_info2(
     v: &vk::DeviceQueueInfo2<'_>,

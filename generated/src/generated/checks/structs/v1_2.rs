@@ -546,6 +546,29 @@ pub fn check_semaphore_type_create_info(
         s,
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter",
     )?;
+    if !s.feature(|f| f.v12.timeline_semaphore) && matches!(v.semaphore_type.as_raw(), 1)
+    {
+        return Err(
+            fail(
+                "VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252",
+                format!(
+                    "If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE` (`semaphoreType` = {:?})",
+                    v.semaphore_type
+                ),
+            ),
+        );
+    }
+    if matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0 {
+        return Err(
+            fail(
+                "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279",
+                format!(
+                    "If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero (`semaphoreType` = {:?}, `initialValue` = {:?})",
+                    v.semaphore_type, v.initial_value
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkSemaphoreWaitInfo` that are checked at run time.

@@ -515,6 +515,39 @@ pub fn check_buffer_image_copy2(
     s: &Scope<'_>,
 ) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
+    if v.image_extent.width == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy2-imageExtent-06659",
+                format!(
+                    "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
+                    .image_extent.width
+                ),
+            ),
+        );
+    }
+    if v.image_extent.height == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy2-imageExtent-06660",
+                format!(
+                    "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
+                    .image_extent.height
+                ),
+            ),
+        );
+    }
+    if v.image_extent.depth == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferImageCopy2-imageExtent-06661",
+                format!(
+                    "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
+                    .image_extent.depth
+                ),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     crate::checks::chain(v.p_next, s, Some("VUID-VkBufferImageCopy2-sType-unique"))?;
     Ok(())
@@ -2486,6 +2519,39 @@ pub fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
 pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
+    if v.extent.width == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy2-extent-06668",
+                format!(
+                    "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent
+                    .width
+                ),
+            ),
+        );
+    }
+    if v.extent.height == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy2-extent-06669",
+                format!(
+                    "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent
+                    .height
+                ),
+            ),
+        );
+    }
+    if v.extent.depth == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCopy2-extent-06670",
+                format!(
+                    "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent
+                    .depth
+                ),
+            ),
+        );
+    }
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     Ok(())
@@ -4333,6 +4399,17 @@ pub fn check_write_descriptor_set_inline_uniform_block(
             fail(
                 "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength",
                 "`dataSize` is 0".into(),
+            ),
+        );
+    }
+    if v.data_size % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222",
+                format!(
+                    "`dataSize` must be an integer multiple of `4` (`dataSize` = {:?})",
+                    v.data_size
+                ),
             ),
         );
     }
