@@ -113,7 +113,8 @@ fn objects_of_another_device_are_refused() {
         "VUID-vkGetBufferMemoryRequirements-buffer-parent"
     );
     // Two handles that must share a device: a queue of one and a fence of the other.
-    let foreign_fence = unsafe { other.create_fence(&tuff::FenceCreateInfo::new()) }
+    let foreign_fence = other
+        .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence of the other device");
     assert_eq!(
         vuid(unsafe { s.queue.queue_submit(&[], &foreign_fence) }),

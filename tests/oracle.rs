@@ -414,6 +414,8 @@ fn image_memory_barrier2(
 /// Creates with the safe method and, under the layer, with its `_unchecked` twin.
 macro_rules! create {
     ($s:expr, $method:ident, $unchecked:ident, $($arg:expr),+) => {{
+        // Some of the methods are safe, others `unsafe` (see the module docs).
+        #[allow(unused_unsafe)]
         let safe = unsafe { $s.device.$method($($arg),+) }.map(drop);
         // SAFETY: as in `buffer_create_info`.
         let layer = under_layer($s, || {
@@ -1070,14 +1072,13 @@ fn cmd_pipeline_barrier(
 }
 
 fn timestamps(s: &Setup) -> tuff::QueryPool {
-    unsafe {
-        s.device.create_query_pool(
+    s.device
+        .create_query_pool(
             &tuff::QueryPoolCreateInfo::new()
                 .query_type(vk::QueryType::TIMESTAMP)
                 .query_count(1),
         )
-    }
-    .expect("query pool")
+        .expect("query pool")
 }
 
 fn cmd_write_timestamp(
@@ -1705,11 +1706,13 @@ fn cmd_draw_indexed_indirect(
     draw(
         s,
         |r| {
-            unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
             unsafe { r.cmd_draw_indexed_indirect(&buffer, a.offset, a.draw_count, 20) }
         },
         |r| {
-            unsafe { r.cmd_bind_index_buffer(&indices, 0, index) }.expect("index buffer");
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             drop(unsafe {
@@ -2122,7 +2125,9 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     work.record(rec, &target, 8, Some(&readback.0))
         .end()
         .expect("end");
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     unsafe {
         s.queue

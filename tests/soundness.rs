@@ -45,7 +45,9 @@ fn assert_layer_reports(s: &Setup, vuid: &str) {
 }
 
 fn fence(s: &Setup) -> tuff::Fence {
-    unsafe { s.device.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence")
+    s.device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence")
 }
 
 fn event(s: &Setup) -> tuff::Event {
@@ -55,7 +57,9 @@ fn event(s: &Setup) -> tuff::Event {
 }
 
 fn semaphore(s: &Setup) -> tuff::Semaphore {
-    unsafe { s.device.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore")
+    s.device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore")
 }
 
 fn transfer_buffer(s: &Setup) -> (tuff::Buffer, tuff::DeviceMemory) {
@@ -271,11 +275,10 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
 fn a_signalled_fence_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let signalled = unsafe {
-        s.device
-            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-    }
-    .expect("fence");
+    let signalled = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+        .expect("fence");
     assert_eq!(
         vuid(submit(&s, &[], &signalled)),
         "VUID-vkQueueSubmit-fence-00063"
@@ -291,20 +294,18 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
     unsafe { s.queue.queue_submit_unchecked(&[], &signalled) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00063");
     s.queue.queue_wait_idle().expect("idle");
-    let signalled = unsafe {
-        s.device
-            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-    }
-    .expect("fence");
+    let signalled = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+        .expect("fence");
     // SAFETY: as above.
     unsafe { s.queue.queue_submit2_unchecked(&[], &signalled) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04894");
     s.queue.queue_wait_idle().expect("idle");
-    let signalled = unsafe {
-        s.device
-            .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
-    }
-    .expect("fence");
+    let signalled = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+        .expect("fence");
     assert_eq!(
         vuid(unsafe { s.queue.queue_bind_sparse(&[], &signalled) }),
         "VUID-vkQueueBindSparse-fence-01113"
@@ -1065,7 +1066,7 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
 fn two_wrappers_of_one_queue_never_submit_at_once() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let other = unsafe { s.device.get_device_queue(s.family, 0) };
+    let other = s.device.get_device_queue(s.family, 0).expect("queue");
     let (buffer, _memory) = transfer_buffer(&s);
     std::thread::scope(|scope| {
         for queue in [&s.queue, &other] {
@@ -1231,11 +1232,10 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
         .initial_value(0);
-    let timeline = unsafe {
-        s.device
-            .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-    }
-    .expect("timeline semaphore");
+    let timeline = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore");
 
     assert_eq!(
         vuid(s.device.get_semaphore_counter_value(&binary)),
@@ -1498,11 +1498,10 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
         .initial_value(0);
-    let timeline = unsafe {
-        s.device
-            .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-    }
-    .expect("timeline semaphore");
+    let timeline = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore");
     let before = s.device.live_object_count();
     {
         let (buffer, _memory) = transfer_buffer(&s);
@@ -1869,7 +1868,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                         rec.cmd_bind_index_buffer_unchecked(&buf, offset, vk::IndexType::UINT32)
                     }
                 } else {
-                    unsafe { rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32) }
+                    rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32)
                 }
             }),
         )
@@ -1938,7 +1937,8 @@ fn buffer_commands_stay_inside_their_buffers() {
     unsafe { rec.cmd_fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
     unsafe { rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
     unsafe { rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252]) }.expect("vertex");
-    unsafe { rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32) }.expect("index");
+    rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
+        .expect("index");
     rec.end().expect("end");
     assert_silent(&s.messages);
     let done = fence(&s);
@@ -1972,13 +1972,11 @@ fn query_results_stay_inside_data_and_pool() {
     let s = setup(true);
     let d = &s.device;
     let pool = |ty| {
-        unsafe {
-            d.create_query_pool(
-                &tuff::QueryPoolCreateInfo::new()
-                    .query_type(ty)
-                    .query_count(4),
-            )
-        }
+        d.create_query_pool(
+            &tuff::QueryPoolCreateInfo::new()
+                .query_type(ty)
+                .query_count(4),
+        )
         .expect("query pool")
     };
     let occlusion = pool(vk::QueryType::OCCLUSION);
@@ -2261,13 +2259,14 @@ fn private_data_names_live_objects_only() {
         assert_eq!(vuid(d.set_private_data(ty, handle, &slot, 7)), expected);
     }
     assert!(matches!(
-        unsafe { d.get_private_data(vk::ObjectType::BUFFER, dropped, &slot) },
+        d.get_private_data(vk::ObjectType::BUFFER, dropped, &slot),
         Err(tuff::Error::Misuse(_))
     ));
     d.set_private_data(vk::ObjectType::BUFFER, live, &slot, 7)
         .expect("set");
     assert_eq!(
-        unsafe { d.get_private_data(vk::ObjectType::BUFFER, live, &slot) }.expect("get"),
+        d.get_private_data(vk::ObjectType::BUFFER, live, &slot)
+            .expect("get"),
         7
     );
     let device = vk::Handle::as_raw(d.raw());
@@ -3290,7 +3289,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(draw(&mut rec, false)), expected);
             }
         }
-        unsafe { rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32) }
+        rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32)
             .expect("index buffer");
         // 65 indices of 4 bytes from a buffer of 256.
         let past = "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825";
@@ -3528,7 +3527,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     let b = buffer();
     let b_reqs = d.get_buffer_memory_requirements(&b).expect("requirements");
     let i = image();
-    let i_reqs = unsafe { d.get_image_memory_requirements(&i) }.expect("requirements");
+    let i_reqs = d.get_image_memory_requirements(&i).expect("requirements");
     // (offset, memory size, the rule it breaks), for buffers then images.
     let buffer_cases = [
         (b_reqs.size * 2, b_reqs.size * 2, "memoryOffset-01031"),

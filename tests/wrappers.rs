@@ -126,19 +126,19 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         .get_pipeline_cache_data(&cache)
         .expect("pipeline cache data");
     assert!(!cache_data.is_empty(), "a pipeline cache has a header");
-    let semaphore =
-        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
+    let semaphore = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore");
     let event = d
         .create_event(&tuff::EventCreateInfo::new())
         .expect("event");
-    let query_pool = unsafe {
-        d.create_query_pool(
+    let query_pool = d
+        .create_query_pool(
             &tuff::QueryPoolCreateInfo::new()
                 .query_type(vk::QueryType::OCCLUSION)
                 .query_count(2),
         )
-    }
-    .expect("query pool");
+        .expect("query pool");
     let slot = d
         .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
         .expect("private data slot");
@@ -153,7 +153,9 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .command_buffer_count(2),
         )
         .expect("command buffers");
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     let mut cbs = cbs;
     let mut rec = cbs[0]
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -279,7 +281,9 @@ fn resources_dropped_while_their_submission_is_in_flight() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     for round in 0..20u32 {
         let (buffer, memory) = buffer_with_memory(&s, 1 << 20);
         let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -338,10 +342,12 @@ fn present_one_frame(
         .get_swapchain_images_khr(swapchain)
         .expect("swapchain images");
     assert!(!images.is_empty());
-    let acquired =
-        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
-    let rendered =
-        unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
+    let acquired = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore");
+    let rendered = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+        .expect("semaphore");
     let (index, r) =
         unsafe { d.acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None) }
             .expect("acquire");
@@ -419,7 +425,9 @@ fn present_one_frame(
         )
     };
     rec.end().expect("end");
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     let waits = tuff::HandleSlice::new(&[&acquired]);
     let signals = tuff::HandleSlice::new(&[&rendered]);
     let cbs = tuff::HandleSlice::new(&[&cb]);
@@ -480,21 +488,18 @@ fn swapchain_info<'a>(
     s: &Setup,
     surface: &'a tuff::SurfaceKHR,
 ) -> tuff::SwapchainCreateInfoKHR<'a> {
-    let caps = unsafe {
-        s.physical
-            .get_physical_device_surface_capabilities_khr(surface)
-    }
-    .expect("surface capabilities");
-    let formats = unsafe {
-        s.physical
-            .get_physical_device_surface_formats_khr(Some(surface))
-    }
-    .expect("surface formats");
-    let modes = unsafe {
-        s.physical
-            .get_physical_device_surface_present_modes_khr(Some(surface))
-    }
-    .expect("present modes");
+    let caps = s
+        .physical
+        .get_physical_device_surface_capabilities_khr(surface)
+        .expect("surface capabilities");
+    let formats = s
+        .physical
+        .get_physical_device_surface_formats_khr(Some(surface))
+        .expect("surface formats");
+    let modes = s
+        .physical
+        .get_physical_device_surface_present_modes_khr(Some(surface))
+        .expect("present modes");
     assert!(
         modes.contains(&vk::PresentModeKHR::FIFO),
         "FIFO is always supported"
@@ -531,11 +536,10 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
         // `window` drops after every object made from the surface: the bag below
         // empties first.
         let surface = xlib_surface(&s, &window);
-        let supported = unsafe {
-            s.physical
-                .get_physical_device_surface_support_khr(s.family, &surface)
-        }
-        .expect("surface support");
+        let supported = s
+            .physical
+            .get_physical_device_surface_support_khr(s.family, &surface)
+            .expect("surface support");
         assert_eq!(
             supported,
             vk::TRUE,
@@ -623,7 +627,9 @@ fn pipelines_draw_and_dispatch() {
     work.record(rec, &target, 8, Some(&readback.0))
         .end()
         .expect("end");
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     unsafe {
         s.queue
@@ -696,7 +702,9 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
     let kept = fill(&mut rec);
     rec.end().expect("end");
     assert!(cb.is_executable());
-    let fence = unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     unsafe {
         s.queue
@@ -910,7 +918,8 @@ fn missing_layers_extensions_and_features_are_named() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let bare = unsafe { entry.create_instance(&tuff::InstanceCreateInfo::new()) }
+    let bare = entry
+        .create_instance(&tuff::InstanceCreateInfo::new())
         .expect("instance without layers");
     let physical = bare
         .enumerate_physical_devices()
@@ -963,8 +972,8 @@ fn extensions_outside_the_emitted_api_are_refused() {
         other => panic!("expected ExtensionNotEmitted, got {other}"),
     };
     // Present (the layer provides it) but not emitted.
-    let e = unsafe {
-        entry.create_instance(
+    let e = entry
+        .create_instance(
             &tuff::InstanceCreateInfo::new()
                 .enabled_layer_names(&[c"VK_LAYER_KHRONOS_validation".into()])
                 .enabled_extension_names(&[
@@ -972,9 +981,8 @@ fn extensions_outside_the_emitted_api_are_refused() {
                     c"VK_EXT_validation_features".into(),
                 ]),
         )
-    }
-    .err()
-    .expect("an instance with an unemitted extension");
+        .err()
+        .expect("an instance with an unemitted extension");
     assert_eq!(refused(e), "VK_EXT_validation_features");
     let priorities = [1.0f32];
     let queues = [tuff::DeviceQueueCreateInfo::new()
@@ -1087,8 +1095,9 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
         // A chain of semaphores, each dropped once the next submission waits on it,
         // while that submission may still run: the frame's fence keeps it (the layer
         // would report a semaphore destroyed in use).
-        let signal =
-            unsafe { d.create_semaphore(&tuff::SemaphoreCreateInfo::new()) }.expect("semaphore");
+        let signal = d
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            .expect("semaphore");
         let waits: Vec<_> = previous
             .iter()
             .map(|p| (p, vk::PipelineStageFlags::TRANSFER))

@@ -77,9 +77,7 @@ impl Gpu {
         if validation {
             info = info.enabled_layer_names(&layers).push_next(&mut chained);
         }
-        // SAFETY: the enabled extensions include every one they require, and the API version
-        // is at least 1.0.
-        let instance = unsafe { entry.create_instance(&info) }.with_context(|| {
+        let instance = entry.create_instance(&info).with_context(|| {
             let hint = if validation {
                 " (the layer: apt-get install vulkan-validationlayers)"
             } else {
@@ -154,8 +152,7 @@ impl Gpu {
         })?;
         Ok(Gpu {
             allocator: device.gpu_allocator()?,
-            // SAFETY: the device was created with one queue of this family, with no flags.
-            queue: unsafe { device.get_device_queue(family, 0) },
+            queue: device.get_device_queue(family, 0)?,
             family,
             device,
             physical,

@@ -136,19 +136,16 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
                     .window(handle.window),
             )
         }?;
-        // SAFETY: the family index is below the physical device's queue family count.
-        if unsafe {
-            gpu.physical
-                .get_physical_device_surface_support_khr(gpu.family, &surface)
-        }? == vk::FALSE
+        if gpu
+            .physical
+            .get_physical_device_surface_support_khr(gpu.family, &surface)?
+            == vk::FALSE
         {
             bail!("\"{}\" cannot present to this window", gpu.name);
         }
-        // SAFETY: the surface belongs to this instance and the physical device supports it.
-        let formats = unsafe {
-            gpu.physical
-                .get_physical_device_surface_formats_khr(Some(&surface))
-        }?;
+        let formats = gpu
+            .physical
+            .get_physical_device_surface_formats_khr(Some(&surface))?;
         // Unorm, as headless, so a window shows the same colors as the PNG.
         let format = formats
             .iter()
@@ -171,8 +168,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             swapchain: None,
             frames: gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?,
             acquired: (0..FRAMES_IN_FLIGHT)
-                // SAFETY: a binary semaphore with no chain.
-                .map(|_| unsafe {
+                .map(|_| {
                     gpu.device
                         .create_semaphore(&tuff::SemaphoreCreateInfo::new())
                 })
@@ -242,11 +238,9 @@ impl<S: Scene> Live<S> {
             return Ok(Some(framebuffers.extent));
         }
         self.resized = false;
-        // SAFETY: the surface belongs to this instance and the physical device supports it.
-        let caps = unsafe {
-            gpu.physical
-                .get_physical_device_surface_capabilities_khr(&self.surface)
-        }?;
+        let caps = gpu
+            .physical
+            .get_physical_device_surface_capabilities_khr(&self.surface)?;
         let size = self.window.inner_size();
         let Some(extent) = swapchain_extent(&caps, size.width, size.height) else {
             // Looked at again every frame until the window has an area.
@@ -297,8 +291,7 @@ impl<S: Scene> Live<S> {
         self.rendered = self
             .images
             .iter()
-            // SAFETY: a binary semaphore with no chain.
-            .map(|_| unsafe {
+            .map(|_| {
                 gpu.device
                     .create_semaphore(&tuff::SemaphoreCreateInfo::new())
             })

@@ -202,7 +202,7 @@ impl Device {
             self.fns()
                 .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
         }?;
-        self.live().buffer_bound(buffer.raw());
+        self.live().buffer_bound(buffer.raw(), allocation.offset());
         let memory = BoundMemory::new(allocation);
         buffer.retain_memory(memory.cell.clone());
         Ok(Bound {
@@ -267,8 +267,7 @@ impl Device {
         refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
         // SAFETY: the caller upholds the rules `create_image` lists.
         let image = unsafe { self.create_image(info) }?;
-        // SAFETY: the image is not disjoint (refused above).
-        let requirements = unsafe { self.get_image_memory_requirements(&image) }?;
+        let requirements = self.get_image_memory_requirements(&image)?;
         let mut request = AllocationRequest::new(requirements, location);
         request.linear = raw.tiling == vk::ImageTiling::LINEAR;
         let allocation = allocator.allocate(&request).map_err(alloc_error)?;

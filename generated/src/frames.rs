@@ -79,8 +79,7 @@ impl Device {
         let signalled = FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED);
         let frames = buffers
             .into_iter()
-            // SAFETY: no export info is chained, so no handle type needs support.
-            .map(|cb| Ok((cb, unsafe { self.create_fence(&signalled) }?)))
+            .map(|cb| Ok((cb, self.create_fence(&signalled)?)))
             .collect::<Result<Vec<_>>>()?;
         Ok(FramesInFlight { frames, next: 0 })
     }

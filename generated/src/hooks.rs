@@ -641,9 +641,14 @@ pub(crate) unsafe fn update_descriptor_set_with_template_done(
 }
 
 /// The buffer keeps its memory alive; commands that use it may now read it.
-pub(crate) fn bind_buffer_memory_done(device: &Device, buffer: &Buffer, memory: &DeviceMemory) {
+pub(crate) fn bind_buffer_memory_done(
+    device: &Device,
+    buffer: &Buffer,
+    memory: &DeviceMemory,
+    memory_offset: vk::DeviceSize,
+) {
     buffer.retain_memory(memory.retained());
-    device.live().buffer_bound(buffer.raw());
+    device.live().buffer_bound(buffer.raw(), memory_offset);
 }
 
 /// Each buffer keeps its memory alive (the safe infos name both by wrappers); commands
@@ -651,7 +656,7 @@ pub(crate) fn bind_buffer_memory_done(device: &Device, buffer: &Buffer, memory: 
 pub(crate) fn bind_buffer_memory2_done(device: &Device, bind_infos: &[BindBufferMemoryInfo<'_>]) {
     for info in bind_infos {
         device.live().bound2(info.buffer, info.memory);
-        device.live().buffer_bound(info.buffer);
+        device.live().buffer_bound(info.buffer, info.memory_offset);
     }
 }
 
@@ -742,6 +747,7 @@ pub(crate) fn buffer_created(
             usage: create_info.usage,
             flags: create_info.flags,
             bound: false,
+            memory_offset: 0,
         },
     );
     buffer
@@ -964,6 +970,7 @@ pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
     recorder: &Recorder<'_, S>,
     buffer: impl Into<Option<&'b Buffer>>,
     offset: vk::DeviceSize,
+    index_type: vk::IndexType,
 ) -> Result<()> {
     let Some(buffer) = buffer.into() else {
         return Ok(());
@@ -978,6 +985,25 @@ pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
         ),
         &"buffer",
     )?;
+    // Every allocation starts aligned for any resource of the device, so the
+    // address's alignment is that of the offset in memory plus the offset in the buffer.
+    let size = match index_type {
+        vk::IndexType::UINT16 => 2,
+        vk::IndexType::UINT32 => 4,
+        _ => 1,
+    };
+    if (record.memory_offset.wrapping_add(offset)) % size != 0 {
+        refuse(
+            "VUID-vkCmdBindIndexBuffer-offset-00432",
+            format!(
+                "The sum of `offset` and the address of the range of `VkDeviceMemory` object \
+                 that is backing `buffer`, must be a multiple of the type indicated by \
+                 `indexType` (`offset` = {offset}, offset in memory = {}, `indexType` = \
+                 {index_type:?})",
+                record.memory_offset
+            ),
+        )?;
+    }
     if offset >= record.size {
         refuse(
             "VUID-vkCmdBindIndexBuffer-offset-00431",
@@ -1624,6 +1650,15 @@ pub(crate) fn get_private_data_checks(
     if names_live_object(device, object_type, object_handle) {
         return Ok(());
     }
+    if INSTANCE_LEVEL.contains(&object_type) {
+        return refuse(
+            "VUID-vkGetPrivateData-objectType-04018",
+            format!(
+                "`objectType` must be `VK_OBJECT_TYPE_DEVICE`, or an object type whose parent \
+                 is VkDevice (`objectType` = {object_type:?})"
+            ),
+        );
+    }
     Err(Error::Misuse(
         "objectHandle must be the device or a live object of it of the type given",
     ))
@@ -1666,6 +1701,138 @@ pub(crate) fn create_instance_scope(
 /// relaxes or changes what a struct may hold), and no safe method checks those.
 pub(crate) fn instance_extensions_emitted(create_info: &InstanceCreateInfo<'_>) -> Result<()> {
     extensions_emitted(&create_info.enabled_extensions())
+}
+
+/// An instance names a real API version, enables what its extensions depend on, and
+/// chains a debug messenger only with the extension that defines it.
+pub(crate) fn create_instance_checks(create_info: &InstanceCreateInfo<'_>) -> Result<()> {
+    let version = create_info.api_version();
+    if version != 0 && version < vk::API_VERSION_1_0 {
+        refuse(
+            "VUID-VkApplicationInfo-apiVersion-04010",
+            format!(
+                "If `apiVersion` is not `0`, then it must be greater than or equal to \
+                 VK_API_VERSION_1_0 (`apiVersion` = {version:#x})"
+            ),
+        )?;
+    }
+    let enabled = create_info.enabled_extensions();
+    let has = |name: &str| enabled.iter().any(|e| e.to_bytes() == name.as_bytes());
+    for ext in &enabled {
+        let Some((name, alternatives)) = crate::api_info::EXTENSION_REQUIRES
+            .iter()
+            .find(|(n, _)| n.as_bytes() == ext.to_bytes())
+        else {
+            continue;
+        };
+        let holds = |dep: &&str| match dep.strip_prefix("VK_VERSION_1_") {
+            Some(minor) => minor
+                .parse::<u32>()
+                .is_ok_and(|m| vk::api_version_minor(version.max(vk::API_VERSION_1_0)) >= m),
+            None => has(dep),
+        };
+        if !alternatives.iter().any(|all| all.iter().all(holds)) {
+            refuse(
+                "VUID-vkCreateInstance-ppEnabledExtensionNames-01388",
+                format!(
+                    "All required extensions for each extension in the \
+                     VkInstanceCreateInfo::`ppEnabledExtensionNames` list must also be present \
+                     in that list (`{name}` needs one of {alternatives:?})"
+                ),
+            )?;
+        }
+    }
+    let mut next = create_info
+        .as_raw()
+        .p_next
+        .cast::<vk::BaseInStructure<'_>>();
+    // SAFETY: the safe struct chains only structs pushed through `push_next`, each a
+    // valid Vulkan struct that starts with sType and pNext.
+    while let Some(node) = unsafe { next.as_ref() } {
+        if node.s_type == vk::StructureType::DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT
+            && !has("VK_EXT_debug_utils")
+        {
+            refuse(
+                "VUID-VkInstanceCreateInfo-pNext-04926",
+                "If the `pNext` chain of `VkInstanceCreateInfo` includes a \
+                 `VkDebugUtilsMessengerCreateInfoEXT` structure, the list of enabled extensions \
+                 in `ppEnabledExtensionNames` must contain VK_EXT_debug_utils"
+                    .into(),
+            )?;
+        }
+        next = node.p_next;
+    }
+    Ok(())
+}
+
+/// A queue is got as the device was created with it: from a family it has queues
+/// of, created without flags (those are got through `get_device_queue2`), at an
+/// index below their count.
+pub(crate) fn get_device_queue_checks(device: &Device, family: u32, index: u32) -> Result<()> {
+    let infos = device.live().queue_infos();
+    if !infos.iter().any(|q| q.0 == family) {
+        refuse(
+            "VUID-vkGetDeviceQueue-queueFamilyIndex-00384",
+            format!("the device was created with no queue of family {family}"),
+        )?;
+    }
+    let Some(&(_, count, _)) = infos.iter().find(|q| q.0 == family && q.2.is_empty()) else {
+        return refuse(
+            "VUID-vkGetDeviceQueue-flags-01841",
+            format!(
+                "the queues of family {family} were created with flags; get them with \
+                 `get_device_queue2`"
+            ),
+        );
+    };
+    if index >= count {
+        refuse(
+            "VUID-vkGetDeviceQueue-queueIndex-00385",
+            format!(
+                "queue index {index} is not below the {count} queues of family {family} the \
+                 device was created with"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// As [`get_device_queue_checks`], for the queues of a family created with the
+/// info's flags.
+pub(crate) fn get_device_queue2_checks(
+    device: &Device,
+    queue_info: &crate::structs::DeviceQueueInfo2<'_>,
+) -> Result<()> {
+    let (family, flags, index) = (
+        queue_info.queue_family_index,
+        queue_info.flags,
+        queue_info.queue_index,
+    );
+    let infos = device.live().queue_infos();
+    if !infos.iter().any(|q| q.0 == family) {
+        refuse(
+            "VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842",
+            format!("the device was created with no queue of family {family}"),
+        )?;
+    }
+    let Some(&(_, count, _)) = infos.iter().find(|q| q.0 == family && q.2 == flags) else {
+        return refuse(
+            "VUID-VkDeviceQueueInfo2-flags-06225",
+            format!(
+                "the device was created with no queues of family {family} with flags {flags:?}"
+            ),
+        );
+    };
+    if index >= count {
+        refuse(
+            "VUID-VkDeviceQueueInfo2-queueIndex-01843",
+            format!(
+                "queue index {index} is not below the {count} queues of family {family} with \
+                 flags {flags:?} the device was created with"
+            ),
+        )?;
+    }
+    Ok(())
 }
 
 /// Every extension a device enables is part of the emitted API (see
@@ -2487,6 +2654,26 @@ pub(crate) fn cmd_bind_pipeline_checks<S: State>(
     pipeline_bind_point: vk::PipelineBindPoint,
     pipeline: &Pipeline,
 ) -> Result<()> {
+    let (needs, vuid) = match pipeline_bind_point {
+        vk::PipelineBindPoint::COMPUTE => (
+            vk::QueueFlags::COMPUTE,
+            "VUID-vkCmdBindPipeline-pipelineBindPoint-00777",
+        ),
+        _ => (
+            vk::QueueFlags::GRAPHICS,
+            "VUID-vkCmdBindPipeline-pipelineBindPoint-00778",
+        ),
+    };
+    if !recorder.pool_queue_flags().contains(needs) {
+        refuse(
+            vuid,
+            format!(
+                "the command buffer's pool is of a queue family without {needs:?} operations \
+                 (its flags: {:?}), so it cannot bind a {pipeline_bind_point:?} pipeline",
+                recorder.pool_queue_flags()
+            ),
+        )?;
+    }
     let Some(record) = recorder.device().live().pipeline(pipeline.raw()) else {
         return Ok(());
     };
@@ -3579,6 +3766,269 @@ pub(crate) fn create_pipeline_layout_checks(
             refuse(
                 vuid,
                 format!("the layout has {total} descriptors of types {types:?} {where_}, past the limit of {limit}"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The number of queue families of a physical device.
+fn family_count(physical: &PhysicalDevice) -> u32 {
+    let mut count = 0;
+    // SAFETY: a live physical device of its instance; the call writes the count only.
+    unsafe {
+        (physical
+            .parent()
+            .fns()
+            .fp_v1_0()
+            .get_physical_device_queue_family_properties)(
+            physical.raw(),
+            &mut count,
+            core::ptr::null_mut(),
+        )
+    };
+    count
+}
+
+/// A queue family index below the physical device's family count.
+pub(crate) fn queue_family_exists(
+    physical: &PhysicalDevice,
+    queue_family_index: u32,
+    vuid: &'static str,
+) -> Result<()> {
+    let count = family_count(physical);
+    if queue_family_index >= count {
+        refuse(
+            vuid,
+            format!(
+                "`queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by \
+                 `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice` \
+                 (`queueFamilyIndex` = {queue_family_index}, count = {count})"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// A surface some queue family of the physical device presents to, as
+/// `vkGetPhysicalDeviceSurfaceSupportKHR` reports.
+///
+/// A query without a surface is refused (`missing`): it needs
+/// `VK_GOOGLE_surfaceless_query`, which tuff does not emit.
+#[cfg(feature = "khr_surface")]
+pub(crate) fn surface_supported<'s>(
+    physical: &PhysicalDevice,
+    surface: impl Into<Option<&'s SurfaceKHR>>,
+    vuid: &'static str,
+    missing: &'static str,
+) -> Result<()> {
+    let Some(surface) = surface.into() else {
+        return refuse(
+            missing,
+            "`surface` must be a valid VkSurfaceKHR handle (a query without one needs \
+             VK_GOOGLE_surfaceless_query, which tuff does not emit)"
+                .into(),
+        );
+    };
+    // Without the extension the call itself fails, with `ExtensionNotEnabled`.
+    let Some(fns) = physical.parent().ext().khr_surface.as_ref() else {
+        return Ok(());
+    };
+    for family in 0..family_count(physical) {
+        let mut supported = vk::FALSE;
+        // SAFETY: a live physical device and a live surface of one instance (the
+        // implicit checks ran first), a family below the count, an output it owns.
+        let r = unsafe {
+            (fns.get_physical_device_surface_support_khr)(
+                physical.raw(),
+                family,
+                surface.raw(),
+                &mut supported,
+            )
+        };
+        if r == vk::Result::SUCCESS && supported == vk::TRUE {
+            return Ok(());
+        }
+    }
+    refuse(
+        vuid,
+        "`surface` must be supported by `physicalDevice`, as reported by \
+         vkGetPhysicalDeviceSurfaceSupportKHR (no queue family of it presents to the surface)"
+            .into(),
+    )
+}
+
+/// As [`surface_supported`], for the device's physical device: tuff's devices have
+/// one.
+#[cfg(feature = "khr_surface")]
+pub(crate) fn device_surface_supported(
+    device: &Device,
+    surface: &SurfaceKHR,
+    vuid: &'static str,
+) -> Result<()> {
+    surface_supported(device.parent(), surface, vuid, vuid)
+}
+
+/// An image whose memory is one binding: not created disjoint.
+pub(crate) fn whole_image_requirements(device: &Device, image: &Image) -> Result<()> {
+    let disjoint = device
+        .live()
+        .image(image.raw())
+        .is_some_and(|r| r.flags.contains(vk::ImageCreateFlags::DISJOINT));
+    if disjoint {
+        refuse(
+            "VUID-vkGetImageMemoryRequirements-image-01588",
+            "`image` must not have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag \
+             set (its planes have their own requirements: use get_image_memory_requirements2)"
+                .into(),
+        )?;
+    }
+    Ok(())
+}
+
+/// A merge into a cache that is not also one of its sources.
+pub(crate) fn merge_pipeline_caches_checks(
+    dst_cache: &PipelineCache,
+    src_caches: &[&PipelineCache],
+) -> Result<()> {
+    if src_caches.iter().any(|c| c.raw() == dst_cache.raw()) {
+        refuse(
+            "VUID-vkMergePipelineCaches-dstCache-00770",
+            "`dstCache` must not appear in the list of source caches".into(),
+        )?;
+    }
+    Ok(())
+}
+
+/// A pipeline-statistics pool counts only statistics the API defines.
+pub(crate) fn create_query_pool_checks(create_info: &QueryPoolCreateInfo<'_>) -> Result<()> {
+    let stats = create_info.pipeline_statistics;
+    let known = vk::QueryPipelineStatisticFlags::from_raw(0x7ff);
+    if create_info.query_type == vk::QueryType::PIPELINE_STATISTICS && !known.contains(stats) {
+        refuse(
+            "VUID-VkQueryPoolCreateInfo-queryType-00792",
+            format!(
+                "If `queryType` is `VK_QUERY_TYPE_PIPELINE_STATISTICS`, `pipelineStatistics` \
+                 must be a valid combination of VkQueryPipelineStatisticFlagBits values \
+                 (`pipelineStatistics` = {:#x})",
+                stats.as_raw()
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// Exportable handle types a fence's creation asks for: each one the physical device
+/// can export, and all of them compatible with each other.
+pub(crate) fn create_fence_checks(
+    device: &Device,
+    create_info: &FenceCreateInfo<'_>,
+) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let Some(export) = (unsafe {
+        chained::<vk::ExportFenceCreateInfo<'_>>(
+            create_info.as_raw().p_next,
+            vk::StructureType::EXPORT_FENCE_CREATE_INFO,
+        )
+    }) else {
+        return Ok(());
+    };
+    let wanted = export.handle_types;
+    for bit in (0..32)
+        .map(|i| 1u32 << i)
+        .filter(|b| wanted.as_raw() & b != 0)
+    {
+        let info = vk::PhysicalDeviceExternalFenceInfo::default()
+            .handle_type(vk::ExternalFenceHandleTypeFlags::from_raw(bit));
+        let mut props = vk::ExternalFenceProperties::default();
+        let physical = device.parent();
+        // SAFETY: a live physical device of its instance, a valid info and an output
+        // it owns; the fence struct is core 1.1, which the implicit checks required.
+        unsafe {
+            physical
+                .parent()
+                .fns()
+                .get_physical_device_external_fence_properties(physical.raw(), &info, &mut props)
+        };
+        let exportable = props
+            .external_fence_features
+            .contains(vk::ExternalFenceFeatureFlags::EXPORTABLE);
+        if !exportable || !props.compatible_handle_types.contains(wanted) {
+            refuse(
+                "VUID-VkExportFenceCreateInfo-handleTypes-01446",
+                format!(
+                    "The bits in `handleTypes` must be supported and compatible, as reported by \
+                     VkExternalFenceProperties (`handleTypes` = {wanted:?}; for {:?}: \
+                     features {:?}, compatible {:?})",
+                    info.handle_type, props.external_fence_features, props.compatible_handle_types
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// As [`create_fence_checks`], for a semaphore (of the type it is created with).
+pub(crate) fn create_semaphore_checks(
+    device: &Device,
+    create_info: &SemaphoreCreateInfo<'_>,
+) -> Result<()> {
+    let next = create_info.as_raw().p_next;
+    // SAFETY: the `pNext` of a safe struct, and the types their sTypes name.
+    let (export, ty) = unsafe {
+        (
+            chained::<vk::ExportSemaphoreCreateInfo<'_>>(
+                next,
+                vk::StructureType::EXPORT_SEMAPHORE_CREATE_INFO,
+            ),
+            chained::<vk::SemaphoreTypeCreateInfo<'_>>(
+                next,
+                vk::StructureType::SEMAPHORE_TYPE_CREATE_INFO,
+            ),
+        )
+    };
+    let Some(export) = export else {
+        return Ok(());
+    };
+    let mut ty =
+        ty.map(|t| vk::SemaphoreTypeCreateInfo::default().semaphore_type(t.semaphore_type));
+    let wanted = export.handle_types;
+    for bit in (0..32)
+        .map(|i| 1u32 << i)
+        .filter(|b| wanted.as_raw() & b != 0)
+    {
+        let mut info = vk::PhysicalDeviceExternalSemaphoreInfo::default()
+            .handle_type(vk::ExternalSemaphoreHandleTypeFlags::from_raw(bit));
+        if let Some(t) = ty.as_mut() {
+            info = info.push_next(t);
+        }
+        let mut props = vk::ExternalSemaphoreProperties::default();
+        let physical = device.parent();
+        // SAFETY: as in `create_fence_checks`; the type struct chained is a local copy.
+        unsafe {
+            physical
+                .parent()
+                .fns()
+                .get_physical_device_external_semaphore_properties(
+                    physical.raw(),
+                    &info,
+                    &mut props,
+                )
+        };
+        let exportable = props
+            .external_semaphore_features
+            .contains(vk::ExternalSemaphoreFeatureFlags::EXPORTABLE);
+        if !exportable || !props.compatible_handle_types.contains(wanted) {
+            refuse(
+                "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
+                format!(
+                    "The bits in `handleTypes` must be supported and compatible, as reported by \
+                     VkExternalSemaphoreProperties (`handleTypes` = {wanted:?}; for {:?}: \
+                     features {:?}, compatible {:?})",
+                    info.handle_type,
+                    props.external_semaphore_features,
+                    props.compatible_handle_types
+                ),
             )?;
         }
     }

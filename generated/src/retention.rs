@@ -183,6 +183,8 @@ pub(crate) struct BufferRecord {
     pub flags: vk::BufferCreateFlags,
     /// Whether memory is bound to it.
     pub bound: bool,
+    /// Where in its memory it is bound (0 until it is).
+    pub memory_offset: vk::DeviceSize,
 }
 
 /// An image's creation parameters, as its checks read them.
@@ -474,9 +476,10 @@ impl Live {
     }
 
     /// Records that memory is bound to a buffer.
-    pub(crate) fn buffer_bound(&self, raw: vk::Buffer) {
+    pub(crate) fn buffer_bound(&self, raw: vk::Buffer, memory_offset: vk::DeviceSize) {
         if let Some(r) = self.buffers.lock().get_mut(&raw.as_raw()) {
             r.bound = true;
+            r.memory_offset = memory_offset;
         }
     }
 

@@ -78,7 +78,10 @@ fn bench(validation: bool) -> Bench {
             .expect("end");
     }
     let fences = (0..SUBMITS)
-        .map(|_| unsafe { d.create_fence(&tuff::FenceCreateInfo::new()) }.expect("fence"))
+        .map(|_| {
+            d.create_fence(&tuff::FenceCreateInfo::new())
+                .expect("fence")
+        })
         .collect();
     Bench {
         s,

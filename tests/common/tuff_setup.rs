@@ -99,7 +99,8 @@ fn setup_full(
             .enabled_layer_names(&layers)
             .push_next(&mut messenger_info);
     }
-    let instance = unsafe { entry.create_instance(&info) }
+    let instance = entry
+        .create_instance(&info)
         .expect("cannot create an instance (is VK_LAYER_KHRONOS_validation installed?)");
     let messenger = validation.then(|| {
         instance
@@ -156,7 +157,7 @@ fn setup_full(
         info.push_next(&mut features13).push_next(&mut features12)
     };
     let device = unsafe { physical.create_device(&info) }.expect("create device");
-    let queue = unsafe { device.get_device_queue(family, 0) };
+    let queue = device.get_device_queue(family, 0).expect("queue");
     let memory_types = physical.get_physical_device_memory_properties();
     Setup {
         queue,
@@ -228,7 +229,9 @@ impl Setup {
     /// Allocates memory for `image` and binds it.
     pub fn bind_image(&self, image: &tuff::Image) -> tuff::DeviceMemory {
         let d = &self.device;
-        let reqs = unsafe { d.get_image_memory_requirements(image) }.expect("memory requirements");
+        let reqs = d
+            .get_image_memory_requirements(image)
+            .expect("memory requirements");
         let memory = unsafe {
             d.allocate_memory(
                 &tuff::MemoryAllocateInfo::new()

@@ -162,9 +162,7 @@ impl Scene for Bezier {
                 &[],
             )
         }?;
-        // SAFETY: the index buffer is the scene's own, bound at offset 0 of its allocation,
-        // which is aligned for any index type (VUID-vkCmdBindIndexBuffer-offset-00432).
-        unsafe { rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32) }?;
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and

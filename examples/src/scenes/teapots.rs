@@ -158,9 +158,7 @@ impl Scene for Teapots {
         }?;
         // SAFETY: one binding, well under maxVertexInputBindings, with a live buffer.
         unsafe { rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]) }?;
-        // SAFETY: the index buffer is the scene's own, bound at offset 0 of its allocation,
-        // which is aligned for any index type (VUID-vkCmdBindIndexBuffer-offset-00432).
-        unsafe { rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32) }?;
+        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);
             rec.cmd_push_constants(

@@ -18,6 +18,20 @@ pub const EXTENSIONS: &[&str] = &[
     "VK_EXT_debug_utils",
 ];
 
+/// What each emitted extension needs beside it (vk.xml's `depends`): any one of
+/// the alternatives, each a list of extensions enabled with it and core versions
+/// (`VK_VERSION_1_x`) the API version reaches.
+pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[
+    ("VK_KHR_surface", &[&[]]),
+    ("VK_KHR_swapchain", &[&["VK_KHR_surface"]]),
+    ("VK_KHR_xlib_surface", &[&["VK_KHR_surface"]]),
+    ("VK_KHR_xcb_surface", &[&["VK_KHR_surface"]]),
+    ("VK_KHR_wayland_surface", &[&["VK_KHR_surface"]]),
+    ("VK_KHR_win32_surface", &[&["VK_KHR_surface"]]),
+    ("VK_EXT_metal_surface", &[&["VK_KHR_surface"]]),
+    ("VK_EXT_debug_utils", &[&[]]),
+];
+
 /// The members of `VkPhysicalDeviceFeatures`, in order: each is a `VkBool32`.
 pub const DEVICE_FEATURES: &[&str] = &[
     "robustBufferAccess",

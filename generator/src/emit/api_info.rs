@@ -25,11 +25,44 @@ pub(super) fn emit(model: &Model, config: &Config, out: &mut Emission) {
         s.push_str(&format!("    {ext:?},\n"));
     }
     s.push_str("];\n");
+    extension_requires(model, config, &mut s);
     device_features(model, &mut s);
     out.files.push(OutputFile {
         path: format!("{}/api_info.rs", super::GENERATED_DIR).into(),
         contents: s,
     });
+}
+
+/// What each emitted extension needs enabled beside it, from vk.xml's `depends`
+/// (or `requires`): the alternatives, each a list of names that must all hold (an
+/// extension enabled with it, or a core version `VK_VERSION_1_x` the API version
+/// reaches). An extension with no dependency has one empty alternative.
+fn extension_requires(model: &Model, config: &Config, s: &mut String) {
+    s.push_str(
+        "\n/// What each emitted extension needs beside it (vk.xml's `depends`): any one of\n\
+         /// the alternatives, each a list of extensions enabled with it and core versions\n\
+         /// (`VK_VERSION_1_x`) the API version reaches.\n",
+    );
+    s.push_str("pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[\n");
+    for ext in &config.extensions {
+        let sets = match model.extension_depends.get(ext) {
+            // A dependency with a negation (none in any registry yet) is written as
+            // no alternative: enabling the extension is then refused, never let by.
+            Some(depends) => {
+                crate::model::expr::minimal_sets(depends, &|_| None).unwrap_or_default()
+            }
+            None => vec![Default::default()],
+        };
+        let alts: Vec<String> = sets
+            .iter()
+            .map(|set| {
+                let names: Vec<String> = set.iter().map(|n| format!("{n:?}")).collect();
+                format!("&[{}]", names.join(", "))
+            })
+            .collect();
+        s.push_str(&format!("    ({ext:?}, &[{}]),\n", alts.join(", ")));
+    }
+    s.push_str("];\n");
 }
 
 /// The members of `VkPhysicalDeviceFeatures` in declaration order: the wrappers read

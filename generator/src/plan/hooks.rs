@@ -134,6 +134,21 @@ const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
 const POOL_FAMILY: &str =
     "checks the family against the queue create infos the device recorded at its creation";
+const QUEUE_INFOS: &str =
+    "checks the family, flags and index against the queue create infos the device recorded at its creation";
+const INSTANCE_INFO: &str = "checks each enabled extension's dependencies (vk.xml's `depends`, emitted as a table) against the enabled extensions and API version";
+const INSTANCE_ALONE: &str = "checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0)";
+const INDEX_ALIGNED: &str = "checks the offset plus the buffer's offset in its memory (kept from the bind) is a multiple of the index size; allocations start aligned for any resource";
+const STATISTICS: &str = "checks the statistics bits against those the API defines (the 1.3.239 layer does not check it: proven by the error alone)";
+const PRIVATE_TYPE: &str = "refuses an object type of the instance level (the 1.3.239 layer does not check it, and lavapipe crashes on it: proven by the error alone)";
+const MERGE_SELF: &str = "checks the destination cache is none of the sources";
+const EXPORTABLE: &str = "checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone)";
+const NO_SURFACE: &str = "refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one)";
+const FAMILY_COUNT: &str = "checks the family against the physical device's queue family count";
+const UNPROVEN_DISJOINT: &str = "checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes";
+const UNPROVEN_WIN32: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests run on Linux";
+const UNPROVEN_SURFACE: &str = "checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface";
+const UNPROVEN_FAMILY: &str = "checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute";
 const POOL_PROTECTED: &str =
     "checks the protectedMemory feature the device recorded at its creation";
 const SEMAPHORE_TYPE: &str = "checks the semaphore's type, kept by the wrapper from its creation";
@@ -266,6 +281,36 @@ macro_rules! indexed {
                 ],
             ),
             settles: $settles,
+            ..NONE
+        }
+    };
+}
+
+/// A query of a surface's properties: the surface is one the physical device
+/// supports (`-surface-06211`).
+macro_rules! surface_query {
+    ($command:literal) => {
+        Special {
+            command: $command,
+            check_last: call(
+                "hooks::surface_supported",
+                &[
+                    "self",
+                    "surface",
+                    concat!("\"VUID-", $command, "-surface-06211\""),
+                    concat!("\"VUID-", $command, "-surface-06523\""),
+                ],
+            ),
+            settles: &[
+                (
+                    concat!("VUID-", $command, "-surface-06211"),
+                    How::User(UNPROVEN_SURFACE),
+                ),
+                (
+                    concat!("VUID-", $command, "-surface-06523"),
+                    How::Dynamic(NO_SURFACE),
+                ),
+            ],
             ..NONE
         }
     };
@@ -480,7 +525,10 @@ pub const SPECIALS: &[Special] = &[
             "hooks::bind_buffer_memory_checks",
             &["self", "buffer", "memory", "memory_offset"],
         ),
-        after: call("hooks::bind_buffer_memory_done", &["self", "buffer", "memory"]),
+        after: call(
+            "hooks::bind_buffer_memory_done",
+            &["self", "buffer", "memory", "memory_offset"],
+        ),
         settles: &[
             ("VUID-vkBindBufferMemory-buffer-07459", How::Dynamic(BIND_BOUND)),
             ("VUID-vkBindBufferMemory-buffer-01030", How::User(UNPROVEN)),
@@ -624,8 +672,12 @@ pub const SPECIALS: &[Special] = &[
             "hooks::cmd_bind_index_buffer_done",
             &["self", "buffer", "offset", "index_type"],
         ),
-        check: call("hooks::cmd_bind_index_buffer_checks", &["self", "buffer", "offset"]),
+        check: call(
+            "hooks::cmd_bind_index_buffer_checks",
+            &["self", "buffer", "offset", "index_type"],
+        ),
         settles: &[
+            ("VUID-vkCmdBindIndexBuffer-offset-00432", How::Dynamic(INDEX_ALIGNED)),
             ("VUID-vkCmdBindIndexBuffer-offset-00431", How::Dynamic(RANGE)),
             ("VUID-vkCmdBindIndexBuffer-buffer-00433", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdBindIndexBuffer-buffer-00434", How::Dynamic(BUFFER_USE)),
@@ -634,7 +686,94 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateQueryPool",
+        check: call("hooks::create_query_pool_checks", &["create_info"]),
         created: call("hooks::query_pool_created", &["self", "created", "create_info"]),
+        settles: &[(
+            "VUID-VkQueryPoolCreateInfo-queryType-00792",
+            How::Dynamic(STATISTICS),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkMergePipelineCaches",
+        check: call(
+            "hooks::merge_pipeline_caches_checks",
+            &["dst_cache", "src_caches"],
+        ),
+        settles: &[(
+            "VUID-vkMergePipelineCaches-dstCache-00770",
+            How::Dynamic(MERGE_SELF),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageMemoryRequirements",
+        check: call("hooks::whole_image_requirements", &["self", "image"]),
+        settles: &[(
+            "VUID-vkGetImageMemoryRequirements-image-01588",
+            How::User(UNPROVEN_DISJOINT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateFence",
+        check_last: call("hooks::create_fence_checks", &["self", "create_info"]),
+        settles: &[(
+            "VUID-VkExportFenceCreateInfo-handleTypes-01446",
+            How::Dynamic(EXPORTABLE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceSurfaceSupportKHR",
+        check: call(
+            "hooks::queue_family_exists",
+            &[
+                "self",
+                "queue_family_index",
+                "\"VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
+            How::Dynamic(FAMILY_COUNT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceWin32PresentationSupportKHR",
+        check: call(
+            "hooks::queue_family_exists",
+            &[
+                "self",
+                "queue_family_index",
+                "\"VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309",
+            How::User(UNPROVEN_WIN32),
+        )],
+        ..NONE
+    },
+    surface_query!("vkGetPhysicalDeviceSurfaceCapabilitiesKHR"),
+    surface_query!("vkGetPhysicalDeviceSurfaceFormatsKHR"),
+    surface_query!("vkGetPhysicalDeviceSurfacePresentModesKHR"),
+    surface_query!("vkGetPhysicalDevicePresentRectanglesKHR"),
+    Special {
+        command: "vkGetDeviceGroupSurfacePresentModesKHR",
+        check_last: call(
+            "hooks::device_surface_supported",
+            &[
+                "self",
+                "surface",
+                "\"VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212",
+            How::User(UNPROVEN_SURFACE),
+        )],
         ..NONE
     },
     Special {
@@ -758,6 +897,10 @@ pub const SPECIALS: &[Special] = &[
             "hooks::get_private_data_checks",
             &["self", "object_type", "object_handle"],
         ),
+        settles: &[(
+            "VUID-vkGetPrivateData-objectType-04018",
+            How::Dynamic(PRIVATE_TYPE),
+        )],
         ..NONE
     },
     // Their host synchronization (plan::sync) looks the named object up among the
@@ -892,6 +1035,14 @@ pub const SPECIALS: &[Special] = &[
             (
                 "VUID-vkCmdBindPipeline-pipelineBindPoint-00780",
                 How::Dynamic(BIND_POINT),
+            ),
+            (
+                "VUID-vkCmdBindPipeline-pipelineBindPoint-00777",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdBindPipeline-pipelineBindPoint-00778",
+                How::User(UNPROVEN_FAMILY),
             ),
         ],
         after: call(
@@ -1049,9 +1200,15 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateInstance",
         check: call("hooks::instance_extensions_emitted", &["create_info"]),
+        check_last: call("hooks::create_instance_checks", &["create_info"]),
         created: call("hooks::instance_created", &["self", "out", "create_info"]),
         error: call("presence::instance_error", &["self", "create_info", "r"]),
         scope: call("hooks::create_instance_scope", &["create_info"]),
+        settles: &[
+            ("VUID-VkApplicationInfo-apiVersion-04010", How::Dynamic(INSTANCE_ALONE)),
+            ("VUID-vkCreateInstance-ppEnabledExtensionNames-01388", How::Dynamic(INSTANCE_INFO)),
+            ("VUID-VkInstanceCreateInfo-pNext-04926", How::Dynamic(INSTANCE_ALONE)),
+        ],
         ..NONE
     },
     Special {
@@ -1085,17 +1242,37 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkGetDeviceQueue",
+        check: call(
+            "hooks::get_device_queue_checks",
+            &["self", "queue_family_index", "queue_index"],
+        ),
         created: call("hooks::queue_got", &["self", "created", "queue_family_index"]),
+        settles: &[
+            ("VUID-vkGetDeviceQueue-queueFamilyIndex-00384", How::Dynamic(QUEUE_INFOS)),
+            ("VUID-vkGetDeviceQueue-queueIndex-00385", How::Dynamic(QUEUE_INFOS)),
+            ("VUID-vkGetDeviceQueue-flags-01841", How::Dynamic(QUEUE_INFOS)),
+        ],
         ..NONE
     },
     Special {
         command: "vkGetDeviceQueue2",
+        check: call("hooks::get_device_queue2_checks", &["self", "queue_info"]),
         created: call("hooks::queue2_got", &["self", "created", "queue_info"]),
+        settles: &[
+            ("VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842", How::Dynamic(QUEUE_INFOS)),
+            ("VUID-VkDeviceQueueInfo2-flags-06225", How::Dynamic(QUEUE_INFOS)),
+            ("VUID-VkDeviceQueueInfo2-queueIndex-01843", How::Dynamic(QUEUE_INFOS)),
+        ],
         ..NONE
     },
     Special {
         command: "vkCreateSemaphore",
+        check_last: call("hooks::create_semaphore_checks", &["self", "create_info"]),
         created: call("hooks::semaphore_created", &["self", "created", "create_info"]),
+        settles: &[(
+            "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
+            How::Dynamic(EXPORTABLE),
+        )],
         ..NONE
     },
     Special {

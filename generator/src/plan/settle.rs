@@ -40,7 +40,9 @@ pub fn records(
                 "written by hand in the specification; not derived, so not checked".into(),
             ),
             _ => match (
-                explicit(&rule.vuid, &rule.text),
+                explicit(&rule.vuid, &rule.text, &|name: &str| {
+                    param_shape(cx, &plans, &rule.item, name)
+                }),
                 checker.dynamic(&rule.vuid),
             ) {
                 (Settlement::User(_), Some(what)) if proven.contains(rule.vuid.as_str()) => {
@@ -60,7 +62,26 @@ pub fn records(
     out
 }
 
-fn explicit(vuid: &str, text: &str) -> Settlement {
+/// The shape the safe method of command `item` gives its parameter `name` (matched
+/// without case, as [`explicit`] reads lowercased text).
+fn param_shape(
+    cx: &Context,
+    plans: &BTreeMap<String, Result<Plan, String>>,
+    item: &str,
+    name: &str,
+) -> Option<Param> {
+    let cmd = cx.model.commands.get(item)?;
+    let i = cmd
+        .params
+        .iter()
+        .position(|p| p.name.to_lowercase() == name)?;
+    match plans.get(item)? {
+        Ok(plan) => plan.params.get(i).cloned(),
+        Err(_) => None,
+    }
+}
+
+fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Settlement {
     // Plain text without code marks: `If no `VkAllocationCallbacks` were provided`
     // reads as `if no vkallocationcallbacks were provided`.
     let t = crate::validity::explicit::plain(text)
@@ -80,6 +101,8 @@ fn explicit(vuid: &str, text: &str) -> Settlement {
         Settlement::Static(
             "the setter takes a Rust function pointer of the callback's type, valid for the whole program; a missing one is refused by the member's implicit check".into(),
         )
+    } else if let Some(how) = wrapper_handle(&t, param) {
+        Settlement::Static(how.into())
     } else if t.contains("vkallocationcallbacks were provided when") {
         Settlement::Static("the wrappers never pass allocation callbacks".into())
     } else {
@@ -96,6 +119,31 @@ fn is_valid_pfn(t: &str) -> bool {
         [member, "must", "be", "a", "valid", ty]
             if member.starts_with("pfn") && ty.starts_with("pfn_vk")
     )
+}
+
+/// A rule that a handle parameter is valid or not null, where the safe method takes
+/// it as a wrapper (a live handle, never null): `surface must be a valid
+/// vksurfacekhr handle`, `x must not be vk_null_handle`, and, for a slice of
+/// wrappers, `if the nulldescriptor feature is not enabled, all elements of
+/// pbuffers must not be vk_null_handle`.
+fn wrapper_handle(t: &str, param: &dyn Fn(&str) -> Option<Param>) -> Option<&'static str> {
+    let words: Vec<&str> = t.split(' ').collect();
+    let one =
+        "the method takes the handle as a wrapper reference, never null and live while borrowed";
+    match words.as_slice() {
+        [p, "must", "be", "a", "valid", ty, "handle"] if ty.starts_with("vk") => {
+            matches!(param(p)?, Param::Handle { optional: false }).then_some(one)
+        }
+        [p, "must", "not", "be", "vk_null_handle"] => {
+            matches!(param(p)?, Param::Handle { optional: false }).then_some(one)
+        }
+        [.., "all", "elements", "of", p, "must", "not", "be", "vk_null_handle"] => {
+            matches!(param(p)?, Param::HandleSlice).then_some(
+                "the method takes the handles as a slice of wrapper references, none of them null",
+            )
+        }
+        _ => None,
+    }
 }
 
 fn implicit(

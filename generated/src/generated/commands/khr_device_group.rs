@@ -105,12 +105,6 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
     }
     /**`vkGetDeviceGroupSurfacePresentModesKHR`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`: `surface` must be supported by all physical devices associated with `device`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
-
 # Valid usage
 
 The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
@@ -120,9 +114,9 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](htt
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[inline]
-    pub unsafe fn get_device_group_surface_present_modes_khr(
+    pub fn get_device_group_surface_present_modes_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -136,6 +130,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_get_device_group_surface_present_modes_khr(surface);
             r?;
         }
+        crate::hooks::device_surface_supported(
+            self,
+            surface,
+            "VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
@@ -144,7 +143,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
         &self,
@@ -175,26 +174,20 @@ The caller upholds the rules that [`Self::get_device_group_surface_present_modes
 impl PhysicalDevice {
     /**`vkGetPhysicalDevicePresentRectanglesKHR`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDevicePresentRectanglesKHR.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[inline]
-    pub unsafe fn get_physical_device_present_rectangles_khr(
+    pub fn get_physical_device_present_rectangles_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
@@ -208,6 +201,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_physical_device_present_rectangles_khr(surface);
             r?;
         }
+        crate::hooks::surface_supported(
+            self,
+            surface,
+            "VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211",
+            "VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
@@ -216,7 +215,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_present_rectangles_khr_unchecked(
         &self,

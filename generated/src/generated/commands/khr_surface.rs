@@ -6,25 +6,19 @@ use super::*;
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_capabilities_khr(
+    pub fn get_physical_device_surface_capabilities_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
@@ -32,6 +26,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             let r = self.validate_get_physical_device_surface_capabilities_khr(surface);
             r?;
         }
+        crate::hooks::surface_supported(
+            self,
+            surface,
+            "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211",
+            "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
@@ -40,7 +40,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_capabilities_khr_unchecked(
         &self,
@@ -63,26 +63,23 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_formats_khr(
+    pub fn get_physical_device_surface_formats_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
@@ -90,6 +87,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_get_physical_device_surface_formats_khr(surface);
             r?;
         }
+        crate::hooks::surface_supported(
+            self,
+            surface,
+            "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211",
+            "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
@@ -98,7 +101,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_formats_khr_unchecked(
         &self,
@@ -127,26 +130,23 @@ The caller upholds the rules that [`Self::get_physical_device_surface_formats_kh
     }
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: `surface` must be a valid VkSurfaceKHR handle
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`: `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModesKHR.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_present_modes_khr(
+    pub fn get_physical_device_surface_present_modes_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
@@ -154,6 +154,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_get_physical_device_surface_present_modes_khr(surface);
             r?;
         }
+        crate::hooks::surface_supported(
+            self,
+            surface,
+            "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211",
+            "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
@@ -162,7 +168,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_present_modes_khr_unchecked(
         &self,
@@ -191,28 +197,26 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
     }
     /**`vkGetPhysicalDeviceSurfaceSupportKHR`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: dynamic (checks the family against the physical device's queue family count)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_support_khr(
+    pub fn get_physical_device_surface_support_khr(
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
     ) -> Result<vk::Bool32> {
+        crate::hooks::queue_family_exists(
+            self,
+            queue_family_index,
+            "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
+        )?;
         {
             let r = self.validate_get_physical_device_surface_support_khr(surface);
             r?;
@@ -230,7 +234,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_surface_support_khr_unchecked(
         &self,

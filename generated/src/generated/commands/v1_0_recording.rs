@@ -183,17 +183,12 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
     }
     /**`vkCmdBindIndexBuffer`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBindIndexBuffer-offset-00432`: The sum of `offset` and the address of the range of `VkDeviceMemory` object that is backing `buffer`, must be a multiple of the type indicated by `indexType`
-
 # Valid usage
 
 The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindIndexBuffer.html). Settled by the wrappers:
 
 - `VUID-vkCmdBindIndexBuffer-offset-00431`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
+- `VUID-vkCmdBindIndexBuffer-offset-00432`: dynamic (checks the offset plus the buffer's offset in its memory (kept from the bind) is a multiple of the index size; allocations start aligned for any resource)
 - `VUID-vkCmdBindIndexBuffer-buffer-00433`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindIndexBuffer-buffer-00434`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindIndexBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -204,15 +199,15 @@ The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khro
 - `VUID-vkCmdBindIndexBuffer-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_bind_index_buffer(
+    pub fn cmd_bind_index_buffer(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) -> Result<()> {
-        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset)?;
+        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset, index_type)?;
         {
             let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
             r?;
@@ -225,7 +220,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00432`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_index_buffer_unchecked(
         &mut self,
@@ -246,10 +241,8 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`: If `pipelineBindPoint` is `VK_PIPELINE_BIND_POINT_COMPUTE`, the `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
-- `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`: If `pipelineBindPoint` is `VK_PIPELINE_BIND_POINT_GRAPHICS`, the `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdBindPipeline-pipeline-00781`: If the `variableMultisampleRate` feature is not supported, `pipeline` is a graphics pipeline, the current subpass uses no attachments, and this is not the first call to this function with a graphics pipeline after transitioning to the current subpass, then the sample count specified by this pipeline must match that set in the previous pipeline
 
 # Valid usage
@@ -266,7 +259,10 @@ The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos
 - `VUID-vkCmdBindPipeline-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindPipeline-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 18 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
+
+- 2: checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute
+- 16: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_bind_pipeline(
         &mut self,
@@ -286,7 +282,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_pipeline_unchecked(
         &mut self,
@@ -306,10 +302,9 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
 
 # Safety
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
-- `VUID-vkCmdBindVertexBuffers-pBuffers-04001`: If the `nullDescriptor` feature is not enabled, all elements of `pBuffers` must not be VK_NULL_HANDLE
 
 # Valid usage
 
@@ -318,6 +313,7 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdBindVertexBuffers-pBuffers-04001`: static (the method takes the handles as a slice of wrapper references, none of them null)
 - `VUID-vkCmdBindVertexBuffers-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
@@ -327,10 +323,10 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers(
         &mut self,

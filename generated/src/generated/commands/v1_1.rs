@@ -455,14 +455,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     }
     /**`vkGetDeviceQueue2`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`: `queueFamilyIndex` must be one of the queue family indices specified when `device` was created, via the VkDeviceQueueCreateInfo structure
-- `VUID-VkDeviceQueueInfo2-flags-06225`: `flags` must be equal to VkDeviceQueueCreateInfo::`flags` for a VkDeviceQueueCreateInfo structure for the queue family indicated by `queueFamilyIndex` when `device` was created
-- `VUID-VkDeviceQueueInfo2-queueIndex-01843`: `queueIndex` must be less than VkDeviceQueueCreateInfo::`queueCount` for the corresponding queue family and flags indicated by `queueFamilyIndex` and `flags` when `device` was created
-
 # Valid usage
 
 The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
@@ -471,10 +463,11 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
 - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn get_device_queue2<'a>(
+    pub fn get_device_queue2<'a>(
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Result<Queue> {
+        crate::hooks::get_device_queue2_checks(self, queue_info)?;
         {
             let r = self.validate_get_device_queue2(queue_info);
             r?;
@@ -487,7 +480,7 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_queue2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_device_queue2`] checks at run time: `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`, `VUID-VkDeviceQueueInfo2-flags-06225`, `VUID-VkDeviceQueueInfo2-queueIndex-01843`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_queue2_unchecked<'a>(
         &self,

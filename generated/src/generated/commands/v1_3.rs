@@ -315,25 +315,18 @@ The caller upholds the rules that [`Self::get_device_image_sparse_memory_require
     }
     /**`vkGetPrivateData`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPrivateData-objectType-04018`: `objectType` must be `VK_OBJECT_TYPE_DEVICE`, or an object type whose parent is VkDevice
-
 # Valid usage
 
 The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
 
+- `VUID-vkGetPrivateData-objectType-04018`: dynamic (refuses an object type of the instance level (the 1.3.239 layer does not check it, and lavapipe crashes on it: proven by the error alone))
 - `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub unsafe fn get_private_data(
+    pub fn get_private_data(
         &self,
         object_type: vk::ObjectType,
         object_handle: u64,
@@ -358,7 +351,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, `VUID-vkGetPrivateData-objectType-04018`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_private_data_unchecked(
         &self,

@@ -868,10 +868,9 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
-- `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: If the `nullDescriptor` feature is not enabled, all elements of `pBuffers` must not be VK_NULL_HANDLE
 - `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: If `pStrides` is not `NULL` each element of `pStrides` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride`
 - `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the extent is calculated as the VkVertexInputAttributeDescription::`offset` plus VkVertexInputAttributeDescription::`format` size
 
@@ -883,6 +882,7 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
+- `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: static (the method takes the handles as a slice of wrapper references, none of them null)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
@@ -894,10 +894,10 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+- 4: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2(
         &mut self,

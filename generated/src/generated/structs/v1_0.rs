@@ -66,12 +66,11 @@ impl<'a> AllocationCallbacks<'a> {
 
 The rules are on [`VkApplicationInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkApplicationInfo.html). Settled by the wrappers:
 
+- `VUID-VkApplicationInfo-apiVersion-04010`: dynamic (checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0))
 - `VUID-VkApplicationInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkApplicationInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkApplicationInfo-pApplicationName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkApplicationInfo-pEngineName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkApplicationInfo-pEngineName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ApplicationInfo<'a> {
@@ -1793,6 +1792,7 @@ impl<'a> ImageViewCreateInfo<'a> {
 
 The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkInstanceCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkInstanceCreateInfo-pNext-04926`: dynamic (checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0))
 - `VUID-VkInstanceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkInstanceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkInstanceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1801,7 +1801,7 @@ The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khro
 - `VUID-VkInstanceCreateInfo-ppEnabledLayerNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkInstanceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct InstanceCreateInfo<'a> {
@@ -2682,6 +2682,7 @@ impl<'a> PipelineViewportStateCreateInfo<'a> {
 The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkQueryPoolCreateInfo-queryType-00791`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkQueryPoolCreateInfo-queryType-00792`: dynamic (checks the statistics bits against those the API defines (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-VkQueryPoolCreateInfo-queryCount-02763`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkQueryPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkQueryPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -2689,7 +2690,7 @@ The rules are on [`VkQueryPoolCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkQueryPoolCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkQueryPoolCreateInfo-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueryPoolCreateInfo<'a> {

@@ -529,11 +529,12 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for DeviceGroupSubmitInfo<'a> {}
 
 The rules are on [`VkDeviceQueueInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueInfo2.html). Settled by the wrappers:
 
+- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
+- `VUID-VkDeviceQueueInfo2-flags-06225`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
+- `VUID-VkDeviceQueueInfo2-queueIndex-01843`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
 - `VUID-VkDeviceQueueInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueInfo2<'a> {
@@ -567,10 +568,9 @@ impl<'a> DeviceQueueInfo2<'a> {
 
 The rules are on [`VkExportFenceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkExportFenceCreateInfo-handleTypes-01446`: dynamic (checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-VkExportFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportFenceCreateInfo<'a> {
@@ -619,10 +619,9 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfo<'a>
 
 The rules are on [`VkExportSemaphoreCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: dynamic (checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-VkExportSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportSemaphoreCreateInfo<'a> {

@@ -1,0 +1,380 @@
+//! The checks that read what the instance, the physical device and the device know:
+//! the API version and extensions an instance is created with, the queues a device
+//! was created with, the queue families and surfaces of a physical device, the
+//! handle types it can export, and where a buffer is bound.
+//!
+//! Each test breaks one rule through the safe method, which must refuse it with the
+//! rule's VUID, and through the `_unchecked` twin under the validation layer (with a
+//! messenger that makes the layer skip the call), which must name the same VUID.
+//!
+//! SAFETY of the `unsafe` blocks around `_unchecked` calls: each breaks only the rule
+//! under test, which the layer reports and so skips; the driver never sees it. Of
+//! those around checked methods: the method is `unsafe` for rules its `# Safety`
+//! section lists, which the calls here keep.
+
+#[path = "common/pipelines.rs"]
+mod pipelines;
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+#[path = "common/x11_window.rs"]
+mod x11_window;
+
+use tuff::{vk, Handle as _};
+use tuff_setup::{setup, setup_with, Setup, Wsi};
+use vulkan::assert_silent;
+
+/// The VUID of a refused call, or a panic naming what came back instead.
+fn vuid<T>(r: tuff::Result<T>) -> &'static str {
+    match r {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        Err(e) => panic!("expected tuff to refuse the call, got {e}"),
+        Ok(_) => panic!("expected tuff to refuse the call, got success"),
+    }
+}
+
+/// Runs `unchecked` with the layer told to skip erroring calls, and fails unless it
+/// named `expected`.
+fn layer_names(messages: &tuff::MessageLog, expected: &str, unchecked: impl FnOnce()) {
+    messages.take();
+    messages.abort_on_error(true);
+    unchecked();
+    messages.abort_on_error(false);
+    let said = messages.take();
+    assert!(
+        said.iter().any(|m| m.contains(expected)),
+        "the validation layer did not report {expected}; it said:\n{}",
+        said.join("\n")
+    );
+}
+
+#[test]
+fn instance_creation_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let entry = tuff::Entry::load().expect("the Vulkan loader is not installed");
+    let messages = tuff::MessageLog::new();
+    let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
+    let debug = tuff::CStrPtr::from(c"VK_EXT_debug_utils");
+    let xlib = tuff::CStrPtr::from(c"VK_KHR_xlib_surface");
+    let surface = tuff::CStrPtr::from(c"VK_KHR_surface");
+    let below_1_0 = tuff::ApplicationInfo::new().api_version(vk::make_api_version(0, 0, 9, 0));
+    let v1_3 = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
+
+    // An extension without the one it depends on, with the layer's messenger chained
+    // so that it hears the creation itself.
+    let expected = "VUID-vkCreateInstance-ppEnabledExtensionNames-01388";
+    let exts = [debug, xlib];
+    let mut chained = messages.messenger_info();
+    let info = tuff::InstanceCreateInfo::new()
+        .application_info(Some(&v1_3))
+        .enabled_layer_names(&layers)
+        .enabled_extension_names(&exts)
+        .push_next(&mut chained);
+    assert_eq!(vuid(entry.create_instance(&info)), expected);
+    layer_names(&messages, expected, || {
+        // SAFETY: see the module docs.
+        let made = unsafe { entry.create_instance_unchecked(&info) };
+        assert!(made.is_err(), "the layer let {expected} through");
+    });
+
+    // An API version below 1.0. The 1.3.239 loader crashes once the layer has
+    // refused such an instance, so the refusal alone shows this check.
+    let info = tuff::InstanceCreateInfo::new()
+        .application_info(Some(&below_1_0))
+        .enabled_layer_names(&layers);
+    assert_eq!(
+        vuid(entry.create_instance(&info)),
+        "VUID-VkApplicationInfo-apiVersion-04010"
+    );
+
+    // A messenger chained without the extension that defines it: the layer cannot
+    // speak through it, so the refusal alone shows the check.
+    let mut chained = messages.messenger_info();
+    let info = tuff::InstanceCreateInfo::new()
+        .application_info(Some(&v1_3))
+        .push_next(&mut chained);
+    assert_eq!(
+        vuid(entry.create_instance(&info)),
+        "VUID-VkInstanceCreateInfo-pNext-04926"
+    );
+
+    // The same instances, each rule kept, are made, with nothing said.
+    for exts in [vec![debug], vec![debug, surface, xlib]] {
+        let mut chained = messages.messenger_info();
+        let info = tuff::InstanceCreateInfo::new()
+            .application_info(Some(&v1_3))
+            .enabled_layer_names(&layers)
+            .enabled_extension_names(&exts)
+            .push_next(&mut chained);
+        drop(entry.create_instance(&info).expect("a valid instance"));
+    }
+    assert_silent(&messages);
+}
+
+#[test]
+fn queues_are_got_as_the_device_was_created_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let families = s
+        .physical
+        .get_physical_device_queue_family_properties()
+        .expect("queue families")
+        .len();
+    let absent = u32::try_from(families).expect("few families");
+    let d = &s.device;
+    let cases = [
+        (absent, 0, "VUID-vkGetDeviceQueue-queueFamilyIndex-00384"),
+        (s.family, 1, "VUID-vkGetDeviceQueue-queueIndex-00385"),
+    ];
+    for (family, index, expected) in cases {
+        assert_eq!(vuid(d.get_device_queue(family, index)), expected);
+    }
+    let info = |family, flags, index| {
+        tuff::DeviceQueueInfo2::new()
+            .queue_family_index(family)
+            .flags(flags)
+            .queue_index(index)
+    };
+    let none = vk::DeviceQueueCreateFlags::empty();
+    let protected = vk::DeviceQueueCreateFlags::PROTECTED;
+    let cases2 = [
+        (
+            info(absent, none, 0),
+            "VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842",
+        ),
+        (
+            info(s.family, protected, 0),
+            "VUID-VkDeviceQueueInfo2-flags-06225",
+        ),
+        (
+            info(s.family, none, 1),
+            "VUID-VkDeviceQueueInfo2-queueIndex-01843",
+        ),
+    ];
+    for (info, expected) in &cases2 {
+        assert_eq!(vuid(d.get_device_queue2(info)), *expected);
+    }
+    // The queue the device was created with is got both ways.
+    d.get_device_queue(s.family, 0).expect("queue");
+    d.get_device_queue2(&info(s.family, none, 0))
+        .expect("queue");
+    assert_silent(&s.messages);
+
+    for (family, index, expected) in cases {
+        layer_names(&s.messages, expected, || {
+            // SAFETY: see the module docs; the skipped call leaves a null queue, which
+            // is dropped unused.
+            drop(unsafe { d.get_device_queue_unchecked(family, index) });
+        });
+    }
+    for (info, expected) in &cases2 {
+        layer_names(&s.messages, expected, || {
+            // SAFETY: as above.
+            drop(unsafe { d.get_device_queue2_unchecked(info) });
+        });
+    }
+}
+
+#[test]
+fn surface_queries_name_a_family_and_a_surface_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let window = x11_window::X11Window::open(32, 32);
+    let s = setup_with(true, Wsi::Xlib);
+    // `window` outlives the surface.
+    // SAFETY: the display and window are the open X11 window's.
+    let surface = unsafe {
+        s.instance.create_xlib_surface_khr(
+            &tuff::XlibSurfaceCreateInfoKHR::new()
+                .dpy(window.display.cast())
+                .window(window.window),
+        )
+    }
+    .expect("surface");
+    let p = &s.physical;
+    let families = p
+        .get_physical_device_queue_family_properties()
+        .expect("queue families")
+        .len();
+    let absent = u32::try_from(families).expect("few families");
+    let past = "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269";
+    assert_eq!(
+        vuid(p.get_physical_device_surface_support_khr(absent, &surface)),
+        past
+    );
+    assert_eq!(
+        vuid(p.get_physical_device_surface_formats_khr(None)),
+        "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523"
+    );
+    assert_eq!(
+        vuid(p.get_physical_device_surface_present_modes_khr(None)),
+        "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523"
+    );
+    // With the surface, each query answers.
+    assert_eq!(
+        p.get_physical_device_surface_support_khr(s.family, &surface)
+            .expect("support"),
+        vk::TRUE
+    );
+    assert!(!p
+        .get_physical_device_surface_formats_khr(Some(&surface))
+        .expect("formats")
+        .is_empty());
+    assert!(!p
+        .get_physical_device_surface_present_modes_khr(Some(&surface))
+        .expect("present modes")
+        .is_empty());
+    let caps = p
+        .get_physical_device_surface_capabilities_khr(&surface)
+        .expect("capabilities");
+    assert!(caps.max_image_array_layers >= 1);
+    assert_silent(&s.messages);
+
+    layer_names(&s.messages, past, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { p.get_physical_device_surface_support_khr_unchecked(absent, &surface) });
+    });
+    drop(surface);
+    drop(s);
+    drop(window);
+}
+
+#[test]
+fn an_index_buffer_is_bound_at_an_aligned_address_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (indices, _memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::INDEX_BUFFER);
+    let expected = "VUID-vkCmdBindIndexBuffer-offset-00432";
+    for (offset, ty) in [(1, vk::IndexType::UINT16), (2, vk::IndexType::UINT32)] {
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        assert_eq!(
+            vuid(rec.cmd_bind_index_buffer(&indices, offset, ty)),
+            expected
+        );
+        // The recorder stays usable: an aligned offset is bound.
+        rec.cmd_bind_index_buffer(&indices, 4, ty)
+            .expect("aligned offset");
+        rec.end().expect("end");
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        layer_names(&s.messages, expected, || {
+            // SAFETY: see the module docs; the command buffer is never submitted.
+            drop(unsafe { rec.cmd_bind_index_buffer_unchecked(&indices, offset, ty) });
+        });
+        rec.end().expect("end");
+    }
+    assert_silent(&s.messages);
+}
+
+/// The 1.3.239 layer does not check this rule (and lavapipe crashes on the call), so
+/// the refusal alone shows it.
+#[test]
+fn private_data_of_an_instance_object_is_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let slot = d
+        .create_private_data_slot(&tuff::PrivateDataSlotCreateInfo::new())
+        .expect("slot");
+    let expected = "VUID-vkGetPrivateData-objectType-04018";
+    let instance = vk::Handle::as_raw(s.instance.raw());
+    assert_eq!(
+        vuid(d.get_private_data(vk::ObjectType::INSTANCE, instance, &slot)),
+        expected
+    );
+    assert_eq!(
+        d.get_private_data(vk::ObjectType::DEVICE, vk::Handle::as_raw(d.raw()), &slot)
+            .expect("the device's private data"),
+        0
+    );
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn a_cache_is_not_merged_into_itself_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let new_cache = || {
+        // SAFETY: no initial data, so no rule about it applies.
+        unsafe { d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new()) }.expect("cache")
+    };
+    let (a, b) = (new_cache(), new_cache());
+    let expected = "VUID-vkMergePipelineCaches-dstCache-00770";
+    assert_eq!(vuid(d.merge_pipeline_caches(&a, &[&b, &a])), expected);
+    d.merge_pipeline_caches(&a, &[&b]).expect("merge");
+    layer_names(&s.messages, expected, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.merge_pipeline_caches_unchecked(&a, &[&b, &a]) });
+    });
+    assert_silent(&s.messages);
+}
+
+/// The 1.3.239 layer does not check this rule: the refusal alone shows it.
+#[test]
+fn unknown_pipeline_statistics_are_refused() {
+    let _serial = vulkan::serial();
+    let s = setup_with_statistics();
+    let d = &s.device;
+    let info = |bits| {
+        tuff::QueryPoolCreateInfo::new()
+            .query_type(vk::QueryType::PIPELINE_STATISTICS)
+            .query_count(1)
+            .pipeline_statistics(vk::QueryPipelineStatisticFlags::from_raw(bits))
+    };
+    let unknown = info(0x1 | 0x1000);
+    assert_eq!(
+        vuid(d.create_query_pool(&unknown)),
+        "VUID-VkQueryPoolCreateInfo-queryType-00792"
+    );
+    drop(
+        d.create_query_pool(&info(0x1))
+            .expect("a pool of one statistic"),
+    );
+    assert_silent(&s.messages);
+}
+
+/// A device with the pipelineStatisticsQuery feature, which statistics pools need.
+fn setup_with_statistics() -> Setup {
+    tuff_setup::setup_with_features(
+        true,
+        vk::PhysicalDeviceFeatures {
+            pipeline_statistics_query: vk::TRUE,
+            ..Default::default()
+        },
+    )
+}
+
+/// The 1.3.239 layer checks neither rule: the refusals alone show them.
+#[test]
+fn handle_types_a_device_cannot_export_are_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    // Win32 handles: never exportable on the Linux devices the tests run on.
+    let mut fence_export = tuff::ExportFenceCreateInfo::new()
+        .handle_types(vk::ExternalFenceHandleTypeFlags::OPAQUE_WIN32);
+    let fence_info = tuff::FenceCreateInfo::new().push_next(&mut fence_export);
+    let fence_rule = "VUID-VkExportFenceCreateInfo-handleTypes-01446";
+    assert_eq!(vuid(d.create_fence(&fence_info)), fence_rule);
+    let mut semaphore_export = tuff::ExportSemaphoreCreateInfo::new()
+        .handle_types(vk::ExternalSemaphoreHandleTypeFlags::OPAQUE_WIN32);
+    let semaphore_info = tuff::SemaphoreCreateInfo::new().push_next(&mut semaphore_export);
+    let semaphore_rule = "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124";
+    assert_eq!(vuid(d.create_semaphore(&semaphore_info)), semaphore_rule);
+    // Without an export, both are made.
+    drop(
+        d.create_fence(&tuff::FenceCreateInfo::new())
+            .expect("fence"),
+    );
+    drop(
+        d.create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            .expect("semaphore"),
+    );
+    assert_silent(&s.messages);
+}
