@@ -4,6 +4,12 @@
 // tests/oracle.rs has a fixture for, the change to the fixture's smallest valid
 // value that breaks exactly that rule.
 oracle_cases! {
+    semaphore_type_create_info: vk::SemaphoreTypeCreateInfo<'_> {
+        "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279" => |v, l, o| {
+            v.semaphore_type = vk::SemaphoreType::from_raw(0);
+            v.initial_value = 1;
+        },
+    },
     cmd_set_event: args::CmdSetEvent {
         "VUID-vkCmdSetEvent-stageMask-04090" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
@@ -860,6 +866,10 @@ oracle_cases! {
         "VUID-VkDescriptorPoolSize-descriptorCount-00302" => |v, l, o| {
             v.descriptor_count = 0;
         },
+        "VUID-VkDescriptorPoolSize-type-02218" => |v, l, o| {
+            v.ty = vk::DescriptorType::from_raw(1000138000);
+            v.descriptor_count += 1;
+        },
     },
     descriptor_buffer_info: vk::DescriptorBufferInfo {
         "VUID-VkDescriptorBufferInfo-offset-00340" => |v, l, o| {
@@ -974,6 +984,22 @@ oracle_cases! {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
+    image_copy: vk::ImageCopy {
+        "VUID-VkImageCopy-extent-06668" => |v, l, o| {
+            v.extent.width = 0;
+        },
+        "VUID-VkImageCopy-extent-06669" => |v, l, o| {
+            v.extent.height = 0;
+        },
+        "VUID-VkImageCopy-extent-06670" => |v, l, o| {
+            v.extent.depth = 0;
+        },
+    },
+    image_subresource_layers: vk::ImageSubresourceLayers {
+        "VUID-VkImageSubresourceLayers-layerCount-01700" => |v, l, o| {
+            v.layer_count = 0;
+        },
+    },
     copy_image_info2: vk::CopyImageInfo2<'_> {
         "VUID-VkCopyImageInfo2-srcSubresource-01696" => |v, l, o| {
             o.image_copy2.src_subresource.mip_level = o.src_image.mip_levels as _;
@@ -1010,6 +1036,17 @@ oracle_cases! {
         },
         "VUID-VkCopyImageInfo2-dstImageLayout-00134" => |v, l, o| {
             v.dst_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    image_copy2: vk::ImageCopy2<'_> {
+        "VUID-VkImageCopy2-extent-06668" => |v, l, o| {
+            v.extent.width = 0;
+        },
+        "VUID-VkImageCopy2-extent-06669" => |v, l, o| {
+            v.extent.height = 0;
+        },
+        "VUID-VkImageCopy2-extent-06670" => |v, l, o| {
+            v.extent.depth = 0;
         },
     },
     cmd_copy_buffer_to_image: args::CmdCopyBufferToImage {
@@ -1070,6 +1107,17 @@ oracle_cases! {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
         },
     },
+    buffer_image_copy: vk::BufferImageCopy {
+        "VUID-VkBufferImageCopy-imageExtent-06659" => |v, l, o| {
+            v.image_extent.width = 0;
+        },
+        "VUID-VkBufferImageCopy-imageExtent-06660" => |v, l, o| {
+            v.image_extent.height = 0;
+        },
+        "VUID-VkBufferImageCopy-imageExtent-06661" => |v, l, o| {
+            v.image_extent.depth = 0;
+        },
+    },
     copy_buffer_to_image_info2: vk::CopyBufferToImageInfo2<'_> {
         "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174" => |v, l, o| {
             o.src_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x1);
@@ -1126,6 +1174,17 @@ oracle_cases! {
         },
         "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    buffer_image_copy2: vk::BufferImageCopy2<'_> {
+        "VUID-VkBufferImageCopy2-imageExtent-06659" => |v, l, o| {
+            v.image_extent.width = 0;
+        },
+        "VUID-VkBufferImageCopy2-imageExtent-06660" => |v, l, o| {
+            v.image_extent.height = 0;
+        },
+        "VUID-VkBufferImageCopy2-imageExtent-06661" => |v, l, o| {
+            v.image_extent.depth = 0;
         },
     },
     cmd_blit_image: args::CmdBlitImage {
@@ -1376,6 +1435,32 @@ oracle_cases! {
             v.stride = (l.max_vertex_input_binding_stride as u64 + 1) as _;
         },
     },
+    viewport: vk::Viewport {
+        "VUID-VkViewport-width-01770" => |v, l, o| {
+            v.width = 0.0;
+        },
+        "VUID-VkViewport-width-01771" => |v, l, o| {
+            v.width = (l.max_viewport_dimensions[0] as f64 + 1.0) as _;
+        },
+        "VUID-VkViewport-x-01774" => |v, l, o| {
+            v.x = (l.viewport_bounds_range[0] as f64 - 1.0) as _;
+        },
+        "VUID-VkViewport-x-01232" => |v, l, o| {
+            v.x = (l.viewport_bounds_range[1] as f64 - v.width as f64 + 1.0) as _;
+        },
+        "VUID-VkViewport-y-01775" => |v, l, o| {
+            v.y = (l.viewport_bounds_range[0] as f64 - 1.0) as _;
+        },
+        "VUID-VkViewport-y-01233" => |v, l, o| {
+            v.y = (l.viewport_bounds_range[1] as f64 - v.height as f64 + 1.0) as _;
+        },
+        "VUID-VkViewport-minDepth-02540" => |v, l, o| {
+            v.min_depth = 2.0;
+        },
+        "VUID-VkViewport-maxDepth-02541" => |v, l, o| {
+            v.max_depth = 2.0;
+        },
+    },
     pipeline_rasterization_state_create_info: vk::PipelineRasterizationStateCreateInfo<'_> {
         "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782" => |v, l, o| {
             v.depth_clamp_enable = 1;
@@ -1390,6 +1475,14 @@ oracle_cases! {
         },
         "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785" => |v, l, o| {
             v.alpha_to_one_enable = 1;
+        },
+    },
+    cmd_set_depth_bounds: args::CmdSetDepthBounds {
+        "VUID-vkCmdSetDepthBounds-minDepthBounds-02508" => |v, l, o| {
+            v.min_depth_bounds = 2.0;
+        },
+        "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509" => |v, l, o| {
+            v.max_depth_bounds = 2.0;
         },
     },
     pipeline_color_blend_state_create_info: vk::PipelineColorBlendStateCreateInfo<'_> {
@@ -1409,6 +1502,17 @@ oracle_cases! {
         },
         "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611" => |v, l, o| {
             v.dst_alpha_blend_factor = vk::BlendFactor::from_raw(15);
+        },
+    },
+    cmd_dispatch: args::CmdDispatch {
+        "VUID-vkCmdDispatch-groupCountX-00386" => |v, l, o| {
+            v.group_count_x = (l.max_compute_work_group_count[0] as u64 + 1) as _;
+        },
+        "VUID-vkCmdDispatch-groupCountY-00387" => |v, l, o| {
+            v.group_count_y = (l.max_compute_work_group_count[1] as u64 + 1) as _;
+        },
+        "VUID-vkCmdDispatch-groupCountZ-00388" => |v, l, o| {
+            v.group_count_z = (l.max_compute_work_group_count[2] as u64 + 1) as _;
         },
     },
     cmd_dispatch_indirect: args::CmdDispatchIndirect {

@@ -904,6 +904,15 @@ mod args {
     pub struct CmdDispatchIndirect {
         pub offset: vk::DeviceSize,
     }
+    pub struct CmdDispatch {
+        pub group_count_x: u32,
+        pub group_count_y: u32,
+        pub group_count_z: u32,
+    }
+    pub struct CmdSetDepthBounds {
+        pub min_depth_bounds: f32,
+        pub max_depth_bounds: f32,
+    }
     pub struct CmdCopyQueryPoolResults {
         pub dst_offset: vk::DeviceSize,
     }
@@ -1277,6 +1286,16 @@ const LAYER_NAMES: &[(&str, &str)] = &[
         "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
         "[ vkCmdCopyImageToBuffer-dstBuffer2-00192 ]",
     ),
+    // The rules' VUIDs without VK_EXT_depth_range_unrestricted, which tuff does not
+    // emit: the same bounds.
+    (
+        "VUID-VkViewport-minDepth-02540",
+        "[ VUID-VkViewport-minDepth-01234 ]",
+    ),
+    (
+        "VUID-VkViewport-maxDepth-02541",
+        "[ VUID-VkViewport-maxDepth-01235 ]",
+    ),
     // The rule's VUID for the same feature under VK_EXT_buffer_device_address.
     (
         "VUID-VkBufferCreateInfo-flags-06549",
@@ -1289,6 +1308,27 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "extent-06670",
+        &[
+            "VUID-vkCmdCopyImage-srcImage-01790",
+            "VUID-VkCopyImageInfo2-srcImage-01790",
+        ],
+        FLAT_DEPTH,
+    ),
+    (
+        "imageExtent-06661",
+        &[
+            "VUID-vkCmdCopyBufferToImage-srcImage-00201",
+            "VUID-VkCopyBufferToImageInfo2-srcImage-00201",
+        ],
+        FLAT_DEPTH,
+    ),
+    (
+        "layerCount-01700",
+        &["VUID-vkCmdCopyImage-srcImage-07744"],
+        "a copy of no layers of a 2D image has a depth (its layer count) unlike the other image's",
+    ),
     (
         "srcSubresource-01696",
         &["srcOffset-00144", "srcOffset-00145", "srcOffset-00147"],
@@ -1413,6 +1453,7 @@ const BOTH_COLOR: &str = "the fixture's two images are color images, so an aspec
      lacks makes the source's and destination's masks differ";
 const COLOR_ATTACHMENT: &str = "the fixture's attachment has a color format, and the depth and \
      stencil layouts the rule forbids without the feature a color format forbids as well";
+const FLAT_DEPTH: &str = "a region of a 2D image has depth 1, so a depth of 0 breaks that rule too";
 const LEVEL_PAST: &str =
     "a mip level past the image's has no extent, so the region lies outside it as well";
 const TWICE: &str =
@@ -1483,7 +1524,7 @@ macro_rules! transfer2_fixture {
 }
 
 /// The safe struct of a fixture's buffer-image region.
-fn buffer_image_copy2(r: &vk::BufferImageCopy2<'_>) -> tuff::BufferImageCopy2<'static> {
+fn safe_buffer_image_copy2(r: &vk::BufferImageCopy2<'_>) -> tuff::BufferImageCopy2<'static> {
     tuff::BufferImageCopy2::new()
         .buffer_offset(r.buffer_offset)
         .buffer_row_length(r.buffer_row_length)
@@ -1572,7 +1613,7 @@ transfer2_fixture!(
         |run: &mut dyn FnMut(&mut tuff::CopyBufferToImageInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_buffer(s, &o.src_buffer);
             let (dst, _m2) = make_image(s, &o.dst_image);
-            let regions = [buffer_image_copy2(&o.buffer_image_copy2)];
+            let regions = [safe_buffer_image_copy2(&o.buffer_image_copy2)];
             run(&mut tuff::CopyBufferToImageInfo2::new(&src, &dst)
                 .dst_image_layout(DST)
                 .regions(&regions))
@@ -1589,7 +1630,7 @@ transfer2_fixture!(
         |run: &mut dyn FnMut(&mut tuff::CopyImageToBufferInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_image(s, &o.src_image);
             let (dst, _m2) = make_buffer(s, &o.dst_buffer);
-            let regions = [buffer_image_copy2(&o.buffer_image_copy2)];
+            let regions = [safe_buffer_image_copy2(&o.buffer_image_copy2)];
             run(&mut tuff::CopyImageToBufferInfo2::new(&src, &dst)
                 .src_image_layout(SRC)
                 .regions(&regions))
@@ -2245,4 +2286,177 @@ fn attachment_reference2(
     change(&mut reference, limits, &mut o);
     o.attachment_reference2_color_attachments = reference;
     render_pass2(s, &o, |_| {})
+}
+
+fn viewport(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::Viewport, &Limits, &mut Objects),
+) -> Outcome {
+    let mut v = vk::Viewport {
+        width: 4.0,
+        height: 4.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    change(&mut v, limits, &mut Objects::default());
+    record(
+        s,
+        |r| unsafe { r.cmd_set_viewport(0, &[v]) },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_viewport_unchecked(0, &[v]) },
+    )
+}
+
+/// A fixture for a region struct of a copy: the copy command's fixture, with the
+/// change made to the one region it passes.
+macro_rules! region_fixture {
+    ($name:ident, $ty:ty, $command:ident, $args:ty, |$o:ident| $region:expr) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
+        ) -> Outcome {
+            $command(s, limits, &|_: &mut $args, l: &Limits, $o: &mut Objects| {
+                let mut region = $region;
+                change(&mut region, l, $o);
+                $region = region;
+            })
+        }
+    };
+}
+
+region_fixture!(
+    image_copy,
+    vk::ImageCopy,
+    cmd_copy_image,
+    args::CmdCopyImage,
+    |o| o.image_copy
+);
+region_fixture!(
+    buffer_image_copy,
+    vk::BufferImageCopy,
+    cmd_copy_buffer_to_image,
+    args::CmdCopyBufferToImage,
+    |o| o.buffer_image_copy
+);
+region_fixture!(
+    image_subresource_layers,
+    vk::ImageSubresourceLayers,
+    cmd_copy_image,
+    args::CmdCopyImage,
+    |o| o.image_copy.src_subresource
+);
+
+/// As [`region_fixture!`], for the `*2` infos, whose fixtures take the info.
+macro_rules! region2_fixture {
+    ($name:ident, $ty:ty, $command:ident, $info:ident, |$o:ident| $region:expr) => {
+        fn $name(
+            s: &Setup,
+            limits: &Limits,
+            change: &dyn Fn(&mut $ty, &Limits, &mut Objects),
+        ) -> Outcome {
+            $command(s, limits, &|_: &mut vk::$info<'_>,
+                                  l: &Limits,
+                                  $o: &mut Objects| {
+                let mut region = $region;
+                change(&mut region, l, $o);
+                $region = region;
+            })
+        }
+    };
+}
+
+region2_fixture!(
+    image_copy2,
+    vk::ImageCopy2<'static>,
+    copy_image_info2,
+    CopyImageInfo2,
+    |o| o.image_copy2
+);
+region2_fixture!(
+    buffer_image_copy2,
+    vk::BufferImageCopy2<'static>,
+    copy_buffer_to_image_info2,
+    CopyBufferToImageInfo2,
+    |o| o.buffer_image_copy2
+);
+
+fn cmd_dispatch(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDispatch, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDispatch {
+        group_count_x: 1,
+        group_count_y: 1,
+        group_count_z: 1,
+    };
+    change(&mut a, limits, &mut Objects::default());
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(s, &target);
+    let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        unsafe { r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
+        unsafe {
+            r.cmd_bind_descriptor_sets(
+                vk::PipelineBindPoint::COMPUTE,
+                &p.compute_layout,
+                0,
+                &[&p.set],
+                &[],
+            )
+        }
+        .expect("sets");
+    };
+    let (x, y, z) = (a.group_count_x, a.group_count_y, a.group_count_z);
+    record(
+        s,
+        |r| {
+            bind(r);
+            unsafe { r.cmd_dispatch(x, y, z) }
+        },
+        |r| {
+            bind(r);
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            drop(unsafe { r.cmd_dispatch_unchecked(x, y, z) });
+        },
+    )
+}
+
+fn cmd_set_depth_bounds(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdSetDepthBounds, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdSetDepthBounds {
+        min_depth_bounds: 0.0,
+        max_depth_bounds: 1.0,
+    };
+    change(&mut a, limits, &mut Objects::default());
+    let (min, max) = (a.min_depth_bounds, a.max_depth_bounds);
+    record(
+        s,
+        |r| r.cmd_set_depth_bounds(min, max),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_depth_bounds_unchecked(min, max) },
+    )
+}
+
+fn semaphore_type_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::SemaphoreTypeCreateInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    let mut ty = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(1);
+    // SAFETY: as in `buffer_create_info`.
+    change(
+        unsafe { ty.raw_values_mut() },
+        limits,
+        &mut Objects::default(),
+    );
+    let info = tuff::SemaphoreCreateInfo::new().push_next(&mut ty);
+    create!(s, create_semaphore, create_semaphore_unchecked, &info)
 }

@@ -2121,14 +2121,13 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
         descriptor_count: 1,
     }];
-    let pool = unsafe {
-        d.create_descriptor_pool(
+    let pool = d
+        .create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-    }
-    .expect("descriptor pool");
+        .expect("descriptor pool");
     let set = unsafe {
         d.allocate_descriptor_sets(
             &pool,
@@ -2370,14 +2369,13 @@ fn descriptor_updates_stay_inside_their_sets() {
             descriptor_count: 4,
         },
     ];
-    let pool = unsafe {
-        d.create_descriptor_pool(
+    let pool = d
+        .create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(2)
                 .pool_sizes(&sizes),
         )
-    }
-    .expect("pool");
+        .expect("pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout, &set_layout]);
     let mut sets = unsafe {
         d.allocate_descriptor_sets(
@@ -2952,9 +2950,9 @@ fn indices_and_chained_counts_match_what_they_index() {
     let set_layout =
         unsafe { d.create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new()) }
             .expect("set layout");
-    let pool =
-        unsafe { d.create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1)) }
-            .expect("pool");
+    let pool = d
+        .create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1))
+        .expect("pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let counts = [1u32, 1];
     let mut variable =

@@ -82,15 +82,14 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 4,
     }];
-    let pool = unsafe {
-        d.create_descriptor_pool(
+    let pool = d
+        .create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .flags(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
                 .max_sets(4)
                 .pool_sizes(&sizes),
         )
-    }
-    .expect("descriptor pool");
+        .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let sets = unsafe {
         d.allocate_descriptor_sets(

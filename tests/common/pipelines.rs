@@ -222,14 +222,13 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             descriptor_count: 1,
         },
     ];
-    let descriptor_pool = unsafe {
-        d.create_descriptor_pool(
+    let descriptor_pool = d
+        .create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-    }
-    .expect("descriptor pool");
+        .expect("descriptor pool");
     let set = unsafe {
         d.allocate_descriptor_sets(
             &descriptor_pool,
@@ -450,14 +449,13 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 1,
     }];
-    let pool = unsafe {
-        d.create_descriptor_pool(
+    let pool = d
+        .create_descriptor_pool(
             &tuff::DescriptorPoolCreateInfo::new()
                 .max_sets(1)
                 .pool_sizes(&sizes),
         )
-    }
-    .expect("descriptor pool");
+        .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&layout]);
     let set = unsafe {
         d.allocate_descriptor_sets(

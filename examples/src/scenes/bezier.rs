@@ -76,17 +76,14 @@ impl Bezier {
                 depth: true,
             },
         )?;
-        // SAFETY: a pool of a few sets of the types the layouts use, no flags.
-        let pool = unsafe {
-            d.create_descriptor_pool(
-                &tuff::DescriptorPoolCreateInfo::new()
-                    .max_sets(1)
-                    .pool_sizes(&[vk::DescriptorPoolSize {
-                        ty: vk::DescriptorType::STORAGE_BUFFER,
-                        descriptor_count: 1,
-                    }]),
-            )
-        }?;
+        let pool = d.create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&[vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::STORAGE_BUFFER,
+                    descriptor_count: 1,
+                }]),
+        )?;
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
         // SAFETY: the pool was made with room for every set the scene allocates, of these types.
         let set = unsafe {

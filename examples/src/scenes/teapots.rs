@@ -68,17 +68,14 @@ impl Teapots {
                 depth: true,
             },
         )?;
-        // SAFETY: a pool of a few sets of the types the layouts use, no flags.
-        let pool = unsafe {
-            d.create_descriptor_pool(
-                &tuff::DescriptorPoolCreateInfo::new()
-                    .max_sets(FRAMES_IN_FLIGHT as u32)
-                    .pool_sizes(&[vk::DescriptorPoolSize {
-                        ty: vk::DescriptorType::UNIFORM_BUFFER,
-                        descriptor_count: FRAMES_IN_FLIGHT as u32,
-                    }]),
-            )
-        }?;
+        let pool = d.create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(FRAMES_IN_FLIGHT as u32)
+                .pool_sizes(&[vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::UNIFORM_BUFFER,
+                    descriptor_count: FRAMES_IN_FLIGHT as u32,
+                }]),
+        )?;
         let layouts = tuff::HandleSlice::new(&[&set_layout; FRAMES_IN_FLIGHT]);
         // SAFETY: the pool was made with room for every set the scene allocates, of these types.
         let sets = unsafe {

@@ -44,6 +44,22 @@ pub fn number(text: &str, float: bool) -> TokenStream {
         .unwrap_or_else(|_| quote!(0))
 }
 
+/// A limit of `l` (the device's `VkPhysicalDeviceLimits`), or an element of an
+/// array limit: `maxViewportDimensions[0]`.
+fn limit(name: &str) -> TokenStream {
+    match name.split_once('[') {
+        Some((base, index)) => {
+            let f = field_ident(base);
+            let i = Literal::usize_unsuffixed(index.trim_end_matches(']').parse().unwrap_or(0));
+            quote!(l.#f[#i])
+        }
+        None => {
+            let f = field_ident(name);
+            quote!(l.#f)
+        }
+    }
+}
+
 fn op(o: Op) -> TokenStream {
     match o {
         Op::Lt => quote!(<),
@@ -130,13 +146,20 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
             plus: Some(p),
             op: o,
             rhs,
+            float,
             ..
         } => {
-            // A sum of two whole numbers, compared as `i128` so it cannot overflow.
+            // A sum of two whole numbers, compared as `i128` so it cannot overflow; of
+            // two floats, as `f64`, where a NaN fails every comparison.
             let sum = {
                 let (m, p) = (member(m), member(p));
-                quote!((#m as i128 + #p as i128))
+                if *float {
+                    quote!((#m as f64 + #p as f64))
+                } else {
+                    quote!((#m as i128 + #p as i128))
+                }
             };
+            let cast = if *float { quote!(f64) } else { quote!(i128) };
             let ot = op(if negated { inverse(*o) } else { *o });
             // An object the wrappers did not make has no record: not known.
             let known = if negated {
@@ -146,16 +169,24 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
             };
             match rhs {
                 Rhs::Const(c) => {
-                    let c = number(c, false);
-                    quote!(#sum #ot #c)
+                    let c = number(c, *float);
+                    if *float && negated {
+                        quote!((#sum.is_nan() || #sum #ot #c))
+                    } else {
+                        quote!(#sum #ot #c)
+                    }
                 }
                 Rhs::Member(other) => {
                     let other = member(other);
-                    quote!(#sum #ot (#other as i128))
+                    quote!(#sum #ot (#other as #cast))
                 }
                 Rhs::Limit(l) => {
-                    let l = field_ident(l);
-                    quote!(s.limits().#known(|l| #sum #ot (l.#l as i128)))
+                    let l = limit(l);
+                    if *float && negated {
+                        quote!(s.limits().#known(|l| #sum.is_nan() || #sum #ot (#l as #cast)))
+                    } else {
+                        quote!(s.limits().#known(|l| #sum #ot (#l as #cast)))
+                    }
                 }
                 Rhs::Created {
                     handle: h,
@@ -224,9 +255,9 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                     quote!(#n1 #n2 (#m as #cast) #ot (#other as #cast))
                 }
                 Rhs::Limit(l) => {
-                    let l = field_ident(l);
+                    let l = limit(l);
                     let n = nan(&m);
-                    let cmp = quote!((#m as #cast) #ot (l.#l as #cast));
+                    let cmp = quote!((#m as #cast) #ot (#l as #cast));
                     if negated {
                         quote!(#n s.limits().is_some_and(|l| #cmp))
                     } else {

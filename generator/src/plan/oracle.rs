@@ -70,11 +70,23 @@ pub const FIXTURES: &[&str] = &[
     "VkImageSubresourceRange",
     "VkAttachmentReference",
     "VkAttachmentReference2",
+    "VkViewport",
+    "VkImageCopy",
+    "VkImageCopy2",
+    "VkBufferImageCopy",
+    "VkBufferImageCopy2",
+    "VkImageSubresourceLayers",
+    "vkCmdDispatch",
+    "vkCmdSetDepthBounds",
+    "VkSemaphoreTypeCreateInfo",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
 pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkBufferCreateInfo-flags-00916", SPARSE),
+    ("VUID-VkBufferCreateInfo-flags-00918", SPARSE),
+    ("VUID-VkImageCreateInfo-flags-00987", SPARSE),
+    ("VUID-VkImageCreateInfo-flags-01573", "a block-texel-view-compatible image also needs a compressed format (`flags-01572`), which the fixture's RGBA8 image is not"),
     ("VUID-VkBufferCreateInfo-flags-00917", SPARSE),
     ("VUID-VkImageCreateInfo-flags-01924", SPARSE),
     ("VUID-VkImageCreateInfo-tiling-04121", SPARSE),
@@ -89,6 +101,10 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageCreateInfo-flags-00949", ONE_D),
     ("VUID-VkImageCreateInfo-flags-00950", ONE_D),
     ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
+    ("VUID-VkPushConstantRange-size-00298", "a size past the limit by one is not a multiple of 4 (`size-00297`), and an offset past it by one not one either (`offset-00295`)"),
+    ("VUID-VkImageSubresourceLayers-aspectMask-00168", "the metadata aspect is not an aspect of the fixture's color image, which the copy's aspect rule (`aspectMask-00142`) refuses first"),
+    ("VUID-VkViewport-y-01776", "a `y` past the upper bound puts `y + height` past it too (`y-01233`), which is checked first"),
+    ("VUID-VkViewport-y-01777", "a `y + height` below the lower bound puts `y` below it too (`y-01775`), which is checked first"),
     ("VUID-VkPushConstantRange-offset-00294", "an offset at the limit leaves no room for a size, so `size-00298` breaks as well"),
     ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430", "a patch list without tessellation shaders also breaks `VkGraphicsPipelineCreateInfo-topology-00737`"),
     ("VUID-vkCmdWriteTimestamp2-stage-03929", ONE_STAGE),
@@ -435,6 +451,15 @@ fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
 /// Changes that make a requirement fail.
 fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
+        // A member a condition set bits of (`if flags has A, flags must have B`)
+        // keeps them and lacks the required ones; another gets one other bit.
+        Pred::AnyBit { member, bits } if out.iter().any(|a| a.member() == member) => {
+            out.push(Assign::ClearBits {
+                ty: at.ty(member)?,
+                member: member.clone(),
+                bits: mask(bits),
+            })
+        }
         Pred::AnyBit { member, bits } => {
             let ty = at.ty(member)?;
             let group = at.model.types.get(&ty)?.bit_values.clone()?;
@@ -549,6 +574,26 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
                 expr: format!("({bound}{minus} + 1) as _"),
             });
         }
+        // `a + b <= L` breaks at `a = L - b + 1`, `a + b >= L` at `a = L - b - 1`.
+        Pred::Compare {
+            member,
+            plus: Some(p),
+            op: op @ (Op::Le | Op::Ge),
+            rhs: Rhs::Limit(l),
+            float,
+            ..
+        } => {
+            let (cast, one) = if *float { ("f64", "1.0") } else { ("i64", "1") };
+            let sign = if *op == Op::Le { "+" } else { "-" };
+            out.push(Assign::Number {
+                member: member.clone(),
+                expr: format!(
+                    "({} as {cast} - {} as {cast} {sign} {one}) as _",
+                    limit(l),
+                    at.path(p)
+                ),
+            });
+        }
         Pred::Compare {
             member,
             plus: None,
@@ -578,10 +623,14 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
                 }
                 (Rhs::Const(c), Op::Le | Op::Eq) => shifted(c, *float, 1)?,
                 (Rhs::Const(c), Op::Ge) if c != "0" => shifted(c, *float, -1)?,
-                (Rhs::Limit(l), Op::Lt) => format!("l.{} as _", crate::names::field(l)),
+                (Rhs::Limit(l), Op::Lt) => format!("{} as _", limit(l)),
+                (Rhs::Limit(l), Op::Le) if *float => format!("({} as f64 + 1.0) as _", limit(l)),
                 (Rhs::Limit(l), Op::Le) => {
-                    format!("(l.{} as u64 + 1) as _", crate::names::field(l))
+                    format!("({} as u64 + 1) as _", limit(l))
                 }
+                (Rhs::Limit(l), Op::Gt) => format!("{} as _", limit(l)),
+                (Rhs::Limit(l), Op::Ge) if *float => format!("({} as f64 - 1.0) as _", limit(l)),
+                (Rhs::Limit(l), Op::Ge) => format!("({} as i64 - 1) as _", limit(l)),
                 (Rhs::Member(m), Op::Gt | Op::Lt) => at.path(m),
                 (Rhs::Member(m), Op::Ge) => format!("{} - {one}", at.path(m)),
                 (Rhs::Member(m), Op::Le) => format!("{} + {one}", at.path(m)),
@@ -595,6 +644,14 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         _ => return None,
     }
     Some(())
+}
+
+/// A limit of the device's `l`, or an element of an array limit.
+fn limit(name: &str) -> String {
+    match name.split_once('[') {
+        Some((base, index)) => format!("l.{}[{index}", crate::names::field(base)),
+        None => format!("l.{}", crate::names::field(name)),
+    }
 }
 
 /// A format of each kind that lavapipe (and most devices) support:

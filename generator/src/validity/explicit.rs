@@ -538,12 +538,32 @@ pub fn plain(html: &str) -> String {
 fn normalised(text: &str) -> String {
     let s = text
         .replace(" must not equal ", " must not be equal to ")
-        .replace(" must equal ", " must be equal to ");
+        .replace(" must equal ", " must be equal to ")
+        .replace(" must also ", " must ");
+    // `The sum of a and b must`, `(a + b) must`: `a + b must`.
+    static SUM: OnceLock<[Regex; 3]> = OnceLock::new();
+    let [sum, paren, minus] = SUM.get_or_init(|| {
+        [
+            Regex::new(r"\b[Tt]he sum of (`[\w.]+`) and (`[\w.]+`) must").expect("pattern"),
+            Regex::new(r"^\((`[\w.]+`) \+ (`[\w.]+`)\) must").expect("pattern"),
+            // `b must be <= L minus a` is `a + b <= L`.
+            Regex::new(
+                r"^(`[\w.]+`) must be less than or equal to (`[\w:.\[\]]+`) minus (`[\w.]+`)$",
+            )
+            .expect("pattern"),
+        ]
+    });
+    let s = sum.replace_all(&s, "$1 + $2 must");
+    let s = paren.replace_all(&s, "$1 + $2 must");
+    let s = minus.replace_all(&s, "$3 + $1 must be less than or equal to $2");
     static BARE: OnceLock<Regex> = OnceLock::new();
     let bare = re(
         &BARE,
         r"(must (?:not )?be(?: (?:greater|less) than(?: or equal to)?)?) (\d+(?:\.\d+)?|zero)(,| and |$)",
     );
+    // `maxViewportDimensions`[0]: one name, as `plain` writes an indexed member.
+    static INDEXED: OnceLock<Regex> = OnceLock::new();
+    let s = re(&INDEXED, r"`([\w:]+)`\[(\d+)\]").replace_all(&s, "`$1[$2]`");
     bare.replace_all(&s, |c: &regex::Captures| {
         let n = if &c[2] == "zero" { "0" } else { &c[2] };
         format!("{} `{n}`{}", &c[1], &c[3])
@@ -705,8 +725,12 @@ fn capitalised(text: &str) -> String {
 /// the last comma-separated part that holds `must`.
 fn split_conditions(rest: &str) -> Option<(Vec<&str>, &str)> {
     let at = rest.find(" must ")?;
-    let cut = rest[..at].rfind(", ")?;
-    let req = rest[cut + 2..].trim_start_matches("then ");
+    // `If C then R`, with no comma, splits at `then`.
+    let (cut, skip) = match rest[..at].rfind(", ") {
+        Some(cut) => (cut, 2),
+        None => (rest[..at].rfind(" then ")?, 1),
+    };
+    let req = rest[cut + skip..].trim_start_matches("then ");
     let mut conds = Vec::new();
     for part in rest[..cut].split(", ") {
         let part = part.trim_start_matches("and ");
@@ -1139,12 +1163,12 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
     static R: OnceLock<Regex> = OnceLock::new();
     let r = re(
         &R,
-        r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be (greater|less) than (or equal to )?`([\w:.]+)`$",
+        r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be (greater|less) than (or equal to )?`([\w:.\[\]]+)`$",
     );
     let mut c = whole(r, text)?;
-    let plus = summand(input, &c.remove(1))?;
     let m = member(input, &c[0])?;
     numeric(&m.type_name).then_some(())?;
+    let plus = summand(input, &c.remove(1), m.type_name == "float")?;
     let op = match (c[1].as_str(), c[2].is_empty()) {
         ("greater", true) => Op::Gt,
         ("greater", false) => Op::Ge,
@@ -1154,11 +1178,18 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
     let rhs = &c[3];
     let limits = input.model.types.get("VkPhysicalDeviceLimits")?;
     let mut float = m.type_name == "float";
+    // A limit, or an element of an array limit (`viewportBoundsRange[1]`).
     let mut limit = |name: &str| {
-        let l = limits
-            .members
-            .iter()
-            .find(|l| l.name == name && l.static_array.is_none() && numeric(&l.type_name))?;
+        let (base, index) = part(name);
+        let l = limits.members.iter().find(|l| {
+            l.name == base
+                && numeric(&l.type_name)
+                && match (index, l.static_array.as_deref()) {
+                    (None, None) => true,
+                    (Some(i), Some(n)) => i.parse::<usize>().ok() < n.parse::<usize>().ok(),
+                    _ => false,
+                }
+        })?;
         float |= l.type_name == "float";
         Some(Rhs::Limit(name.to_owned()))
     };
@@ -1186,13 +1217,14 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
 }
 
 /// The second member of a sum, if the text has one: `Some(None)` when it has
-/// none, `None` when it names no whole-number member.
-fn summand(input: &Input, path: &str) -> Option<Option<String>> {
+/// none, `None` when it names no member of the first's kind (whole numbers, or
+/// floating-point ones when `float`).
+fn summand(input: &Input, path: &str, float: bool) -> Option<Option<String>> {
     if path.is_empty() {
         return Some(None);
     }
     let m = member(input, path)?;
-    (numeric(&m.type_name) && m.type_name != "float").then(|| Some(path.to_owned()))
+    (numeric(&m.type_name) && (m.type_name == "float") == float).then(|| Some(path.to_owned()))
 }
 
 /// `` `x` must be between `0.0` and `1.0`, inclusive ``, `` ... between `1.0` and
@@ -1362,7 +1394,7 @@ fn created_req(input: &Input, text: &str) -> Option<Pred> {
         )
     };
     (self::object(input, &handle)? == object).then_some(())?;
-    let plus = summand(input, &plus)?;
+    let plus = summand(input, &plus, false)?;
     let t = &member(input, &m)?.type_name;
     numeric(t).then_some(())?;
     Some(Pred::Compare {

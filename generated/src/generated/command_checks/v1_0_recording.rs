@@ -2697,7 +2697,13 @@ impl<'c> Recorder<'c, Outside> {
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_dispatch`], run before the call.
-    pub(crate) fn validate_cmd_dispatch(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_dispatch(
+        &self,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -2707,6 +2713,54 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdDispatch-commandBuffer-cmdpool",
                     "the command buffer's pool does not support compute operations"
                         .into(),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (group_count_x as i128) > (l.max_compute_work_group_count[0] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatch-groupCountX-00386",
+                    format!(
+                        "`groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`groupCountX` = {:?})",
+                        group_count_x
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (group_count_y as i128) > (l.max_compute_work_group_count[1] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatch-groupCountY-00387",
+                    format!(
+                        "`groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`groupCountY` = {:?})",
+                        group_count_y
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (group_count_z as i128) > (l.max_compute_work_group_count[2] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatch-groupCountZ-00388",
+                    format!(
+                        "`groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`groupCountZ` = {:?})",
+                        group_count_z
+                    ),
                 ),
             );
         }

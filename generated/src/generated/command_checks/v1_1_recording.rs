@@ -4,7 +4,13 @@
 use super::*;
 impl<'c> Recorder<'c, Outside> {
     ///The dynamic checks of [`Self::cmd_dispatch_base`], run before the call.
-    pub(crate) fn validate_cmd_dispatch_base(&self) -> Result<()> {
+    pub(crate) fn validate_cmd_dispatch_base(
+        &self,
+        base_group_x: u32,
+        base_group_y: u32,
+        base_group_z: u32,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -14,6 +20,54 @@ impl<'c> Recorder<'c, Outside> {
                     "VUID-vkCmdDispatchBase-commandBuffer-cmdpool",
                     "the command buffer's pool does not support compute operations"
                         .into(),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (base_group_x as i128) >= (l.max_compute_work_group_count[0] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatchBase-baseGroupX-00421",
+                    format!(
+                        "`baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`baseGroupX` = {:?})",
+                        base_group_x
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (base_group_y as i128) >= (l.max_compute_work_group_count[1] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatchBase-baseGroupX-00422",
+                    format!(
+                        "`baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`baseGroupY` = {:?})",
+                        base_group_y
+                    ),
+                ),
+            );
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (base_group_z as i128) >= (l.max_compute_work_group_count[2] as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdDispatchBase-baseGroupZ-00423",
+                    format!(
+                        "`baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`baseGroupZ` = {:?})",
+                        base_group_z
+                    ),
                 ),
             );
         }

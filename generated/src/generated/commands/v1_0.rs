@@ -402,11 +402,10 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateBuffer-flags-00911`: If the `flags` member of `pCreateInfo` includes `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, creating this `VkBuffer` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
 - `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
-- `VUID-VkBufferCreateInfo-flags-00918`: If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`
 - `VUID-VkBufferCreateInfo-sharingMode-01419`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
 - `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
@@ -756,12 +755,6 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
     }
     /**`vkCreateDescriptorPool`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDescriptorPoolSize-type-02218`: If `type` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
-
 # Valid usage
 
 The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
@@ -771,7 +764,7 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
 - `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_descriptor_pool<'a>(
+    pub fn create_descriptor_pool<'a>(
         &self,
         create_info: &DescriptorPoolCreateInfo<'a>,
     ) -> Result<DescriptorPool> {
@@ -818,12 +811,11 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
 
 # Safety
 
-The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
 - `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
@@ -1121,7 +1113,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 155 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 148 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1270,14 +1262,7 @@ The caller upholds these 155 rules that no check of this method enforces (its co
 - `VUID-VkSpecializationInfo-constantID-04911`: The `constantID` value of each element of `pMapEntries` must be unique within `pMapEntries`
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 - `VUID-VkVertexInputAttributeDescription-format-00623`: `format` must be allowed as a vertex buffer format, as specified by the `VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by `vkGetPhysicalDeviceFormatProperties`
-- `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
 - `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
-- `VUID-VkViewport-x-01774`: `x` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-x-01232`: (`x` + `width`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01775`: `y` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
 
 # Valid usage
 
@@ -1373,7 +1358,7 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
 
 # Safety
 
-The caller upholds these 37 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateImage-flags-00939`: If the `flags` member of `pCreateInfo` includes `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, creating this `VkImage` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
 - `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
@@ -1384,7 +1369,6 @@ The caller upholds these 37 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
 - `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
 - `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
 - `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
 - `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
@@ -1392,7 +1376,6 @@ The caller upholds these 37 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
 - `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
 - `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
-- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
 - `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
 - `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
 - `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
@@ -1663,14 +1646,13 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
 
 # Safety
 
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorUpdateAfterBindInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetUpdateAfterBindInlineUniformBlocks`
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: Elements of `pSetLayouts` must be valid VkDescriptorSetLayout objects
-- `VUID-VkPushConstantRange-size-00298`: `size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset`
 
 # Valid usage
 

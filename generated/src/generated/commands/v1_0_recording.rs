@@ -893,15 +893,14 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
 
 The rules are on [`vkCmdSetDepthBounds`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBounds.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`: dynamic (checks the rule as written (recogniser: number between two bounds, inclusive))
+- `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`: dynamic (checks the rule as written (recogniser: number between two bounds, inclusive))
 - `VUID-vkCmdSetDepthBounds-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBounds-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_bounds(
         &mut self,
@@ -1164,16 +1163,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
 - `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
-- `VUID-VkViewport-x-01774`: `x` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-x-01232`: (`x` + `width`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01775`: `y` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
 
 # Valid usage
 
@@ -2529,7 +2521,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 
 # Safety
 
-The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatch-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatch-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2543,9 +2535,6 @@ The caller upholds these 27 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatch-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDispatch-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDispatch-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDispatch-groupCountX-00386`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0]
-- `VUID-vkCmdDispatch-groupCountY-00387`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1]
-- `VUID-vkCmdDispatch-groupCountZ-00388`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2]
 - `VUID-vkCmdDispatch-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDispatch-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatch-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
@@ -2565,13 +2554,16 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 
 - `VUID-vkCmdDispatch-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatch-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatch-groupCountX-00386`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-vkCmdDispatch-groupCountY-00387`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-vkCmdDispatch-groupCountZ-00388`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-vkCmdDispatch-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatch-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 59 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch(
         &mut self,
@@ -2587,7 +2579,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 59 (exp
             None,
         )?;
         {
-            let r = self.validate_cmd_dispatch();
+            let r = self
+                .validate_cmd_dispatch(group_count_x, group_count_y, group_count_z);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2600,7 +2593,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 59 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,

@@ -348,12 +348,11 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
 
 # Safety
 
-The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
 - `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02209`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4`
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`

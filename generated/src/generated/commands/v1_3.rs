@@ -58,10 +58,9 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
 
 # Safety
 
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
-- `VUID-VkBufferCreateInfo-flags-00918`: If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`
 - `VUID-VkBufferCreateInfo-sharingMode-01419`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
 - `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
@@ -124,7 +123,7 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 37 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
@@ -137,7 +136,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
 - `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
 - `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
 - `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
 - `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
@@ -145,7 +143,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
 - `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
 - `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
-- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
 - `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
 - `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
 - `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
@@ -222,7 +219,7 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 37 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
@@ -235,7 +232,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
 - `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
 - `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-flags-00987`: If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`
 - `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
 - `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
@@ -243,7 +239,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
 - `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
 - `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
-- `VUID-VkImageCreateInfo-flags-01573`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`
 - `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
 - `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
 - `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`

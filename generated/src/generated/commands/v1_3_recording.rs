@@ -1662,16 +1662,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-VkViewport-width-01771`: `width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0]
 - `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
-- `VUID-VkViewport-x-01774`: `x` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-x-01232`: (`x` + `width`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01775`: `y` must be greater than or equal to `viewportBoundsRange`[0]
-- `VUID-VkViewport-y-01233`: (`y` + `height`) must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01776`: `y` must be less than or equal to `viewportBoundsRange`[1]
-- `VUID-VkViewport-y-01777`: (`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0]
 
 # Valid usage
 

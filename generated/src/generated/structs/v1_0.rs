@@ -245,8 +245,8 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 
 Left to the caller (listed one by one in the crate's `validation.json`): 23.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 20: explicit rule; the wrappers do not check it*/
+- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 19: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -967,8 +967,8 @@ The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 11: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 10: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -1532,9 +1532,9 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 99.
 
-- 13: checked by the safe methods in every build, but no oracle case breaks it yet
+- 15: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 85: explicit rule; the wrappers do not check it*/
+- 83: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {

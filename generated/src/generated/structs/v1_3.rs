@@ -140,15 +140,15 @@ impl<'a> BufferCopy2<'a> {
 
 The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferImageCopy2.html). Settled by the wrappers:
 
+- `VUID-VkBufferImageCopy2-imageExtent-06659`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkBufferImageCopy2-imageExtent-06660`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkBufferImageCopy2-imageExtent-06661`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -991,15 +991,15 @@ impl<'a> ImageBlit2<'a> {
 
 The rules are on [`VkImageCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCopy2.html). Settled by the wrappers:
 
+- `VUID-VkImageCopy2-extent-06668`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCopy2-extent-06669`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCopy2-extent-06670`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageCopy2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageCopy2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCopy2<'a> {

@@ -471,6 +471,17 @@ pub fn check_buffer_create_info(
             ),
         );
     }
+    if (v.flags.as_raw() & 6) != 0 && (v.flags.as_raw() & 1) == 0 {
+        return Err(
+            fail(
+                "VUID-VkBufferCreateInfo-flags-00918",
+                format!(
+                    "If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
     if !s.feature(|f| f.v11.protected_memory) && (v.flags.as_raw() & 8) != 0 {
         return Err(
             fail(
@@ -1027,6 +1038,17 @@ pub fn check_descriptor_pool_size(
             ),
         );
     }
+    if matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkDescriptorPoolSize-type-02218",
+                format!(
+                    "If `type` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`type` = {:?}, `descriptorCount` = {:?})",
+                    v.ty, v.descriptor_count
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkDescriptorSetAllocateInfo` that are checked at run time.
@@ -1089,6 +1111,17 @@ pub fn check_descriptor_set_layout_binding(
                 format!(
                     "If the `inlineUniformBlock` feature is not enabled, `descriptorType` must not be `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` (`descriptorType` = {:?})",
                     v.descriptor_type
+                ),
+            ),
+        );
+    }
+    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+        return Err(
+            fail(
+                "VUID-VkDescriptorSetLayoutBinding-descriptorType-02209",
+                format!(
+                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
+                    v.descriptor_type, v.descriptor_count
                 ),
             ),
         );
@@ -1164,6 +1197,55 @@ pub fn check_device_queue_create_info(
         s,
         Some("VUID-VkDeviceQueueCreateInfo-sType-unique"),
     )?;
+    Ok(())
+}
+///The rules of `VkDispatchIndirectCommand` that are checked at run time.
+pub fn check_dispatch_indirect_command(
+    v: &vk::DispatchIndirectCommand,
+    s: &Scope<'_>,
+) -> Result<()> {
+    if s
+        .limits()
+        .is_some_and(|l| (v.x as i128) > (l.max_compute_work_group_count[0] as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkDispatchIndirectCommand-x-00417",
+                format!(
+                    "`x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`x` = {:?})",
+                    v.x
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| (v.y as i128) > (l.max_compute_work_group_count[1] as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkDispatchIndirectCommand-y-00418",
+                format!(
+                    "`y` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`y` = {:?})",
+                    v.y
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| (v.z as i128) > (l.max_compute_work_group_count[2] as i128))
+    {
+        return Err(
+            fail(
+                "VUID-VkDispatchIndirectCommand-z-00419",
+                format!(
+                    "`z` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`z` = {:?})",
+                    v.z
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkDrawIndexedIndirectCommand` that are checked at run time.
@@ -1814,6 +1896,17 @@ pub fn check_image_create_info(
             ),
         );
     }
+    if (v.flags.as_raw() & 6) != 0 && (v.flags.as_raw() & 1) == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCreateInfo-flags-00987",
+                format!(
+                    "If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
     if !matches!(v.initial_layout.as_raw(), 0 | 8) {
         return Err(
             fail(
@@ -1853,6 +1946,17 @@ pub fn check_image_create_info(
                 "VUID-VkImageCreateInfo-flags-01890",
                 format!(
                     "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_PROTECTED_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
+    if (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCreateInfo-flags-01573",
+                format!(
+                    "If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` (`flags` = {:?})",
                     v.flags
                 ),
             ),
@@ -2857,6 +2961,22 @@ pub fn check_push_constant_range(
             ),
         );
     }
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.offset as i128 + v.size as i128) > (l.max_push_constants_size as i128)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkPushConstantRange-size-00298",
+                format!(
+                    "`size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset` (`offset` = {:?}, `size` = {:?})",
+                    v.offset, v.size
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkQueryPoolCreateInfo` that are checked at run time.
@@ -3751,12 +3871,117 @@ pub fn check_vertex_input_binding_description(
     Ok(())
 }
 ///The rules of `VkViewport` that are checked at run time.
-pub fn check_viewport(v: &vk::Viewport, _s: &Scope<'_>) -> Result<()> {
+pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
     if (v.width as f64).is_nan() || v.width <= 0.0 {
         return Err(
             fail(
                 "VUID-VkViewport-width-01770",
                 format!("`width` must be greater than `0.0` (`width` = {:?})", v.width),
+            ),
+        );
+    }
+    if (v.width as f64).is_nan()
+        || s
+            .limits()
+            .is_some_and(|l| (v.width as f64) > (l.max_viewport_dimensions[0] as f64))
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-width-01771",
+                format!(
+                    "`width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0] (`width` = {:?})",
+                    v.width
+                ),
+            ),
+        );
+    }
+    if (v.x as f64).is_nan()
+        || s.limits().is_some_and(|l| (v.x as f64) < (l.viewport_bounds_range[0] as f64))
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-x-01774",
+                format!(
+                    "`x` must be greater than or equal to `viewportBoundsRange`[0] (`x` = {:?})",
+                    v.x
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.x as f64 + v.width as f64).is_nan()
+                || (v.x as f64 + v.width as f64) > (l.viewport_bounds_range[1] as f64)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-x-01232",
+                format!(
+                    "(`x` + `width`) must be less than or equal to `viewportBoundsRange`[1] (`x` = {:?}, `width` = {:?})",
+                    v.x, v.width
+                ),
+            ),
+        );
+    }
+    if (v.y as f64).is_nan()
+        || s.limits().is_some_and(|l| (v.y as f64) < (l.viewport_bounds_range[0] as f64))
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-y-01775",
+                format!(
+                    "`y` must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?})",
+                    v.y
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.y as f64 + v.height as f64).is_nan()
+                || (v.y as f64 + v.height as f64) > (l.viewport_bounds_range[1] as f64)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-y-01233",
+                format!(
+                    "(`y` + `height`) must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?}, `height` = {:?})",
+                    v.y, v.height
+                ),
+            ),
+        );
+    }
+    if (v.y as f64).is_nan()
+        || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-y-01776",
+                format!(
+                    "`y` must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?})",
+                    v.y
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.y as f64 + v.height as f64).is_nan()
+                || (v.y as f64 + v.height as f64) < (l.viewport_bounds_range[0] as f64)
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-y-01777",
+                format!(
+                    "(`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?}, `height` = {:?})",
+                    v.y, v.height
+                ),
             ),
         );
     }
