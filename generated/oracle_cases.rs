@@ -793,6 +793,10 @@ oracle_cases! {
             v.image_type = vk::ImageType::from_raw(2);
             v.array_layers = 2;
         },
+        "VUID-VkImageCreateInfo-usage-00963" => |v, l, o| {
+            v.usage |= vk::ImageUsageFlags::from_raw(0x40);
+            v.usage |= vk::ImageUsageFlags::from_raw(0x1);
+        },
         "VUID-VkImageCreateInfo-usage-00968" => |v, l, o| {
             v.usage |= vk::ImageUsageFlags::from_raw(0x8);
             v.samples = vk::SampleCountFlags::from_raw(2);
@@ -831,6 +835,9 @@ oracle_cases! {
         },
     },
     sampler_create_info: vk::SamplerCreateInfo<'_> {
+        "VUID-VkSamplerCreateInfo-mipLodBias-01069" => |v, l, o| {
+            v.mip_lod_bias = -(l.max_sampler_lod_bias as f64 + 1.0) as _;
+        },
         "VUID-VkSamplerCreateInfo-maxLod-01973" => |v, l, o| {
             v.max_lod = v.min_lod - 1.0;
         },
@@ -1441,6 +1448,9 @@ oracle_cases! {
         },
         "VUID-VkViewport-width-01771" => |v, l, o| {
             v.width = (l.max_viewport_dimensions[0] as f64 + 1.0) as _;
+        },
+        "VUID-VkViewport-height-01773" => |v, l, o| {
+            v.height = -(l.max_viewport_dimensions[1] as f64 + 1.0) as _;
         },
         "VUID-VkViewport-x-01774" => |v, l, o| {
             v.x = (l.viewport_bounds_range[0] as f64 - 1.0) as _;

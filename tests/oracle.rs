@@ -1103,11 +1103,11 @@ fn cmd_write_timestamp(
     record(
         s,
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
             unsafe { r.cmd_write_timestamp(a.pipeline_stage, &pool, 0) }
         },
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe { r.cmd_write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
         },
@@ -1308,6 +1308,11 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "usage-00963",
+        &["usage-00966"],
+        "the fixture's image has no attachment usage, which a transient image needs as well",
+    ),
     (
         "extent-06670",
         &[
@@ -1679,7 +1684,7 @@ fn draw(
             };
             unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
                 .expect("bind");
-            unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("viewport");
+            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
             rec.cmd_set_scissor(0, &[area]).expect("scissor");
             rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
                 .expect("push");
@@ -1899,11 +1904,11 @@ fn cmd_copy_query_pool_results(
     record(
         s,
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
             unsafe { r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, 8, flags) }
         },
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) };
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             unsafe {
@@ -2302,7 +2307,7 @@ fn viewport(
     change(&mut v, limits, &mut Objects::default());
     record(
         s,
-        |r| unsafe { r.cmd_set_viewport(0, &[v]) },
+        |r| r.cmd_set_viewport(0, &[v]),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.cmd_set_viewport_unchecked(0, &[v]) },
     )

@@ -378,3 +378,228 @@ fn handle_types_a_device_cannot_export_are_refused() {
     );
     assert_silent(&s.messages);
 }
+
+#[test]
+fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let limits = s.physical.get_physical_device_properties().limits;
+    let (vertices, _memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::VERTEX_BUFFER);
+    // The last binding, and one past it.
+    let last = limits.max_vertex_input_bindings - 1;
+    let two: [&tuff::Buffer; 2] = [&vertices, &vertices];
+    let stride = u64::from(limits.max_vertex_input_binding_stride) + 1;
+    let first = "VUID-vkCmdBindVertexBuffers-firstBinding-00625";
+    let first2 = "VUID-vkCmdBindVertexBuffers2-firstBinding-03356";
+    let strides = "VUID-vkCmdBindVertexBuffers2-pStrides-03362";
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    assert_eq!(
+        vuid(rec.cmd_bind_vertex_buffers(last, &two, &[0, 0])),
+        first
+    );
+    // SAFETY: no pipeline is bound, so no binding's stride has a vertex attribute to
+    // fit (the rule `bind_vertex_buffers2` leaves to its caller).
+    let refused = unsafe { rec.cmd_bind_vertex_buffers2(last, &two, &[0, 0], &[], &[]) };
+    assert_eq!(vuid(refused), first2);
+    // SAFETY: as above.
+    let refused = unsafe { rec.cmd_bind_vertex_buffers2(0, &[&vertices], &[0], &[], &[stride]) };
+    assert_eq!(vuid(refused), strides);
+    // The last binding the device has is bound.
+    rec.cmd_bind_vertex_buffers(last, &[&vertices], &[0])
+        .expect("the last binding");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    layer_names(&s.messages, first, || {
+        // SAFETY: see the module docs; the command buffer is never submitted.
+        drop(unsafe { rec.cmd_bind_vertex_buffers_unchecked(last, &two, &[0, 0]) });
+    });
+    layer_names(&s.messages, first2, || {
+        // SAFETY: as above.
+        drop(unsafe { rec.cmd_bind_vertex_buffers2_unchecked(last, &two, &[0, 0], &[], &[]) });
+    });
+    layer_names(&s.messages, strides, || {
+        // SAFETY: as above.
+        drop(unsafe {
+            rec.cmd_bind_vertex_buffers2_unchecked(0, &[&vertices], &[0], &[], &[stride])
+        });
+    });
+    rec.end().expect("end");
+}
+
+#[test]
+fn a_device_only_event_is_not_touched_by_the_host_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let event = d
+        .create_event(&tuff::EventCreateInfo::new().flags(vk::EventCreateFlags::DEVICE_ONLY))
+        .expect("device-only event");
+    let set = "VUID-vkSetEvent-event-03941";
+    let status = "VUID-vkGetEventStatus-event-03940";
+    let reset = "VUID-vkResetEvent-event-03823";
+    assert_eq!(vuid(d.set_event(&event)), set);
+    assert_eq!(vuid(d.get_event_status(&event)), status);
+    // SAFETY: no command waits on the event.
+    assert_eq!(vuid(unsafe { d.reset_event(&event) }), reset);
+    // A host event is set, read and reset.
+    let host = d
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    d.set_event(&host).expect("set");
+    assert_eq!(
+        d.get_event_status(&host).expect("status"),
+        vk::Result::EVENT_SET
+    );
+    // SAFETY: no command waits on the event.
+    unsafe { d.reset_event(&host) }.expect("reset");
+    assert_silent(&s.messages);
+    layer_names(&s.messages, set, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.set_event_unchecked(&event) });
+    });
+    layer_names(&s.messages, status, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.get_event_status_unchecked(&event) });
+    });
+    layer_names(&s.messages, reset, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.reset_event_unchecked(&event) });
+    });
+}
+
+#[test]
+fn the_commitment_of_memory_that_is_not_lazily_allocated_is_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_buffer, memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::TRANSFER_SRC);
+    let expected = "VUID-vkGetDeviceMemoryCommitment-memory-00690";
+    assert_eq!(
+        vuid(s.device.get_device_memory_commitment(&memory)),
+        expected
+    );
+    assert_silent(&s.messages);
+    layer_names(&s.messages, expected, || {
+        // SAFETY: see the module docs.
+        let _ = unsafe { s.device.get_device_memory_commitment_unchecked(&memory) };
+    });
+}
+
+/// The 1.3.239 layer checks neither rule: the refusals alone show them.
+#[test]
+fn sparse_queries_name_a_sample_count_of_the_format() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let p = &s.physical;
+    let query = (
+        vk::Format::R8G8B8A8_UNORM,
+        vk::ImageType::TYPE_2D,
+        vk::SampleCountFlags::TYPE_64,
+        vk::ImageUsageFlags::SAMPLED,
+        vk::ImageTiling::OPTIMAL,
+    );
+    let (format, ty, samples, usage, tiling) = query;
+    let expected = "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094";
+    assert_eq!(
+        vuid(p.get_physical_device_sparse_image_format_properties(
+            format, ty, samples, usage, tiling
+        )),
+        expected
+    );
+    let info = tuff::PhysicalDeviceSparseImageFormatInfo2::new()
+        .format(format)
+        .ty(ty)
+        .samples(samples)
+        .usage(usage)
+        .tiling(tiling);
+    let expected2 = "VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095";
+    assert_eq!(
+        vuid(p.get_physical_device_sparse_image_format_properties2(&info)),
+        expected2
+    );
+    // One sample is a count every format has.
+    p.get_physical_device_sparse_image_format_properties(
+        format,
+        ty,
+        vk::SampleCountFlags::TYPE_1,
+        usage,
+        tiling,
+    )
+    .expect("one sample");
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn plane_requirements_of_an_image_that_is_not_disjoint_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let image = s.color_target(4, vk::ImageUsageFlags::empty()).image;
+    let mut plane =
+        tuff::ImagePlaneMemoryRequirementsInfo::new().plane_aspect(vk::ImageAspectFlags::PLANE_0);
+    let info = tuff::ImageMemoryRequirementsInfo2::new(&image).push_next(&mut plane);
+    let expected = "VUID-VkImageMemoryRequirementsInfo2-image-01590";
+    let mut out = tuff::MemoryRequirements2::new();
+    assert_eq!(
+        vuid(d.get_image_memory_requirements2(&info, &mut out)),
+        expected
+    );
+    let whole = tuff::ImageMemoryRequirementsInfo2::new(&image);
+    d.get_image_memory_requirements2(&whole, &mut out)
+        .expect("the whole image's requirements");
+    assert!(out.memory_requirements.size > 0);
+    assert_silent(&s.messages);
+    layer_names(&s.messages, expected, || {
+        // SAFETY: see the module docs.
+        unsafe { d.get_image_memory_requirements2_unchecked(&info, &mut out) };
+    });
+}
+
+#[test]
+fn a_query_reset_stays_inside_its_pool_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let pool = s
+        .device
+        .create_query_pool(
+            &tuff::QueryPoolCreateInfo::new()
+                .query_type(vk::QueryType::TIMESTAMP)
+                .query_count(2),
+        )
+        .expect("query pool");
+    let cases = [
+        (2, 1, "VUID-vkCmdResetQueryPool-firstQuery-00796"),
+        (1, 2, "VUID-vkCmdResetQueryPool-firstQuery-00797"),
+    ];
+    for (first, count, expected) in cases {
+        let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        // SAFETY: no query of the pool is active.
+        assert_eq!(
+            vuid(unsafe { rec.cmd_reset_query_pool(&pool, first, count) }),
+            expected
+        );
+        // SAFETY: as above.
+        unsafe { rec.cmd_reset_query_pool(&pool, 0, 2) }.expect("the whole pool");
+        rec.end().expect("end");
+        let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        layer_names(&s.messages, expected, || {
+            // SAFETY: see the module docs; the command buffer is never submitted.
+            let _ = unsafe { rec.cmd_reset_query_pool_unchecked(&pool, first, count) };
+        });
+        rec.end().expect("end");
+    }
+    assert_silent(&s.messages);
+}

@@ -136,7 +136,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         drop(memory);
     }
     drop(signalled);
-    unsafe { s.device.set_event(&gate) }.expect("set event");
+    s.device.set_event(&gate).expect("set event");
     wait(&s, &done);
     assert_silent(&s.messages);
 }
@@ -182,7 +182,7 @@ fn a_pending_submission_cannot_be_reset_resubmitted_or_rerecorded() {
     drop(pool);
     assert_silent(&s.messages);
 
-    unsafe { s.device.set_event(&gate) }.expect("set event");
+    s.device.set_event(&gate).expect("set event");
     wait(&s, &done);
     // Complete now: every refused call goes through.
     s.device.reset_fences(&[&done]).expect("reset");
@@ -503,7 +503,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         vuid(secondary.begin(&secondary_begin)),
         "VUID-vkBeginCommandBuffer-commandBuffer-00049"
     );
-    unsafe { s.device.set_event(&gate) }.expect("set event");
+    s.device.set_event(&gate).expect("set event");
     wait(&s, &done);
     s.device.reset_fences(&[&done]).expect("reset");
 
@@ -666,7 +666,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
         vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
         "VUID-vkResetCommandBuffer-commandBuffer-00045"
     );
-    unsafe { s.device.set_event(&gate) }.expect("set");
+    s.device.set_event(&gate).expect("set");
     wait(&s, &done);
     cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
         .expect("reset once complete");
@@ -695,13 +695,13 @@ fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
         .expect("reset once no set is left");
     // The pool gives sets again after its reset.
     let layouts = tuff::HandleSlice::new(&[&layout]);
-    let again = unsafe {
-        s.device.allocate_descriptor_sets(
+    let again = s
+        .device
+        .allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-    }
-    .expect("allocate after reset");
+        .expect("allocate after reset");
     assert_eq!(again.len(), 1);
     assert_silent(&s.messages);
 }
@@ -1447,7 +1447,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
         );
         rec.end().expect("end third");
-        unsafe { s.device.set_event(&gate) }.expect("set");
+        s.device.set_event(&gate).expect("set");
         wait(&s, &done);
         s.device.reset_fences(&[&done]).expect("reset");
 
@@ -1530,7 +1530,7 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         s.device.live_object_count() > before,
         "the pending submission keeps its buffer, memory, pool and command buffer"
     );
-    unsafe { s.device.set_event(&gate) }.expect("set");
+    s.device.set_event(&gate).expect("set");
     let timelines = tuff::HandleSlice::new(&[&timeline]);
     let wait_info = tuff::SemaphoreWaitInfo::new()
         .semaphores(&timelines, &[1])
@@ -1762,7 +1762,7 @@ fn slices_sharing_a_count_have_its_length() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0]) }),
+        vuid(rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0])),
         "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
     );
     assert_eq!(
@@ -1778,7 +1778,8 @@ fn slices_sharing_a_count_have_its_length() {
         "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
     );
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.
-    unsafe { rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16]) }.expect("one offset per buffer");
+    rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16])
+        .expect("one offset per buffer");
     unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[]) }
         .expect("no sizes and no strides");
     unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[128], &[]) }
@@ -1852,7 +1853,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                     // SAFETY: as for the fills.
                     unsafe { rec.cmd_bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
                 } else {
-                    unsafe { rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset]) }
+                    rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset])
                 }
             }),
         )
@@ -1936,7 +1937,8 @@ fn buffer_commands_stay_inside_their_buffers() {
     // The recorder goes on with correct calls, which run.
     unsafe { rec.cmd_fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
     unsafe { rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
-    unsafe { rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252]) }.expect("vertex");
+    rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252])
+        .expect("vertex");
     rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
         .expect("index");
     rec.end().expect("end");
@@ -2128,15 +2130,14 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
                 .pool_sizes(&sizes),
         )
         .expect("descriptor pool");
-    let set = unsafe {
-        d.allocate_descriptor_sets(
+    let set = d
+        .allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
         )
-    }
-    .expect("set")
-    .pop()
-    .expect("one set");
+        .expect("set")
+        .pop()
+        .expect("one set");
     let (buffer, _memory) = host_buffer(&s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
     let info = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
@@ -2377,13 +2378,12 @@ fn descriptor_updates_stay_inside_their_sets() {
         )
         .expect("pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout, &set_layout]);
-    let mut sets = unsafe {
-        d.allocate_descriptor_sets(
+    let mut sets = d
+        .allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-    }
-    .expect("sets");
+        .expect("sets");
     let (b, a) = (sets.pop().expect("two"), sets.pop().expect("two"));
     let usage = vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::STORAGE_BUFFER;
     let (buffer, _memory) = host_buffer(&s, 1024, usage);
@@ -2537,7 +2537,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
                 // test; the command buffer is never submitted.
                 unsafe { rec.cmd_set_viewport_unchecked(first, &v) }
             } else {
-                unsafe { rec.cmd_set_viewport(first, &v) }
+                rec.cmd_set_viewport(first, &v)
             }
         })
     };
@@ -2558,7 +2558,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
                 // SAFETY: as above.
                 unsafe { rec.cmd_set_viewport_with_count_unchecked(&v) }
             } else {
-                unsafe { rec.cmd_set_viewport_with_count(&v) }
+                rec.cmd_set_viewport_with_count(&v)
             }
         })
     };
@@ -2599,7 +2599,7 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
     for (expected, call) in &cases {
         assert_eq!(vuid(call(&mut rec, false)), *expected);
     }
-    unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("one viewport");
+    rec.cmd_set_viewport(0, &[viewport]).expect("one viewport");
     rec.cmd_set_scissor(0, &[rect(0, 0, 16, 16)])
         .expect("one scissor");
     rec.end().expect("end");
@@ -2651,7 +2651,7 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         .expect("begin");
     let over = max as usize + 1;
     assert_eq!(
-        vuid(unsafe { rec.cmd_set_viewport(1, &vec![viewport; max as usize]) }),
+        vuid(rec.cmd_set_viewport(1, &vec![viewport; max as usize])),
         "VUID-vkCmdSetViewport-firstViewport-01223"
     );
     assert_eq!(
@@ -2659,14 +2659,15 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         "VUID-vkCmdSetScissor-firstScissor-00592"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_set_viewport_with_count(&vec![viewport; over]) }),
+        vuid(rec.cmd_set_viewport_with_count(&vec![viewport; over])),
         "VUID-vkCmdSetViewportWithCount-viewportCount-03394"
     );
     assert_eq!(
         vuid(rec.cmd_set_scissor_with_count(&vec![scissor; over])),
         "VUID-vkCmdSetScissorWithCount-scissorCount-03397"
     );
-    unsafe { rec.cmd_set_viewport(0, &vec![viewport; max as usize]) }.expect("every viewport");
+    rec.cmd_set_viewport(0, &vec![viewport; max as usize])
+        .expect("every viewport");
     rec.cmd_set_scissor(1, &vec![scissor; max as usize - 1])
         .expect("every scissor but the first");
     rec.end().expect("end");
@@ -2961,7 +2962,7 @@ fn indices_and_chained_counts_match_what_they_index() {
         .set_layouts(&layouts)
         .push_next(&mut variable);
     assert_eq!(
-        vuid(unsafe { d.allocate_descriptor_sets(&pool, &allocate) }),
+        vuid(d.allocate_descriptor_sets(&pool, &allocate)),
         "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045"
     );
     assert_silent(&s.messages);
@@ -3272,7 +3273,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         // direct one reads only indices inside it.
         unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
             .expect("bind");
-        unsafe { rec.cmd_set_viewport(0, &[viewport]) }.expect("viewport");
+        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
         rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
         let no_index: [(&str, &DrawCall<'_>); 3] = [
             ("VUID-vkCmdDrawIndexed-None-07312", &draws[1].1),
@@ -3313,7 +3314,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         s.messages.abort_on_error(false);
         if !unchecked {
-            unsafe { rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0]) }.expect("vertex buffer");
+            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
+                .expect("vertex buffer");
             unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with its vertex buffer bound");
         }
         unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }

@@ -91,13 +91,12 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         )
         .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let sets = unsafe {
-        d.allocate_descriptor_sets(
+    let sets = d
+        .allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-    }
-    .expect("descriptor sets");
+        .expect("descriptor sets");
     let buffer_info = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
         .range(256)];

@@ -231,20 +231,17 @@ pub fn record_frame<S: Scene>(
             vk::SubpassContents::INLINE,
         )
     };
-    // SAFETY: one viewport of the target's size, with depths in 0..1.
-    unsafe {
-        rec.cmd_set_viewport(
-            0,
-            &[vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: view.extent.width as f32,
-                height: view.extent.height as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            }],
-        )
-    }?;
+    rec.cmd_set_viewport(
+        0,
+        &[vk::Viewport {
+            x: 0.0,
+            y: 0.0,
+            width: view.extent.width as f32,
+            height: view.extent.height as f32,
+            min_depth: 0.0,
+            max_depth: 1.0,
+        }],
+    )?;
     rec.cmd_set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
     // SAFETY: the render pass has one subpass and no query was begun in it.

@@ -898,17 +898,50 @@ pub(crate) fn cmd_update_buffer_checks<S: State>(
 }
 
 /// The rules a vertex-buffer binding breaks: (usage, memory, offset, offset plus size).
-type VertexRules = [&'static str; 4];
+type VertexRules = [&'static str; 6];
 
 /// Each binding of `buffers` at `offsets` (and `sizes`, where given) lies inside its
 /// buffer, which has vertex-buffer usage and memory.
 fn check_vertex_bindings<S: State>(
     recorder: &Recorder<'_, S>,
-    buffers: &[&Buffer],
+    (first_binding, buffers): (u32, &[&Buffer]),
     offsets: &[vk::DeviceSize],
-    sizes: &[vk::DeviceSize],
+    (sizes, strides): (&[vk::DeviceSize], &[vk::DeviceSize]),
     rules: VertexRules,
 ) -> Result<()> {
+    let device = recorder.device();
+    let limits = device
+        .live()
+        .limits(|| device.parent().get_physical_device_properties().limits);
+    {
+        let max = limits.max_vertex_input_bindings;
+        if u64::from(first_binding) + buffers.len() as u64 > u64::from(max) {
+            refuse(
+                rules[4],
+                format!(
+                    "`firstBinding` + `bindingCount` must be less than or equal to \
+                     `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = \
+                     {first_binding}, `bindingCount` = {}, maxVertexInputBindings = {max})",
+                    buffers.len()
+                ),
+            )?;
+        }
+        let max = limits.max_vertex_input_binding_stride;
+        if let Some((i, stride)) = strides
+            .iter()
+            .enumerate()
+            .find(|(_, &s)| s > u64::from(max))
+        {
+            refuse(
+                rules[5],
+                format!(
+                    "each element of `pStrides` must be less than or equal to \
+                     `VkPhysicalDeviceLimits::maxVertexInputBindingStride` (`pStrides[{i}]` = \
+                     {stride}, maxVertexInputBindingStride = {max})"
+                ),
+            )?;
+        }
+    }
     for (i, (b, &offset)) in buffers.iter().zip(offsets).enumerate() {
         let usage = vk::BufferUsageFlags::VERTEX_BUFFER;
         let record = used_buffer(
@@ -934,6 +967,7 @@ fn check_vertex_bindings<S: State>(
 /// The checks of `vkCmdBindVertexBuffers` that keep each binding inside its buffer.
 pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
     recorder: &Recorder<'_, S>,
+    first_binding: u32,
     buffers: &[&Buffer],
     offsets: &[vk::DeviceSize],
 ) -> Result<()> {
@@ -942,24 +976,41 @@ pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
         "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
         "VUID-vkCmdBindVertexBuffers-pOffsets-00626",
         "",
+        "VUID-vkCmdBindVertexBuffers-firstBinding-00625",
+        "",
     ];
-    check_vertex_bindings(recorder, buffers, offsets, &[], rules)
+    check_vertex_bindings(
+        recorder,
+        (first_binding, buffers),
+        offsets,
+        (&[], &[]),
+        rules,
+    )
 }
 
 /// The checks of `vkCmdBindVertexBuffers2` that keep each binding inside its buffer.
 pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
     recorder: &Recorder<'_, S>,
+    first_binding: u32,
     buffers: &[&Buffer],
     offsets: &[vk::DeviceSize],
-    sizes: &[vk::DeviceSize],
+    (sizes, strides): (&[vk::DeviceSize], &[vk::DeviceSize]),
 ) -> Result<()> {
     let rules = [
         "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
         "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
         "VUID-vkCmdBindVertexBuffers2-pOffsets-03357",
         "VUID-vkCmdBindVertexBuffers2-pSizes-03358",
+        "VUID-vkCmdBindVertexBuffers2-firstBinding-03356",
+        "VUID-vkCmdBindVertexBuffers2-pStrides-03362",
     ];
-    check_vertex_bindings(recorder, buffers, offsets, sizes, rules)
+    check_vertex_bindings(
+        recorder,
+        (first_binding, buffers),
+        offsets,
+        (sizes, strides),
+        rules,
+    )
 }
 
 /// The checks of `vkCmdBindIndexBuffer` that keep the binding inside the buffer.
@@ -1316,8 +1367,19 @@ pub(crate) fn descriptor_sets_allocated(
     // SAFETY: the safe setter stored the layouts with their count.
     let layouts =
         unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
-    for (set, layout) in sets.iter().zip(layouts) {
-        let record = device.live().set_layout(*layout).unwrap_or_default();
+    let counts = variable_counts(allocate_info);
+    for (i, (set, layout)) in sets.iter().zip(layouts).enumerate() {
+        let mut record = device.live().set_layout(*layout).unwrap_or_default();
+        // A variable-count binding has, in this set, the count the allocation gave
+        // it (0 without one), which writes to the set are checked against.
+        if let Some(variable) = record.variable {
+            let count = counts.get(i).copied().unwrap_or(0);
+            let mut own = (*record).clone();
+            if let Some(b) = own.bindings.iter_mut().find(|b| b.binding == variable) {
+                b.count = count;
+            }
+            record = Vrc::new(own);
+        }
         device.live().set_allocated(set.raw(), record);
     }
     sets.into_iter()
@@ -1334,6 +1396,23 @@ pub(crate) fn descriptor_set_layout_created(
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stored the bindings with their count.
     let bindings = unsafe { crate::retention::raw_slice(raw.p_bindings, raw.binding_count) };
+    // SAFETY: `raw` is a safe struct's.
+    let flags: Option<&vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO,
+        )
+    };
+    // SAFETY: the safe setter stored the flags with their count (its checks made that
+    // count 0 or the bindings').
+    let flags = flags.map_or(&[][..], |f| unsafe {
+        crate::retention::raw_slice(f.p_binding_flags, f.binding_count)
+    });
+    let variable = bindings
+        .iter()
+        .zip(flags)
+        .find(|(_, f)| f.contains(vk::DescriptorBindingFlags::VARIABLE_DESCRIPTOR_COUNT))
+        .map(|(b, _)| b.binding);
     let mut bindings: Vec<BindingRecord> = bindings
         .iter()
         .map(|b| BindingRecord {
@@ -1352,6 +1431,7 @@ pub(crate) fn descriptor_set_layout_created(
             update_after_bind: raw
                 .flags
                 .contains(vk::DescriptorSetLayoutCreateFlags::UPDATE_AFTER_BIND_POOL),
+            variable,
         },
     );
     layout
@@ -2450,6 +2530,72 @@ pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) 
 /// The check of `vkAllocateDescriptorSets` on a chained
 /// `VkDescriptorSetVariableDescriptorCountAllocateInfo`: drivers read one count per
 /// set from it.
+/// The descriptor counts of an allocation's variable-count bindings, one per set, or
+/// none.
+fn variable_counts<'a>(allocate_info: &'a DescriptorSetAllocateInfo<'_>) -> &'a [u32] {
+    let raw = allocate_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let variable: Option<&vk::DescriptorSetVariableDescriptorCountAllocateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO,
+        )
+    };
+    // SAFETY: the safe setter stored the counts with their count.
+    variable.map_or(&[], |v| unsafe {
+        crate::retention::raw_slice(v.p_descriptor_counts, v.descriptor_set_count)
+    })
+}
+
+/// Sets of update-after-bind layouts come from an update-after-bind pool, and a
+/// variable-count binding gets at most the count its layout was created with.
+pub(crate) fn allocate_descriptor_sets_layouts(
+    device: &Device,
+    descriptor_pool: &DescriptorPool,
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
+) -> Result<()> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: the safe setter stored the layouts with their count.
+    let layouts =
+        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    let counts = variable_counts(allocate_info);
+    let pool_uab = descriptor_pool
+        .pool_flags()
+        .contains(vk::DescriptorPoolCreateFlags::UPDATE_AFTER_BIND);
+    for (i, layout) in layouts.iter().enumerate() {
+        let Some(record) = device.live().set_layout(*layout) else {
+            continue;
+        };
+        if record.update_after_bind && !pool_uab {
+            refuse(
+                "VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044",
+                format!(
+                    "`pSetLayouts[{i}]` was created with \
+                     `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`, so \
+                     `descriptorPool` must have been created with \
+                     `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT`"
+                ),
+            )?;
+        }
+        let variable = record
+            .variable
+            .and_then(|v| record.bindings.iter().find(|b| b.binding == v));
+        if let (Some(b), Some(&count)) = (variable, counts.get(i)) {
+            if count > b.count {
+                refuse(
+                    "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046",
+                    format!(
+                        "`pDescriptorCounts[{i}]` ({count}) must be less than or equal to the \
+                         descriptor count of the variable-sized binding {} of its layout ({})",
+                        b.binding, b.count
+                    ),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
 pub(crate) fn allocate_descriptor_sets_checks(
     allocate_info: &DescriptorSetAllocateInfo<'_>,
 ) -> Result<()> {
@@ -4031,6 +4177,212 @@ pub(crate) fn create_semaphore_checks(
                 ),
             )?;
         }
+    }
+    Ok(())
+}
+
+/// An event the host sets, resets or reads was not created device-only.
+pub(crate) fn host_event(device: &Device, event: &Event, vuid: &'static str) -> Result<()> {
+    if device.live().is_device_only(event.raw()) {
+        refuse(
+            vuid,
+            "`event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`".into(),
+        )?;
+    }
+    Ok(())
+}
+
+/// The device remembers a device-only event, which the host may not touch.
+pub(crate) fn event_created(
+    device: &Device,
+    event: Event,
+    create_info: &EventCreateInfo<'_>,
+) -> Event {
+    if create_info
+        .flags
+        .contains(vk::EventCreateFlags::DEVICE_ONLY)
+    {
+        device.live().set_device_only(event.raw());
+    }
+    event
+}
+
+/// Memory whose commitment is asked for is of a lazily allocated type.
+pub(crate) fn lazily_allocated(device: &Device, memory: &DeviceMemory) -> Result<()> {
+    let Some(index) = device.live().memory(memory.raw(), |r| r.memory_type_index) else {
+        return Ok(());
+    };
+    let physical = device.parent();
+    // SAFETY: a live physical device of its instance.
+    let properties = unsafe {
+        physical
+            .parent()
+            .fns()
+            .get_physical_device_memory_properties(physical.raw())
+    };
+    let lazy = properties
+        .memory_types_as_slice()
+        .get(index as usize)
+        .is_some_and(|t| {
+            t.property_flags
+                .contains(vk::MemoryPropertyFlags::LAZILY_ALLOCATED)
+        });
+    if !lazy {
+        refuse(
+            "VUID-vkGetDeviceMemoryCommitment-memory-00690",
+            format!(
+                "`memory` must have been created with a memory type that reports \
+                 `VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT` (its type, {index}, does not)"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// A sample count a sparse format query asks about is one the format supports for
+/// the type, usage and tiling (as `vkGetPhysicalDeviceImageFormatProperties`
+/// reports, for an image created with the sparse flags the query is about).
+pub(crate) fn sparse_samples(
+    physical: &PhysicalDevice,
+    (format, ty, samples, usage, tiling): (
+        vk::Format,
+        vk::ImageType,
+        vk::SampleCountFlags,
+        vk::ImageUsageFlags,
+        vk::ImageTiling,
+    ),
+    vuid: &'static str,
+) -> Result<()> {
+    // SAFETY: a live physical device of its instance; the values passed the implicit
+    // checks (valid enums and flags).
+    let properties = unsafe {
+        physical
+            .parent()
+            .fns()
+            .get_physical_device_image_format_properties(
+                physical.raw(),
+                format,
+                ty,
+                tiling,
+                usage,
+                vk::ImageCreateFlags::empty(),
+            )
+    };
+    let supported = properties.map_or(vk::SampleCountFlags::empty(), |p| p.sample_counts);
+    if !supported.contains(samples) {
+        refuse(
+            vuid,
+            format!(
+                "`samples` must be a bit value that is set in \
+                 `VkImageFormatProperties::sampleCounts` returned by \
+                 `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling` \
+                 and `usage` (`samples` = {samples:?}, sampleCounts = {supported:?})"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// As [`sparse_samples`], for the `2` query's info.
+pub(crate) fn sparse_samples2(
+    physical: &PhysicalDevice,
+    format_info: &PhysicalDeviceSparseImageFormatInfo2<'_>,
+) -> Result<()> {
+    let f = format_info.as_raw();
+    sparse_samples(
+        physical,
+        (f.format, f.ty, f.samples, f.usage, f.tiling),
+        "VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095",
+    )
+}
+
+/// A plane's requirements are asked only of a disjoint multi-planar image, and
+/// always of one: a chained `VkImagePlaneMemoryRequirementsInfo` names one of its
+/// planes.
+pub(crate) fn image_requirements2_planes(
+    device: &Device,
+    info: &ImageMemoryRequirementsInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    let Some(record) = device.live().image(raw.image) else {
+        return Ok(());
+    };
+    // SAFETY: `raw` is a safe struct's.
+    let plane: Option<&vk::ImagePlaneMemoryRequirementsInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::IMAGE_PLANE_MEMORY_REQUIREMENTS_INFO,
+        )
+    };
+    let aspects = crate::formats::aspects(record.format).unwrap_or_default();
+    let planar = aspects.contains(vk::ImageAspectFlags::PLANE_0);
+    let disjoint = record.flags.contains(vk::ImageCreateFlags::DISJOINT);
+    match plane {
+        None if planar && disjoint => refuse(
+            "VUID-VkImageMemoryRequirementsInfo2-image-01589",
+            "`image` was created with a multi-planar format and the \
+             `VK_IMAGE_CREATE_DISJOINT_BIT` flag, so a VkImagePlaneMemoryRequirementsInfo must be \
+             chained"
+                .into(),
+        ),
+        Some(_) if !disjoint => refuse(
+            "VUID-VkImageMemoryRequirementsInfo2-image-01590",
+            "`image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, so no \
+             VkImagePlaneMemoryRequirementsInfo may be chained"
+                .into(),
+        ),
+        Some(_) if !planar => refuse(
+            "VUID-VkImageMemoryRequirementsInfo2-image-01591",
+            "`image` was created with a single-plane format, so no \
+             VkImagePlaneMemoryRequirementsInfo may be chained"
+                .into(),
+        ),
+        Some(p)
+            if p.plane_aspect.as_raw().count_ones() != 1 || !aspects.contains(p.plane_aspect) =>
+        {
+            refuse(
+                "VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281",
+                format!(
+                    "`planeAspect` must be a single valid format plane for the image \
+                     (`planeAspect` = {:?}, the format's aspects: {aspects:?})",
+                    p.plane_aspect
+                ),
+            )
+        }
+        _ => Ok(()),
+    }
+}
+
+/// A reset of queries inside the pool.
+pub(crate) fn cmd_reset_query_pool_range<S: State>(
+    recorder: &Recorder<'_, S>,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+) -> Result<()> {
+    let Some(record) = recorder.device().live().query_pool(query_pool.raw()) else {
+        return Ok(());
+    };
+    if first_query >= record.count {
+        refuse(
+            "VUID-vkCmdResetQueryPool-firstQuery-00796",
+            format!(
+                "`firstQuery` must be less than the number of queries in `queryPool` \
+                 (`firstQuery` = {first_query}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    if u64::from(first_query) + u64::from(query_count) > u64::from(record.count) {
+        refuse(
+            "VUID-vkCmdResetQueryPool-firstQuery-00797",
+            format!(
+                "The sum of `firstQuery` and `queryCount` must be less than or equal to the \
+                 number of queries in `queryPool` (`firstQuery` = {first_query}, `queryCount` = \
+                 {query_count}, queries = {})",
+                record.count
+            ),
+        )?;
     }
     Ok(())
 }

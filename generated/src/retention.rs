@@ -62,6 +62,9 @@ pub(crate) struct Live {
     queues: Vutex<HashMap<u64, HostSync>>,
     /// The device's timeline semaphores (the others are binary).
     timelines: Vutex<std::collections::HashSet<u64>>,
+    /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
+    /// host may not set, reset or read.
+    device_only_events: Vutex<std::collections::HashSet<u64>>,
     /// What the checks of commands that use a buffer need to know of it.
     buffers: Vutex<HashMap<u64, BufferRecord>>,
     /// Each shader module's interface, which pipeline creation checks layouts against.
@@ -153,6 +156,10 @@ pub(crate) struct SetLayoutRecord {
     pub bindings: Vec<BindingRecord>,
     /// Created with `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`.
     pub update_after_bind: bool,
+    /// The binding created with `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`,
+    /// whose count each set picks at its allocation (its record here is the
+    /// largest a set may pick).
+    pub variable: Option<u32>,
 }
 
 impl SetLayoutRecord {
@@ -217,6 +224,7 @@ impl Default for Live {
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
+            device_only_events: Vutex::new(std::collections::HashSet::new()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
@@ -267,6 +275,16 @@ impl Live {
     /// The host synchronizations of every queue of the device.
     pub(crate) fn queue_syncs(&self) -> Vec<HostSync> {
         self.queues.lock().values().cloned().collect()
+    }
+
+    /// Records that a new event was created device-only.
+    pub(crate) fn set_device_only(&self, raw: vk::Event) {
+        self.device_only_events.lock().insert(raw.as_raw());
+    }
+
+    /// Whether a live event was created device-only.
+    pub(crate) fn is_device_only(&self, raw: vk::Event) -> bool {
+        self.device_only_events.lock().contains(&raw.as_raw())
     }
 
     /// Records that a new semaphore is a timeline semaphore.
@@ -322,6 +340,9 @@ impl Live {
         }
         if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
             self.timelines.lock().remove(&key.1);
+        }
+        if unlisted && H::TYPE == vk::ObjectType::EVENT {
+            self.device_only_events.lock().remove(&key.1);
         }
         match H::TYPE {
             _ if !unlisted => {}

@@ -229,15 +229,14 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
                 .pool_sizes(&sizes),
         )
         .expect("descriptor pool");
-    let set = unsafe {
-        d.allocate_descriptor_sets(
+    let set = d
+        .allocate_descriptor_sets(
             &descriptor_pool,
             &tuff::DescriptorSetAllocateInfo::new(&descriptor_pool).set_layouts(&set_layouts),
         )
-    }
-    .expect("descriptor set")
-    .pop()
-    .expect("one set");
+        .expect("descriptor set")
+        .pop()
+        .expect("one set");
 
     let uniform = host_buffer(s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
     access_memory(s, &uniform.1, 4, Some(&FACTOR.to_le_bytes()));
@@ -335,19 +334,17 @@ impl Pipelines {
         };
         unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics) }
             .expect("recorded");
-        unsafe {
-            rec.cmd_set_viewport(
-                0,
-                &[vk::Viewport {
-                    x: 0.0,
-                    y: 0.0,
-                    width: size as f32,
-                    height: size as f32,
-                    min_depth: 0.0,
-                    max_depth: 1.0,
-                }],
-            )
-        }
+        rec.cmd_set_viewport(
+            0,
+            &[vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: size as f32,
+                height: size as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            }],
+        )
         .expect("recorded");
         rec.cmd_set_scissor(0, &[area]).expect("recorded");
         let color: Vec<u8> = COLOR.iter().flat_map(|c| c.to_le_bytes()).collect();
@@ -457,14 +454,13 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         )
         .expect("descriptor pool");
     let layouts = tuff::HandleSlice::new(&[&layout]);
-    let set = unsafe {
-        d.allocate_descriptor_sets(
+    let set = d
+        .allocate_descriptor_sets(
             &pool,
             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
         )
-    }
-    .expect("descriptor set")
-    .pop()
-    .expect("one set");
+        .expect("descriptor set")
+        .pop()
+        .expect("one set");
     UniformSet { set, pool, layout }
 }

@@ -85,15 +85,13 @@ impl Bezier {
                 }]),
         )?;
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
-        // SAFETY: the pool was made with room for every set the scene allocates, of these types.
-        let set = unsafe {
-            d.allocate_descriptor_sets(
+        let set = d
+            .allocate_descriptor_sets(
                 &pool,
                 &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-            )
-        }?
-        .pop()
-        .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
+            )?
+            .pop()
+            .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
         // vec4 per point: std430 pads a vec3 array to 16 bytes anyway.
         let points: Vec<[f32; 4]> = CONTROL_POINTS
             .iter()

@@ -77,13 +77,10 @@ impl Teapots {
                 }]),
         )?;
         let layouts = tuff::HandleSlice::new(&[&set_layout; FRAMES_IN_FLIGHT]);
-        // SAFETY: the pool was made with room for every set the scene allocates, of these types.
-        let sets = unsafe {
-            d.allocate_descriptor_sets(
-                &pool,
-                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-            )
-        }?;
+        let sets = d.allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )?;
         let size = std::mem::size_of::<CameraBlock>() as u64;
         let uniforms = (0..FRAMES_IN_FLIGHT)
             .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, Upload))
@@ -153,8 +150,7 @@ impl Scene for Teapots {
                 &[],
             )
         }?;
-        // SAFETY: one binding, well under maxVertexInputBindings, with a live buffer.
-        unsafe { rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]) }?;
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);

@@ -79,8 +79,7 @@ impl Scene for Triangle {
         // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
         // render pass.
         unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
-        // SAFETY: one binding, well under maxVertexInputBindings, with a live buffer.
-        unsafe { rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0]) }?;
+        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         // SAFETY: the pipeline bound above was made for this render pass and subpass with this
         // layout; its sets, vertex buffers and dynamic viewport and scissor are bound and set,
         // and the shaders read only what they bind.

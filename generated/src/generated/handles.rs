@@ -498,6 +498,11 @@ impl DescriptorPool {
                 f.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET)
             })
     }
+    /// The flags the pool was created with (none for a pool the wrappers
+    /// did not create).
+    pub(crate) fn pool_flags(&self) -> vk::DescriptorPoolCreateFlags {
+        self.inner.flags.get().copied().unwrap_or_default()
+    }
     pub(crate) fn with_flags(self, flags: vk::DescriptorPoolCreateFlags) -> Self {
         let _ = self.inner.flags.set(flags);
         self

@@ -283,6 +283,19 @@ fn pred(p: &Pred, negated: bool, on_command: bool) -> TokenStream {
                 }
             }
         }
+        Pred::AbsAtMost { member: m, rhs } => {
+            let m = member(m);
+            let l = match rhs {
+                Rhs::Limit(l) => limit(l),
+                _ => quote!(0.0),
+            };
+            // A NaN is at most nothing.
+            if negated {
+                quote!(s.limits().is_some_and(|l| (#m as f64).is_nan() || (#m as f64).abs() > #l as f64))
+            } else {
+                quote!(s.limits().is_none_or(|l| (#m as f64).abs() <= #l as f64))
+            }
+        }
         Pred::MultipleOf { member: m, rhs } => {
             let m = member(m);
             let is = match rhs {

@@ -551,6 +551,11 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             pub fn frees_sets(&self) -> bool {
                 self.inner.flags.get().is_some_and(|f| f.contains(vk::DescriptorPoolCreateFlags::FREE_DESCRIPTOR_SET))
             }
+            /// The flags the pool was created with (none for a pool the wrappers
+            /// did not create).
+            pub(crate) fn pool_flags(&self) -> vk::DescriptorPoolCreateFlags {
+                self.inner.flags.get().copied().unwrap_or_default()
+            }
         }
     });
     let flags_field = (name == "VkDescriptorPool")

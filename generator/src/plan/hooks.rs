@@ -138,6 +138,15 @@ const QUEUE_INFOS: &str =
     "checks the family, flags and index against the queue create infos the device recorded at its creation";
 const INSTANCE_INFO: &str = "checks each enabled extension's dependencies (vk.xml's `depends`, emitted as a table) against the enabled extensions and API version";
 const INSTANCE_ALONE: &str = "checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0)";
+const VERTEX_LIMITS: &str = "checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once";
+const UNPROVEN_UAB: &str = "checked by the safe methods in every build (the layouts' and the pool's create flags are kept from their creation), but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors";
+const UNPROVEN_VARIABLE: &str = "checked by the safe methods in every build (the variable-count binding is kept from the layout's creation, and each set's writes are checked against the count it was allocated with), but no test breaks it: lavapipe 22.3 has no variable descriptor counts";
+const DEVICE_ONLY: &str =
+    "checks the event was not created device-only, which the device records at its creation";
+const LAZY: &str = "checks the memory's type, kept from its allocation, is lazily allocated";
+const SAMPLE_COUNTS: &str = "checks the sample count against the format's sample counts for the type, usage and tiling, queried from the physical device (the 1.3.239 layer does not check it: proven by the error alone)";
+const PLANES: &str = "checks a chained plane info against the image's create flags and format, kept from its creation";
+const QUERY_RANGE: &str = "checks the queries against the pool's count, kept from its creation";
 const INDEX_ALIGNED: &str = "checks the offset plus the buffer's offset in its memory (kept from the bind) is a multiple of the index size; allocations start aligned for any resource";
 const STATISTICS: &str = "checks the statistics bits against those the API defines (the 1.3.239 layer does not check it: proven by the error alone)";
 const PRIVATE_TYPE: &str = "refuses an object type of the instance level (the 1.3.239 layer does not check it, and lavapipe crashes on it: proven by the error alone)";
@@ -635,7 +644,7 @@ pub const SPECIALS: &[Special] = &[
         command: "vkCmdBindVertexBuffers",
         check: call(
             "hooks::cmd_bind_vertex_buffers_checks",
-            &["self", "buffers", "offsets"],
+            &["self", "first_binding", "buffers", "offsets"],
         ),
         after: call(
             "hooks::cmd_bind_vertex_buffers_done",
@@ -645,6 +654,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdBindVertexBuffers-pOffsets-00626", How::Dynamic(RANGE)),
             ("VUID-vkCmdBindVertexBuffers-pBuffers-00627", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdBindVertexBuffers-pBuffers-00628", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdBindVertexBuffers-firstBinding-00625", How::Dynamic(VERTEX_LIMITS)),
         ],
         ..NONE
     },
@@ -652,7 +662,7 @@ pub const SPECIALS: &[Special] = &[
         command: "vkCmdBindVertexBuffers2",
         check: call(
             "hooks::cmd_bind_vertex_buffers2_checks",
-            &["self", "buffers", "offsets", "sizes"],
+            &["self", "first_binding", "buffers", "offsets", "(sizes, strides)"],
         ),
         after: call(
             "hooks::cmd_bind_vertex_buffers_done",
@@ -663,6 +673,8 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdBindVertexBuffers2-pSizes-03358", How::Dynamic(RANGE)),
             ("VUID-vkCmdBindVertexBuffers2-pBuffers-03359", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdBindVertexBuffers2-pBuffers-03360", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdBindVertexBuffers2-firstBinding-03356", How::Dynamic(VERTEX_LIMITS)),
+            ("VUID-vkCmdBindVertexBuffers2-pStrides-03362", How::Dynamic(VERTEX_LIMITS)),
         ],
         ..NONE
     },
@@ -692,6 +704,95 @@ pub const SPECIALS: &[Special] = &[
             "VUID-VkQueryPoolCreateInfo-queryType-00792",
             How::Dynamic(STATISTICS),
         )],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateEvent",
+        created: call("hooks::event_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkSetEvent",
+        check: call(
+            "hooks::host_event",
+            &["self", "event", "\"VUID-vkSetEvent-event-03941\""],
+        ),
+        settles: &[("VUID-vkSetEvent-event-03941", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkResetEvent",
+        check: call(
+            "hooks::host_event",
+            &["self", "event", "\"VUID-vkResetEvent-event-03823\""],
+        ),
+        settles: &[("VUID-vkResetEvent-event-03823", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetEventStatus",
+        check: call(
+            "hooks::host_event",
+            &["self", "event", "\"VUID-vkGetEventStatus-event-03940\""],
+        ),
+        settles: &[("VUID-vkGetEventStatus-event-03940", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetDeviceMemoryCommitment",
+        check: call("hooks::lazily_allocated", &["self", "memory"]),
+        settles: &[(
+            "VUID-vkGetDeviceMemoryCommitment-memory-00690",
+            How::Dynamic(LAZY),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceSparseImageFormatProperties",
+        check_last: call(
+            "hooks::sparse_samples",
+            &[
+                "self",
+                "(format, ty, samples, usage, tiling)",
+                "\"VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094",
+            How::Dynamic(SAMPLE_COUNTS),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceSparseImageFormatProperties2",
+        check_last: call("hooks::sparse_samples2", &["self", "format_info"]),
+        settles: &[(
+            "VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095",
+            How::Dynamic(SAMPLE_COUNTS),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageMemoryRequirements2",
+        check: call("hooks::image_requirements2_planes", &["self", "info"]),
+        settles: &[
+            ("VUID-VkImageMemoryRequirementsInfo2-image-01589", How::User(UNPROVEN_DISJOINT)),
+            ("VUID-VkImageMemoryRequirementsInfo2-image-01590", How::Dynamic(PLANES)),
+            ("VUID-VkImageMemoryRequirementsInfo2-image-01591", How::User(UNPROVEN_DISJOINT)),
+            ("VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281", How::User(UNPROVEN_DISJOINT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetQueryPool",
+        check: call(
+            "hooks::cmd_reset_query_pool_range",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        settles: &[
+            ("VUID-vkCmdResetQueryPool-firstQuery-00796", How::Dynamic(QUERY_RANGE)),
+            ("VUID-vkCmdResetQueryPool-firstQuery-00797", How::Dynamic(QUERY_RANGE)),
+        ],
         ..NONE
     },
     Special {
@@ -1283,10 +1384,24 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkAllocateDescriptorSets",
         check: call("hooks::allocate_descriptor_sets_checks", &["allocate_info"]),
-        settles: &[(
-            "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
-            How::Dynamic(CHAINED_COUNT),
-        )],
+        check_last: call(
+            "hooks::allocate_descriptor_sets_layouts",
+            &["self", "descriptor_pool", "allocate_info"],
+        ),
+        settles: &[
+            (
+                "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
+                How::Dynamic(CHAINED_COUNT),
+            ),
+            (
+                "VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044",
+                How::User(UNPROVEN_UAB),
+            ),
+            (
+                "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046",
+                How::User(UNPROVEN_VARIABLE),
+            ),
+        ],
         created: call(
             "hooks::descriptor_sets_allocated",
             &["self", "created", "descriptor_pool", "allocate_info"],

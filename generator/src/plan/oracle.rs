@@ -524,6 +524,14 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         // Of `x and (y + x) must both be in [0, extent]`, break the last: the sum
         // past the level's extent.
         Pred::All(ps) => make_false(at, ps.last()?, out)?,
+        // Below minus the limit.
+        Pred::AbsAtMost {
+            member,
+            rhs: Rhs::Limit(l),
+        } => out.push(Assign::Number {
+            member: member.clone(),
+            expr: format!("-({} as f64 + 1.0) as _", limit(l)),
+        }),
         // One more than the fixture's value is a multiple of nothing above 1.
         Pred::MultipleOf { member, .. } => out.push(Assign::Increment {
             member: member.clone(),

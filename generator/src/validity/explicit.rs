@@ -185,6 +185,13 @@ pub enum Pred {
         /// The member is an unsigned integer.
         unsigned: bool,
     },
+    /// The absolute value of a number member is at most a limit.
+    AbsAtMost {
+        /// The member.
+        member: String,
+        /// The limit ([`Rhs::Limit`]).
+        rhs: Rhs,
+    },
     /// A whole-number member is a multiple of a constant or a limit.
     MultipleOf {
         /// The member.
@@ -288,7 +295,8 @@ impl Pred {
             | Pred::NoBit { member, .. }
             | Pred::OneOf { member, .. }
             | Pred::NoneOf { member, .. }
-            | Pred::MultipleOf { member, .. } => vec![member],
+            | Pred::MultipleOf { member, .. }
+            | Pred::AbsAtMost { member, .. } => vec![member],
             Pred::Compare {
                 member, plus, rhs, ..
             } => {
@@ -353,7 +361,8 @@ impl Pred {
             | Pred::NoBit { member, .. }
             | Pred::OneOf { member, .. }
             | Pred::NoneOf { member, .. }
-            | Pred::MultipleOf { member, .. } => vec![member],
+            | Pred::MultipleOf { member, .. }
+            | Pred::AbsAtMost { member, .. } => vec![member],
             Pred::Compare {
                 member, plus, rhs, ..
             } => {
@@ -449,6 +458,8 @@ pub const RECOGNISERS: &[(&str, Recogniser)] = &[
     ("number between two bounds, inclusive", between_req),
     ("number a multiple of a constant or limit", multiple_req),
     ("feature must be enabled", feature_req),
+    ("absolute value at most a limit", abs_req),
+    ("flags with no bits but these", other_bits_req),
 ];
 
 /// Rules whose text, read as written, refuses values that the specification
@@ -655,9 +666,34 @@ fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
         }
         _ => req.to_owned(),
     };
-    let (by, must) = RECOGNISERS
+    // `If m includes A, then bits other than B must not be set`: of `m`.
+    let req = match (req.strip_prefix("bits other than "), conds.last()) {
+        (Some(rest), Some(last)) if last.starts_with('`') && rest.ends_with(" must not be set") => {
+            let subject = last.split('`').nth(1)?;
+            let list = rest.trim_end_matches(" must not be set");
+            format!("`{subject}` must not include bits other than {list}")
+        }
+        _ => req,
+    };
+    let (by, mut must) = RECOGNISERS
         .iter()
         .find_map(|(name, f)| f(input, &req).map(|p| (*name, p)))?;
+    // A requirement never forbids the bits its own condition asks for (`if usage
+    // has TRANSIENT, no bits but COLOR ...`: TRANSIENT itself stays allowed).
+    if let Pred::NoBit { member, bits } = &mut must {
+        for p in &when {
+            if let Pred::AnyBit {
+                member: m,
+                bits: asked,
+            } = p
+            {
+                if m == member {
+                    bits.retain(|b| !asked.iter().any(|a| a.number == b.number));
+                }
+            }
+        }
+        (!bits.is_empty()).then_some(())?;
+    }
     Some((by, when, must))
 }
 
@@ -726,9 +762,11 @@ fn capitalised(text: &str) -> String {
 fn split_conditions(rest: &str) -> Option<(Vec<&str>, &str)> {
     let at = rest.find(" must ")?;
     // `If C then R`, with no comma, splits at `then`.
-    let (cut, skip) = match rest[..at].rfind(", ") {
-        Some(cut) => (cut, 2),
-        None => (rest[..at].rfind(" then ")?, 1),
+    // `, then` ends the conditions even when the requirement holds a list with
+    // commas.
+    let (cut, skip) = match (rest[..at].rfind(", then "), rest[..at].rfind(", ")) {
+        (Some(cut), _) | (None, Some(cut)) => (cut, 2),
+        (None, None) => (rest[..at].rfind(" then ")?, 1),
     };
     let req = rest[cut + skip..].trim_start_matches("then ");
     let mut conds = Vec::new();
@@ -1277,6 +1315,61 @@ fn multiple_req(input: &Input, text: &str) -> Option<Pred> {
     Some(Pred::MultipleOf {
         member: c[0].clone(),
         rhs,
+    })
+}
+
+/// `` The absolute value of `height` must be less than or equal to
+/// `VkPhysicalDeviceLimits::maxY` ``.
+fn abs_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^The absolute value of `([\w.]+)` must be less than or equal to `([\w:\[\]]+)`$",
+    );
+    let c = whole(r, text)?;
+    // The limit as the comparison recogniser reads it.
+    let Pred::Compare { rhs, .. } = compare_req(
+        input,
+        &format!("`{}` must be less than or equal to `{}`", c[0], c[1]),
+    )?
+    else {
+        return None;
+    };
+    matches!(rhs, Rhs::Limit(_)).then_some(())?;
+    Some(Pred::AbsAtMost {
+        member: c[0].clone(),
+        rhs,
+    })
+}
+
+/// `` `usage` must not include bits other than `A`, `B`, and `C` ``: none of the
+/// type's other bits. (A condition's bits on the same member stay allowed: see
+/// [`read_parts`].)
+fn other_bits_req(input: &Input, text: &str) -> Option<Pred> {
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^`([\w.]+)` must not include bits other than (`[A-Z0-9_]+`(?:,? (?:or |and )?`[A-Z0-9_]+`)*)$",
+    );
+    let c = whole(r, text)?;
+    let allowed = flag_list(input, &c[0], &c[1])?;
+    let (group, _) = values_group(input, &c[0])?;
+    let all = input.model.enum_values.get(group)?;
+    let bits: Vec<Value> = all
+        .iter()
+        .filter_map(|n| {
+            Some(Value {
+                name: n.clone(),
+                number: *input.model.enum_numbers.get(n)?,
+            })
+        })
+        .filter(|v| (v.number as u64).is_power_of_two())
+        .filter(|v| !allowed.iter().any(|a| a.number == v.number))
+        .collect();
+    (!bits.is_empty()).then_some(())?;
+    Some(Pred::NoBit {
+        member: c[0].clone(),
+        bits,
     })
 }
 

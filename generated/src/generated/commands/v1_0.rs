@@ -77,13 +77,6 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
     }
     /**`vkAllocateDescriptorSets`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044`: If any element of `pSetLayouts` was created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set, `descriptorPool` must have been created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046`: If VkDescriptorSetAllocateInfo::`pSetLayouts`[i] has a variable-sized descriptor binding, then `pDescriptorCounts`[i] must be less than or equal to the descriptor count specified for that binding when the descriptor set layout was created
-
 # Valid usage
 
 The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html). Settled by the wrappers:
@@ -93,7 +86,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: dynamic (checks the count is not 0)*/
     #[inline]
-    pub unsafe fn allocate_descriptor_sets<'a>(
+    pub fn allocate_descriptor_sets<'a>(
         &self,
         descriptor_pool: &DescriptorPool,
         allocate_info: &DescriptorSetAllocateInfo<'a>,
@@ -109,6 +102,11 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
+        crate::hooks::allocate_descriptor_sets_layouts(
+            self,
+            descriptor_pool,
+            allocate_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -119,7 +117,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 
 # Safety
 
-The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at run time: `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`, `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044`, `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn allocate_descriptor_sets_unchecked<'a>(
         &self,
@@ -955,7 +953,13 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(Event::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::event_created(
+                self,
+                Event::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateFence`
 
@@ -1113,7 +1117,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 148 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 147 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1262,7 +1266,6 @@ The caller upholds these 148 rules that no check of this method enforces (its co
 - `VUID-VkSpecializationInfo-constantID-04911`: The `constantID` value of each element of `pMapEntries` must be unique within `pMapEntries`
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 - `VUID-VkVertexInputAttributeDescription-format-00623`: `format` must be allowed as a vertex buffer format, as specified by the `VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by `vkGetPhysicalDeviceFormatProperties`
-- `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
 
 # Valid usage
 
@@ -1358,14 +1361,13 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateImage-flags-00939`: If the `flags` member of `pCreateInfo` includes `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, creating this `VkImage` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
 - `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
 - `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
 - `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
-- `VUID-VkImageCreateInfo-usage-00963`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set
 - `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
 - `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
 - `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
@@ -1393,7 +1395,6 @@ The caller upholds these 35 rules that no check of this method enforces (its com
 - `VUID-VkImageCreateInfo-format-02538`: If the `shaderStorageImageMultisample` feature is not enabled, `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` including `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkImageCreateInfo-pNext-06722`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero, then each format in VkImageFormatListCreateInfo::`pViewFormats` must either be compatible with the `format` as described in the compatibility table or, if `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, be an uncompressed format that is size-compatible with `format`
 - `VUID-VkImageCreateInfo-flags-04738`: If `flags` does not contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` and the `pNext` chain includes a VkImageFormatListCreateInfo structure, then VkImageFormatListCreateInfo::`viewFormatCount` must be `0` or `1`
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
 
 # Valid usage
@@ -1890,10 +1891,9 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
 
 # Safety
 
-The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
-- `VUID-VkSamplerCreateInfo-mipLodBias-01069`: The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias`
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: If `unnormalizedCoordinates` is `VK_TRUE`, `minFilter` and `magFilter` must be equal
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`
@@ -2223,27 +2223,21 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements`] check
     }
     /**`vkGetDeviceMemoryCommitment`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: `memory` must have been created with a memory type that reports `VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT`
-
 # Valid usage
 
 The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
 
+- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: dynamic (checks the memory's type, kept from its allocation, is lazily allocated)
 - `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub unsafe fn get_device_memory_commitment(
+    pub fn get_device_memory_commitment(
         &self,
         memory: &DeviceMemory,
     ) -> Result<vk::DeviceSize> {
+        crate::hooks::lazily_allocated(self, memory)?;
         {
             let r = self.validate_get_device_memory_commitment(memory);
             r?;
@@ -2256,7 +2250,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_device_memory_commitment`] checks at run time: `VUID-vkGetDeviceMemoryCommitment-memory-parent`, `VUID-vkGetDeviceMemoryCommitment-memory-00690`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_memory_commitment_unchecked(
         &self,
@@ -2313,23 +2307,17 @@ The caller upholds the rules that [`Self::get_device_queue`] checks at run time:
     }
     /**`vkGetEventStatus`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetEventStatus-event-03940`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
-
 # Valid usage
 
 The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
 
+- `VUID-vkGetEventStatus-event-03940`: dynamic (checks the event was not created device-only, which the device records at its creation)
 - `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub unsafe fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
+    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
+        crate::hooks::host_event(self, event, "VUID-vkGetEventStatus-event-03940")?;
         {
             let r = self.validate_get_event_status(event);
             r?;
@@ -2342,7 +2330,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_event_status`] checks at run time: `VUID-vkGetEventStatus-event-parent`, `VUID-vkGetEventStatus-event-03940`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_event_status_unchecked(
         &self,
@@ -2970,11 +2958,10 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkResetEvent-event-03821`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
 - `VUID-vkResetEvent-event-03822`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
-- `VUID-vkResetEvent-event-03823`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
 
 # Valid usage
 
@@ -2983,8 +2970,9 @@ The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/
 - `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkResetEvent-event-03823`: dynamic (checks the event was not created device-only, which the device records at its creation)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2993,6 +2981,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        crate::hooks::host_event(self, event, "VUID-vkResetEvent-event-03823")?;
         {
             let r = self.validate_reset_event(event);
             r?;
@@ -3005,7 +2994,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, `VUID-vkResetEvent-event-03823`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -3081,29 +3070,23 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
     }
     /**`vkSetEvent`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkSetEvent-event-03941`: `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
-
 # Valid usage
 
 The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
 
+- `VUID-vkSetEvent-event-03941`: dynamic (checks the event was not created device-only, which the device records at its creation)
 - `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[inline]
-    pub unsafe fn set_event(&self, event: &Event) -> Result<()> {
+    pub fn set_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        crate::hooks::host_event(self, event, "VUID-vkSetEvent-event-03941")?;
         {
             let r = self.validate_set_event(event);
             r?;
@@ -3116,7 +3099,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkSetEvent-event-parent`, `VUID-vkSetEvent-event-03941`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_event_unchecked(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -3626,16 +3609,11 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
     }
     /**`vkGetPhysicalDeviceSparseImageFormatProperties`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those in this command and `flags` equal to the value that is set in VkImageCreateInfo::`flags` when the image is created
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
 
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: dynamic (checks the sample count against the format's sample counts for the type, usage and tiling, queried from the physical device (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -3644,11 +3622,9 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties(
+    pub fn get_physical_device_sparse_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -3667,6 +3643,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
                 );
             r?;
         }
+        crate::hooks::sparse_samples(
+            self,
+            (format, ty, samples, usage, tiling),
+            "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -3683,7 +3664,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
         &self,

@@ -300,16 +300,11 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
     }
     /**`vkCmdBindVertexBuffers`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
-
 # Valid usage
 
 The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindVertexBuffers-firstBinding-00625`: dynamic (checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once)
 - `VUID-vkCmdBindVertexBuffers-pOffsets-00626`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdBindVertexBuffers-pBuffers-00627`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers-pBuffers-00628`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
@@ -323,12 +318,12 @@ The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.kh
 - `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers(
+    pub fn cmd_bind_vertex_buffers(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -343,7 +338,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
                 ),
             });
         }
-        crate::hooks::cmd_bind_vertex_buffers_checks(self, buffers, offsets)?;
+        crate::hooks::cmd_bind_vertex_buffers_checks(
+            self,
+            first_binding,
+            buffers,
+            offsets,
+        )?;
         {
             let r = self.validate_cmd_bind_vertex_buffers(first_binding, buffers);
             r?;
@@ -358,7 +358,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers_unchecked(
         &mut self,
@@ -1161,12 +1161,6 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
     }
     /**`vkCmdSetViewport`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
-
 # Valid usage
 
 The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewport.html). Settled by the wrappers:
@@ -1183,7 +1177,7 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_set_viewport(
+    pub fn cmd_set_viewport(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
@@ -2828,16 +2822,16 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdResetQueryPool-firstQuery-00796`: `firstQuery` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdResetQueryPool-firstQuery-00797`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
 - `VUID-vkCmdResetQueryPool-None-02841`: All queries used by the command must not be active
 
 # Valid usage
 
 The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetQueryPool.html). Settled by the wrappers:
 
+- `VUID-vkCmdResetQueryPool-firstQuery-00796`: dynamic (checks the queries against the pool's count, kept from its creation)
+- `VUID-vkCmdResetQueryPool-firstQuery-00797`: dynamic (checks the queries against the pool's count, kept from its creation)
 - `VUID-vkCmdResetQueryPool-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdResetQueryPool-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -2846,19 +2840,23 @@ The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khron
 - `VUID-vkCmdResetQueryPool-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_reset_query_pool(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::cmd_reset_query_pool_range(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+        )?;
         {
             let r = self.validate_cmd_reset_query_pool(query_pool);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -2870,18 +2868,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_reset_query_pool_unchecked(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_reset_query_pool;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
-        self.retain_with(query_pool.address(), || query_pool.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
+            self.retain_with(query_pool.address(), || query_pool.retained());
+        }
+        Ok(())
     }
     /**`vkCmdResolveImage`
 

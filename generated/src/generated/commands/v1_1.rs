@@ -503,15 +503,6 @@ The caller upholds the rules that [`Self::get_device_queue2`] checks at run time
     }
     /**`vkGetImageMemoryRequirements2`
 
-# Safety
-
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkImageMemoryRequirementsInfo2-image-01589`: If `image` was created with a multi-planar format and the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
-- `VUID-VkImageMemoryRequirementsInfo2-image-01590`: If `image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
-- `VUID-VkImageMemoryRequirementsInfo2-image-01591`: If `image` was created with a single-plane format, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
-- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281`: If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-
 # Valid usage
 
 The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
@@ -520,11 +511,12 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
 - `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub unsafe fn get_image_memory_requirements2<'a>(
+    pub fn get_image_memory_requirements2<'a>(
         &self,
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
+        crate::hooks::image_requirements2_planes(self, info)?;
         {
             let r = self
                 .validate_get_image_memory_requirements2(info, memory_requirements);
@@ -541,7 +533,7 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
 
 # Safety
 
-The caller upholds the rules that [`Self::get_image_memory_requirements2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_image_memory_requirements2`] checks at run time: `VUID-VkImageMemoryRequirementsInfo2-image-01589`, `VUID-VkImageMemoryRequirementsInfo2-image-01590`, `VUID-VkImageMemoryRequirementsInfo2-image-01591`, `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_image_memory_requirements2_unchecked<'a>(
         &self,
@@ -1022,12 +1014,6 @@ The caller upholds the rules that [`Self::get_physical_device_format_properties2
     }
     /**`vkGetPhysicalDeviceImageFormatProperties2`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
@@ -1038,7 +1024,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn get_physical_device_image_format_properties2<'a>(
+    pub fn get_physical_device_image_format_properties2<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
@@ -1204,12 +1190,6 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
     }
     /**`vkGetPhysicalDeviceSparseImageFormatProperties2`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`: `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those in this command and `flags` equal to the value that is set in VkImageCreateInfo::`flags` when the image is created
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
@@ -1219,7 +1199,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties2<'a>(
+    pub fn get_physical_device_sparse_image_format_properties2<'a>(
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
@@ -1230,6 +1210,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
                 );
             r?;
         }
+        crate::hooks::sparse_samples2(self, format_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1242,7 +1223,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time: `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_physical_device_sparse_image_format_properties2_unchecked<'a>(
         &self,

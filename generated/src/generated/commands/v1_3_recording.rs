@@ -868,21 +868,21 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
-- `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: If `pStrides` is not `NULL` each element of `pStrides` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride`
 - `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the extent is calculated as the VkVertexInputAttributeDescription::`offset` plus VkVertexInputAttributeDescription::`format` size
 
 # Valid usage
 
 The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers2.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`: dynamic (checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once)
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdBindVertexBuffers2-pSizes-03358`: dynamic (checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`: dynamic (checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse))
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-04111`: static (the method takes the handles as a slice of wrapper references, none of them null)
+- `VUID-vkCmdBindVertexBuffers2-pStrides-03362`: dynamic (checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
@@ -894,10 +894,10 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2(
         &mut self,
@@ -934,7 +934,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
                 ),
             });
         }
-        crate::hooks::cmd_bind_vertex_buffers2_checks(self, buffers, offsets, sizes)?;
+        crate::hooks::cmd_bind_vertex_buffers2_checks(
+            self,
+            first_binding,
+            buffers,
+            offsets,
+            (sizes, strides),
+        )?;
         {
             let r = self.validate_cmd_bind_vertex_buffers2(first_binding, buffers);
             r?;
@@ -955,7 +961,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
         &mut self,
@@ -1660,12 +1666,6 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
     }
     /**`vkCmdSetViewportWithCount`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkViewport-height-01773`: The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1]
-
 # Valid usage
 
 The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWithCount.html). Settled by the wrappers:
@@ -1681,7 +1681,7 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_with_count(
+    pub fn cmd_set_viewport_with_count(
         &mut self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {

@@ -1757,6 +1757,17 @@ pub fn check_image_create_info(
             ),
         );
     }
+    if (v.usage.as_raw() & 64) != 0 && (v.usage.as_raw() & 3997455) != 0 {
+        return Err(
+            fail(
+                "VUID-VkImageCreateInfo-usage-00963",
+                format!(
+                    "If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set (`usage` = {:?})",
+                    v.usage
+                ),
+            ),
+        );
+    }
     if !s.feature(|f| f.v10.shader_storage_image_multisample)
         && (v.usage.as_raw() & 8) != 0 && !matches!(v.samples.as_raw(), 1)
     {
@@ -3123,6 +3134,23 @@ pub fn check_sampler_create_info(
         s,
         "VUID-VkSamplerCreateInfo-addressModeW-parameter",
     )?;
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.mip_lod_bias as f64).is_nan()
+                || (v.mip_lod_bias as f64).abs() > l.max_sampler_lod_bias as f64
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkSamplerCreateInfo-mipLodBias-01069",
+                format!(
+                    "The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias` (`mipLodBias` = {:?})",
+                    v.mip_lod_bias
+                ),
+            ),
+        );
+    }
     if (v.max_lod as f64).is_nan() || (v.min_lod as f64).is_nan()
         || (v.max_lod as f64) < (v.min_lod as f64)
     {
@@ -3891,6 +3919,23 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
                 format!(
                     "`width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0] (`width` = {:?})",
                     v.width
+                ),
+            ),
+        );
+    }
+    if s
+        .limits()
+        .is_some_and(|l| {
+            (v.height as f64).is_nan()
+                || (v.height as f64).abs() > l.max_viewport_dimensions[1] as f64
+        })
+    {
+        return Err(
+            fail(
+                "VUID-VkViewport-height-01773",
+                format!(
+                    "The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1] (`height` = {:?})",
+                    v.height
                 ),
             ),
         );

@@ -485,6 +485,18 @@ pub fn check_image_stencil_usage_create_info(
             ),
         );
     }
+    if (v.stencil_usage.as_raw() & 64) != 0 && (v.stencil_usage.as_raw() & 3997471) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539",
+                format!(
+                    "If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` (`stencilUsage` = {:?})",
+                    v.stencil_usage
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkRenderPassCreateInfo2` that are checked at run time.
