@@ -171,7 +171,7 @@ fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
         .clear_values(&clear);
     // Neither the begin nor the matching end reaches the driver.
     let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
-    let rec = unsafe { rec.cmd_end_render_pass() };
+    let rec = rec.cmd_end_render_pass();
     assert_eq!(vuid(rec.end()), "VUID-vkCmdBeginRenderPass-bufferlevel");
     assert!(!cb.is_executable());
     assert_silent(&s.messages);

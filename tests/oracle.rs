@@ -1689,7 +1689,7 @@ fn draw(
             rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
                 .expect("push");
             call(&mut rec);
-            let _ = unsafe { rec.cmd_end_render_pass() }.end();
+            let _ = rec.cmd_end_render_pass().end();
         };
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut safe = Some(safe);

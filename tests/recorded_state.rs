@@ -603,3 +603,310 @@ fn a_query_reset_stays_inside_its_pool_and_the_layer_agrees() {
     }
     assert_silent(&s.messages);
 }
+
+/// A render pass of two subpasses over the target's one color attachment, and its
+/// framebuffer.
+fn two_subpasses(
+    s: &Setup,
+    target: &tuff_setup::ColorTarget,
+) -> (tuff::RenderPass, tuff::Framebuffer) {
+    let attachments = [vk::AttachmentDescription {
+        format: vk::Format::R8G8B8A8_UNORM,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::CLEAR,
+        store_op: vk::AttachmentStoreOp::STORE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: vk::ImageLayout::UNDEFINED,
+        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        ..Default::default()
+    }];
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let subpasses = [
+        tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color),
+        tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color),
+    ];
+    let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+    let access = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+    let dependencies = [vk::SubpassDependency {
+        src_subpass: 0,
+        dst_subpass: 1,
+        src_stage_mask: stage,
+        dst_stage_mask: stage,
+        src_access_mask: access,
+        dst_access_mask: access,
+        dependency_flags: vk::DependencyFlags::BY_REGION,
+    }];
+    // SAFETY: the attachment, subpasses and dependency are consistent, and the layouts
+    // those of a color attachment.
+    let render_pass = unsafe {
+        s.device.create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses)
+                .dependencies(&dependencies),
+        )
+    }
+    .expect("render pass");
+    // SAFETY: the view is of the target's image, of the attachment's format, one
+    // level and layer, and its extent.
+    let framebuffer = unsafe {
+        s.device.create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&render_pass)
+                .attachments(&tuff::HandleSlice::new(&[&target.view]))
+                .width(4)
+                .height(4)
+                .layers(1),
+        )
+    }
+    .expect("framebuffer");
+    (render_pass, framebuffer)
+}
+
+/// Records `inside` into a render pass instance of `render_pass`, and ends both.
+fn in_render_pass(
+    s: &Setup,
+    (render_pass, framebuffer): (&tuff::RenderPass, &tuff::Framebuffer),
+    before: impl FnOnce(&mut tuff::Recorder<'_, tuff::Outside>),
+    inside: impl FnOnce(&mut tuff::Recorder<'_, tuff::InRenderPass>),
+) -> tuff::Result<()> {
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    before(&mut rec);
+    let clear = [vk::ClearValue::default()];
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 4,
+            height: 4,
+        },
+    };
+    // SAFETY: the framebuffer is the render pass's, the area inside it, and the
+    // attachment's layout is what the render pass expects.
+    let mut rec = unsafe {
+        rec.cmd_begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+                .render_area(area)
+                .clear_values(&clear),
+            vk::SubpassContents::INLINE,
+        )
+    };
+    inside(&mut rec);
+    rec.cmd_end_render_pass().end()
+}
+
+/// A recorder inside a render pass instance of `render_pass` over its 4x4 area.
+fn begun<'c>(
+    cb: &'c mut tuff::CommandBuffer,
+    render_pass: (&tuff::RenderPass, &tuff::Framebuffer),
+) -> tuff::Recorder<'c, tuff::InRenderPass> {
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    inside_area(rec, render_pass)
+}
+
+/// `rec` inside a render pass instance of `render_pass` over its 4x4 area.
+fn inside_area<'c>(
+    rec: tuff::Recorder<'c, tuff::Outside>,
+    (rp, fb): (&tuff::RenderPass, &tuff::Framebuffer),
+) -> tuff::Recorder<'c, tuff::InRenderPass> {
+    let clear = [vk::ClearValue::default()];
+    // SAFETY: as in `in_render_pass`.
+    unsafe {
+        rec.cmd_begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(rp, fb)
+                .render_area(vk::Rect2D {
+                    offset: vk::Offset2D::default(),
+                    extent: vk::Extent2D {
+                        width: 4,
+                        height: 4,
+                    },
+                })
+                .clear_values(&clear),
+            vk::SubpassContents::INLINE,
+        )
+    }
+}
+
+#[test]
+fn render_pass_instances_end_in_their_last_subpass_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let (two, two_fb) = two_subpasses(&s, &target);
+    let one = (&target.render_pass, &target.framebuffer);
+    let last = "VUID-vkCmdEndRenderPass-None-00910";
+    let past = "VUID-vkCmdNextSubpass-None-00909";
+    // Ended in the first of two subpasses: refused, and the driver sees the second
+    // subpass recorded before the end (the layer says nothing).
+    assert_eq!(
+        vuid(in_render_pass(&s, (&two, &two_fb), |_| {}, |_| {})),
+        last
+    );
+    // A next subpass after the last: refused and not recorded.
+    let next = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
+        r.cmd_next_subpass(vk::SubpassContents::INLINE)
+    };
+    assert_eq!(vuid(in_render_pass(&s, one, |_| {}, next)), past);
+    // Both subpasses visited: recorded.
+    in_render_pass(&s, (&two, &two_fb), |_| {}, next).expect("two subpasses");
+    assert_silent(&s.messages);
+
+    // Through `_unchecked`, each under the layer: the buffers are never submitted,
+    // and are dropped unended (the layer skipped the call, so the recorders' view of
+    // them no longer holds).
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = begun(&mut cb, (&two, &two_fb));
+    layer_names(&s.messages, last, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { rec.cmd_end_render_pass_unchecked() });
+    });
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = begun(&mut cb, one);
+    layer_names(&s.messages, past, || {
+        // SAFETY: see the module docs.
+        unsafe { rec.cmd_next_subpass_unchecked(vk::SubpassContents::INLINE) };
+    });
+    // The recorder follows the calls it was given, not what the layer skipped: it
+    // is dropped unended.
+    drop(rec);
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn queries_end_where_they_began_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let one = (&target.render_pass, &target.framebuffer);
+    let pool = |ty, count| {
+        s.device
+            .create_query_pool(
+                &tuff::QueryPoolCreateInfo::new()
+                    .query_type(ty)
+                    .query_count(count),
+            )
+            .expect("query pool")
+    };
+    let occlusion = pool(vk::QueryType::OCCLUSION, 2);
+    let timestamps = pool(vk::QueryType::TIMESTAMP, 1);
+    let none = vk::QueryControlFlags::empty();
+    let reset = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        // SAFETY: no query of the pool is active.
+        unsafe { r.cmd_reset_query_pool(&occlusion, 0, 2) }.expect("reset");
+    };
+    // SAFETY (each `cmd_begin_query` below): the pool was reset before, in the same
+    // buffer, so its queries are unavailable.
+    let begin = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        reset(r);
+        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    };
+    let end_inside = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
+        unsafe { r.cmd_end_query(&occlusion, 0) }.map(drop)
+    };
+    // Begun outside, ended inside.
+    let outside_in = "VUID-vkCmdEndQuery-None-07008";
+    let refused = in_render_pass(&s, one, begin, |r| {
+        assert_eq!(vuid(end_inside(r)), outside_in);
+    });
+    assert_eq!(vuid(refused), "VUID-vkEndCommandBuffer-commandBuffer-00061");
+    // Begun inside, left active at the render pass's end: refused, and ended before
+    // the end the driver sees.
+    let left = "VUID-vkCmdEndRenderPass-None-07004";
+    let refused = in_render_pass(&s, one, reset, |r| {
+        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    });
+    assert_eq!(vuid(refused), left);
+    // Ended without being begun; two active queries of one type; a timestamp pool; a
+    // query past the pool.
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    reset(&mut rec);
+    assert_eq!(
+        vuid(unsafe { rec.cmd_end_query(&occlusion, 0) }),
+        "VUID-vkCmdEndQuery-None-01923"
+    );
+    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    assert_eq!(
+        vuid(unsafe { rec.cmd_begin_query(&occlusion, 1, none) }),
+        "VUID-vkCmdBeginQuery-queryPool-01922"
+    );
+    assert_eq!(
+        vuid(unsafe { rec.cmd_begin_query(&timestamps, 0, none) }),
+        "VUID-vkCmdBeginQuery-queryType-02804"
+    );
+    unsafe { rec.cmd_end_query(&occlusion, 0) }.expect("end query");
+    assert_eq!(
+        vuid(unsafe { rec.cmd_begin_query(&occlusion, 2, none) }),
+        "VUID-vkCmdBeginQuery-query-00802"
+    );
+    rec.end().expect("end");
+    // Begun and ended in the render pass's subpass: recorded.
+    in_render_pass(&s, one, reset, |r| {
+        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+        unsafe { r.cmd_end_query(&occlusion, 0) }.expect("end query");
+    })
+    .expect("a query in a subpass");
+    assert_silent(&s.messages);
+
+    // Through `_unchecked`, under the layer.
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    reset(&mut rec);
+    layer_names(&s.messages, "VUID-vkCmdEndQuery-None-01923", || {
+        // SAFETY: see the module docs; the command buffer is never submitted.
+        drop(unsafe { rec.cmd_end_query_unchecked(&occlusion, 0) });
+    });
+    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryPool-01922", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.cmd_begin_query_unchecked(&occlusion, 1, none) });
+    });
+    layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryType-02804", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.cmd_begin_query_unchecked(&timestamps, 0, none) });
+    });
+    unsafe { rec.cmd_end_query(&occlusion, 0) }.expect("end query");
+    layer_names(&s.messages, "VUID-vkCmdBeginQuery-query-00802", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.cmd_begin_query_unchecked(&occlusion, 2, none) });
+    });
+    // The recorder counts the begun queries the layer skipped: dropped unended.
+    drop(rec);
+    // A primary ended with an active query, through ash (`Recorder::end` has no
+    // unchecked twin). (The 1.3.239 layer checks neither a query begun outside and
+    // ended inside nor one left active at a render pass's end: the refusals above
+    // alone show those.)
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    reset(&mut rec);
+    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    let raw = rec.raw();
+    layer_names(
+        &s.messages,
+        "VUID-vkEndCommandBuffer-commandBuffer-00061",
+        || {
+            // SAFETY: see the module docs; the buffer is never submitted, and its
+            // recorder is dropped below without a second end.
+            let _ = unsafe { s.device.fns().end_command_buffer(raw) };
+        },
+    );
+    drop(rec);
+    assert_silent(&s.messages);
+}

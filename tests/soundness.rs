@@ -769,9 +769,7 @@ fn recorder_states_follow_the_begin_info() {
         rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS)
     };
     unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
-    unsafe { rec.cmd_end_render_pass() }
-        .end()
-        .expect("end primary");
+    rec.cmd_end_render_pass().end().expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
     wait(&s, &done);
@@ -885,7 +883,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             )
         };
         let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
-        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
+        rec.cmd_end_render_pass().end().expect("end");
         submit(&s, &[&cb], &done).expect("submit");
         // Set from another thread after a while, so that a failed assertion below
         // does not leave the queue waiting for ever.
@@ -3331,7 +3329,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             .expect("push");
             unsafe { rec.cmd_draw_indexed(64, 1, 0, 0, 0) }.expect("64 indices inside the buffer");
         }
-        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
+        rec.cmd_end_render_pass().end().expect("end");
         if !unchecked {
             assert_silent(&s.messages);
         }

@@ -244,8 +244,7 @@ pub fn record_frame<S: Scene>(
     )?;
     rec.cmd_set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
-    // SAFETY: the render pass has one subpass and no query was begun in it.
-    let mut rec = unsafe { rec.cmd_end_render_pass() };
+    let mut rec = rec.cmd_end_render_pass();
     if let Some((image, buffer)) = readback {
         // SAFETY: the region is the whole color image, in TRANSFER_SRC_OPTIMAL after the
         // barrier above, copied into a readback buffer of exactly its size.

@@ -11,7 +11,7 @@ use crate::handles::*;
 use crate::recorder::{Recorder, State};
 use crate::retention::{
     BindingRecord, BufferRecord, ImageRecord, LayoutRecord, PipelineRecord, QueryPoolRecord,
-    SetLayoutRecord,
+    RenderPassRecord, SetLayoutRecord,
 };
 use crate::structs::*;
 use crate::submission::{self, SubmitRules};
@@ -4385,4 +4385,381 @@ pub(crate) fn cmd_reset_query_pool_range<S: State>(
         )?;
     }
     Ok(())
+}
+
+/// The device remembers a render pass's subpasses and their view masks (from a
+/// chained `VkRenderPassMultiviewCreateInfo`).
+pub(crate) fn render_pass_created(
+    device: &Device,
+    render_pass: RenderPass,
+    create_info: &RenderPassCreateInfo<'_>,
+) -> RenderPass {
+    let raw = create_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+        )
+    };
+    // SAFETY: the safe setter stored the masks with their count.
+    let masks = multiview.map_or(&[][..], |m| unsafe {
+        crate::retention::raw_slice(m.p_view_masks, m.subpass_count)
+    });
+    let view_masks = (0..raw.subpass_count as usize)
+        .map(|i| masks.get(i).copied().unwrap_or(0))
+        .collect();
+    device
+        .live()
+        .render_pass_created(render_pass.raw(), RenderPassRecord { view_masks });
+    render_pass
+}
+
+/// As [`render_pass_created`], for `vkCreateRenderPass2`, whose subpasses carry
+/// their view masks.
+pub(crate) fn render_pass2_created(
+    device: &Device,
+    render_pass: RenderPass,
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> RenderPass {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stored the subpasses with their count.
+    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
+    device
+        .live()
+        .render_pass_created(render_pass.raw(), RenderPassRecord { view_masks });
+    render_pass
+}
+
+/// The recorder enters subpass 0 of the render pass it begins.
+pub(crate) fn render_pass_begun<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    render_pass_begin: &RenderPassBeginInfo<'_>,
+) {
+    let record = recorder
+        .device()
+        .live()
+        .render_pass(render_pass_begin.as_raw().render_pass);
+    recorder.instance = Some(crate::recorder::PassInstance {
+        subpass: 0,
+        render_pass: render_pass_begin.as_raw().render_pass,
+        subpasses: record.as_ref().map_or(0, |r| r.view_masks.len() as u32),
+        view_mask: record
+            .as_ref()
+            .and_then(|r| r.view_masks.first().copied())
+            .unwrap_or(0),
+    });
+}
+
+/// The recorder enters dynamic rendering (one subpass, the info's view mask).
+pub(crate) fn rendering_begun<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    rendering_info: &RenderingInfo<'_>,
+) {
+    recorder.instance = Some(crate::recorder::PassInstance {
+        view_mask: rendering_info.as_raw().view_mask,
+        ..Default::default()
+    });
+}
+
+/// A next subpass exists.
+pub(crate) fn next_subpass_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    vuid: &'static str,
+) -> Result<()> {
+    match recorder.instance {
+        Some(i) if i.subpasses != 0 && i.subpass + 1 >= i.subpasses => refuse(
+            vuid,
+            format!(
+                "The current subpass index must be less than the number of subpasses in the \
+                 render pass minus one (subpass {} of {})",
+                i.subpass, i.subpasses
+            ),
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// The recorder moves to the next subpass.
+pub(crate) fn next_subpass_done<S: State>(recorder: &mut Recorder<'_, S>) {
+    let Some(i) = recorder.instance else {
+        return;
+    };
+    let record = recorder.device().live().render_pass(i.render_pass);
+    let next = i.subpass + 1;
+    let view_mask = record
+        .and_then(|r| r.view_masks.get(next as usize).copied())
+        .unwrap_or(0);
+    recorder.instance = Some(crate::recorder::PassInstance {
+        subpass: next,
+        view_mask,
+        ..i
+    });
+}
+
+/// Ends, before the render pass instance's end is recorded, what a refused end
+/// would leave broken: the queries begun inside the instance, and the subpasses not
+/// yet visited. The recorder is poisoned by then, so the buffer is not submittable,
+/// but the driver only ever sees a valid end.
+fn repair_instance_end<S: State>(recorder: &mut Recorder<'_, S>, next_subpasses: bool) {
+    let raw = recorder.raw();
+    let fns = recorder.device().fns().fp_v1_0().clone();
+    let inside: Vec<crate::recorder::ActiveQuery> = recorder
+        .queries
+        .iter()
+        .filter(|q| q.subpass.is_some())
+        .copied()
+        .collect();
+    for q in &inside {
+        // SAFETY: the query was begun in this recording, inside this instance, and is
+        // still active.
+        unsafe { (fns.cmd_end_query)(raw, q.pool, q.query) };
+    }
+    recorder.queries.retain(|q| q.subpass.is_none());
+    if let Some(i) = recorder.instance.as_mut().filter(|_| next_subpasses) {
+        while i.subpasses != 0 && i.subpass + 1 < i.subpasses {
+            // SAFETY: a next subpass exists in the render pass begun in this recording;
+            // nothing is recorded in it.
+            unsafe { (fns.cmd_next_subpass)(raw, vk::SubpassContents::INLINE) };
+            i.subpass += 1;
+        }
+    }
+}
+
+/// A render pass instance ends in its last subpass, with every query begun inside
+/// it ended; where not, the recorder is refused and repaired
+/// ([`repair_instance_end`]).
+pub(crate) fn end_render_pass_checks<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    (last, queries): (&'static str, &'static str),
+) -> Result<()> {
+    let Some(i) = recorder.instance else {
+        return Ok(());
+    };
+    let r = if i.subpasses != 0 && i.subpass + 1 != i.subpasses {
+        refuse(
+            last,
+            format!(
+                "The current subpass index must be equal to the number of subpasses in the \
+                 render pass minus one (subpass {} of {})",
+                i.subpass, i.subpasses
+            ),
+        )
+    } else if recorder.queries.iter().any(|q| q.subpass.is_some()) {
+        refuse(
+            queries,
+            "If `vkCmdBeginQuery`* was called within a subpass of the render pass, the \
+             corresponding `vkCmdEndQuery`* must have been called subsequently within the same \
+             subpass"
+                .into(),
+        )
+    } else {
+        Ok(())
+    };
+    if r.is_err() {
+        repair_instance_end(recorder, true);
+    }
+    r
+}
+
+/// Dynamic rendering ends with every query begun inside it ended (repaired as
+/// [`end_render_pass_checks`] repairs).
+pub(crate) fn end_rendering_checks<S: State>(recorder: &mut Recorder<'_, S>) -> Result<()> {
+    if recorder.queries.iter().any(|q| q.subpass.is_some()) {
+        repair_instance_end(recorder, false);
+        return refuse(
+            "VUID-vkCmdEndRendering-None-06999",
+            "If `vkCmdBeginQuery`* was called within the render pass, the corresponding \
+             `vkCmdEndQuery`* must have been called subsequently within the same subpass"
+                .into(),
+        );
+    }
+    Ok(())
+}
+
+/// The recorder leaves the render pass instance.
+pub(crate) fn instance_ended<S: State>(recorder: &mut Recorder<'_, S>) {
+    recorder.instance = None;
+}
+
+/// A query begins inside its pool, on a queue that can run it, while no other
+/// query of its type is active, at an index that leaves room for the subpass's
+/// views.
+pub(crate) fn begin_query_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) -> Result<()> {
+    let Some(record) = recorder.device().live().query_pool(query_pool.raw()) else {
+        return Ok(());
+    };
+    if record.query_type == vk::QueryType::TIMESTAMP {
+        refuse(
+            "VUID-vkCmdBeginQuery-queryType-02804",
+            "The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`"
+                .into(),
+        )?;
+    }
+    if query >= record.count {
+        refuse(
+            "VUID-vkCmdBeginQuery-query-00802",
+            format!(
+                "`query` must be less than the number of queries in `queryPool` (`query` = \
+                 {query}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    let flags = recorder.pool_queue_flags();
+    let graphics_stats = vk::QueryPipelineStatisticFlags::from_raw(0x3ff);
+    let compute_stats = vk::QueryPipelineStatisticFlags::COMPUTE_SHADER_INVOCATIONS;
+    let needs = |vuid: &'static str, what: vk::QueueFlags| {
+        if flags.contains(what) {
+            Ok(())
+        } else {
+            refuse(
+                vuid,
+                format!("the command buffer's pool is of a queue family without {what:?} operations, which this query needs"),
+            )
+        }
+    };
+    match record.query_type {
+        vk::QueryType::OCCLUSION => needs(
+            "VUID-vkCmdBeginQuery-queryType-00803",
+            vk::QueueFlags::GRAPHICS,
+        )?,
+        vk::QueryType::PIPELINE_STATISTICS => {
+            if record.statistics.intersects(graphics_stats) {
+                needs(
+                    "VUID-vkCmdBeginQuery-queryType-00804",
+                    vk::QueueFlags::GRAPHICS,
+                )?;
+            }
+            if record.statistics.intersects(compute_stats) {
+                needs(
+                    "VUID-vkCmdBeginQuery-queryType-00805",
+                    vk::QueueFlags::COMPUTE,
+                )?;
+            }
+        }
+        _ => {}
+    }
+    if let Some(q) = recorder.queries.iter().find(|q| q.ty == record.query_type) {
+        refuse(
+            "VUID-vkCmdBeginQuery-queryPool-01922",
+            format!(
+                "`queryPool` must have been created with a `queryType` that differs from that of \
+                 any queries that are active within `commandBuffer` (query {} of another pool or \
+                 index, of type {:?}, is active)",
+                q.query, q.ty
+            ),
+        )?;
+    }
+    if let Some(i) = recorder.instance {
+        let views = i.view_mask.count_ones();
+        if u64::from(query) + u64::from(views) > u64::from(record.count) {
+            refuse(
+                "VUID-vkCmdBeginQuery-query-00808",
+                format!(
+                    "the sum of `query` and the number of bits set in the current subpass's view \
+                     mask must be less than or equal to the number of queries in `queryPool` \
+                     (`query` = {query}, views = {views}, queries = {})",
+                    record.count
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The recorder remembers the active query.
+pub(crate) fn begin_query_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) {
+    let ty = recorder
+        .device()
+        .live()
+        .query_pool(query_pool.raw())
+        .map_or(vk::QueryType::from_raw(i32::MAX), |r| r.query_type);
+    let subpass = recorder.instance.map(|i| i.subpass);
+    recorder.queries.push(crate::recorder::ActiveQuery {
+        pool: query_pool.raw(),
+        query,
+        ty,
+        subpass,
+    });
+}
+
+/// A query ends where it was begun: active in this recording, in the same subpass,
+/// or outside a render pass instance if begun outside.
+pub(crate) fn end_query_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) -> Result<()> {
+    if let Some(record) = recorder.device().live().query_pool(query_pool.raw()) {
+        if query >= record.count {
+            refuse(
+                "VUID-vkCmdEndQuery-query-00810",
+                format!(
+                    "`query` must be less than the number of queries in `queryPool` (`query` = \
+                     {query}, queries = {})",
+                    record.count
+                ),
+            )?;
+        }
+        if let Some(i) = recorder.instance {
+            let views = i.view_mask.count_ones();
+            if u64::from(query) + u64::from(views) > u64::from(record.count) {
+                refuse(
+                    "VUID-vkCmdEndQuery-query-00812",
+                    format!(
+                        "the sum of `query` and the number of bits set in the current subpass's \
+                         view mask must be less than or equal to the number of queries in \
+                         `queryPool` (`query` = {query}, views = {views}, queries = {})",
+                        record.count
+                    ),
+                )?;
+            }
+        }
+    }
+    let Some(active) = recorder
+        .queries
+        .iter()
+        .find(|q| q.pool == query_pool.raw() && q.query == query)
+    else {
+        return refuse(
+            "VUID-vkCmdEndQuery-None-01923",
+            format!("All queries used by the command must be active (query {query} is not)"),
+        );
+    };
+    match (active.subpass, recorder.instance.map(|i| i.subpass)) {
+        (Some(began), Some(now)) if began != now => refuse(
+            "VUID-vkCmdEndQuery-None-07007",
+            format!(
+                "the query was begun in subpass {began} and is ended in subpass {now}; it must end \
+                 in the subpass it began in"
+            ),
+        ),
+        (None, Some(_)) => refuse(
+            "VUID-vkCmdEndQuery-None-07008",
+            "the query was begun outside a render pass instance, so it must be ended outside one"
+                .into(),
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// The recorder forgets the ended query.
+pub(crate) fn end_query_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) {
+    recorder
+        .queries
+        .retain(|q| !(q.pool == query_pool.raw() && q.query == query));
 }

@@ -72,6 +72,33 @@ impl Bound {
     }
 }
 
+/// The render pass instance a recorder is inside, as its checks need it.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct PassInstance {
+    /// The current subpass (0 in dynamic rendering).
+    pub subpass: u32,
+    /// The render pass's subpass count; 0 where it is not known (a render pass the
+    /// wrappers did not create, dynamic rendering, a continuing secondary).
+    pub subpasses: u32,
+    /// The current subpass's view mask (0 without multiview).
+    pub view_mask: u32,
+    /// The render pass (null in dynamic rendering or a continuing secondary).
+    pub render_pass: vk::RenderPass,
+}
+
+/// A query begun in the recording and not yet ended.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ActiveQuery {
+    /// Its pool.
+    pub pool: vk::QueryPool,
+    /// Its index in the pool.
+    pub query: u32,
+    /// The pool's query type.
+    pub ty: vk::QueryType,
+    /// The subpass it was begun in, or `None` outside a render pass instance.
+    pub subpass: Option<u32>,
+}
+
 /// A command buffer in the recording state `S`.
 ///
 /// ```no_run
@@ -111,6 +138,10 @@ pub struct Recorder<'c, S: State> {
     /// Whether the open render pass instance was not begun because of a failed
     /// check, so its end is not recorded either.
     skipped_begin: bool,
+    /// The render pass instance the recorder is inside, if any.
+    pub(crate) instance: Option<PassInstance>,
+    /// The queries begun and not yet ended.
+    pub(crate) queries: Vec<ActiveQuery>,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
     /// any of its buffers: held for the whole recording.
@@ -184,7 +215,12 @@ impl CommandBuffer {
                 });
             }
         }
-        Ok(self.begin_in(info)?.into_state())
+        let mut rec = self.begin_in(info)?;
+        rec.instance = Some(PassInstance {
+            subpass: inheritance.map_or(0, |i| i.subpass),
+            ..PassInstance::default()
+        });
+        Ok(rec.into_state())
     }
 
     fn begin_in(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
@@ -240,6 +276,8 @@ impl CommandBuffer {
             bound: Default::default(),
             poisoned: None,
             skipped_begin: false,
+            instance: None,
+            queries: Vec::new(),
             _state: PhantomData,
         })
     }
@@ -349,6 +387,8 @@ impl<'c, S: State> Recorder<'c, S> {
             bound: self.bound,
             poisoned: self.poisoned,
             skipped_begin: self.skipped_begin,
+            instance: self.instance,
+            queries: self.queries,
             alive: self.alive,
             pool_sync: self.pool_sync,
             _state: PhantomData,
@@ -379,8 +419,31 @@ impl<'c, S: State> Recorder<'c, S> {
 impl<'c> Recorder<'c, Outside> {
     /// `vkEndCommandBuffer`: ends recording; the command buffer can be submitted.
     /// A check of an implicit rule that failed during recording is
-    /// returned here, and the buffer cannot be submitted.
-    pub fn end(self) -> Result<()> {
+    /// returned here, and the buffer cannot be submitted; so is a query of a primary
+    /// buffer still active (`VUID-vkEndCommandBuffer-commandBuffer-00061`).
+    pub fn end(mut self) -> Result<()> {
+        if self.poisoned.is_none()
+            && self.cb.level() == vk::CommandBufferLevel::PRIMARY
+            && !self.queries.is_empty()
+        {
+            self.poisoned = Some(Error::Validation {
+                vuid: "VUID-vkEndCommandBuffer-commandBuffer-00061",
+                message: format!(
+                    "If `commandBuffer` is a primary command buffer, there must not be any \
+                     active queries ({} begun and not ended)",
+                    self.queries.len()
+                ),
+            });
+            // The buffer is not submittable now; its queries are ended so that the
+            // driver sees a valid end.
+            let end_query = self.device.fns().fp_v1_0().cmd_end_query;
+            for q in core::mem::take(&mut self.queries) {
+                // SAFETY: the query was begun in this recording, outside a render pass
+                // instance (one begun inside was ended with its instance), and is
+                // still active.
+                unsafe { end_query(self.raw, q.pool, q.query) };
+            }
+        }
         self.finish()
     }
 }

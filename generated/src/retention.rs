@@ -65,6 +65,8 @@ pub(crate) struct Live {
     /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
     /// host may not set, reset or read.
     device_only_events: Vutex<std::collections::HashSet<u64>>,
+    /// What the recorder needs of each live render pass.
+    render_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
     /// What the checks of commands that use a buffer need to know of it.
     buffers: Vutex<HashMap<u64, BufferRecord>>,
     /// Each shader module's interface, which pipeline creation checks layouts against.
@@ -106,6 +108,14 @@ pub(crate) struct QueryPoolRecord {
     pub count: u32,
     /// `VkQueryPoolCreateInfo::pipelineStatistics`.
     pub statistics: vk::QueryPipelineStatisticFlags,
+}
+
+/// A live render pass's subpasses, which the recorder follows an instance of it
+/// through.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct RenderPassRecord {
+    /// Each subpass's view mask (0 without multiview), in order.
+    pub view_masks: Vec<u32>,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
@@ -225,6 +235,7 @@ impl Default for Live {
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
+            render_passes: Vutex::new(HashMap::default()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
@@ -287,6 +298,18 @@ impl Live {
         self.device_only_events.lock().contains(&raw.as_raw())
     }
 
+    /// Records a new render pass's subpasses.
+    pub(crate) fn render_pass_created(&self, raw: vk::RenderPass, record: RenderPassRecord) {
+        self.render_passes
+            .lock()
+            .insert(raw.as_raw(), Vrc::new(record));
+    }
+
+    /// The record of a live render pass made through the wrappers.
+    pub(crate) fn render_pass(&self, raw: vk::RenderPass) -> Option<Vrc<RenderPassRecord>> {
+        self.render_passes.lock().get(&raw.as_raw()).cloned()
+    }
+
     /// Records that a new semaphore is a timeline semaphore.
     pub(crate) fn set_timeline(&self, raw: vk::Semaphore) {
         self.timelines.lock().insert(raw.as_raw());
@@ -343,6 +366,10 @@ impl Live {
         }
         if unlisted && H::TYPE == vk::ObjectType::EVENT {
             self.device_only_events.lock().remove(&key.1);
+        }
+        if unlisted && H::TYPE == vk::ObjectType::RENDER_PASS {
+            let gone = self.render_passes.lock().remove(&key.1);
+            drop(gone);
         }
         match H::TYPE {
             _ if !unlisted => {}

@@ -176,7 +176,7 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
             }
         }
     }
-    unsafe { rec.cmd_end_render_pass() }.end().expect("end");
+    rec.cmd_end_render_pass().end().expect("end");
 }
 
 fn buffer_info() -> vk::BufferCreateInfo<'static> {

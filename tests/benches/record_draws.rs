@@ -115,7 +115,7 @@ fn main() {
                 .expect("recorded");
             unsafe { rec.cmd_draw(36, 1, black_box(i), 0) }.expect("recorded");
         }
-        unsafe { rec.cmd_end_render_pass() }.end().expect("end");
+        rec.cmd_end_render_pass().end().expect("end");
     };
 
     let mut ash_ns = Vec::new();

@@ -356,7 +356,7 @@ impl Pipelines {
         )
         .expect("recorded");
         unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("recorded");
-        let mut rec = unsafe { rec.cmd_end_render_pass() };
+        let mut rec = rec.cmd_end_render_pass();
         if let Some(buffer) = readback {
             let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)
                 .src_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE)

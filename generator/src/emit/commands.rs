@@ -240,9 +240,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let special = special(&plan.name);
     let same_len = same_len_checks(plan);
     // A recorded command that an always-on check may refuse returns its error.
+    // A command that moves the recorder (a render pass's begin, next subpass or end)
+    // poisons the recorder instead: its checks' errors come from `end`.
     let mut fallible = cmd.return_type == "VkResult"
         || fallible_ext
         || (is_cmd
+            && plan.transition.is_none()
             && (special.is_some_and(|s| s.check.is_some() || s.check_last.is_some())
                 || !same_len.is_empty()));
     let mut lifetimes = false;
@@ -836,9 +839,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .collect();
         let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
+        // A transition's special check joins its other checks' result, which the
+        // recorder keeps.
+        let moves = plan.transition.is_some();
         let always_code = always.map(|c| {
             let c = hook(&c, &ret_expr);
-            quote!(#c?;)
+            if moves {
+                quote!(let always: Result<()> = #c;)
+            } else {
+                quote!(#c?;)
+            }
         });
         let always_code = quote!(#(#same_len)* #always_code);
         let last_code = last.map(|c| {
@@ -907,8 +917,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             }
         });
-        let run = quote! {
-            let r = self.#validate(#(#v_names),*);
+        let run = if moves && always.is_some() {
+            quote! {
+                let r = always.and_then(|()| self.#validate(#(#v_names),*));
+            }
+        } else {
+            quote! {
+                let r = self.#validate(#(#v_names),*);
+            }
         };
         let (ret_checked, guard, call) = match (&transition, is_cmd) {
             (Some(state), _) => {
@@ -925,8 +941,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 )
             }
             (None, true) if !fallible => {
+                // A refused next subpass is not recorded (the recorder is poisoned, and
+                // its end stays valid); one after another refusal is, so that the end
+                // comes in the last subpass.
                 let guard = if matches!(plan.transition, Some(Transition::Within(_))) {
-                    quote!(let _ = self.accept(r); if self.begin_skipped() { return; })
+                    quote!(if r.is_err() { let _ = self.accept(r); return; } if self.begin_skipped() { return; })
                 } else {
                     quote!(if !self.accept(r) {
                         return;
@@ -956,7 +975,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         // A transition that keeps nothing (the ends of a render pass) does not
         // change the recorder it consumes before handing it on.
-        let unchecked_self = if transition.is_some() && !body.to_string().contains("self . retain")
+        let unchecked_self = if transition.is_some()
+            && !body.to_string().contains("self . retain")
+            && !body.to_string().contains("& mut self")
         {
             quote!(self)
         } else {

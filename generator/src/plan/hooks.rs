@@ -138,6 +138,17 @@ const QUEUE_INFOS: &str =
     "checks the family, flags and index against the queue create infos the device recorded at its creation";
 const INSTANCE_INFO: &str = "checks each enabled extension's dependencies (vk.xml's `depends`, emitted as a table) against the enabled extensions and API version";
 const INSTANCE_ALONE: &str = "checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0)";
+const SUBPASSES: &str = "checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer)";
+const ACTIVE_QUERIES: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
+const ACTIVE_QUERIES_ALONE: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
+const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
+const QUERY_POOL: &str =
+    "checks the query against the pool's type and count, kept from its creation";
+const IN_RENDER_PASS: &str = "the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary";
+const IN_RENDERING: &str = "the method exists only on a recorder inside dynamic rendering it began itself (its state type)";
+const RECORDING: &str =
+    "`Recorder::end` exists only on a recorder, which only `CommandBuffer::begin` makes";
+const OUTSIDE: &str = "`Recorder::end` exists only on a recorder outside a render pass instance, or on a continuing secondary";
 const VERTEX_LIMITS: &str = "checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once";
 const UNPROVEN_UAB: &str = "checked by the safe methods in every build (the layouts' and the pool's create flags are kept from their creation), but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors";
 const UNPROVEN_VARIABLE: &str = "checked by the safe methods in every build (the variable-count binding is kept from the layout's creation, and each set's writes are checked against the count it was allocated with), but no test breaks it: lavapipe 22.3 has no variable descriptor counts";
@@ -707,6 +718,129 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCreateRenderPass2",
+        created: call("hooks::render_pass2_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBeginRenderPass",
+        after: call("hooks::render_pass_begun", &["&mut self", "render_pass_begin"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBeginRenderPass2",
+        after: call("hooks::render_pass_begun", &["&mut self", "render_pass_begin"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBeginRendering",
+        after: call("hooks::rendering_begun", &["&mut self", "rendering_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdNextSubpass",
+        check: call(
+            "hooks::next_subpass_checks",
+            &["self", "\"VUID-vkCmdNextSubpass-None-00909\""],
+        ),
+        after: call("hooks::next_subpass_done", &["self"]),
+        settles: &[("VUID-vkCmdNextSubpass-None-00909", How::Dynamic(SUBPASSES))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdNextSubpass2",
+        check: call(
+            "hooks::next_subpass_checks",
+            &["self", "\"VUID-vkCmdNextSubpass2-None-03102\""],
+        ),
+        after: call("hooks::next_subpass_done", &["self"]),
+        settles: &[("VUID-vkCmdNextSubpass2-None-03102", How::Dynamic(SUBPASSES))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdEndRenderPass",
+        check: call(
+            "hooks::end_render_pass_checks",
+            &[
+                "&mut self",
+                "(\"VUID-vkCmdEndRenderPass-None-00910\", \"VUID-vkCmdEndRenderPass-None-07004\")",
+            ],
+        ),
+        after: call("hooks::instance_ended", &["&mut self"]),
+        settles: &[
+            ("VUID-vkCmdEndRenderPass-None-00910", How::Dynamic(SUBPASSES)),
+            ("VUID-vkCmdEndRenderPass-None-07004", How::Dynamic(ACTIVE_QUERIES_ALONE)),
+            ("VUID-vkCmdEndRenderPass-None-06170", How::Static(IN_RENDER_PASS)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdEndRenderPass2",
+        check: call(
+            "hooks::end_render_pass_checks",
+            &[
+                "&mut self",
+                "(\"VUID-vkCmdEndRenderPass2-None-03103\", \"VUID-vkCmdEndRenderPass2-None-07005\")",
+            ],
+        ),
+        after: call("hooks::instance_ended", &["&mut self"]),
+        settles: &[
+            ("VUID-vkCmdEndRenderPass2-None-03103", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndRenderPass2-None-07005", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndRenderPass2-None-06171", How::Static(IN_RENDER_PASS)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdEndRendering",
+        check: call("hooks::end_rendering_checks", &["&mut self"]),
+        after: call("hooks::instance_ended", &["&mut self"]),
+        settles: &[
+            ("VUID-vkCmdEndRendering-None-06999", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndRendering-None-06161", How::Static(IN_RENDERING)),
+            ("VUID-vkCmdEndRendering-commandBuffer-06162", How::Static(IN_RENDERING)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBeginQuery",
+        check: call("hooks::begin_query_checks", &["self", "query_pool", "query"]),
+        after: call("hooks::begin_query_done", &["self", "query_pool", "query"]),
+        settles: &[
+            ("VUID-vkCmdBeginQuery-queryType-02804", How::Dynamic(QUERY_POOL)),
+            ("VUID-vkCmdBeginQuery-query-00802", How::Dynamic(QUERY_POOL)),
+            ("VUID-vkCmdBeginQuery-queryType-00803", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdBeginQuery-queryType-00804", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdBeginQuery-queryType-00805", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdBeginQuery-queryPool-01922", How::Dynamic(ACTIVE_QUERIES)),
+            ("VUID-vkCmdBeginQuery-query-00808", How::User(UNPROVEN_QUERIES)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdEndQuery",
+        check: call("hooks::end_query_checks", &["self", "query_pool", "query"]),
+        after: call("hooks::end_query_done", &["self", "query_pool", "query"]),
+        settles: &[
+            ("VUID-vkCmdEndQuery-query-00810", How::Dynamic(QUERY_POOL)),
+            ("VUID-vkCmdEndQuery-None-01923", How::Dynamic(ACTIVE_QUERIES)),
+            ("VUID-vkCmdEndQuery-None-07007", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndQuery-None-07008", How::Dynamic(ACTIVE_QUERIES_ALONE)),
+            ("VUID-vkCmdEndQuery-query-00812", How::User(UNPROVEN_QUERIES)),
+        ],
+        ..NONE
+    },
+    // `Recorder::end`, written by hand in `recorder.rs`.
+    Special {
+        command: "vkEndCommandBuffer",
+        settles: &[
+            ("VUID-vkEndCommandBuffer-commandBuffer-00059", How::Static(RECORDING)),
+            ("VUID-vkEndCommandBuffer-commandBuffer-00060", How::Static(OUTSIDE)),
+            ("VUID-vkEndCommandBuffer-commandBuffer-00061", How::Dynamic(ACTIVE_QUERIES)),
+        ],
+        ..NONE
+    },
+    Special {
         command: "vkCreateEvent",
         created: call("hooks::event_created", &["self", "created", "create_info"]),
         ..NONE
@@ -1112,6 +1246,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateRenderPass",
         check: call("hooks::create_render_pass_checks", &["create_info"]),
+        created: call("hooks::render_pass_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-VkRenderPassCreateInfo-attachment-00834", How::Dynamic(RENDER_PASS_INDICES)),
             ("VUID-VkRenderPassCreateInfo-pDependencies-06866", How::Dynamic(RENDER_PASS_INDICES)),

@@ -1885,7 +1885,13 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(RenderPass::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::render_pass_created(
+                self,
+                RenderPass::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkCreateSampler`
 

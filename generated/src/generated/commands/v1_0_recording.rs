@@ -7,23 +7,19 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginQuery-None-00807`: All queries used by the command must be unavailable
-- `VUID-vkCmdBeginQuery-queryType-02804`: The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`
 - `VUID-vkCmdBeginQuery-queryType-00800`: If the `occlusionQueryPrecise` feature is not enabled, or the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_OCCLUSION`, `flags` must not contain `VK_QUERY_CONTROL_PRECISE_BIT`
-- `VUID-vkCmdBeginQuery-query-00802`: `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdBeginQuery-queryType-00803`: If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_OCCLUSION`, the `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
-- `VUID-vkCmdBeginQuery-queryType-00804`: If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate graphics operations, the `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
-- `VUID-vkCmdBeginQuery-queryType-00805`: If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate compute operations, the `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
-- `VUID-vkCmdBeginQuery-queryPool-01922`: `queryPool` must have been created with a `queryType` that differs from that of any queries that are active within `commandBuffer`
 - `VUID-vkCmdBeginQuery-commandBuffer-01885`: `commandBuffer` must not be a protected command buffer
-- `VUID-vkCmdBeginQuery-query-00808`: If called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
 
 # Valid usage
 
 The rules are on [`vkCmdBeginQuery`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginQuery.html). Settled by the wrappers:
 
+- `VUID-vkCmdBeginQuery-queryType-02804`: dynamic (checks the query against the pool's type and count, kept from its creation)
+- `VUID-vkCmdBeginQuery-query-00802`: dynamic (checks the query against the pool's type and count, kept from its creation)
+- `VUID-vkCmdBeginQuery-queryPool-01922`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdBeginQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBeginQuery-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -31,19 +27,22 @@ The rules are on [`vkCmdBeginQuery`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29.
+
+- 3: checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute
+- 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
+- 25: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_begin_query(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
         flags: vk::QueryControlFlags,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::begin_query_checks(self, query_pool, query)?;
         {
             let r = self.validate_cmd_begin_query(query_pool, flags);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -53,18 +52,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_query_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
         flags: vk::QueryControlFlags,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_begin_query;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
-        self.retain_with(query_pool.address(), || query_pool.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
+            crate::hooks::begin_query_done(self, query_pool, query);
+            self.retain_with(query_pool.address(), || query_pool.retained());
+        }
+        Ok(())
     }
     /**`vkCmdBindDescriptorSets`
 
@@ -397,33 +400,37 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
 
 # Safety
 
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdEndQuery-None-01923`: All queries used by the command must be active
-- `VUID-vkCmdEndQuery-query-00810`: `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdEndQuery-None-07007`: If called within a subpass of a render pass instance, the corresponding `vkCmdBeginQuery`* command must have been called previously within the same subpass
-- `VUID-vkCmdEndQuery-None-07008`: If called outside of a render pass instance, the corresponding `vkCmdBeginQuery`* command must have been called outside of a render pass instance
 - `VUID-vkCmdEndQuery-commandBuffer-01886`: `commandBuffer` must not be a protected command buffer
-- `VUID-vkCmdEndQuery-query-00812`: If `vkCmdEndQuery` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
 
 # Valid usage
 
 The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndQuery.html). Settled by the wrappers:
 
+- `VUID-vkCmdEndQuery-None-01923`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
+- `VUID-vkCmdEndQuery-query-00810`: dynamic (checks the query against the pool's type and count, kept from its creation)
+- `VUID-vkCmdEndQuery-None-07008`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdEndQuery-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 2: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_end_query(&mut self, query_pool: &QueryPool, query: u32) {
+    pub unsafe fn cmd_end_query(
+        &mut self,
+        query_pool: &QueryPool,
+        query: u32,
+    ) -> Result<()> {
+        crate::hooks::end_query_checks(self, query_pool, query)?;
         {
             let r = self.validate_cmd_end_query(query_pool);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -433,17 +440,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_end_query_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_end_query;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), query_pool.raw(), query) };
-        self.retain_with(query_pool.address(), || query_pool.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), query_pool.raw(), query) };
+            crate::hooks::end_query_done(self, query_pool, query);
+            self.retain_with(query_pool.address(), || query_pool.retained());
+        }
+        Ok(())
     }
     /**`vkCmdExecuteCommands`
 
@@ -1562,6 +1573,7 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
                 contents,
             )
         };
+        crate::hooks::render_pass_begun(&mut self, render_pass_begin);
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
@@ -3797,30 +3809,29 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdEndRenderPass`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdEndRenderPass-None-00910`: The current subpass index must be equal to the number of subpasses in the render pass minus one
-- `VUID-vkCmdEndRenderPass-None-07004`: If `vkCmdBeginQuery`* was called within a subpass of the render pass, the corresponding `vkCmdEndQuery`* must have been called subsequently within the same subpass
-- `VUID-vkCmdEndRenderPass-None-06170`: The current render pass instance must not have been begun with vkCmdBeginRendering
-
 # Valid usage
 
 The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass.html). Settled by the wrappers:
 
+- `VUID-vkCmdEndRenderPass-None-00910`: dynamic (checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer))
+- `VUID-vkCmdEndRenderPass-None-07004`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
+- `VUID-vkCmdEndRenderPass-None-06170`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
+    pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
+        let always: Result<()> = crate::hooks::end_render_pass_checks(
+            &mut self,
+            ("VUID-vkCmdEndRenderPass-None-00910", "VUID-vkCmdEndRenderPass-None-07004"),
+        );
         {
-            let r = self.validate_cmd_end_render_pass();
+            let r = always.and_then(|()| self.validate_cmd_end_render_pass());
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -3834,26 +3845,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, `VUID-vkCmdEndRenderPass-None-00910`, `VUID-vkCmdEndRenderPass-None-07004`, `VUID-vkCmdEndRenderPass-None-06170`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_render_pass_unchecked(self) -> Recorder<'c, Outside> {
+    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
         let fp = self.device().fns().fp_v1_0().cmd_end_render_pass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
+        crate::hooks::instance_ended(&mut self);
         self.into_state()
     }
     /**`vkCmdNextSubpass`
-
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdNextSubpass-None-00909`: The current subpass index must be less than the number of subpasses in the render pass minus one
 
 # Valid usage
 
 The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass.html). Settled by the wrappers:
 
+- `VUID-vkCmdNextSubpass-None-00909`: dynamic (checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdNextSubpass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdNextSubpass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdNextSubpass-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -3862,12 +3869,19 @@ The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.
 - `VUID-vkCmdNextSubpass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
+    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
+        let always: Result<()> = crate::hooks::next_subpass_checks(
+            self,
+            "VUID-vkCmdNextSubpass-None-00909",
+        );
         {
-            let r = self.validate_cmd_next_subpass(contents);
-            let _ = self.accept(r);
+            let r = always.and_then(|()| self.validate_cmd_next_subpass(contents));
+            if r.is_err() {
+                let _ = self.accept(r);
+                return;
+            }
             if self.begin_skipped() {
                 return;
             }
@@ -3880,11 +3894,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, `VUID-vkCmdNextSubpass-None-00909`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
         let fp = self.device().fns().fp_v1_0().cmd_next_subpass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), contents) };
+        crate::hooks::next_subpass_done(self);
     }
 }

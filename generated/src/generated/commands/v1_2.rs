@@ -123,7 +123,13 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(RenderPass::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::render_pass2_created(
+                self,
+                RenderPass::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkGetBufferDeviceAddress`
 

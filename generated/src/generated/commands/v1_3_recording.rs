@@ -115,6 +115,7 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
         unsafe {
             fp(self.raw(), rendering_info as *const RenderingInfo<'a> as *const _)
         };
+        crate::hooks::rendering_begun(&mut self, rendering_info);
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
@@ -1911,29 +1912,27 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
 impl<'c> Recorder<'c, InRendering> {
     /**`vkCmdEndRendering`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdEndRendering-None-06161`: The current render pass instance must have been begun with vkCmdBeginRendering
-- `VUID-vkCmdEndRendering-commandBuffer-06162`: The current render pass instance must have been begun in `commandBuffer`
-- `VUID-vkCmdEndRendering-None-06999`: If `vkCmdBeginQuery`* was called within the render pass, the corresponding `vkCmdEndQuery`* must have been called subsequently within the same subpass
-
 # Valid usage
 
 The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
 
+- `VUID-vkCmdEndRendering-None-06161`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
+- `VUID-vkCmdEndRendering-commandBuffer-06162`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
 - `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+        let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
         {
-            let r = self.validate_cmd_end_rendering();
+            let r = always.and_then(|()| self.validate_cmd_end_rendering());
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -1947,12 +1946,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, `VUID-vkCmdEndRendering-None-06999`, `VUID-vkCmdEndRendering-None-06161`, `VUID-vkCmdEndRendering-commandBuffer-06162`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_rendering_unchecked(self) -> Recorder<'c, Outside> {
+    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
         let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
+        crate::hooks::instance_ended(&mut self);
         self.into_state()
     }
 }
