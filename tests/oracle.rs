@@ -734,10 +734,9 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
         offset: 0,
         size: 16,
     }];
-    let layout = unsafe {
-        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-    }
-    .expect("layout");
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("layout");
     let stages = pipelines::test_stages(&vert, &frag);
     let mut parts = Graphics {
         assembly: tuff::PipelineInputAssemblyStateCreateInfo::new()
@@ -1682,7 +1681,7 @@ fn draw(
                     vk::SubpassContents::INLINE,
                 )
             };
-            unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
                 .expect("bind");
             rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
             rec.cmd_set_scissor(0, &[area]).expect("scissor");
@@ -1780,7 +1779,8 @@ fn cmd_dispatch_indirect(
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        unsafe { r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
+        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
         unsafe {
             r.cmd_bind_descriptor_sets(
                 vk::PipelineBindPoint::COMPUTE,
@@ -2401,7 +2401,8 @@ fn cmd_dispatch(
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        unsafe { r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
+        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
         unsafe {
             r.cmd_bind_descriptor_sets(
                 vk::PipelineBindPoint::COMPUTE,

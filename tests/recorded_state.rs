@@ -910,3 +910,88 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     drop(rec);
     assert_silent(&s.messages);
 }
+
+/// The 1.3.239 layer does not check this rule at the bind: the refusal alone shows
+/// it.
+#[test]
+fn a_subpass_without_attachments_keeps_its_first_sample_count() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    assert_eq!(
+        s.physical
+            .get_physical_device_features()
+            .variable_multisample_rate,
+        vk::FALSE,
+        "the rule applies where the device cannot vary the sample count"
+    );
+    let subpasses =
+        [tuff::SubpassDescription::new().pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)];
+    // SAFETY: one subpass without attachments, no dependency.
+    let render_pass =
+        unsafe { d.create_render_pass(&tuff::RenderPassCreateInfo::new().subpasses(&subpasses)) }
+            .expect("render pass");
+    // SAFETY: no attachments, a size within the device's limits.
+    let framebuffer = unsafe {
+        d.create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&render_pass)
+                .width(4)
+                .height(4)
+                .layers(1),
+        )
+    }
+    .expect("framebuffer");
+    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.vert.spv"));
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    let stages = [tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::VERTEX)
+        .module(Some(&vert))];
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
+    let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new()
+        .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+    let viewport = tuff::PipelineViewportStateCreateInfo::new()
+        .viewport_count(1)
+        .scissor_count(1);
+    let raster = tuff::PipelineRasterizationStateCreateInfo::new()
+        .polygon_mode(vk::PolygonMode::FILL)
+        .cull_mode(vk::CullModeFlags::NONE)
+        .line_width(1.0);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
+    let pipeline = |samples| {
+        let multisample =
+            tuff::PipelineMultisampleStateCreateInfo::new().rasterization_samples(samples);
+        let info = tuff::GraphicsPipelineCreateInfo::new()
+            .stages(&stages)
+            .vertex_input_state(Some(&vertex_input))
+            .input_assembly_state(Some(&assembly))
+            .viewport_state(Some(&viewport))
+            .rasterization_state(Some(&raster))
+            .multisample_state(Some(&multisample))
+            .dynamic_state(Some(&dynamic))
+            .layout(Some(&layout))
+            .render_pass(Some(&render_pass))
+            .subpass(0);
+        // SAFETY: a vertex-only pipeline of the subpass, whose sample counts both a
+        // framebuffer without attachments supports on lavapipe.
+        let (mut made, r) =
+            unsafe { d.create_graphics_pipelines(None, &[info]) }.expect("pipeline");
+        assert_eq!(r, vk::Result::SUCCESS);
+        made.pop().expect("one pipeline")
+    };
+    let one = pipeline(vk::SampleCountFlags::TYPE_1);
+    let four = pipeline(vk::SampleCountFlags::TYPE_4);
+    let expected = "VUID-vkCmdBindPipeline-pipeline-00781";
+    let graphics = vk::PipelineBindPoint::GRAPHICS;
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = begun(&mut cb, (&render_pass, &framebuffer));
+    rec.cmd_bind_pipeline(graphics, &one)
+        .expect("the first pipeline");
+    rec.cmd_bind_pipeline(graphics, &one)
+        .expect("the same count again");
+    assert_eq!(vuid(rec.cmd_bind_pipeline(graphics, &four)), expected);
+    drop(rec.cmd_end_render_pass().end());
+    assert_silent(&s.messages);
+}

@@ -2109,14 +2109,13 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     }
     .expect("set layout");
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let layout = unsafe {
-        d.create_pipeline_layout(
+    let layout = d
+        .create_pipeline_layout(
             &tuff::PipelineLayoutCreateInfo::new()
                 .push_constant_ranges(&ranges)
                 .set_layouts(&set_layouts),
         )
-    }
-    .expect("layout");
+        .expect("layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
         descriptor_count: 1,
@@ -3000,14 +2999,14 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
         "VUID-vkCmdDispatch-None-02700"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute) }),
+        vuid(rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute)),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00780"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_pipeline(compute, &p.graphics) }),
+        vuid(rec.cmd_bind_pipeline(compute, &p.graphics)),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00779"
     );
-    unsafe { rec.cmd_bind_pipeline(compute, &p.compute) }.expect("bind");
+    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
     assert_eq!(
         vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
         "VUID-vkCmdDispatch-None-02697"
@@ -3047,7 +3046,7 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
     // SAFETY: as above.
     unsafe { rec.cmd_bind_pipeline_unchecked(compute, &p.graphics) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00780");
-    unsafe { rec.cmd_bind_pipeline(compute, &p.compute) }.expect("bind");
+    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
     // SAFETY: as above.
     unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02697");
@@ -3198,11 +3197,10 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
     let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
     let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
     let stages = pipelines::test_stages(&vert, &frag);
-    let empty = unsafe {
-        s.device
-            .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
-    }
-    .expect("layout");
+    let empty = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
     let binding = [vk::VertexInputBindingDescription {
         binding: 0,
         stride: 20,
@@ -3248,7 +3246,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_pipeline);
             }
         }
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute) }.expect("bind");
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
         for (name, dispatch) in &dispatches {
             let no_set = format!("VUID-vkCmd{name}-None-02697");
             if unchecked {
@@ -3269,7 +3268,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         // With the graphics pipeline bound: indexed draws need an index buffer, and a
         // direct one reads only indices inside it.
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
         rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
         rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
@@ -3299,7 +3298,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         // A pipeline whose vertex shader reads binding 0, with no vertex buffer
         // bound: every draw is refused, and accepted once one is.
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline) }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline)
             .expect("bind");
         for (no_pipeline, draw) in &draws {
             let expected = no_pipeline.replace("02700", "04007");
@@ -3316,7 +3315,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 .expect("vertex buffer");
             unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with its vertex buffer bound");
         }
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics) }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
         if !unchecked {
             let color = [0u8; 16];
@@ -3349,7 +3348,8 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let s = setup(true);
     let d = &s.device;
     let comp = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.comp.spv"));
-    let empty = unsafe { d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new()) }
+    let empty = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("empty layout");
     let stage = || {
         tuff::PipelineShaderStageCreateInfo::new(c"main")
@@ -3385,12 +3385,10 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
             )
         }
         .expect("set layout");
-        unsafe {
-            d.create_pipeline_layout(
-                &tuff::PipelineLayoutCreateInfo::new()
-                    .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
-            )
-        }
+        d.create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
+        )
         .expect("layout")
     };
     let (uniform, storage) = (
@@ -3425,12 +3423,9 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         offset: 0,
         size: 8,
     }];
-    let short_layout = unsafe {
-        d.create_pipeline_layout(
-            &tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short),
-        )
-    }
-    .expect("layout");
+    let short_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&short))
+        .expect("layout");
     let rp = &target.render_pass;
     for layout in [&empty, &short_layout] {
         pipelines::with_graphics_info(&stages, layout, rp, |info| {
@@ -4065,11 +4060,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
         .expect("set layout");
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
         let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
-        assert_eq!(
-            vuid(unsafe { d.create_pipeline_layout(&info) }),
-            rule,
-            "{rule}"
-        );
+        assert_eq!(vuid(d.create_pipeline_layout(&info)), rule, "{rule}");
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports, so the driver never sees it.
         layer_names(&s, &rule, || {
@@ -4085,7 +4076,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     let layouts = tuff::HandleSlice::new(&many);
     let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
     let rule = "VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286";
-    assert_eq!(vuid(unsafe { d.create_pipeline_layout(&info) }), rule);
+    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
     // SAFETY: as above.
     layer_names(&s, rule, || {
         let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
@@ -4105,7 +4096,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     ];
     let info = tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&ranges);
     let rule = "VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292";
-    assert_eq!(vuid(unsafe { d.create_pipeline_layout(&info) }), rule);
+    assert_eq!(vuid(d.create_pipeline_layout(&info)), rule);
     // SAFETY: as above.
     layer_names(&s, rule, || {
         let _ = unsafe { d.create_pipeline_layout_unchecked(&info) };
@@ -4123,10 +4114,8 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     }
     .expect("set layout");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
-    unsafe {
-        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
-    }
-    .expect("a layout at the per-stage limit");
+    d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
+        .expect("a layout at the per-stage limit");
     assert_silent(&s.messages);
 }
 

@@ -110,14 +110,13 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         size: 64,
     }];
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
-    let pipeline_layout = unsafe {
-        d.create_pipeline_layout(
+    let pipeline_layout = d
+        .create_pipeline_layout(
             &tuff::PipelineLayoutCreateInfo::new()
                 .set_layouts(&set_layouts)
                 .push_constant_ranges(&ranges),
         )
-    }
-    .expect("pipeline layout");
+        .expect("pipeline layout");
     let cache = unsafe { d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new()) }
         .expect("pipeline cache");
     let cache_data = d

@@ -112,7 +112,5 @@ pub fn layout(
     if push_size > 0 {
         info = info.push_constant_ranges(&push);
     }
-    // SAFETY: a few sets and push-constant bytes, within every device's minimum limits, with
-    // live set layouts.
-    Ok(unsafe { gpu.device.create_pipeline_layout(&info) }?)
+    Ok(gpu.device.create_pipeline_layout(&info)?)
 }

@@ -2622,9 +2622,9 @@ fn pipelines_created(
     device: &Device,
     pipelines: &[Pipeline],
     bind_point: vk::PipelineBindPoint,
-    layouts: impl Iterator<Item = (vk::PipelineLayout, u64)>,
+    layouts: impl Iterator<Item = (vk::PipelineLayout, u64, vk::SampleCountFlags)>,
 ) {
-    for (p, (layout, vertex_bindings)) in pipelines.iter().zip(layouts) {
+    for (p, (layout, vertex_bindings, samples)) in pipelines.iter().zip(layouts) {
         if let Some(layout) = device.live().pipeline_layout(layout) {
             device.live().pipeline_created(
                 p.raw(),
@@ -2632,6 +2632,7 @@ fn pipelines_created(
                     bind_point,
                     layout,
                     vertex_bindings,
+                    samples,
                 },
             );
         }
@@ -2679,7 +2680,9 @@ pub(crate) fn compute_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos.iter().map(|i| (i.as_raw().layout, 0));
+    let layouts = create_infos
+        .iter()
+        .map(|i| (i.as_raw().layout, 0, vk::SampleCountFlags::empty()));
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, layouts);
     created
 }
@@ -2690,9 +2693,13 @@ pub(crate) fn graphics_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[GraphicsPipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos
-        .iter()
-        .map(|i| (i.as_raw().layout, vertex_bindings(device, i.as_raw())));
+    let layouts = create_infos.iter().map(|i| {
+        let raw = i.as_raw();
+        // SAFETY: the safe setter stores a reference that outlives the create info.
+        let samples = unsafe { raw.p_multisample_state.as_ref() }
+            .map_or(vk::SampleCountFlags::empty(), |m| m.rasterization_samples);
+        (raw.layout, vertex_bindings(device, raw), samples)
+    });
     pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, layouts);
     created
 }
@@ -2705,6 +2712,13 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
 ) {
     if let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) {
         recorder.bound[i].pipeline = recorder.device().live().pipeline(pipeline.raw());
+    }
+    // The first graphics pipeline of a subpass sets its sample count.
+    let samples = recorder.bound[0].pipeline.as_ref().map(|p| p.samples);
+    if let (Some(instance), vk::PipelineBindPoint::GRAPHICS) =
+        (recorder.instance.as_mut(), pipeline_bind_point)
+    {
+        instance.samples = instance.samples.or(samples);
     }
 }
 
@@ -2823,6 +2837,34 @@ pub(crate) fn cmd_bind_pipeline_checks<S: State>(
     let Some(record) = recorder.device().live().pipeline(pipeline.raw()) else {
         return Ok(());
     };
+    // A subpass without attachments takes its sample count from its first graphics
+    // pipeline, unless the device can vary it.
+    let first = recorder
+        .instance
+        .filter(|i| i.no_attachments && record.bind_point == vk::PipelineBindPoint::GRAPHICS)
+        .and_then(|i| i.samples);
+    if let Some(samples) = first.filter(|&s| s != record.samples) {
+        let physical = recorder.device().parent();
+        // SAFETY: a live physical device of its instance.
+        let variable = unsafe {
+            physical
+                .parent()
+                .fns()
+                .get_physical_device_features(physical.raw())
+        }
+        .variable_multisample_rate;
+        if variable != vk::TRUE {
+            refuse(
+                "VUID-vkCmdBindPipeline-pipeline-00781",
+                format!(
+                    "the current subpass uses no attachments and the device does not support \
+                     variableMultisampleRate, so the pipeline's sample count must match that \
+                     of the subpass's first graphics pipeline ({:?} against {samples:?})",
+                    record.samples
+                ),
+            )?;
+        }
+    }
     let vuid = match pipeline_bind_point {
         vk::PipelineBindPoint::COMPUTE => "VUID-vkCmdBindPipeline-pipelineBindPoint-00779",
         vk::PipelineBindPoint::GRAPHICS => "VUID-vkCmdBindPipeline-pipelineBindPoint-00780",
@@ -3915,7 +3957,83 @@ pub(crate) fn create_pipeline_layout_checks(
             )?;
         }
     }
+    // Inline uniform blocks count by binding (their descriptor count is in bytes),
+    // against the Vulkan 1.3 limits.
+    let Some(p13) = vulkan13_properties(device) else {
+        return Ok(());
+    };
+    let blocks = |stage: Option<vk::ShaderStageFlags>, plain_only: bool| -> u64 {
+        records
+            .iter()
+            .filter(|r| !(plain_only && r.update_after_bind))
+            .flat_map(|r| r.bindings.iter())
+            .filter(|b| {
+                b.ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK
+                    && stage.is_none_or(|s| b.stages.contains(s))
+            })
+            .count() as u64
+    };
+    let block_limits = [
+        (
+            true,
+            true,
+            p13.max_per_stage_descriptor_inline_uniform_blocks,
+            "VUID-VkPipelineLayoutCreateInfo-descriptorType-02214",
+        ),
+        (
+            true,
+            false,
+            p13.max_per_stage_descriptor_update_after_bind_inline_uniform_blocks,
+            "VUID-VkPipelineLayoutCreateInfo-descriptorType-02215",
+        ),
+        (
+            false,
+            true,
+            p13.max_descriptor_set_inline_uniform_blocks,
+            "VUID-VkPipelineLayoutCreateInfo-descriptorType-02216",
+        ),
+        (
+            false,
+            false,
+            p13.max_descriptor_set_update_after_bind_inline_uniform_blocks,
+            "VUID-VkPipelineLayoutCreateInfo-descriptorType-02217",
+        ),
+    ];
+    for (per_stage, plain_only, limit, vuid) in block_limits {
+        let worst = if per_stage {
+            stages.iter().map(|s| blocks(Some(*s), plain_only)).max()
+        } else {
+            Some(blocks(None, plain_only))
+        };
+        if let Some(total) = worst.filter(|&c| c > u64::from(limit)) {
+            refuse(
+                vuid,
+                format!("the layout has {total} inline uniform block bindings, past the limit of {limit}"),
+            )?;
+        }
+    }
     Ok(())
+}
+
+/// The physical device's Vulkan 1.3 properties, where the instance and device have
+/// them.
+fn vulkan13_properties(device: &Device) -> Option<vk::PhysicalDeviceVulkan13Properties<'static>> {
+    let physical = device.parent();
+    let instance = physical.parent();
+    let version = physical.get_physical_device_properties().api_version;
+    if !instance.exts().version(1) || vk::api_version_minor(version) < 3 {
+        return None;
+    }
+    let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
+    unsafe {
+        instance
+            .fns()
+            .get_physical_device_properties2(physical.raw(), &mut p2)
+    };
+    p13.p_next = std::ptr::null_mut();
+    Some(p13)
 }
 
 /// The number of queue families of a physical device.
@@ -4409,9 +4527,35 @@ pub(crate) fn render_pass_created(
     let view_masks = (0..raw.subpass_count as usize)
         .map(|i| masks.get(i).copied().unwrap_or(0))
         .collect();
-    device
-        .live()
-        .render_pass_created(render_pass.raw(), RenderPassRecord { view_masks });
+    // SAFETY: the safe setters stored every array with its count.
+    let no_attachments = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) }
+        .iter()
+        .map(|d| {
+            // SAFETY: as above; resolve attachments, if any, are one per color one.
+            let (input, color, resolve) = unsafe {
+                (
+                    crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
+                    crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
+                    crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
+                )
+            };
+            // SAFETY: as above.
+            let depth = unsafe { d.p_depth_stencil_attachment.as_ref() };
+            input
+                .iter()
+                .chain(color)
+                .chain(resolve)
+                .chain(depth)
+                .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
+        })
+        .collect();
+    device.live().render_pass_created(
+        render_pass.raw(),
+        RenderPassRecord {
+            view_masks,
+            no_attachments,
+        },
+    );
     render_pass
 }
 
@@ -4426,9 +4570,35 @@ pub(crate) fn render_pass2_created(
     // SAFETY: the safe setter stored the subpasses with their count.
     let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
-    device
-        .live()
-        .render_pass_created(render_pass.raw(), RenderPassRecord { view_masks });
+    let no_attachments = subpasses
+        .iter()
+        .map(|d| {
+            // SAFETY: the safe setters stored every array with its count; resolve
+            // attachments, if any, are one per color one.
+            let (input, color, resolve) = unsafe {
+                (
+                    crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
+                    crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
+                    crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
+                )
+            };
+            // SAFETY: as above.
+            let depth = unsafe { d.p_depth_stencil_attachment.as_ref() };
+            input
+                .iter()
+                .chain(color)
+                .chain(resolve)
+                .chain(depth)
+                .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
+        })
+        .collect();
+    device.live().render_pass_created(
+        render_pass.raw(),
+        RenderPassRecord {
+            view_masks,
+            no_attachments,
+        },
+    );
     render_pass
 }
 
@@ -4449,6 +4619,11 @@ pub(crate) fn render_pass_begun<S: State>(
             .as_ref()
             .and_then(|r| r.view_masks.first().copied())
             .unwrap_or(0),
+        no_attachments: record
+            .as_ref()
+            .and_then(|r| r.no_attachments.first().copied())
+            .unwrap_or(false),
+        samples: None,
     });
 }
 
@@ -4457,8 +4632,24 @@ pub(crate) fn rendering_begun<S: State>(
     recorder: &mut Recorder<'_, S>,
     rendering_info: &RenderingInfo<'_>,
 ) {
+    let raw = rendering_info.as_raw();
+    // SAFETY: the safe setters stored the color attachments with their count and the
+    // depth and stencil ones as references that outlive the info.
+    let (color, depth, stencil) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_color_attachments, raw.color_attachment_count),
+            raw.p_depth_attachment.as_ref(),
+            raw.p_stencil_attachment.as_ref(),
+        )
+    };
+    let no_attachments = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .all(|a| a.image_view == vk::ImageView::null());
     recorder.instance = Some(crate::recorder::PassInstance {
-        view_mask: rendering_info.as_raw().view_mask,
+        view_mask: raw.view_mask,
+        no_attachments,
         ..Default::default()
     });
 }
@@ -4489,11 +4680,17 @@ pub(crate) fn next_subpass_done<S: State>(recorder: &mut Recorder<'_, S>) {
     let record = recorder.device().live().render_pass(i.render_pass);
     let next = i.subpass + 1;
     let view_mask = record
+        .as_ref()
         .and_then(|r| r.view_masks.get(next as usize).copied())
         .unwrap_or(0);
+    let no_attachments = record
+        .and_then(|r| r.no_attachments.get(next as usize).copied())
+        .unwrap_or(false);
     recorder.instance = Some(crate::recorder::PassInstance {
         subpass: next,
         view_mask,
+        no_attachments,
+        samples: None,
         ..i
     });
 }

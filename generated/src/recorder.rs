@@ -84,6 +84,10 @@ pub(crate) struct PassInstance {
     pub view_mask: u32,
     /// The render pass (null in dynamic rendering or a continuing secondary).
     pub render_pass: vk::RenderPass,
+    /// Whether the current subpass uses no attachment.
+    pub no_attachments: bool,
+    /// The sample count of the first graphics pipeline bound in the current subpass.
+    pub samples: Option<vk::SampleCountFlags>,
 }
 
 /// A query begun in the recording and not yet ended.

@@ -116,6 +116,8 @@ pub(crate) struct QueryPoolRecord {
 pub(crate) struct RenderPassRecord {
     /// Each subpass's view mask (0 without multiview), in order.
     pub view_masks: Vec<u32>,
+    /// Whether each subpass uses no attachment (every reference unused, or none).
+    pub no_attachments: Vec<bool>,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
@@ -141,6 +143,8 @@ pub(crate) struct PipelineRecord {
     /// The vertex-buffer bindings (the first 64) its vertex shader reads, one bit
     /// each.
     pub vertex_bindings: u64,
+    /// Its rasterization sample count (empty for a compute pipeline).
+    pub samples: vk::SampleCountFlags,
 }
 
 /// One binding of a descriptor set layout.

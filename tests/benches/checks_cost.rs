@@ -157,7 +157,8 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
         .render_area(AREA)
         .clear_values(&clear);
     let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
-    unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline) }.expect("bind");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+        .expect("bind");
     rec.cmd_set_viewport(0, &[VIEWPORT]).expect("viewport");
     rec.cmd_set_scissor(0, &[AREA]).expect("scissor");
     let stage = vk::ShaderStageFlags::FRAGMENT;

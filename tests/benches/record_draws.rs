@@ -107,7 +107,8 @@ fn main() {
             .render_area(area)
             .clear_values(&clear);
         let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline) }.expect("bind");
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+            .expect("bind");
         rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
         rec.cmd_set_scissor(0, &[area]).expect("scissor");
         for i in 0..DRAWS {

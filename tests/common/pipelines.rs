@@ -161,10 +161,9 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         offset: 0,
         size: 16,
     }];
-    let graphics_layout = unsafe {
-        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
-    }
-    .expect("graphics layout");
+    let graphics_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
+        .expect("graphics layout");
     let stages = test_stages(&vert, &frag);
     let (mut graphics, r) = with_graphics_info(
         &stages,
@@ -195,10 +194,9 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     }
     .expect("compute set layout");
     let set_layouts = tuff::HandleSlice::new(&[&compute_set_layout]);
-    let compute_layout = unsafe {
-        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
-    }
-    .expect("compute layout");
+    let compute_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("compute layout");
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&comp));
@@ -332,7 +330,7 @@ impl Pipelines {
                 vk::SubpassContents::INLINE,
             )
         };
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics) }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
             .expect("recorded");
         rec.cmd_set_viewport(
             0,
@@ -405,7 +403,7 @@ impl Pipelines {
             }
             .expect("recorded");
         }
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute) }
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
             .expect("recorded");
         unsafe {
             rec.cmd_bind_descriptor_sets(

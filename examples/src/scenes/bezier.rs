@@ -143,9 +143,7 @@ impl Scene for Bezier {
             view.time,
             view.extent,
         );
-        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
-        // render pass.
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         // SAFETY: the sets were allocated with the layout's set layouts and written before
         // recording, and the pipeline's bind point and layout match them.
         unsafe {

@@ -136,9 +136,7 @@ impl Scene for Teapots {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         view: &View,
     ) -> tuff::Result<()> {
-        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
-        // render pass.
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         // SAFETY: the sets were allocated with the layout's set layouts and written before
         // recording, and the pipeline's bind point and layout match them.
         unsafe {

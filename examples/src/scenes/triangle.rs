@@ -76,9 +76,7 @@ impl Scene for Triangle {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         _view: &View,
     ) -> tuff::Result<()> {
-        // SAFETY: the recorder's pool supports graphics, and the pipeline was made for this
-        // render pass.
-        unsafe { rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline) }?;
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         // SAFETY: the pipeline bound above was made for this render pass and subpass with this
         // layout; its sets, vertex buffers and dynamic viewport and scissor are bound and set,

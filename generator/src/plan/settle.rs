@@ -70,6 +70,17 @@ fn param_shape(
     item: &str,
     name: &str,
 ) -> Option<Param> {
+    // A struct's member, as its safe setter takes it.
+    if !cx.model.commands.contains_key(item) {
+        return struct_members(cx.model, &cx.facts, item)
+            .into_iter()
+            .find(|(f, _)| f.name.to_lowercase() == name)
+            .and_then(|(_, m)| match m {
+                Member::Handle { optional } => Some(Param::Handle { optional }),
+                Member::HandleSlice { .. } => Some(Param::HandleSlice),
+                _ => None,
+            });
+    }
     let cmd = cx.model.commands.get(item)?;
     let i = cmd
         .params
@@ -136,6 +147,11 @@ fn wrapper_handle(t: &str, param: &dyn Fn(&str) -> Option<Param>) -> Option<&'st
         }
         [p, "must", "not", "be", "vk_null_handle"] => {
             matches!(param(p)?, Param::Handle { optional: false }).then_some(one)
+        }
+        ["elements", "of", p, "must", "be", "valid", ty, "objects"] if ty.starts_with("vk") => {
+            matches!(param(p)?, Param::HandleSlice).then_some(
+                "the setter takes the handles as a slice of wrapper references, each live while borrowed",
+            )
         }
         [.., "all", "elements", "of", p, "must", "not", "be", "vk_null_handle"] => {
             matches!(param(p)?, Param::HandleSlice).then_some(

@@ -1645,16 +1645,6 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
     }
     /**`vkCreatePipelineLayout`
 
-# Safety
-
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorInlineUniformBlocks`
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible to any given shader stage across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxPerStageDescriptorUpdateAfterBindInlineUniformBlocks`
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`: The total number of bindings in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetInlineUniformBlocks`
-- `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`: The total number of bindings with a `descriptorType` of `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` accessible across all shader stages and across all elements of `pSetLayouts` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxDescriptorSetUpdateAfterBindInlineUniformBlocks`
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: Elements of `pSetLayouts` must be valid VkDescriptorSetLayout objects
-
 # Valid usage
 
 The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
@@ -1664,7 +1654,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 - `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_pipeline_layout<'a>(
+    pub fn create_pipeline_layout<'a>(
         &self,
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<PipelineLayout> {
@@ -1681,7 +1671,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 
 # Safety
 
-The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time: `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`, `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run time: `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-02214`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-02215`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-02216`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-02217`, `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03020`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03021`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03022`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03023`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03024`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03025`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03026`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03027`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03028`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03029`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03030`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03031`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03032`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03033`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03034`, `VUID-VkPipelineLayoutCreateInfo-descriptorType-03035`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03036`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03037`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03039`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03041`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03042`, `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03043`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_pipeline_layout_unchecked<'a>(
         &self,
@@ -3126,7 +3116,7 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
 
 # Safety
 
-The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, elements of the `pTexelBufferView` member of `pDescriptorWrites`[i] must have been created on `device`
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of any element of the `pBufferInfo` member of `pDescriptorWrites`[i] must have been created on `device`
@@ -3151,7 +3141,6 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 - `VUID-VkDescriptorImageInfo-imageLayout-00344`: `imageLayout` must match the actual VkImageLayout of each subresource accessible from `imageView` at the time this descriptor is accessed as defined by the image layout matching rules
 - `VUID-VkDescriptorImageInfo-sampler-01564`: If `sampler` is used and the VkFormat of the image is a multi-planar format, the image must have been created with `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`, and the `aspectMask` of the `imageView` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or (for three-plane formats only) `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkWriteDescriptorSet-descriptorCount-00318`: All consecutive bindings updated via a single `VkWriteDescriptorSet` structure, except those with a `descriptorCount` of zero, must all either use immutable samplers or must all not use immutable samplers
-- `VUID-VkWriteDescriptorSet-dstSet-00320`: `dstSet` must be a valid VkDescriptorSet handle
 - `VUID-VkWriteDescriptorSet-descriptorType-02994`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, each element of `pTexelBufferView` must be either a valid `VkBufferView` handle or VK_NULL_HANDLE
 - `VUID-VkWriteDescriptorSet-descriptorType-02995`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` and the `nullDescriptor` feature is not enabled, each element of `pTexelBufferView` must not be VK_NULL_HANDLE
 - `VUID-VkWriteDescriptorSet-descriptorType-00325`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that included immutable samplers for `dstBinding` with `descriptorType`, the `sampler` member of each element of `pImageInfo` must be a valid `VkSampler` object

@@ -242,18 +242,13 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
     }
     /**`vkCmdBindPipeline`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBindPipeline-pipeline-00781`: If the `variableMultisampleRate` feature is not supported, `pipeline` is a graphics pipeline, the current subpass uses no attachments, and this is not the first call to this function with a graphics pipeline after transitioning to the current subpass, then the sample count specified by this pipeline must match that set in the previous pipeline
-
 # Valid usage
 
 The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindPipeline.html). Settled by the wrappers:
 
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`: dynamic (checks the pipeline was created for the bind point, which the device remembers)
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`: dynamic (checks the pipeline was created for the bind point, which the device remembers)
+- `VUID-vkCmdBindPipeline-pipeline-00781`: dynamic (checks the pipeline's sample count, kept from its creation, against the first one bound in a subpass without attachments (kept from the render pass's creation), where the physical device lacks variableMultisampleRate (the 1.3.239 layer does not check it at the bind: proven by the error alone))
 - `VUID-vkCmdBindPipeline-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindPipeline-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -262,12 +257,12 @@ The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos
 - `VUID-vkCmdBindPipeline-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindPipeline-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
+Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 - 2: checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute
-- 16: explicit rule; the wrappers do not check it*/
+- 15: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_bind_pipeline(
+    pub fn cmd_bind_pipeline(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -285,7 +280,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipeline-00781`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_pipeline_unchecked(
         &mut self,

@@ -2256,11 +2256,13 @@ The rules are on [`VkPipelineLayoutCreateInfo`'s reference page](https://registr
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03038`: dynamic (checks the set layouts' recorded bindings, counted per kind in each stage and across all stages, against the device's limits (the update-after-bind ones from its Vulkan 1.2 properties), the set count against maxBoundDescriptorSets, and the push-constant ranges for a stage named twice)
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-03040`: dynamic (checks the set layouts' recorded bindings, counted per kind in each stage and across all stages, against the device's limits (the update-after-bind ones from its Vulkan 1.2 properties), the set count against maxBoundDescriptorSets, and the push-constant ranges for a stage named twice)
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019`: dynamic (checks the set layouts' recorded bindings, counted per kind in each stage and across all stages, against the device's limits (the update-after-bind ones from its Vulkan 1.2 properties), the set count against maxBoundDescriptorSets, and the push-constant ranges for a stage named twice)
+- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561`: static (the setter takes the handles as a slice of wrapper references, each live while borrowed)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 46.
+Left to the caller (listed one by one in the crate's `validation.json`): 45.
 
+- 4: checked by the safe methods in every build (the set layouts' inline uniform block bindings, per stage and in all, against the device's Vulkan 1.3 limits), but no test breaks it yet: the tests' device does not enable inlineUniformBlock
 - 12: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 34: explicit rule; the wrappers do not check it*/
+- 29: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineLayoutCreateInfo<'a> {
@@ -3506,6 +3508,7 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-dstBinding-00316`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorCount-00317`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorType-00319`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-dstSet-00320`: static (the method takes the handle as a wrapper reference, never null and live while borrowed)
 - `VUID-VkWriteDescriptorSet-dstArrayElement-00321`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorType-00324`: dynamic (refuses a write whose descriptor type selects an array that is not set)
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
@@ -3515,10 +3518,10 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 39.
+Left to the caller (listed one by one in the crate's `validation.json`): 38.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 37: explicit rule; the wrappers do not check it*/
+- 36: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {

@@ -141,11 +141,12 @@ The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khr
 - `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkBindImageMemoryInfo-pNext-01616`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
 - `VUID-VkBindImageMemoryInfo-pNext-01617`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
+- `VUID-VkBindImageMemoryInfo-memory-01625`: static (the method takes the handle as a wrapper reference, never null and live while borrowed)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 31.
+Left to the caller (listed one by one in the crate's `validation.json`): 30.
 
 - 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 28: explicit rule; the wrappers do not check it*/
+- 27: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryInfo<'a> {
