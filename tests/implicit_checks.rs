@@ -36,19 +36,19 @@ fn enum_and_flags_values_are_checked() {
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER)
         .sharing_mode(vk::SharingMode::from_raw(77));
     assert_eq!(
-        vuid(unsafe { d.create_buffer(&bad_mode) }),
+        vuid(d.create_buffer(&bad_mode)),
         "VUID-VkBufferCreateInfo-sharingMode-parameter"
     );
     let undefined_bit = tuff::BufferCreateInfo::new()
         .size(64)
         .usage(vk::BufferUsageFlags::from_raw(1 << 30));
     assert_eq!(
-        vuid(unsafe { d.create_buffer(&undefined_bit) }),
+        vuid(d.create_buffer(&undefined_bit)),
         "VUID-VkBufferCreateInfo-usage-parameter"
     );
     let no_usage = tuff::BufferCreateInfo::new().size(64);
     assert_eq!(
-        vuid(unsafe { d.create_buffer(&no_usage) }),
+        vuid(d.create_buffer(&no_usage)),
         "VUID-VkBufferCreateInfo-usage-requiredbitmask"
     );
     // A format of VK_IMG_format_pvrtc, which this device did not enable.
@@ -88,14 +88,13 @@ fn objects_of_another_device_are_refused() {
             .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
     }
     .expect("second device");
-    let buffer = unsafe {
-        d.create_buffer(
+    let buffer = d
+        .create_buffer(
             &tuff::BufferCreateInfo::new()
                 .size(256)
                 .usage(vk::BufferUsageFlags::UNIFORM_BUFFER),
         )
-    }
-    .expect("buffer");
+        .expect("buffer");
     let foreign_memory = unsafe {
         other.allocate_memory(
             &tuff::MemoryAllocateInfo::new()

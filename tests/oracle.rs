@@ -167,10 +167,7 @@ fn make_buffer(s: &Setup, spec: &BufferSpec) -> (tuff::Buffer, Option<tuff::Devi
         let info = tuff::BufferCreateInfo::new()
             .size(spec.size)
             .usage(spec.usage);
-        (
-            unsafe { s.device.create_buffer(&info) }.expect("buffer"),
-            None,
-        )
+        (s.device.create_buffer(&info).expect("buffer"), None)
     }
 }
 
@@ -257,7 +254,7 @@ fn buffer_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = unsafe { s.device.create_buffer(&info) }.map(drop);
+    let safe = s.device.create_buffer(&info).map(drop);
     // SAFETY: the layer skips the call if it finds the rule broken; where it does
     // not, the driver gets a value that breaks only a rule the layer does not check.
     let layer = under_layer(s, || {
@@ -2156,11 +2153,9 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         "VUID-VkImageViewCreateInfo-viewType-01004"
     );
     assert_eq!(
-        refusal(unsafe {
-            d.create_buffer(
-                &tuff::BufferCreateInfo::new().usage(vk::BufferUsageFlags::TRANSFER_DST),
-            )
-        }),
+        refusal(d.create_buffer(
+            &tuff::BufferCreateInfo::new().usage(vk::BufferUsageFlags::TRANSFER_DST),
+        )),
         "VUID-VkBufferCreateInfo-size-00912"
     );
     vulkan::assert_silent(&s.messages);

@@ -995,3 +995,60 @@ fn a_subpass_without_attachments_keeps_its_first_sample_count() {
     drop(rec.cmd_end_render_pass().end());
     assert_silent(&s.messages);
 }
+
+/// Buffer creation against the device: concurrent queue families, a capture
+/// address, exportable handle types and `maxBufferSize`.
+#[test]
+fn buffer_creation_is_checked_against_the_device_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let info = || {
+        tuff::BufferCreateInfo::new()
+            .size(64)
+            .usage(vk::BufferUsageFlags::TRANSFER_SRC)
+    };
+    let families = [s.family, s.family];
+    let twice = info()
+        .sharing_mode(vk::SharingMode::CONCURRENT)
+        .queue_family_indices(&families);
+    let mut capture = tuff::BufferOpaqueCaptureAddressCreateInfo::new().opaque_capture_address(64);
+    let captured = info().push_next(&mut capture);
+    let mut external = tuff::ExternalMemoryBufferCreateInfo::new()
+        .handle_types(vk::ExternalMemoryHandleTypeFlags::OPAQUE_WIN32);
+    let exported = info().push_next(&mut external);
+    let cases = [
+        (&twice, "VUID-VkBufferCreateInfo-sharingMode-01419"),
+        (
+            &captured,
+            "VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337",
+        ),
+        (&exported, "VUID-VkBufferCreateInfo-pNext-00920"),
+    ];
+    for (info, expected) in &cases {
+        assert_eq!(vuid(d.create_buffer(info)), *expected);
+    }
+    let max = {
+        let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+        let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+        // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+        unsafe {
+            s.instance
+                .fns()
+                .get_physical_device_properties2(s.physical.raw(), &mut p2)
+        };
+        p13.max_buffer_size
+    };
+    let huge = info().size(max + 1);
+    let too_large = "VUID-VkBufferCreateInfo-size-06409";
+    assert_eq!(vuid(d.create_buffer(&huge)), too_large);
+    drop(d.create_buffer(&info()).expect("a plain buffer"));
+    assert_silent(&s.messages);
+    // The 1.3.239 layer checks the first two; the refusals alone show the others.
+    for (info, expected) in &cases[..2] {
+        layer_names(&s.messages, expected, || {
+            // SAFETY: see the module docs.
+            drop(unsafe { d.create_buffer_unchecked(info) });
+        });
+    }
+}

@@ -1563,11 +1563,10 @@ fn buffer_copies_stay_inside_their_buffers() {
     let (small, _small_memory) = host_buffer(&s, 16, usage);
     let (dst_only, _m1) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_DST);
     let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
-    let unbound = unsafe {
-        s.device
-            .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
-    }
-    .expect("buffer");
+    let unbound = s
+        .device
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+        .expect("buffer");
     let region = |src_offset, dst_offset, size| {
         [vk::BufferCopy {
             src_offset,
@@ -1688,7 +1687,8 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
     let (target, _target_memory) = host_buffer(&s, 256, usage);
     let before = d.live_object_count();
-    let buffer = unsafe { d.create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage)) }
+    let buffer = d
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
         .expect("buffer");
     let reqs = d
         .get_buffer_memory_requirements(&buffer)
@@ -1799,11 +1799,10 @@ fn buffer_commands_stay_inside_their_buffers() {
         | vk::BufferUsageFlags::INDEX_BUFFER;
     let (buffer, _m) = host_buffer(&s, 256, all);
     let (src_only, _m2) = host_buffer(&s, 256, vk::BufferUsageFlags::TRANSFER_SRC);
-    let unbound = unsafe {
-        s.device
-            .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(all))
-    }
-    .expect("buffer");
+    let unbound = s
+        .device
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(all))
+        .expect("buffer");
     static BIG: [u8; 65540] = [0; 65540];
     type Rec<'r> = tuff::Recorder<'r, tuff::Outside>;
     type Call<'b> = Box<dyn Fn(&mut Rec<'_>, bool) -> tuff::Result<()> + 'b>;
@@ -3489,13 +3488,11 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     let s = setup(true);
     let d = &s.device;
     let buffer = || {
-        unsafe {
-            d.create_buffer(
-                &tuff::BufferCreateInfo::new()
-                    .size(4096)
-                    .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
-            )
-        }
+        d.create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(4096)
+                .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
+        )
         .expect("buffer")
     };
     let image = || {

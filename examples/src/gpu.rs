@@ -180,11 +180,9 @@ impl Gpu {
         location: tuff::MemoryLocation,
     ) -> Result<tuff::Bound<tuff::Buffer>> {
         let info = tuff::BufferCreateInfo::new().size(size).usage(usage);
-        // SAFETY: an exclusive buffer with no flags and no chain, far below maxBufferSize.
-        Ok(unsafe {
-            self.device
-                .create_buffer_in(&info, &self.allocator, location)
-        }?)
+        Ok(self
+            .device
+            .create_buffer_in(&info, &self.allocator, location)?)
     }
 
     /// A 2D image in device-local memory, which the image keeps.

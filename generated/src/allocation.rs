@@ -107,23 +107,15 @@ impl Device {
     /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
     /// (`VUID-VkBufferCreateInfo-size-00912`).
     ///
-    /// # Safety
-    ///
-    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
-    /// lists for a create info with only `size` and `usage` set: today, that `data`
-    /// is no larger than the device's `maxBufferSize`
-    /// (`VUID-VkBufferCreateInfo-size-06409`).
-    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// let allocator = device.gpu_allocator()?;
     /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
-    /// // SAFETY: 12 bytes are within any device's maxBufferSize.
-    /// let indices = unsafe { device.create_buffer_with(usage, &[0u32, 1, 2], &allocator) }?;
+    /// let indices = device.create_buffer_with(usage, &[0u32, 1, 2], &allocator)?;
     /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
     /// # Ok(()) }
     /// ```
-    pub unsafe fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
+    pub fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
         &self,
         usage: vk::BufferUsageFlags,
         data: &[T],
@@ -131,9 +123,7 @@ impl Device {
     ) -> Result<Bound<Buffer>> {
         let size = (core::mem::size_of_val(data) as u64).max(1);
         let info = BufferCreateInfo::new().size(size).usage(usage);
-        // SAFETY: the caller keeps `size` within maxBufferSize; the info sets nothing
-        // else the rules of `create_buffer` are about.
-        let buffer = unsafe { self.create_buffer_in(&info, allocator, MemoryLocation::Upload) }?;
+        let buffer = self.create_buffer_in(&info, allocator, MemoryLocation::Upload)?;
         buffer.memory().write(0, data)?;
         Ok(buffer)
     }
@@ -145,23 +135,17 @@ impl Device {
     /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
     /// fails.
     ///
-    /// # Safety
-    ///
-    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
-    /// lists for `info`, except those this method refuses above.
-    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// use tuff::{vk, MemoryLocation};
     /// let info = tuff::BufferCreateInfo::new()
     ///     .size(64)
     ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    /// // SAFETY: 64 bytes, exclusive, no flags and no chain: none of the rules applies.
-    /// let uniforms = unsafe { device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload) }?;
+    /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
     /// uniforms.memory().write(0, &[1.0f32; 16])?;
     /// # Ok(()) }
     /// ```
-    pub unsafe fn create_buffer_in<A: Allocator + ?Sized>(
+    pub fn create_buffer_in<A: Allocator + ?Sized>(
         &self,
         info: &BufferCreateInfo<'_>,
         allocator: &A,
@@ -189,8 +173,7 @@ impl Device {
              VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
         )?;
         refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
-        // SAFETY: the caller upholds the rules `create_buffer` lists.
-        let buffer = unsafe { self.create_buffer(info) }?;
+        let buffer = self.create_buffer(info)?;
         let requirements = self.get_buffer_memory_requirements(&buffer)?;
         let allocation = allocator
             .allocate(&AllocationRequest::new(requirements, location))

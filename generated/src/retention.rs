@@ -65,6 +65,10 @@ pub(crate) struct Live {
     /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
     /// host may not set, reset or read.
     device_only_events: Vutex<std::collections::HashSet<u64>>,
+    /// The memory each live sparse buffer requires, and their sum, which
+    /// `sparseAddressSpaceSize` bounds.
+    sparse_buffers: Vutex<HashMap<u64, u64>>,
+    sparse_total: Vutex<u64>,
     /// What the recorder needs of each live render pass.
     render_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
     /// What the checks of commands that use a buffer need to know of it.
@@ -240,6 +244,8 @@ impl Default for Live {
             timelines: Vutex::new(std::collections::HashSet::new()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),
+            sparse_buffers: Vutex::new(HashMap::default()),
+            sparse_total: Vutex::new(0),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
@@ -300,6 +306,17 @@ impl Live {
     /// Whether a live event was created device-only.
     pub(crate) fn is_device_only(&self, raw: vk::Event) -> bool {
         self.device_only_events.lock().contains(&raw.as_raw())
+    }
+
+    /// The memory all live sparse buffers require.
+    pub(crate) fn sparse_total(&self) -> u64 {
+        *self.sparse_total.lock()
+    }
+
+    /// Records a new sparse buffer's required memory.
+    pub(crate) fn sparse_buffer_created(&self, raw: vk::Buffer, size: u64) {
+        self.sparse_buffers.lock().insert(raw.as_raw(), size);
+        *self.sparse_total.lock() += size;
     }
 
     /// Records a new render pass's subpasses.
@@ -379,6 +396,9 @@ impl Live {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
                 self.buffers.lock().remove(&key.1);
+                if let Some(size) = self.sparse_buffers.lock().remove(&key.1) {
+                    *self.sparse_total.lock() -= size;
+                }
             }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);

@@ -204,7 +204,7 @@ fn buffers_tuff(b: &Bench, checked: bool) {
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
     for _ in 0..BUFFERS {
         let buffer = if checked {
-            unsafe { b.s.device.create_buffer(black_box(&info)) }
+            b.s.device.create_buffer(black_box(&info))
         } else {
             // SAFETY: the same valid create info as the checked branch passes.
             unsafe { b.s.device.create_buffer_unchecked(black_box(&info)) }

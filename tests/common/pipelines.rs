@@ -45,7 +45,8 @@ pub fn host_buffer(
     usage: vk::BufferUsageFlags,
 ) -> (tuff::Buffer, tuff::DeviceMemory) {
     let d = &s.device;
-    let buffer = unsafe { d.create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage)) }
+    let buffer = d
+        .create_buffer(&tuff::BufferCreateInfo::new().size(size).usage(usage))
         .expect("buffer");
     let reqs = d
         .get_buffer_memory_requirements(&buffer)

@@ -140,6 +140,9 @@ const INSTANCE_INFO: &str = "checks each enabled extension's dependencies (vk.xm
 const INSTANCE_ALONE: &str = "checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0)";
 const SUBPASS_SAMPLES: &str = "checks the pipeline's sample count, kept from its creation, against the first one bound in a subpass without attachments (kept from the render pass's creation), where the physical device lacks variableMultisampleRate (the 1.3.239 layer does not check it at the bind: proven by the error alone)";
 const UNPROVEN_BLOCKS: &str = "checked by the safe methods in every build (the set layouts' inline uniform block bindings, per stage and in all, against the device's Vulkan 1.3 limits), but no test breaks it yet: the tests' device does not enable inlineUniformBlock";
+const UNPROVEN_SPARSE: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first";
+const BUFFER_INFO: &str = "checks the concurrent queue families against the physical device's family count, and a capture address against the flags";
+const BUFFER_ALONE: &str = "checks the size against the device's maxBufferSize, and the external handle types against what the physical device reports it can export for the buffer (the 1.3.239 layer checks neither: proven by the error alone)";
 const SUBPASSES: &str = "checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer)";
 const ACTIVE_QUERIES: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
 const ACTIVE_QUERIES_ALONE: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
@@ -592,7 +595,16 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateBuffer",
+        check_last: call("hooks::create_buffer_checks", &["self", "create_info"]),
         created: call("hooks::buffer_created", &["self", "created", "create_info"]),
+        settles: &[
+            ("VUID-VkBufferCreateInfo-None-01888", How::User(UNPROVEN_SPARSE)),
+            ("VUID-vkCreateBuffer-flags-00911", How::User(UNPROVEN_SPARSE)),
+            ("VUID-VkBufferCreateInfo-size-06409", How::Dynamic(BUFFER_ALONE)),
+            ("VUID-VkBufferCreateInfo-sharingMode-01419", How::Dynamic(BUFFER_INFO)),
+            ("VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337", How::Dynamic(BUFFER_INFO)),
+            ("VUID-VkBufferCreateInfo-pNext-00920", How::Dynamic(BUFFER_ALONE)),
+        ],
         ..NONE
     },
     Special {

@@ -78,6 +78,7 @@ fn param_shape(
             .and_then(|(_, m)| match m {
                 Member::Handle { optional } => Some(Param::Handle { optional }),
                 Member::HandleSlice { .. } => Some(Param::HandleSlice),
+                Member::Slice { .. } => Some(Param::Slice),
                 _ => None,
             });
     }
@@ -147,6 +148,14 @@ fn wrapper_handle(t: &str, param: &dyn Fn(&str) -> Option<Param>) -> Option<&'st
         }
         [p, "must", "not", "be", "vk_null_handle"] => {
             matches!(param(p)?, Param::Handle { optional: false }).then_some(one)
+        }
+        // `If sharingMode is ..., pQueueFamilyIndices must be a valid pointer to an
+        // array of queueFamilyIndexCount uint32_t values`: a slice the setter stores
+        // with its length.
+        [.., p, "must", "be", "a", "valid", "pointer", "to", "an", "array", "of", _, _, "values"] => {
+            matches!(param(p)?, Param::Slice).then_some(
+                "the setter takes a slice and stores its length in the count member",
+            )
         }
         ["elements", "of", p, "must", "be", "valid", ty, "objects"] if ty.starts_with("vk") => {
             matches!(param(p)?, Param::HandleSlice).then_some(

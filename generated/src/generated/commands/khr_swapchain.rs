@@ -117,7 +117,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
 
 # Safety
 
-The caller upholds these 16 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkSwapchainCreateInfoKHR-surface-01270`: `surface` must be a surface that is supported by the device as determined using vkGetPhysicalDeviceSurfaceSupportKHR
 - `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272`: `minImageCount` must be less than or equal to the value returned in the `maxImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface if the returned `maxImageCount` is not zero
@@ -125,7 +125,6 @@ The caller upholds these 16 rules that no check of this method enforces (its com
 - `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: `imageExtent` members `width` and `height` must both be non-zero
 - `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: `imageArrayLayers` must be greater than `0` and less than or equal to the `maxImageArrayLayers` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: If `presentMode` is `VK_PRESENT_MODE_IMMEDIATE_KHR`, `VK_PRESENT_MODE_MAILBOX_KHR`, `VK_PRESENT_MODE_FIFO_KHR` or `VK_PRESENT_MODE_FIFO_RELAXED_KHR`, `imageUsage` must be a subset of the supported usage flags present in the `supportedUsageFlags` member of the VkSurfaceCapabilitiesKHR structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for `surface`
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: `preTransform` must be one of the bits present in the `supportedTransforms` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
 - `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: `compositeAlpha` must be one of the bits present in the `supportedCompositeAlpha` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-01281`: `presentMode` must be one of the VkPresentModeKHR values returned by `vkGetPhysicalDeviceSurfacePresentModesKHR` for the surface

@@ -56,17 +56,6 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
     }
     /**`vkGetDeviceBufferMemoryRequirements`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkBufferCreateInfo-sharingMode-00913`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
-- `VUID-VkBufferCreateInfo-sharingMode-01419`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
-- `VUID-VkBufferCreateInfo-pNext-00920`: If the `pNext` chain includes a VkExternalMemoryBufferCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalBufferProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceExternalBufferProperties with `pExternalBufferInfo->handleType` equal to any one of the handle types specified in VkExternalMemoryBufferCreateInfo::`handleTypes`
-- `VUID-VkBufferCreateInfo-None-01888`: If any of the bits `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` are set, `VK_BUFFER_CREATE_PROTECTED_BIT` must not also be set
-- `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
-- `VUID-VkBufferCreateInfo-size-06409`: `size` must be less than or equal to VkPhysicalDeviceMaintenance4Properties::`maxBufferSize`
-
 # Valid usage
 
 The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
@@ -75,7 +64,7 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
 - `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub unsafe fn get_device_buffer_memory_requirements<'a>(
+    pub fn get_device_buffer_memory_requirements<'a>(
         &self,
         info: &DeviceBufferMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
@@ -123,12 +112,11 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-- `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
 - `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
 - `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
@@ -217,12 +205,11 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
 - `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-- `VUID-VkImageCreateInfo-sharingMode-00941`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
 - `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
 - `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,

@@ -71,6 +71,7 @@ impl<'a> PresentInfoKHR<'a> {
 
 The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCreateInfoKHR.html). Settled by the wrappers:
 
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: static (the setter takes a slice and stores its length in the count member)
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -87,10 +88,10 @@ The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 30.
+Left to the caller (listed one by one in the crate's `validation.json`): 29.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 29: explicit rule; the wrappers do not check it*/
+- 28: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

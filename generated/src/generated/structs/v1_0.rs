@@ -232,6 +232,7 @@ impl<'a> BindSparseInfo<'a> {
 The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkBufferCreateInfo-size-00912`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkBufferCreateInfo-sharingMode-00913`: static (the setter takes a slice and stores its length in the count member)
 - `VUID-VkBufferCreateInfo-flags-00915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -240,13 +241,18 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
 - `VUID-VkBufferCreateInfo-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkBufferCreateInfo-sharingMode-01419`: dynamic (checks the concurrent queue families against the physical device's family count, and a capture address against the flags)
+- `VUID-VkBufferCreateInfo-pNext-00920`: dynamic (checks the size against the device's maxBufferSize, and the external handle types against what the physical device reports it can export for the buffer (the 1.3.239 layer checks neither: proven by the error alone))
 - `VUID-VkBufferCreateInfo-flags-01887`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337`: dynamic (checks the concurrent queue families against the physical device's family count, and a capture address against the flags)
 - `VUID-VkBufferCreateInfo-flags-06549`: dynamic (checks the rule as written (recogniser: feature must be enabled))
+- `VUID-VkBufferCreateInfo-size-06409`: dynamic (checks the size against the device's maxBufferSize, and the external handle types against what the physical device reports it can export for the buffer (the 1.3.239 layer checks neither: proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 23.
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 19: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build, but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first
+- 13: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferCreateInfo<'a> {
@@ -1503,6 +1509,7 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
 The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
+- `VUID-VkImageCreateInfo-sharingMode-00941`: static (the setter takes a slice and stores its length in the count member)
 - `VUID-VkImageCreateInfo-extent-00944`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkImageCreateInfo-extent-00945`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkImageCreateInfo-mipLevels-00947`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
@@ -1534,11 +1541,11 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-format-00943`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-flags-01890`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 98.
+Left to the caller (listed one by one in the crate's `validation.json`): 97.
 
 - 15: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 82: explicit rule; the wrappers do not check it*/
+- 81: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
