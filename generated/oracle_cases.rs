@@ -1420,6 +1420,26 @@ oracle_cases! {
             v.draw_count = 2;
         },
     },
+    cmd_draw_indirect_count: args::CmdDrawIndirectCount {
+        "VUID-vkCmdDrawIndirectCount-buffer-02708" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndirectCount-buffer-02709" => |v, l, o| {
+            o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndirectCount-offset-02710" => |v, l, o| {
+            v.offset += 1;
+        },
+        "VUID-vkCmdDrawIndirectCount-countBuffer-02714" => |v, l, o| {
+            o.count_buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndirectCount-countBuffer-02715" => |v, l, o| {
+            o.count_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndirectCount-countBufferOffset-02716" => |v, l, o| {
+            v.count_buffer_offset += 1;
+        },
+    },
     cmd_draw_indexed_indirect: args::CmdDrawIndexedIndirect {
         "VUID-vkCmdDrawIndexedIndirect-buffer-02708" => |v, l, o| {
             o.buffer.bind = false;
@@ -1432,6 +1452,26 @@ oracle_cases! {
         },
         "VUID-vkCmdDrawIndexedIndirect-drawCount-02718" => |v, l, o| {
             v.draw_count = 2;
+        },
+    },
+    cmd_draw_indexed_indirect_count: args::CmdDrawIndexedIndirectCount {
+        "VUID-vkCmdDrawIndexedIndirectCount-buffer-02708" => |v, l, o| {
+            o.buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndexedIndirectCount-buffer-02709" => |v, l, o| {
+            o.buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndexedIndirectCount-offset-02710" => |v, l, o| {
+            v.offset += 1;
+        },
+        "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714" => |v, l, o| {
+            o.count_buffer.bind = false;
+        },
+        "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715" => |v, l, o| {
+            o.count_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x100);
+        },
+        "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716" => |v, l, o| {
+            v.count_buffer_offset += 1;
         },
     },
     vertex_input_binding_description: vk::VertexInputBindingDescription {
@@ -1485,6 +1525,16 @@ oracle_cases! {
         },
         "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785" => |v, l, o| {
             v.alpha_to_one_enable = 1;
+        },
+    },
+    cmd_set_line_width: args::CmdSetLineWidth {
+        "VUID-vkCmdSetLineWidth-lineWidth-00788" => |v, l, o| {
+            v.line_width = 2.0;
+        },
+    },
+    cmd_set_depth_bias: args::CmdSetDepthBias {
+        "VUID-vkCmdSetDepthBias-depthBiasClamp-00790" => |v, l, o| {
+            v.depth_bias_clamp = 1.0;
         },
     },
     cmd_set_depth_bounds: args::CmdSetDepthBounds {

@@ -59,6 +59,7 @@ struct ImageSpec {
 #[derive(Clone, Copy)]
 struct Objects {
     buffer: BufferSpec,
+    count_buffer: BufferSpec,
     src_buffer: BufferSpec,
     dst_buffer: BufferSpec,
     image: ImageSpec,
@@ -101,6 +102,7 @@ impl Default for Objects {
         let corner = vk::Offset3D { x: 4, y: 4, z: 1 };
         Objects {
             buffer,
+            count_buffer: buffer,
             src_buffer: buffer,
             dst_buffer: buffer,
             image,
@@ -904,6 +906,19 @@ mod args {
         pub group_count_x: u32,
         pub group_count_y: u32,
         pub group_count_z: u32,
+    }
+    pub struct CmdDrawIndirectCount {
+        pub offset: vk::DeviceSize,
+        pub count_buffer_offset: vk::DeviceSize,
+    }
+    pub type CmdDrawIndexedIndirectCount = CmdDrawIndirectCount;
+    pub struct CmdSetLineWidth {
+        pub line_width: f32,
+    }
+    pub struct CmdSetDepthBias {
+        pub depth_bias_constant_factor: f32,
+        pub depth_bias_clamp: f32,
+        pub depth_bias_slope_factor: f32,
     }
     pub struct CmdSetDepthBounds {
         pub min_depth_bounds: f32,
@@ -2460,4 +2475,128 @@ fn semaphore_type_create_info(
     );
     let info = tuff::SemaphoreCreateInfo::new().push_next(&mut ty);
     create!(s, create_semaphore, create_semaphore_unchecked, &info)
+}
+
+fn cmd_draw_indirect_count(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDrawIndirectCount, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDrawIndirectCount {
+        offset: 0,
+        count_buffer_offset: 0,
+    };
+    let mut o = Objects::default();
+    change(&mut a, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let (count, _count_memory) = make_buffer(s, &o.count_buffer);
+    draw(
+        s,
+        |r| unsafe {
+            r.cmd_draw_indirect_count(&buffer, a.offset, &count, a.count_buffer_offset, 1, 16)
+        },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| {
+            drop(unsafe {
+                r.cmd_draw_indirect_count_unchecked(
+                    &buffer,
+                    a.offset,
+                    &count,
+                    a.count_buffer_offset,
+                    1,
+                    16,
+                )
+            })
+        },
+    )
+}
+
+fn cmd_draw_indexed_indirect_count(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDrawIndexedIndirectCount, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDrawIndexedIndirectCount {
+        offset: 0,
+        count_buffer_offset: 0,
+    };
+    let mut o = Objects::default();
+    change(&mut a, limits, &mut o);
+    let (buffer, _memory) = make_buffer(s, &o.buffer);
+    let (count, _count_memory) = make_buffer(s, &o.count_buffer);
+    let (indices, _index_memory) =
+        pipelines::host_buffer(s, 64, vk::BufferUsageFlags::INDEX_BUFFER);
+    let index = vk::IndexType::UINT32;
+    draw(
+        s,
+        |r| {
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
+            unsafe {
+                r.cmd_draw_indexed_indirect_count(
+                    &buffer,
+                    a.offset,
+                    &count,
+                    a.count_buffer_offset,
+                    1,
+                    20,
+                )
+            }
+        },
+        |r| {
+            r.cmd_bind_index_buffer(&indices, 0, index)
+                .expect("index buffer");
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            drop(unsafe {
+                r.cmd_draw_indexed_indirect_count_unchecked(
+                    &buffer,
+                    a.offset,
+                    &count,
+                    a.count_buffer_offset,
+                    1,
+                    20,
+                )
+            })
+        },
+    )
+}
+
+fn cmd_set_line_width(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdSetLineWidth, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdSetLineWidth { line_width: 1.0 };
+    change(&mut a, limits, &mut Objects::default());
+    record(
+        s,
+        |r| r.cmd_set_line_width(a.line_width),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_line_width_unchecked(a.line_width) },
+    )
+}
+
+fn cmd_set_depth_bias(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdSetDepthBias, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdSetDepthBias {
+        depth_bias_constant_factor: 0.0,
+        depth_bias_clamp: 0.0,
+        depth_bias_slope_factor: 0.0,
+    };
+    change(&mut a, limits, &mut Objects::default());
+    let (c, clamp, slope) = (
+        a.depth_bias_constant_factor,
+        a.depth_bias_clamp,
+        a.depth_bias_slope_factor,
+    );
+    record(
+        s,
+        |r| r.cmd_set_depth_bias(c, clamp, slope),
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_depth_bias_unchecked(c, clamp, slope) },
+    )
 }

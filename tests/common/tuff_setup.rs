@@ -133,7 +133,8 @@ fn setup_full(
         .synchronization2(vk::TRUE);
     let mut features12 = tuff::PhysicalDeviceVulkan12Features::new()
         .imageless_framebuffer(vk::TRUE)
-        .timeline_semaphore(vk::TRUE);
+        .timeline_semaphore(vk::TRUE)
+        .draw_indirect_count(vk::TRUE);
     let device_exts = match wsi {
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],

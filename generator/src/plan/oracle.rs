@@ -79,6 +79,10 @@ pub const FIXTURES: &[&str] = &[
     "vkCmdDispatch",
     "vkCmdSetDepthBounds",
     "VkSemaphoreTypeCreateInfo",
+    "vkCmdDrawIndirectCount",
+    "vkCmdDrawIndexedIndirectCount",
+    "vkCmdSetLineWidth",
+    "vkCmdSetDepthBias",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -392,13 +396,14 @@ fn mask(bits: &[Value]) -> u64 {
 }
 
 /// The core features the fixtures' device enables (`tests/common/tuff_setup.rs`):
-/// the tests record `*2` barriers, imageless framebuffers, timeline semaphores and
-/// private data. It enables no Vulkan 1.0 feature.
+/// the tests record `*2` barriers, imageless framebuffers, timeline semaphores,
+/// private data and indirect draws with a count. It enables no Vulkan 1.0 feature.
 pub const FIXTURE_FEATURES: &[&str] = &[
     "privateData",
     "synchronization2",
     "imagelessFramebuffer",
     "timelineSemaphore",
+    "drawIndirectCount",
 ];
 
 /// Changes that make a condition hold: a feature is on or off as the fixtures'

@@ -841,12 +841,11 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
 
 The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBias.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdSetDepthBias-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-vkCmdSetDepthBias-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -947,12 +946,11 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
 
 The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineWidth.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetLineWidth-lineWidth-00788`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdSetLineWidth-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-vkCmdSetLineWidth-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)*/
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         {

@@ -208,6 +208,12 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -218,10 +224,9 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 202.
+Left to the caller (listed one by one in the crate's `validation.json`): 196.
 
 - 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 195: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
@@ -378,6 +383,12 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 
 - `VUID-vkCmdDrawIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndirectCount-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
+- `VUID-vkCmdDrawIndirectCount-countBuffer-02714`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdDrawIndirectCount-countBuffer-02715`: dynamic (checks the rule as written (recogniser: object created with usage bits))
+- `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDrawIndirectCount-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdDrawIndirectCount-countBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -387,10 +398,9 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 201.
+Left to the caller (listed one by one in the crate's `validation.json`): 195.
 
 - 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 194: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
