@@ -5,9 +5,16 @@
 // value that breaks exactly that rule.
 oracle_cases! {
     semaphore_type_create_info: vk::SemaphoreTypeCreateInfo<'_> {
+        "VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252" on bare => |v, l, o| {
+            v.semaphore_type = vk::SemaphoreType::from_raw(1);
+        },
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279" => |v, l, o| {
             v.semaphore_type = vk::SemaphoreType::from_raw(0);
             v.initial_value = 1;
+        },
+    },
+    cmd_set_event2: args::CmdSetEvent2 {
+        "VUID-vkCmdSetEvent2-synchronization2-03824" on bare => |v, l, o| {
         },
     },
     cmd_set_event: args::CmdSetEvent {
@@ -28,6 +35,8 @@ oracle_cases! {
         "VUID-vkCmdResetEvent2-stageMask-03930" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
         },
+        "VUID-vkCmdResetEvent2-synchronization2-03829" on bare => |v, l, o| {
+        },
         "VUID-vkCmdResetEvent2-stageMask-03830" => |v, l, o| {
             v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x4000);
         },
@@ -43,6 +52,10 @@ oracle_cases! {
             v.stage_mask |= vk::PipelineStageFlags::from_raw(0x4000);
         },
     },
+    cmd_wait_events2: args::CmdWaitEvents2 {
+        "VUID-vkCmdWaitEvents2-synchronization2-03836" on bare => |v, l, o| {
+        },
+    },
     cmd_wait_events: args::CmdWaitEvents {
         "VUID-vkCmdWaitEvents-srcStageMask-04090" => |v, l, o| {
             v.src_stage_mask |= vk::PipelineStageFlags::from_raw(0x40);
@@ -55,6 +68,10 @@ oracle_cases! {
         },
         "VUID-vkCmdWaitEvents-dstStageMask-04091" => |v, l, o| {
             v.dst_stage_mask |= vk::PipelineStageFlags::from_raw(0x10);
+        },
+    },
+    cmd_pipeline_barrier2: args::CmdPipelineBarrier2 {
+        "VUID-vkCmdPipelineBarrier2-synchronization2-03848" on bare => |v, l, o| {
         },
     },
     cmd_pipeline_barrier: args::CmdPipelineBarrier {
@@ -584,6 +601,12 @@ oracle_cases! {
         "VUID-VkImageMemoryBarrier-image-01932" => |v, l, o| {
             o.image.bind = false;
         },
+        "VUID-VkImageMemoryBarrier-synchronization2-07793" on bare => |v, l, o| {
+            v.old_layout = vk::ImageLayout::from_raw(1000314001);
+        },
+        "VUID-VkImageMemoryBarrier-synchronization2-07794" on bare => |v, l, o| {
+            v.new_layout = vk::ImageLayout::from_raw(1000314001);
+        },
     },
     attachment_description: vk::AttachmentDescription {
         "VUID-VkAttachmentDescription-format-06699" => |v, l, o| {
@@ -745,6 +768,9 @@ oracle_cases! {
         },
         "VUID-VkFramebufferCreateInfo-layers-00889" => |v, l, o| {
             v.layers = 0;
+        },
+        "VUID-VkFramebufferCreateInfo-flags-03189" on bare => |v, l, o| {
+            v.flags |= vk::FramebufferCreateFlags::from_raw(0x1);
         },
     },
     buffer_create_info: vk::BufferCreateInfo<'_> {
@@ -908,12 +934,19 @@ oracle_cases! {
             o.dst_buffer.bind = false;
         },
     },
+    cmd_write_timestamp2: args::CmdWriteTimestamp2 {
+        "VUID-vkCmdWriteTimestamp2-synchronization2-03858" on bare => |v, l, o| {
+        },
+    },
     cmd_write_timestamp: args::CmdWriteTimestamp {
         "VUID-vkCmdWriteTimestamp-pipelineStage-04075" => |v, l, o| {
             v.pipeline_stage = vk::PipelineStageFlags::from_raw(64);
         },
         "VUID-vkCmdWriteTimestamp-pipelineStage-04076" => |v, l, o| {
             v.pipeline_stage = vk::PipelineStageFlags::from_raw(16);
+        },
+        "VUID-vkCmdWriteTimestamp-synchronization2-06489" on bare => |v, l, o| {
+            v.pipeline_stage = vk::PipelineStageFlags::from_raw(0);
         },
     },
     cmd_clear_color_image: args::CmdClearColorImage {
@@ -1584,6 +1617,10 @@ oracle_cases! {
         },
         "VUID-vkCmdDispatchIndirect-offset-02710" => |v, l, o| {
             v.offset += 1;
+        },
+    },
+    create_private_data_slot: args::CreatePrivateDataSlot {
+        "VUID-vkCreatePrivateDataSlot-privateData-04564" on bare => |v, l, o| {
         },
     },
 }

@@ -196,16 +196,19 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
     (image, Some(memory))
 }
 
-/// A case: the rule, and the run of its fixture with its change.
-type Case = (&'static str, Box<dyn Fn(&Setup, &Limits) -> Outcome>);
+/// A case: the rule, whether it runs on the bare device (one that enables none of
+/// the features `setup` enables, for rules that apply with one of them off), and the
+/// run of its fixture with its change.
+type Case = (&'static str, bool, Box<dyn Fn(&Setup, &Limits) -> Outcome>);
 
 macro_rules! oracle_cases {
-    ($($fixture:ident: $ty:ty { $($vuid:literal => |$v:ident, $l:ident, $o:ident| $body:block),* $(,)? }),* $(,)?) => {
+    ($($fixture:ident: $ty:ty { $($vuid:literal $(on $device:ident)? => |$v:ident, $l:ident, $o:ident| $body:block),* $(,)? }),* $(,)?) => {
         /// Each fixture unchanged, by name: a valid call.
         fn fixtures() -> Vec<Case> {
             vec![$(
                 (
                     stringify!($fixture),
+                    false,
                     Box::new(|s: &Setup, limits: &Limits| {
                         $fixture(s, limits, &|_: &mut $ty, _: &Limits, _: &mut Objects| {})
                     }),
@@ -213,10 +216,12 @@ macro_rules! oracle_cases {
             )*]
         }
 
+        /// Each case: its rule, whether it runs on the bare device, and its run.
         fn cases() -> Vec<Case> {
             vec![$($(
                 (
                     $vuid,
+                    !stringify!($($device)?).is_empty(),
                     Box::new(|s: &Setup, limits: &Limits| {
                         $fixture(s, limits, &|$v: &mut $ty, $l: &Limits, $o: &mut Objects| {
                             let _ = (&$v, &$l, &$o);
@@ -912,6 +917,13 @@ mod args {
         pub count_buffer_offset: vk::DeviceSize,
     }
     pub type CmdDrawIndexedIndirectCount = CmdDrawIndirectCount;
+    pub struct CmdPipelineBarrier2;
+    pub type CmdSetEvent2 = CmdPipelineBarrier2;
+    pub type CmdWaitEvents2 = CmdPipelineBarrier2;
+    pub struct CmdWriteTimestamp2 {
+        pub stage: vk::PipelineStageFlags2,
+    }
+    pub struct CreatePrivateDataSlot;
     pub struct CmdSetLineWidth {
         pub line_width: f32,
     }
@@ -1307,6 +1319,12 @@ const LAYER_NAMES: &[(&str, &str)] = &[
         "VUID-VkViewport-maxDepth-02541",
         "[ VUID-VkViewport-maxDepth-01235 ]",
     ),
+    // Without synchronization2 the 1.3.239 layer reports VK_PIPELINE_STAGE_NONE (0)
+    // under the rule of a valid stage value.
+    (
+        "VUID-vkCmdWriteTimestamp-synchronization2-06489",
+        "[ VUID-vkCmdWriteTimestamp-pipelineStage-parameter ]",
+    ),
     // The rule's VUID for the same feature under VK_EXT_buffer_device_address.
     (
         "VUID-VkBufferCreateInfo-flags-06549",
@@ -1319,6 +1337,12 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "flags-03189",
+        &["flags-03190"],
+        "an imageless framebuffer also needs the chained attachment-image info, which the fixture's framebuffer, made with its views, does not chain",
+    ),
+
     (
         "usage-00963",
         &["usage-00966"],
@@ -2021,7 +2045,7 @@ fn every_fixture_is_valid_as_it_stands() {
         !fixtures.is_empty(),
         "generated/oracle_cases.rs has no fixture"
     );
-    for (name, run) in &fixtures {
+    for (name, _, run) in &fixtures {
         let out = run(&s, &limits);
         assert!(
             out.safe.is_ok(),
@@ -2043,17 +2067,18 @@ fn every_fixture_is_valid_as_it_stands() {
 fn every_recognised_rule_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
+    let bare = tuff_setup::setup_bare(true);
     let limits = s.physical.get_physical_device_properties().limits;
     // `setup` enables no Vulkan 1.0 feature, which the cases of rules that apply
-    // when a feature is off rely on.
+    // when a feature is off rely on; `setup_bare` enables none at all.
     let cases = cases();
     assert!(!cases.is_empty(), "generated/oracle_cases.rs has no case");
     let (mut by_layer, mut alone, mut failures) = (0, Vec::new(), Vec::new());
-    for (vuid, run) in &cases {
+    for (vuid, on_bare, run) in &cases {
         if std::env::var_os("ORACLE_TRACE").is_some() {
             eprintln!("oracle: {vuid}");
         }
-        let out = run(&s, &limits);
+        let out = run(if *on_bare { &bare } else { &s }, &limits);
         match &out.safe {
             Err(tuff::Error::Validation { vuid: got, .. }) if got == vuid => {}
             other => {
@@ -2598,5 +2623,107 @@ fn cmd_set_depth_bias(
         |r| r.cmd_set_depth_bias(c, clamp, slope),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.cmd_set_depth_bias_unchecked(c, clamp, slope) },
+    )
+}
+
+fn cmd_pipeline_barrier2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdPipelineBarrier2, &Limits, &mut Objects),
+) -> Outcome {
+    change(
+        &mut args::CmdPipelineBarrier2,
+        limits,
+        &mut Objects::default(),
+    );
+    let info = tuff::DependencyInfo::new();
+    record(
+        s,
+        |r| unsafe { r.cmd_pipeline_barrier2(&info) },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_pipeline_barrier2_unchecked(&info) },
+    )
+}
+
+fn cmd_set_event2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdSetEvent2, &Limits, &mut Objects),
+) -> Outcome {
+    change(
+        &mut args::CmdPipelineBarrier2,
+        limits,
+        &mut Objects::default(),
+    );
+    let e = event(s);
+    let info = tuff::DependencyInfo::new();
+    record(
+        s,
+        |r| unsafe { r.cmd_set_event2(&e, &info) },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_set_event2_unchecked(&e, &info) },
+    )
+}
+
+fn cmd_wait_events2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdWaitEvents2, &Limits, &mut Objects),
+) -> Outcome {
+    change(
+        &mut args::CmdPipelineBarrier2,
+        limits,
+        &mut Objects::default(),
+    );
+    let e = event(s);
+    let infos = [tuff::DependencyInfo::new()];
+    record(
+        s,
+        |r| unsafe { r.cmd_wait_events2(&[&e], &infos) },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| drop(unsafe { r.cmd_wait_events2_unchecked(&[&e], &infos) }),
+    )
+}
+
+fn cmd_write_timestamp2(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdWriteTimestamp2, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdWriteTimestamp2 {
+        stage: vk::PipelineStageFlags2::TRANSFER,
+    };
+    change(&mut a, limits, &mut Objects::default());
+    let pool = timestamps(s);
+    record(
+        s,
+        |r| {
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.cmd_write_timestamp2(a.stage, &pool, 0) }
+        },
+        |r| {
+            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
+            // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+            unsafe { r.cmd_write_timestamp2_unchecked(a.stage, &pool, 0) }
+        },
+    )
+}
+
+fn create_private_data_slot(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CreatePrivateDataSlot, &Limits, &mut Objects),
+) -> Outcome {
+    change(
+        &mut args::CreatePrivateDataSlot,
+        limits,
+        &mut Objects::default(),
+    );
+    let info = tuff::PrivateDataSlotCreateInfo::new();
+    create!(
+        s,
+        create_private_data_slot,
+        create_private_data_slot_unchecked,
+        &info
     )
 }

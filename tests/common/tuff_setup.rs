@@ -43,13 +43,25 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
         validation,
         wsi,
         vk::PhysicalDeviceFeatures::default(),
-        false,
+        Chain::Core,
+    )
+}
+
+/// [`setup`], on a device that enables no feature at all (no Vulkan 1.2 or 1.3
+/// feature either), for rules that apply with one of `setup`'s features off.
+#[allow(dead_code)]
+pub fn setup_bare(validation: bool) -> Setup {
+    setup_full(
+        validation,
+        Wsi::None,
+        vk::PhysicalDeviceFeatures::default(),
+        Chain::None,
     )
 }
 
 /// [`setup`], with these Vulkan 1.0 features enabled.
 pub fn setup_with_features(validation: bool, features: vk::PhysicalDeviceFeatures) -> Setup {
-    setup_full(validation, Wsi::None, features, false)
+    setup_full(validation, Wsi::None, features, Chain::Core)
 }
 
 /// [`setup`], with the same Vulkan 1.2 and 1.3 features enabled through the
@@ -59,15 +71,26 @@ pub fn setup_with_extension_feature_structs(validation: bool) -> Setup {
         validation,
         Wsi::None,
         vk::PhysicalDeviceFeatures::default(),
-        true,
+        Chain::Extensions,
     )
+}
+
+/// How the device's Vulkan 1.2 and 1.3 features are chained into its create info.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Chain {
+    /// The core versions' feature structs.
+    Core,
+    /// The structs of the extensions the features came from.
+    Extensions,
+    /// None: no such feature is enabled.
+    None,
 }
 
 fn setup_full(
     validation: bool,
     wsi: Wsi,
     features: vk::PhysicalDeviceFeatures,
-    extension_structs: bool,
+    chain: Chain,
 ) -> Setup {
     if validation {
         // SAFETY: set before any thread of this test reads the environment.
@@ -149,13 +172,14 @@ fn setup_full(
         .queue_create_infos(&queues)
         .enabled_extension_names(&device_exts)
         .enabled_features(Some(&features));
-    let info = if extension_structs {
-        info.push_next(&mut sync2)
+    let info = match chain {
+        Chain::Extensions => info
+            .push_next(&mut sync2)
             .push_next(&mut private_data)
             .push_next(&mut imageless)
-            .push_next(&mut timeline)
-    } else {
-        info.push_next(&mut features13).push_next(&mut features12)
+            .push_next(&mut timeline),
+        Chain::Core => info.push_next(&mut features13).push_next(&mut features12),
+        Chain::None => info,
     };
     let device = unsafe { physical.create_device(&info) }.expect("create device");
     let queue = device.get_device_queue(family, 0).expect("queue");

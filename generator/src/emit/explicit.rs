@@ -530,7 +530,8 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
         };
         let _ = writeln!(s, "    {fixture}: {ty} {{");
         for c in cases.iter().filter(|c| c.item == item) {
-            let _ = writeln!(s, "        {:?} => |v, l, o| {{", c.vuid);
+            let on = if c.bare { " on bare" } else { "" };
+            let _ = writeln!(s, "        {:?}{on} => |v, l, o| {{", c.vuid);
             let path = |m: &str| c.place(m);
             for a in &c.assigns {
                 let line = match a {

@@ -83,12 +83,19 @@ pub const FIXTURES: &[&str] = &[
     "vkCmdDrawIndexedIndirectCount",
     "vkCmdSetLineWidth",
     "vkCmdSetDepthBias",
+    "vkCmdPipelineBarrier2",
+    "vkCmdSetEvent2",
+    "vkCmdWaitEvents2",
+    "vkCmdWriteTimestamp2",
+    "vkCreatePrivateDataSlot",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
 pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkBufferCreateInfo-flags-00916", SPARSE),
     ("VUID-VkBufferCreateInfo-flags-00918", SPARSE),
+    ("VUID-VkImageMemoryBarrier2-synchronization2-07793", BARRIER2_BARE),
+    ("VUID-VkImageMemoryBarrier2-synchronization2-07794", BARRIER2_BARE),
     ("VUID-VkImageCreateInfo-flags-00987", SPARSE),
     ("VUID-VkImageCreateInfo-flags-01573", "a block-texel-view-compatible image also needs a compressed format (`flags-01572`), which the fixture's RGBA8 image is not"),
     ("VUID-VkBufferCreateInfo-flags-00917", SPARSE),
@@ -169,6 +176,7 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkVertexInputAttributeDescription-binding-00621", "a binding past the limit has no binding description, so `VkPipelineVertexInputStateCreateInfo-binding-00615` breaks as well"),
 ];
 
+const BARRIER2_BARE: &str = "on a device without synchronization2, the barrier's command (`vkCmdPipelineBarrier2-synchronization2-03848`) is refused first";
 const LAYER_RENAMES: &str = "the 1.3.239 layer reports this region of `vkCmdCopyImageToBuffer2` under `vkCmdCopyImageToBuffer` VUIDs of other rules (`pRegions-06221`, `06222`, `imageOffset-00200`), so its verdict cannot be told apart";
 const LAYER_THROWS: &str = "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layers run past the image's";
 const SEPARATE_LAYOUTS: &str = "the first layout the rule forbids is a depth-only layout, which without `separateDepthStencilLayouts` breaks `VkAttachmentReference2-separateDepthStencilLayouts-03313`, and the layer reports that instead";
@@ -286,6 +294,9 @@ pub struct Case {
     /// `Objects` that holds the fixture's one element (`image_copy` for
     /// `VkImageCopy`), which element paths are written to.
     pub element: Option<String>,
+    /// The case runs on a device that enables none of [`FIXTURE_FEATURES`]: its rule
+    /// applies only with one of them off.
+    pub bare: bool,
 }
 
 impl Case {
@@ -372,6 +383,14 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         make_true(&at, p, &mut assigns)?;
     }
     make_false(&at, &r.check.must, &mut assigns)?;
+    // A feature of the fixtures' device that the rule needs off (a condition that it
+    // is not enabled, or a requirement that it is) moves the case to the bare
+    // device; one it needs on keeps it off the bare device.
+    let off = |p: &Pred, enabled: bool| matches!(p, Pred::Feature { name, enabled: e, .. } if *e == enabled && FIXTURE_FEATURES.contains(&name.as_str()));
+    let bare = r.check.when.iter().any(|p| off(p, false)) || off(&r.check.must, true);
+    if bare && r.check.when.iter().any(|p| off(p, true)) {
+        return None;
+    }
     // A count that goes with a pointer member is not the fixture's to change: the
     // safe struct's setters keep the two together.
     let counts: Vec<&str> = fields
@@ -388,6 +407,7 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         on_command: r.on_command,
         assigns,
         element: at.element,
+        bare,
     })
 }
 
@@ -410,8 +430,9 @@ pub const FIXTURE_FEATURES: &[&str] = &[
 /// device has it, or the case is not made.
 fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
+        // Off where the fixtures' device lacks it, or on the bare device (`case`).
         Pred::Feature { name, enabled, .. } => {
-            (FIXTURE_FEATURES.contains(&name.as_str()) == *enabled).then_some(())?
+            (!*enabled || FIXTURE_FEATURES.contains(&name.as_str())).then_some(())?
         }
         // A format of the kind: one each kind's fixtures can use.
         Pred::FormatIs { member, class } => out.push(Assign::Enum {
@@ -541,12 +562,9 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
         Pred::MultipleOf { member, .. } => out.push(Assign::Increment {
             member: member.clone(),
         }),
-        // The fixtures' device lacks every feature it does not list.
-        Pred::Feature {
-            name,
-            enabled: true,
-            ..
-        } => (!FIXTURE_FEATURES.contains(&name.as_str())).then_some(())?,
+        // The fixtures' device lacks every feature it does not list; the bare device
+        // (`case`) lacks those too.
+        Pred::Feature { enabled: true, .. } => {}
         // `a + b <= n` breaks at `a = n - b + 1`; `a <= n` at `a = n + 1`.
         Pred::Compare {
             member,

@@ -1424,11 +1424,9 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 - `VUID-vkCmdWriteTimestamp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdWriteTimestamp-synchronization2-06489`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 16: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_write_timestamp(
         &mut self,

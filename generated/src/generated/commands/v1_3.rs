@@ -9,12 +9,11 @@ impl Device {
 
 The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
 
+- `VUID-vkCreatePrivateDataSlot-privateData-04564`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
     pub fn create_private_data_slot<'a>(
         &self,

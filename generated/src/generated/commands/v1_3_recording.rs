@@ -622,6 +622,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 
 - `VUID-vkCmdResetEvent2-stageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdResetEvent2-stageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-synchronization2-03829`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdResetEvent2-stageMask-03830`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -631,10 +632,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 13: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_reset_event2(
         &mut self,
@@ -801,6 +799,7 @@ The caller upholds these 35 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetEvent2-synchronization2-03824`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -809,10 +808,7 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_set_event2<'a>(
         &mut self,
@@ -1060,15 +1056,13 @@ The caller upholds these 40 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier2.html). Settled by the wrappers:
 
+- `VUID-vkCmdPipelineBarrier2-synchronization2-03848`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 9: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2<'a>(
         &mut self,
@@ -1763,6 +1757,7 @@ The caller upholds these 40 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents2.html). Settled by the wrappers:
 
+- `VUID-vkCmdWaitEvents2-synchronization2-03836`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdWaitEvents2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWaitEvents2-pEvents-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`: dynamic (checks, in every build, that the slice is as long as `events`)
@@ -1771,10 +1766,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 9: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_wait_events2<'a>(
         &mut self,
@@ -1863,6 +1855,7 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 
 The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp2.html). Settled by the wrappers:
 
+- `VUID-vkCmdWriteTimestamp2-synchronization2-03858`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdWriteTimestamp2-stage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdWriteTimestamp2-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -1870,9 +1863,9 @@ The rules are on [`vkCmdWriteTimestamp2`'s reference page](https://registry.khro
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteTimestamp2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 21.
+Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 18: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_write_timestamp2(

@@ -1227,10 +1227,11 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 - `VUID-VkFramebufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkFramebufferCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkFramebufferCreateInfo-flags-03189`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 55.
+Left to the caller (listed one by one in the crate's `validation.json`): 54.
 
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 51: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1643,10 +1644,12 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageMemoryBarrier-synchronization2-07793`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageMemoryBarrier-synchronization2-07794`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 43.
+Left to the caller (listed one by one in the crate's `validation.json`): 41.
 
-- 5: checked by the safe methods in every build, but no oracle case breaks it yet
+- 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 38: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -1839,11 +1839,10 @@ impl<'a> SemaphoreSignalInfo<'a> {
 
 The rules are on [`VkSemaphoreTypeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreTypeCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {
