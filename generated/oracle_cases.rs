@@ -608,6 +608,19 @@ oracle_cases! {
             v.new_layout = vk::ImageLayout::from_raw(1000314001);
         },
     },
+    cmd_begin_rendering: args::CmdBeginRendering {
+        "VUID-vkCmdBeginRendering-dynamicRendering-06446" on bare => |v, l, o| {
+        },
+    },
+    rendering_info: vk::RenderingInfo<'_> {
+        "VUID-VkRenderingInfo-viewMask-06069" => |v, l, o| {
+            v.view_mask = 0;
+            v.layer_count = 0;
+        },
+        "VUID-VkRenderingInfo-multiview-06127" => |v, l, o| {
+            v.view_mask = 1;
+        },
+    },
     attachment_description: vk::AttachmentDescription {
         "VUID-VkAttachmentDescription-format-06699" => |v, l, o| {
             v.format = vk::Format::from_raw(37);
@@ -923,6 +936,10 @@ oracle_cases! {
             v.query_count = 0;
         },
     },
+    reset_query_pool: args::ResetQueryPool {
+        "VUID-vkResetQueryPool-None-02665" on bare => |v, l, o| {
+        },
+    },
     cmd_copy_query_pool_results: args::CmdCopyQueryPoolResults {
         "VUID-vkCmdCopyQueryPoolResults-dstOffset-00819" => |v, l, o| {
             v.dst_offset = o.dst_buffer.size as _;
@@ -958,6 +975,30 @@ oracle_cases! {
         },
         "VUID-vkCmdClearColorImage-imageLayout-00005" => |v, l, o| {
             v.image_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    cmd_clear_depth_stencil_image: args::CmdClearDepthStencilImage {
+        "VUID-vkCmdClearDepthStencilImage-image-00010" => |v, l, o| {
+            o.image.bind = false;
+        },
+    },
+    cmd_clear_attachments: args::CmdClearAttachments {
+        "VUID-vkCmdClearAttachments-layerCount-01934" => |v, l, o| {
+            o.clear_rect.layer_count = 0;
+        },
+    },
+    clear_attachment: vk::ClearAttachment {
+        "VUID-VkClearAttachment-aspectMask-00019" => |v, l, o| {
+            v.aspect_mask |= vk::ImageAspectFlags::from_raw(0x1);
+            v.aspect_mask |= vk::ImageAspectFlags::from_raw(0x2);
+        },
+        "VUID-VkClearAttachment-aspectMask-00020" => |v, l, o| {
+            v.aspect_mask |= vk::ImageAspectFlags::from_raw(0x8);
+        },
+    },
+    clear_depth_stencil_value: vk::ClearDepthStencilValue {
+        "VUID-VkClearDepthStencilValue-depth-02506" => |v, l, o| {
+            v.depth = 2.0;
         },
     },
     copy_buffer_info2: vk::CopyBufferInfo2<'_> {

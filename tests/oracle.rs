@@ -45,6 +45,7 @@ struct BufferSpec {
 /// How a fixture makes an image a rule names.
 #[derive(Clone, Copy)]
 struct ImageSpec {
+    format: vk::Format,
     extent: vk::Extent3D,
     usage: vk::ImageUsageFlags,
     samples: vk::SampleCountFlags,
@@ -77,6 +78,7 @@ struct Objects {
     image_subresource_range: vk::ImageSubresourceRange,
     attachment_reference_color_attachments: vk::AttachmentReference,
     attachment_reference2_color_attachments: vk::AttachmentReference2<'static>,
+    clear_rect: vk::ClearRect,
 }
 
 impl Default for Objects {
@@ -90,6 +92,7 @@ impl Default for Objects {
             bind: true,
         };
         let image = ImageSpec {
+            format: vk::Format::R8G8B8A8_UNORM,
             extent: EXTENT,
             usage: vk::ImageUsageFlags::TRANSFER_SRC
                 | vk::ImageUsageFlags::TRANSFER_DST
@@ -156,6 +159,17 @@ impl Default for Objects {
             attachment_reference2_color_attachments: vk::AttachmentReference2::default()
                 .attachment(0)
                 .layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL),
+            clear_rect: vk::ClearRect {
+                rect: vk::Rect2D {
+                    offset: vk::Offset2D::default(),
+                    extent: vk::Extent2D {
+                        width: 4,
+                        height: 4,
+                    },
+                },
+                base_array_layer: 0,
+                layer_count: 1,
+            },
         }
     }
 }
@@ -173,14 +187,14 @@ fn make_buffer(s: &Setup, spec: &BufferSpec) -> (tuff::Buffer, Option<tuff::Devi
     }
 }
 
-/// A 2D RGBA8 image as `spec` says, with device memory bound unless it says not.
+/// A 2D image as `spec` says, with device memory bound unless it says not.
 fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceMemory>) {
     let d = &s.device;
     let image = unsafe {
         d.create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
+                .format(spec.format)
                 .extent(spec.extent)
                 .mip_levels(spec.mip_levels)
                 .array_layers(spec.array_layers)
@@ -918,6 +932,12 @@ mod args {
     }
     pub type CmdDrawIndexedIndirectCount = CmdDrawIndirectCount;
     pub struct CmdPipelineBarrier2;
+    pub struct CmdClearAttachments;
+    pub struct CmdClearDepthStencilImage {
+        pub image_layout: vk::ImageLayout,
+    }
+    pub struct ResetQueryPool;
+    pub struct CmdBeginRendering;
     pub type CmdSetEvent2 = CmdPipelineBarrier2;
     pub type CmdWaitEvents2 = CmdPipelineBarrier2;
     pub struct CmdWriteTimestamp2 {
@@ -1724,24 +1744,26 @@ fn draw(
             rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
                 .expect("push");
             call(&mut rec);
-            let _ = rec.cmd_end_render_pass().end();
+            rec.cmd_end_render_pass().end()
         };
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut safe = Some(safe);
     let mut result = Ok(());
-    inside(&mut cb, &mut |rec| {
+    let ended = inside(&mut cb, &mut |rec| {
         if let Some(f) = safe.take() {
             result = f(rec);
         }
     });
+    // A command that returns nothing leaves its refusal for `end`.
+    let result = result.and(ended);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut unchecked = Some(unchecked);
     let layer = under_layer(s, || {
-        inside(&mut cb, &mut |rec| {
+        let _ = inside(&mut cb, &mut |rec| {
             if let Some(f) = unchecked.take() {
                 f(rec);
             }
-        })
+        });
     });
     Outcome {
         safe: result,
@@ -2726,4 +2748,183 @@ fn create_private_data_slot(
         create_private_data_slot_unchecked,
         &info
     )
+}
+
+/// Clears the test target's color attachment inside its render pass.
+fn clear_attachments(s: &Setup, attachment: vk::ClearAttachment, rect: vk::ClearRect) -> Outcome {
+    draw(
+        s,
+        |r| {
+            unsafe { r.cmd_clear_attachments(&[attachment], &[rect]) };
+            Ok(())
+        },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe { r.cmd_clear_attachments_unchecked(&[attachment], &[rect]) },
+    )
+}
+
+const CLEAR_COLOR: vk::ClearAttachment = vk::ClearAttachment {
+    aspect_mask: vk::ImageAspectFlags::COLOR,
+    color_attachment: 0,
+    clear_value: vk::ClearValue {
+        color: vk::ClearColorValue { float32: [0.0; 4] },
+    },
+};
+
+fn cmd_clear_attachments(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdClearAttachments, &Limits, &mut Objects),
+) -> Outcome {
+    let mut o = Objects::default();
+    change(&mut args::CmdClearAttachments, limits, &mut o);
+    clear_attachments(s, CLEAR_COLOR, o.clear_rect)
+}
+
+fn clear_attachment(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::ClearAttachment, &Limits, &mut Objects),
+) -> Outcome {
+    let mut attachment = CLEAR_COLOR;
+    let mut o = Objects::default();
+    change(&mut attachment, limits, &mut o);
+    clear_attachments(s, attachment, o.clear_rect)
+}
+
+/// Clears a depth image's depth aspect to `value`, with the objects' changes.
+fn clear_depth(
+    s: &Setup,
+    a: &args::CmdClearDepthStencilImage,
+    o: &Objects,
+    value: vk::ClearDepthStencilValue,
+) -> Outcome {
+    let (image, _memory) = make_image(s, &o.image);
+    let ranges = [o.image_subresource_range];
+    record(
+        s,
+        |r| unsafe { r.cmd_clear_depth_stencil_image(&image, a.image_layout, &value, &ranges) },
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
+        |r| unsafe {
+            r.cmd_clear_depth_stencil_image_unchecked(&image, a.image_layout, &value, &ranges)
+        },
+    )
+}
+
+/// The objects of a depth clear: a D32 image cleared whole in its depth aspect.
+fn depth_objects() -> Objects {
+    let mut o = Objects::default();
+    o.image.format = vk::Format::D32_SFLOAT;
+    o.image.usage = vk::ImageUsageFlags::TRANSFER_DST;
+    o.image_subresource_range.aspect_mask = vk::ImageAspectFlags::DEPTH;
+    o
+}
+
+fn cmd_clear_depth_stencil_image(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdClearDepthStencilImage, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdClearDepthStencilImage {
+        image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    let mut o = depth_objects();
+    change(&mut a, limits, &mut o);
+    clear_depth(s, &a, &o, vk::ClearDepthStencilValue::default())
+}
+
+fn clear_depth_stencil_value(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::ClearDepthStencilValue, &Limits, &mut Objects),
+) -> Outcome {
+    let a = args::CmdClearDepthStencilImage {
+        image_layout: vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+    };
+    let mut o = depth_objects();
+    let mut value = vk::ClearDepthStencilValue::default();
+    change(&mut value, limits, &mut o);
+    clear_depth(s, &a, &o, value)
+}
+
+fn reset_query_pool(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::ResetQueryPool, &Limits, &mut Objects),
+) -> Outcome {
+    change(&mut args::ResetQueryPool, limits, &mut Objects::default());
+    let pool = timestamps(s);
+    let safe = unsafe { s.device.reset_query_pool(&pool, 0, 1) };
+    let layer = under_layer(s, || {
+        // SAFETY: as in `buffer_create_info`; the pool is used by no command.
+        unsafe { s.device.reset_query_pool_unchecked(&pool, 0, 1) };
+    });
+    Outcome { safe, layer }
+}
+
+/// Begins and ends dynamic rendering to the test target's image.
+fn rendering(s: &Setup, edit: &dyn Fn(&mut vk::RenderingInfo<'_>)) -> Outcome {
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let color = [tuff::RenderingAttachmentInfo::new()
+        .image_view(Some(&target.view))
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)];
+    let mut info = tuff::RenderingInfo::new()
+        .render_area(vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 4,
+                height: 4,
+            },
+        })
+        .layer_count(1)
+        .color_attachments(&color);
+    // SAFETY: as in `buffer_create_info`.
+    edit(unsafe { info.raw_values_mut() });
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let rec = unsafe { rec.cmd_begin_rendering(&info) };
+    let safe = rec.cmd_end_rendering().end();
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut layer = Vec::new();
+    let mut rec = Some(rec);
+    let said = under_layer(s, || {
+        // SAFETY: as in `buffer_create_info`; the command buffer is never submitted,
+        // and is dropped unended (the layer may have skipped the begin).
+        let inside = unsafe {
+            rec.take()
+                .expect("recorder")
+                .cmd_begin_rendering_unchecked(&info)
+        };
+        drop(inside);
+    });
+    layer.extend(said);
+    Outcome { safe, layer }
+}
+
+fn cmd_begin_rendering(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdBeginRendering, &Limits, &mut Objects),
+) -> Outcome {
+    change(
+        &mut args::CmdBeginRendering,
+        limits,
+        &mut Objects::default(),
+    );
+    rendering(s, &|_| {})
+}
+
+fn rendering_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::RenderingInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    rendering(s, &|info| change(info, limits, &mut Objects::default()))
 }

@@ -153,11 +153,13 @@ fn setup_full(
     // A typed pNext chain: only structs that extend VkDeviceCreateInfo are accepted.
     let mut features13 = tuff::PhysicalDeviceVulkan13Features::new()
         .private_data(vk::TRUE)
-        .synchronization2(vk::TRUE);
+        .synchronization2(vk::TRUE)
+        .dynamic_rendering(vk::TRUE);
     let mut features12 = tuff::PhysicalDeviceVulkan12Features::new()
         .imageless_framebuffer(vk::TRUE)
         .timeline_semaphore(vk::TRUE)
-        .draw_indirect_count(vk::TRUE);
+        .draw_indirect_count(vk::TRUE)
+        .host_query_reset(vk::TRUE);
     let device_exts = match wsi {
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],

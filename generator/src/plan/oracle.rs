@@ -88,6 +88,13 @@ pub const FIXTURES: &[&str] = &[
     "vkCmdWaitEvents2",
     "vkCmdWriteTimestamp2",
     "vkCreatePrivateDataSlot",
+    "vkCmdClearAttachments",
+    "VkClearAttachment",
+    "vkCmdClearDepthStencilImage",
+    "VkClearDepthStencilValue",
+    "vkResetQueryPool",
+    "vkCmdBeginRendering",
+    "VkRenderingInfo",
 ];
 
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
@@ -156,6 +163,8 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkSubpassDependency2-dependencyFlags-03090", "a view-local dependency in a render pass without multiview also breaks `VkRenderPassCreateInfo2-viewMask-03059`, which the layer reports instead"),
     ("VUID-VkBufferViewCreateInfo-offset-00931", "a range past the buffer's end by less than a texel also breaks `range-00929` (a whole number of texels), and an offset past it breaks the offset's alignment"),
     ("VUID-vkCmdClearColorImage-pRanges-01692", RANGE_BASE),
+    ("VUID-vkCmdClearDepthStencilImage-pRanges-01694", RANGE_BASE),
+    ("VUID-vkCmdClearDepthStencilImage-pRanges-01695", RANGE_BASE),
     ("VUID-vkCmdClearColorImage-pRanges-01693", RANGE_BASE),
     ("VUID-VkAttachmentDescription-format-03286", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription-format-03287", DEPTH_LAYOUTS),
@@ -417,13 +426,16 @@ fn mask(bits: &[Value]) -> u64 {
 
 /// The core features the fixtures' device enables (`tests/common/tuff_setup.rs`):
 /// the tests record `*2` barriers, imageless framebuffers, timeline semaphores,
-/// private data and indirect draws with a count. It enables no Vulkan 1.0 feature.
+/// private data, indirect draws with a count, host query resets and dynamic
+/// rendering. It enables no Vulkan 1.0 feature.
 pub const FIXTURE_FEATURES: &[&str] = &[
     "privateData",
     "synchronization2",
     "imagelessFramebuffer",
     "timelineSemaphore",
     "drawIndirectCount",
+    "hostQueryReset",
+    "dynamicRendering",
 ];
 
 /// Changes that make a condition hold: a feature is on or off as the fixtures'

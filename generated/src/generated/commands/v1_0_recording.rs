@@ -1834,6 +1834,7 @@ The caller upholds these 15 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdClearDepthStencilImage-image-00010`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1846,9 +1847,9 @@ The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://regist
 - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
+Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 15: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_clear_depth_stencil_image(
@@ -3169,6 +3170,7 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearAttachments.html). Settled by the wrappers:
 
+- `VUID-vkCmdClearAttachments-layerCount-01934`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdClearAttachments-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearAttachments-pAttachments-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdClearAttachments-pRects-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -3179,10 +3181,7 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 - `VUID-vkCmdClearAttachments-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 9: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_clear_attachments(
         &mut self,

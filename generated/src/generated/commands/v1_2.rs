@@ -336,14 +336,12 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
 
+- `VUID-vkResetQueryPool-None-02665`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn reset_query_pool(
         &self,

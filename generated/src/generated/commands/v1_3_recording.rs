@@ -72,6 +72,7 @@ The caller upholds these 58 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html). Settled by the wrappers:
 
+- `VUID-vkCmdBeginRendering-dynamicRendering-06446`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkCmdBeginRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRendering-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -79,10 +80,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_begin_rendering<'a>(
         mut self,

@@ -2084,6 +2084,8 @@ impl<'a> RenderingAttachmentInfo<'a> {
 
 The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingInfo.html). Settled by the wrappers:
 
+- `VUID-VkRenderingInfo-viewMask-06069`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkRenderingInfo-multiview-06127`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderingInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderingInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2092,10 +2094,7 @@ The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.o
 - `VUID-VkRenderingInfo-pDepthAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderingInfo-pStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 69.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 67: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 67 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderingInfo<'a> {
