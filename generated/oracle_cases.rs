@@ -646,6 +646,14 @@ oracle_cases! {
             v.format = vk::Format::from_raw(130);
             v.final_layout = vk::ImageLayout::from_raw(2);
         },
+        "VUID-VkAttachmentDescription-format-03292" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(127);
+            v.initial_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription-format-03293" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(127);
+            v.final_layout = vk::ImageLayout::from_raw(1000241000);
+        },
         "VUID-VkAttachmentDescription-format-06487" => |v, l, o| {
             v.format = vk::Format::from_raw(37);
             v.initial_layout = vk::ImageLayout::from_raw(1000117001);
@@ -660,6 +668,22 @@ oracle_cases! {
         "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03285" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(1000241000);
         },
+        "VUID-VkAttachmentDescription-format-03286" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription-format-03287" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription-format-03290" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(126);
+            v.initial_layout = vk::ImageLayout::from_raw(1000241002);
+        },
+        "VUID-VkAttachmentDescription-format-03291" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(126);
+            v.final_layout = vk::ImageLayout::from_raw(1000241002);
+        },
     },
     subpass_description: vk::SubpassDescription<'_> {
         "VUID-VkSubpassDescription-attachment-06913" => |v, l, o| {
@@ -667,6 +691,9 @@ oracle_cases! {
         },
         "VUID-VkSubpassDescription-attachment-06916" => |v, l, o| {
             o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(1000117001);
+        },
+        "VUID-VkSubpassDescription-attachment-06919" on full => |v, l, o| {
+            o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(1000241000);
         },
         "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
@@ -734,6 +761,22 @@ oracle_cases! {
         "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285" => |v, l, o| {
             v.final_layout = vk::ImageLayout::from_raw(1000241000);
         },
+        "VUID-VkAttachmentDescription2-format-03286" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.initial_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription2-format-03287" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(37);
+            v.final_layout = vk::ImageLayout::from_raw(1000241000);
+        },
+        "VUID-VkAttachmentDescription2-format-03290" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(126);
+            v.initial_layout = vk::ImageLayout::from_raw(1000241002);
+        },
+        "VUID-VkAttachmentDescription2-format-03291" on full => |v, l, o| {
+            v.format = vk::Format::from_raw(126);
+            v.final_layout = vk::ImageLayout::from_raw(1000241002);
+        },
     },
     subpass_description2: vk::SubpassDescription2<'_> {
         "VUID-VkSubpassDescription2-attachment-06913" => |v, l, o| {
@@ -741,6 +784,9 @@ oracle_cases! {
         },
         "VUID-VkSubpassDescription2-attachment-06916" => |v, l, o| {
             o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(1000117001);
+        },
+        "VUID-VkSubpassDescription2-attachment-06919" on full => |v, l, o| {
+            o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(1000241000);
         },
         "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
@@ -864,6 +910,10 @@ oracle_cases! {
             v.view_type = vk::ImageViewType::from_raw(3);
             v.subresource_range.layer_count = 7;
         },
+        "VUID-VkImageViewCreateInfo-viewType-02961" on full => |v, l, o| {
+            v.view_type = vk::ImageViewType::from_raw(6);
+            v.subresource_range.layer_count += 1;
+        },
     },
     image_subresource_range: vk::ImageSubresourceRange {
         "VUID-VkImageSubresourceRange-levelCount-01720" => |v, l, o| {
@@ -883,9 +933,17 @@ oracle_cases! {
         "VUID-VkSamplerCreateInfo-anisotropyEnable-01070" => |v, l, o| {
             v.anisotropy_enable = 1;
         },
+        "VUID-VkSamplerCreateInfo-anisotropyEnable-01071" on full => |v, l, o| {
+            v.anisotropy_enable = 1;
+            v.max_anisotropy = (l.max_sampler_anisotropy as f64 + 1.0) as _;
+        },
         "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073" => |v, l, o| {
             v.unnormalized_coordinates = 1;
             v.mipmap_mode = vk::SamplerMipmapMode::from_raw(1);
+        },
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076" on full => |v, l, o| {
+            v.unnormalized_coordinates = 1;
+            v.anisotropy_enable = 1;
         },
         "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077" => |v, l, o| {
             v.unnormalized_coordinates = 1;

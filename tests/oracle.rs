@@ -210,10 +210,15 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
     (image, Some(memory))
 }
 
-/// A case: the rule, whether it runs on the bare device (one that enables none of
-/// the features `setup` enables, for rules that apply with one of them off), and the
-/// run of its fixture with its change.
-type Case = (&'static str, bool, Box<dyn Fn(&Setup, &Limits) -> Outcome>);
+/// A case: the rule, the device it runs on (`""` the fixtures' device; `bare`, one
+/// that enables no feature, for rules that apply with one of `setup`'s features
+/// off; `full`, one that enables every feature the physical device has, for changes
+/// that need one `setup` leaves off), and the run of its fixture with its change.
+type Case = (
+    &'static str,
+    &'static str,
+    Box<dyn Fn(&Setup, &Limits) -> Outcome>,
+);
 
 macro_rules! oracle_cases {
     ($($fixture:ident: $ty:ty { $($vuid:literal $(on $device:ident)? => |$v:ident, $l:ident, $o:ident| $body:block),* $(,)? }),* $(,)?) => {
@@ -222,7 +227,7 @@ macro_rules! oracle_cases {
             vec![$(
                 (
                     stringify!($fixture),
-                    false,
+                    "",
                     Box::new(|s: &Setup, limits: &Limits| {
                         $fixture(s, limits, &|_: &mut $ty, _: &Limits, _: &mut Objects| {})
                     }),
@@ -235,7 +240,7 @@ macro_rules! oracle_cases {
             vec![$($(
                 (
                     $vuid,
-                    !stringify!($($device)?).is_empty(),
+                    stringify!($($device)?),
                     Box::new(|s: &Setup, limits: &Limits| {
                         $fixture(s, limits, &|$v: &mut $ty, $l: &Limits, $o: &mut Objects| {
                             let _ = (&$v, &$l, &$o);
@@ -2090,17 +2095,23 @@ fn every_recognised_rule_is_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let bare = tuff_setup::setup_bare(true);
+    let full = tuff_setup::setup_full_features(true);
     let limits = s.physical.get_physical_device_properties().limits;
     // `setup` enables no Vulkan 1.0 feature, which the cases of rules that apply
     // when a feature is off rely on; `setup_bare` enables none at all.
     let cases = cases();
     assert!(!cases.is_empty(), "generated/oracle_cases.rs has no case");
     let (mut by_layer, mut alone, mut failures) = (0, Vec::new(), Vec::new());
-    for (vuid, on_bare, run) in &cases {
+    for (vuid, device, run) in &cases {
         if std::env::var_os("ORACLE_TRACE").is_some() {
             eprintln!("oracle: {vuid}");
         }
-        let out = run(if *on_bare { &bare } else { &s }, &limits);
+        let device = match *device {
+            "bare" => &bare,
+            "full" => &full,
+            _ => &s,
+        };
+        let out = run(device, &limits);
         match &out.safe {
             Err(tuff::Error::Validation { vuid: got, .. }) if got == vuid => {}
             other => {

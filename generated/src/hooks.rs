@@ -5047,18 +5047,19 @@ pub(crate) fn create_buffer_checks(
             )?;
         }
     }
-    if let Some(p13) = vulkan13_properties(device) {
-        if raw.size > p13.max_buffer_size {
-            refuse(
-                "VUID-VkBufferCreateInfo-size-06409",
-                format!(
-                    "`size` must be less than or equal to \
-                     VkPhysicalDeviceMaintenance4Properties::`maxBufferSize` (`size` = {}, \
-                     maxBufferSize = {})",
-                    raw.size, p13.max_buffer_size
-                ),
-            )?;
-        }
+    let max = device
+        .live()
+        .max_buffer_size(|| vulkan13_properties(device).map(|p| p.max_buffer_size));
+    if let Some(max) = max.filter(|&m| raw.size > m) {
+        refuse(
+            "VUID-VkBufferCreateInfo-size-06409",
+            format!(
+                "`size` must be less than or equal to \
+                 VkPhysicalDeviceMaintenance4Properties::`maxBufferSize` (`size` = {}, \
+                 maxBufferSize = {max})",
+                raw.size
+            ),
+        )?;
     }
     if raw.sharing_mode == vk::SharingMode::CONCURRENT {
         // SAFETY: the safe setter stored the indices with their count.

@@ -92,6 +92,8 @@ pub(crate) struct Live {
     sets_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// The physical device's limits, read once.
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
+    /// The physical device's `maxBufferSize`, read once (none below Vulkan 1.3).
+    max_buffer_size: std::sync::OnceLock<Option<u64>>,
     /// The core features the device was created with.
     features: std::sync::OnceLock<crate::validation::Features>,
     /// The queue families the device was created with, each with its queue count
@@ -256,6 +258,7 @@ impl Default for Live {
             set_layouts: Vutex::new(HashMap::default()),
             sets_layouts: Vutex::new(HashMap::default()),
             limits: std::sync::OnceLock::new(),
+            max_buffer_size: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
             queue_infos: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::default()),
@@ -540,6 +543,11 @@ impl Live {
         read: impl FnOnce() -> vk::PhysicalDeviceLimits,
     ) -> &vk::PhysicalDeviceLimits {
         self.limits.get_or_init(read)
+    }
+
+    /// The physical device's `maxBufferSize`, read from `read` the first time.
+    pub(crate) fn max_buffer_size(&self, read: impl FnOnce() -> Option<u64>) -> Option<u64> {
+        *self.max_buffer_size.get_or_init(read)
     }
 
     /// Records a new buffer's creation parameters.

@@ -6,7 +6,7 @@
 //! checks; that one argument covers every such block in this file.
 #![allow(dead_code)]
 
-use tuff::vk;
+use tuff::{vk, Handle as _};
 
 /// What a wrapper test needs. Field order is drop order: the messenger goes last but
 /// one, so it hears everything the device's children report.
@@ -59,6 +59,18 @@ pub fn setup_bare(validation: bool) -> Setup {
     )
 }
 
+/// [`setup`], on a device that enables every feature of Vulkan 1.0 to 1.3 the
+/// physical device has, for changes that need one `setup` leaves off.
+#[allow(dead_code)]
+pub fn setup_full_features(validation: bool) -> Setup {
+    setup_full(
+        validation,
+        Wsi::None,
+        vk::PhysicalDeviceFeatures::default(),
+        Chain::All,
+    )
+}
+
 /// [`setup`], with these Vulkan 1.0 features enabled.
 pub fn setup_with_features(validation: bool, features: vk::PhysicalDeviceFeatures) -> Setup {
     setup_full(validation, Wsi::None, features, Chain::Core)
@@ -84,6 +96,8 @@ enum Chain {
     Extensions,
     /// None: no such feature is enabled.
     None,
+    /// Every feature the physical device has, Vulkan 1.0 to 1.3.
+    All,
 }
 
 fn setup_full(
@@ -170,6 +184,45 @@ fn setup_full(
         tuff::PhysicalDeviceImagelessFramebufferFeatures::new().imageless_framebuffer(vk::TRUE);
     let mut timeline =
         tuff::PhysicalDeviceTimelineSemaphoreFeatures::new().timeline_semaphore(vk::TRUE);
+    // Every feature the physical device has, for `Chain::All`.
+    let mut all13 = tuff::PhysicalDeviceVulkan13Features::new();
+    let mut all12 = tuff::PhysicalDeviceVulkan12Features::new();
+    let mut all11 = tuff::PhysicalDeviceVulkan11Features::new();
+    let features = if chain == Chain::All {
+        let mut q13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut q12 = vk::PhysicalDeviceVulkan12Features::default();
+        let mut q11 = vk::PhysicalDeviceVulkan11Features::default();
+        let mut f2 = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut q11)
+            .push_next(&mut q12)
+            .push_next(&mut q13);
+        // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+        unsafe {
+            instance
+                .fns()
+                .get_physical_device_features2(physical.raw(), &mut f2)
+        };
+        let f10 = f2.features;
+        let null = std::ptr::null_mut();
+        // SAFETY: whole structs of the same types, with no chain of their own.
+        unsafe {
+            *all13.raw_values_mut() = vk::PhysicalDeviceVulkan13Features {
+                p_next: null,
+                ..q13
+            };
+            *all12.raw_values_mut() = vk::PhysicalDeviceVulkan12Features {
+                p_next: null,
+                ..q12
+            };
+            *all11.raw_values_mut() = vk::PhysicalDeviceVulkan11Features {
+                p_next: null,
+                ..q11
+            };
+        }
+        f10
+    } else {
+        features
+    };
     let info = tuff::DeviceCreateInfo::new()
         .queue_create_infos(&queues)
         .enabled_extension_names(&device_exts)
@@ -182,6 +235,10 @@ fn setup_full(
             .push_next(&mut timeline),
         Chain::Core => info.push_next(&mut features13).push_next(&mut features12),
         Chain::None => info,
+        Chain::All => info
+            .push_next(&mut all13)
+            .push_next(&mut all12)
+            .push_next(&mut all11),
     };
     let device = unsafe { physical.create_device(&info) }.expect("create device");
     let queue = device.get_device_queue(family, 0).expect("queue");

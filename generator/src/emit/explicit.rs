@@ -530,7 +530,11 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
         };
         let _ = writeln!(s, "    {fixture}: {ty} {{");
         for c in cases.iter().filter(|c| c.item == item) {
-            let on = if c.bare { " on bare" } else { "" };
+            let on = match c.device {
+                crate::plan::oracle::OnDevice::Fixture => "",
+                crate::plan::oracle::OnDevice::Bare => " on bare",
+                crate::plan::oracle::OnDevice::Full => " on full",
+            };
             let _ = writeln!(s, "        {:?}{on} => |v, l, o| {{", c.vuid);
             let path = |m: &str| c.place(m);
             for a in &c.assigns {

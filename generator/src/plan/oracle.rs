@@ -97,6 +97,72 @@ pub const FIXTURES: &[&str] = &[
     "VkRenderingInfo",
 ];
 
+/// Rules whose case runs on the full device (every feature the physical device has
+/// enabled): on the fixtures' device, its change also breaks a rule of a feature
+/// that device leaves off. Each with the feature.
+pub const ON_FULL: &[(&str, &str)] = &[
+    (
+        "VUID-VkSamplerCreateInfo-anisotropyEnable-01071",
+        "samplerAnisotropy",
+    ),
+    (
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076",
+        "samplerAnisotropy",
+    ),
+    (
+        "VUID-VkImageViewCreateInfo-viewType-02961",
+        "imageCubeArray",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03286",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03287",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03290",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03291",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03292",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-03293",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription2-format-03286",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription2-format-03287",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription2-format-03290",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkAttachmentDescription2-format-03291",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkSubpassDescription-attachment-06919",
+        "separateDepthStencilLayouts",
+    ),
+    (
+        "VUID-VkSubpassDescription2-attachment-06919",
+        "separateDepthStencilLayouts",
+    ),
+];
+
 /// Rules of fixture structs whose case the IR cannot build as one change, with why.
 pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkBufferCreateInfo-flags-00916", SPARSE),
@@ -118,7 +184,6 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkImageCreateInfo-extent-00946", "a depth of 0 also breaks `imageType-00957` (a 2D image has depth 1), and the fixture's image is 2D"),
     ("VUID-VkImageCreateInfo-flags-00949", ONE_D),
     ("VUID-VkImageCreateInfo-flags-00950", ONE_D),
-    ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
     ("VUID-VkPushConstantRange-size-00298", "a size past the limit by one is not a multiple of 4 (`size-00297`), and an offset past it by one not one either (`offset-00295`)"),
     ("VUID-VkImageSubresourceLayers-aspectMask-00168", "the metadata aspect is not an aspect of the fixture's color image, which the copy's aspect rule (`aspectMask-00142`) refuses first"),
     ("VUID-VkViewport-y-01776", "a `y` past the upper bound puts `y + height` past it too (`y-01233`), which is checked first"),
@@ -130,8 +195,6 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkFramebufferCreateInfo-width-00886", PAST_ATTACHMENT),
     ("VUID-VkFramebufferCreateInfo-height-00888", PAST_ATTACHMENT),
     ("VUID-VkFramebufferCreateInfo-layers-00890", PAST_ATTACHMENT),
-    ("VUID-VkImageViewCreateInfo-viewType-02961", "a cube-array view also breaks `viewType-01004` on a device without `imageCubeArray`, which the fixtures' device does not enable"),
-    ("VUID-VkSamplerCreateInfo-anisotropyEnable-01071", "enabling anisotropy also breaks `anisotropyEnable-01070` on a device without `samplerAnisotropy`"),
     ("VUID-VkImageViewCreateInfo-viewType-01004", "a cube-array view of the fixture's one layer also breaks `viewType-02961` (a multiple of six layers)"),
     ("VUID-VkImageViewCreateInfo-subresourceRange-01478", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01718` as well"),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01486", "a base level at the image's level count also puts base plus count past it, which breaks `subresourceRange-01724` as well"),
@@ -156,8 +219,6 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-VkSubpassDescription2-attachment-06920", NO_RESOLVE),
     ("VUID-VkImageMemoryBarrier2-subresourceRange-01725", LAYER_THROWS),
     ("VUID-VkImageMemoryBarrier-subresourceRange-01725", LAYER_THROWS),
-    ("VUID-VkSubpassDescription-attachment-06919", SEPARATE_LAYOUTS),
-    ("VUID-VkSubpassDescription2-attachment-06919", SEPARATE_LAYOUTS),
     ("VUID-VkSubpassDependency-dependencyFlags-02521", FROM_EXTERNAL),
     ("VUID-VkSubpassDependency2-dependencyFlags-03091", FROM_EXTERNAL),
     ("VUID-VkSubpassDependency2-dependencyFlags-03090", "a view-local dependency in a render pass without multiview also breaks `VkRenderPassCreateInfo2-viewMask-03059`, which the layer reports instead"),
@@ -166,17 +227,7 @@ pub const SKIP: &[(&str, &str)] = &[
     ("VUID-vkCmdClearDepthStencilImage-pRanges-01694", RANGE_BASE),
     ("VUID-vkCmdClearDepthStencilImage-pRanges-01695", RANGE_BASE),
     ("VUID-vkCmdClearColorImage-pRanges-01693", RANGE_BASE),
-    ("VUID-VkAttachmentDescription-format-03286", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription-format-03287", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription-format-03290", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription-format-03291", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription-format-03292", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription-format-03293", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription-format-06700", COLOR_REFERENCE),
-    ("VUID-VkAttachmentDescription2-format-03286", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription2-format-03287", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription2-format-03290", DEPTH_LAYOUTS),
-    ("VUID-VkAttachmentDescription2-format-03291", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription2-format-03292", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription2-format-03293", DEPTH_LAYOUTS),
     ("VUID-VkAttachmentDescription2-format-06700", COLOR_REFERENCE),
@@ -188,7 +239,6 @@ pub const SKIP: &[(&str, &str)] = &[
 const BARRIER2_BARE: &str = "on a device without synchronization2, the barrier's command (`vkCmdPipelineBarrier2-synchronization2-03848`) is refused first";
 const LAYER_RENAMES: &str = "the 1.3.239 layer reports this region of `vkCmdCopyImageToBuffer2` under `vkCmdCopyImageToBuffer` VUIDs of other rules (`pRegions-06221`, `06222`, `imageOffset-00200`), so its verdict cannot be told apart";
 const LAYER_THROWS: &str = "the 1.3.239 validation layer throws a C++ exception (which aborts the test) on a barrier whose layers run past the image's";
-const SEPARATE_LAYOUTS: &str = "the first layout the rule forbids is a depth-only layout, which without `separateDepthStencilLayouts` breaks `VkAttachmentReference2-separateDepthStencilLayouts-03313`, and the layer reports that instead";
 const FROM_EXTERNAL: &str = "the fixture's dependency comes from `VK_SUBPASS_EXTERNAL`, so the view-local flag breaks the rule on `srcSubpass` first";
 const RANGE_BASE: &str = "a range is an element, so its case moves the base past the end, which breaks the rule that the base lies inside (`baseMipLevel-01470`, `baseArrayLayer-01472`) too";
 const DEPTH_LAYOUTS: &str = "the layouts the rule forbids are depth-only or stencil-only ones, which without `separateDepthStencilLayouts` (off on the fixtures' device) break `separateDepthStencilLayouts-03284` or `03285` too";
@@ -303,9 +353,21 @@ pub struct Case {
     /// `Objects` that holds the fixture's one element (`image_copy` for
     /// `VkImageCopy`), which element paths are written to.
     pub element: Option<String>,
-    /// The case runs on a device that enables none of [`FIXTURE_FEATURES`]: its rule
-    /// applies only with one of them off.
-    pub bare: bool,
+    /// The device the case runs on.
+    pub device: OnDevice,
+}
+
+/// The device a case runs on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OnDevice {
+    /// The fixtures' device, with [`FIXTURE_FEATURES`] enabled.
+    Fixture,
+    /// One that enables no feature: the rule applies only with one of
+    /// [`FIXTURE_FEATURES`] off.
+    Bare,
+    /// One that enables every feature the physical device has: the rule applies
+    /// only with a feature on that the fixtures' device leaves off.
+    Full,
 }
 
 impl Case {
@@ -392,14 +454,10 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         make_true(&at, p, &mut assigns)?;
     }
     make_false(&at, &r.check.must, &mut assigns)?;
-    // A feature of the fixtures' device that the rule needs off (a condition that it
-    // is not enabled, or a requirement that it is) moves the case to the bare
-    // device; one it needs on keeps it off the bare device.
-    let off = |p: &Pred, enabled: bool| matches!(p, Pred::Feature { name, enabled: e, .. } if *e == enabled && FIXTURE_FEATURES.contains(&name.as_str()));
-    let bare = r.check.when.iter().any(|p| off(p, false)) || off(&r.check.must, true);
-    if bare && r.check.when.iter().any(|p| off(p, true)) {
-        return None;
-    }
+    let device = match device_for(r)? {
+        OnDevice::Fixture if ON_FULL.iter().any(|(v, _)| *v == r.vuid) => OnDevice::Full,
+        d => d,
+    };
     // A count that goes with a pointer member is not the fixture's to change: the
     // safe struct's setters keep the two together.
     let counts: Vec<&str> = fields
@@ -416,8 +474,38 @@ fn case(model: &Model, r: &Recognised) -> Option<Case> {
         on_command: r.on_command,
         assigns,
         element: at.element,
-        bare,
+        device,
     })
+}
+
+/// The device a rule's case needs, from the features its conditions and
+/// requirement name: the bare one for a feature of the fixtures' device it needs
+/// off, the full one for another feature it needs on, or `None` where no device
+/// has what it needs.
+fn device_for(r: &Recognised) -> Option<OnDevice> {
+    let fixture = |name: &str| FIXTURE_FEATURES.contains(&name);
+    // (the feature's name, whether the case needs it on)
+    let mut needs: Vec<(&str, bool)> = r
+        .check
+        .when
+        .iter()
+        .filter_map(|p| match p {
+            Pred::Feature { name, enabled, .. } => Some((name.as_str(), *enabled)),
+            _ => None,
+        })
+        .collect();
+    if let Pred::Feature { name, enabled, .. } = &r.check.must {
+        needs.push((name.as_str(), !*enabled));
+    }
+    let off_of_fixture = needs.iter().any(|&(n, on)| !on && fixture(n));
+    let on_of_fixture = needs.iter().any(|&(n, on)| on && fixture(n));
+    let on_other = needs.iter().any(|&(n, on)| on && !fixture(n));
+    let off_other = needs.iter().any(|&(n, on)| !on && !fixture(n));
+    match (on_other, off_of_fixture) {
+        (true, _) => (!off_other && !off_of_fixture).then_some(OnDevice::Full),
+        (false, true) => (!on_of_fixture).then_some(OnDevice::Bare),
+        (false, false) => Some(OnDevice::Fixture),
+    }
 }
 
 fn mask(bits: &[Value]) -> u64 {
@@ -442,10 +530,8 @@ pub const FIXTURE_FEATURES: &[&str] = &[
 /// device has it, or the case is not made.
 fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
     match p {
-        // Off where the fixtures' device lacks it, or on the bare device (`case`).
-        Pred::Feature { name, enabled, .. } => {
-            (!*enabled || FIXTURE_FEATURES.contains(&name.as_str())).then_some(())?
-        }
+        // The device the case runs on has it as the condition asks (`device_for`).
+        Pred::Feature { .. } => {}
         // A format of the kind: one each kind's fixtures can use.
         Pred::FormatIs { member, class } => out.push(Assign::Enum {
             member: member.clone(),

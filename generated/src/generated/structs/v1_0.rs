@@ -1729,6 +1729,7 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-subresourceRange-01718`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageViewCreateInfo-image-01020`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageViewCreateInfo-viewType-02960`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageViewCreateInfo-viewType-02961`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1739,9 +1740,9 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageViewCreateInfo-subresourceRange-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 87.
+Left to the caller (listed one by one in the crate's `validation.json`): 86.
 
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 84: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -2871,7 +2872,9 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-mipLodBias-01069`: dynamic (checks the rule as written (recogniser: absolute value at most a limit))
 - `VUID-VkSamplerCreateInfo-maxLod-01973`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkSamplerCreateInfo-anisotropyEnable-01070`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: dynamic (checks the rule as written (recogniser: number between two bounds, inclusive))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -2884,10 +2887,7 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 37.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 35: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {
@@ -3421,11 +3421,12 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription-pipelineBindPoint-00844`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 35.
+Left to the caller (listed one by one in the crate's `validation.json`): 34.
 
-- 7: checked by the safe methods in every build, but no oracle case breaks it yet
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 28: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -30,11 +30,12 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-format-06488`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03286`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03287`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03290`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-format-03291`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
-
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 14: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -2044,12 +2045,13 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription2-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-multiview-06558`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 40.
+Left to the caller (listed one by one in the crate's `validation.json`): 39.
 
-- 7: checked by the safe methods in every build, but no oracle case breaks it yet
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 33: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
