@@ -941,6 +941,14 @@ oracle_cases! {
             v.unnormalized_coordinates = 1;
             v.mipmap_mode = vk::SamplerMipmapMode::from_raw(1);
         },
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074" => |v, l, o| {
+            v.unnormalized_coordinates = 1;
+            v.max_lod = 1.0;
+        },
+        "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075" => |v, l, o| {
+            v.unnormalized_coordinates = 1;
+            v.address_mode_v = vk::SamplerAddressMode::from_raw(0);
+        },
         "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076" on full => |v, l, o| {
             v.unnormalized_coordinates = 1;
             v.anisotropy_enable = 1;
@@ -1001,6 +1009,14 @@ oracle_cases! {
     cmd_copy_query_pool_results: args::CmdCopyQueryPoolResults {
         "VUID-vkCmdCopyQueryPoolResults-dstOffset-00819" => |v, l, o| {
             v.dst_offset = o.dst_buffer.size as _;
+        },
+        "VUID-vkCmdCopyQueryPoolResults-flags-00822" => |v, l, o| {
+            v.flags &= !vk::QueryResultFlags::from_raw(0x1);
+            v.stride += 1;
+        },
+        "VUID-vkCmdCopyQueryPoolResults-flags-00823" => |v, l, o| {
+            v.flags |= vk::QueryResultFlags::from_raw(0x1);
+            v.stride += 1;
         },
         "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825" => |v, l, o| {
             o.dst_buffer.usage &= !vk::BufferUsageFlags::from_raw(0x2);

@@ -963,6 +963,8 @@ mod args {
     }
     pub struct CmdCopyQueryPoolResults {
         pub dst_offset: vk::DeviceSize,
+        pub stride: vk::DeviceSize,
+        pub flags: vk::QueryResultFlags,
     }
     pub type CmdResolveImage = CmdCopyImage;
 }
@@ -1958,17 +1960,23 @@ fn cmd_copy_query_pool_results(
     limits: &Limits,
     change: &dyn Fn(&mut args::CmdCopyQueryPoolResults, &Limits, &mut Objects),
 ) -> Outcome {
-    let mut a = args::CmdCopyQueryPoolResults { dst_offset: 0 };
+    let mut a = args::CmdCopyQueryPoolResults {
+        dst_offset: 0,
+        stride: 8,
+        flags: vk::QueryResultFlags::TYPE_64,
+    };
     let mut o = Objects::default();
     change(&mut a, limits, &mut o);
     let (buffer, _memory) = make_buffer(s, &o.dst_buffer);
     let pool = timestamps(s);
-    let flags = vk::QueryResultFlags::TYPE_64;
+    let (stride, flags) = (a.stride, a.flags);
     record(
         s,
         |r| {
             unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
-            unsafe { r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, 8, flags) }
+            unsafe {
+                r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags)
+            }
         },
         |r| {
             unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
@@ -1981,7 +1989,7 @@ fn cmd_copy_query_pool_results(
                     1,
                     &buffer,
                     a.dst_offset,
-                    8,
+                    stride,
                     flags,
                 )
             }

@@ -644,10 +644,7 @@ fn read_rule(input: &Input) -> Option<(&'static str, Check)> {
 fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
     // A requirement that is itself phrased with `If` (`If buffer is non-sparse then
     // it must be bound ...`) is one requirement, with no conditions.
-    if let Some((by, must)) = RECOGNISERS
-        .iter()
-        .find_map(|(name, f)| f(input, input.text).map(|p| (*name, p)))
-    {
+    if let Some((by, must)) = requirement(input, input.text) {
         return Some((by, Vec::new(), must));
     }
     let (conds, req) = match input.text.strip_prefix("If ") {
@@ -675,9 +672,7 @@ fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
         }
         _ => req,
     };
-    let (by, mut must) = RECOGNISERS
-        .iter()
-        .find_map(|(name, f)| f(input, &req).map(|p| (*name, p)))?;
+    let (by, mut must) = requirement(input, &req)?;
     // A requirement never forbids the bits its own condition asks for (`if usage
     // has TRANSIENT, no bits but COLOR ...`: TRANSIENT itself stays allowed).
     if let Pred::NoBit { member, bits } = &mut must {
@@ -695,6 +690,39 @@ fn read_parts(input: &Input) -> Option<(&'static str, Vec<Pred>, Pred)> {
         (!bits.is_empty()).then_some(())?;
     }
     Some((by, when, must))
+}
+
+/// A requirement, as the first recogniser that reads it sees it; or one that names
+/// several subjects (`` `a`, `b` and `c` must not be `X` ``, `` `a` and `b` must
+/// each be either `X` or `Y` ``, `` ... must be multiples of `4` ``), read as the
+/// same requirement of each subject, all of which must hold.
+fn requirement(input: &Input, req: &str) -> Option<(&'static str, Pred)> {
+    if let Some(found) = RECOGNISERS
+        .iter()
+        .find_map(|(name, f)| f(input, req).map(|p| (*name, p)))
+    {
+        return Some(found);
+    }
+    static R: OnceLock<Regex> = OnceLock::new();
+    let r = re(
+        &R,
+        r"^((?:`[\w.]+`, )*`[\w.]+`,? and `[\w.]+`) must (?:each |both )?(.+)$",
+    );
+    let c = whole(r, req)?;
+    let rest =
+        c[1].replacen("be either ", "be ", 1)
+            .replacen("be multiples of ", "be a multiple of ", 1);
+    let mut by = None;
+    let mut all = Vec::new();
+    for subject in names(&c[0]) {
+        let (name, p) = RECOGNISERS.iter().find_map(|(name, f)| {
+            f(input, &format!("`{subject}` must {rest}")).map(|p| (*name, p))
+        })?;
+        (by.is_none() || by == Some(name)).then_some(())?;
+        by = Some(name);
+        all.push(p);
+    }
+    Some((by?, Pred::All(all)))
 }
 
 /// A rule about each element of an array, rewritten as a rule about one element:
@@ -871,6 +899,20 @@ fn condition(input: &Input, text: &str) -> Option<Pred> {
     let text = re(&MEMBER, r"^the (`[\w.]+`) member ").replace(text, "$1 ");
     let text = text.replace(" does not have the value ", " is not ");
     let text = text.as_str();
+    static SET: OnceLock<Regex> = OnceLock::new();
+    let set_in = re(
+        &SET,
+        &format!(r"^({LIST}) (?:is|are) (not )?set in `([\w.]+)`$"),
+    );
+    if let Some(c) = whole(set_in, text) {
+        let bits = flag_list(input, &c[2], &c[0])?;
+        let member = c[2].clone();
+        return Some(if c[1].is_empty() {
+            Pred::AnyBit { member, bits }
+        } else {
+            Pred::NoBit { member, bits }
+        });
+    }
     static R: OnceLock<[Regex; 5]> = OnceLock::new();
     let [feat, incl, excl, is, of_type] = R.get_or_init(|| {
         [
@@ -1201,17 +1243,19 @@ fn compare_req(input: &Input, text: &str) -> Option<Pred> {
     static R: OnceLock<Regex> = OnceLock::new();
     let r = re(
         &R,
-        r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be (greater|less) than (or equal to )?`([\w:.\[\]]+)`$",
+        r"^`([\w.\[\]]+)`(?: \+ `([\w.\[\]]+)`)? must be (greater than|less than|equal to) (or equal to )?`([\w:.\[\]]+)`$",
     );
     let mut c = whole(r, text)?;
     let m = member(input, &c[0])?;
     numeric(&m.type_name).then_some(())?;
     let plus = summand(input, &c.remove(1), m.type_name == "float")?;
     let op = match (c[1].as_str(), c[2].is_empty()) {
-        ("greater", true) => Op::Gt,
-        ("greater", false) => Op::Ge,
-        ("less", true) => Op::Lt,
-        _ => Op::Le,
+        ("greater than", true) => Op::Gt,
+        ("greater than", false) => Op::Ge,
+        ("less than", true) => Op::Lt,
+        ("less than", false) => Op::Le,
+        ("equal to", true) => Op::Eq,
+        _ => return None,
     };
     let rhs = &c[3];
     let limits = input.model.types.get("VkPhysicalDeviceLimits")?;

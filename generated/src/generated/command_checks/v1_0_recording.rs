@@ -2354,6 +2354,46 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
+        for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(src_image.raw())
+                .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && s
+                    .image(dst_image.raw())
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdCopyImage-srcImage-01791",
+                        format!(
+                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.src_subresource.layer_count
+                        ),
+                    ),
+                );
+            }
+        }
+        for (i, e) in regions.iter().enumerate() {
+            if s
+                .image(dst_image.raw())
+                .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && s
+                    .image(src_image.raw())
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
+            {
+                return Err(
+                    fail(
+                        "VUID-vkCmdCopyImage-dstImage-01792",
+                        format!(
+                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.dst_subresource.layer_count
+                        ),
+                    ),
+                );
+            }
+        }
         if !matches!(src_image_layout.as_raw(), 1 | 6) {
             return Err(
                 fail(
@@ -2618,6 +2658,7 @@ impl<'c> Recorder<'c, Outside> {
         query_pool: &QueryPool,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
+        stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -2666,6 +2707,28 @@ impl<'c> Recorder<'c, Outside> {
                     format!(
                         "`dstOffset` must be less than the size of `dstBuffer` (`dstOffset` = {:?})",
                         dst_offset
+                    ),
+                ),
+            );
+        }
+        if (flags.as_raw() & 1) == 0 && (dst_offset % 4 != 0 || stride % 4 != 0) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyQueryPoolResults-flags-00822",
+                    format!(
+                        "If `VK_QUERY_RESULT_64_BIT` is not set in `flags` then `dstOffset` and `stride` must be multiples of `4` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
+                        flags, dst_offset, stride
+                    ),
+                ),
+            );
+        }
+        if (flags.as_raw() & 1) != 0 && (dst_offset % 8 != 0 || stride % 8 != 0) {
+            return Err(
+                fail(
+                    "VUID-vkCmdCopyQueryPoolResults-flags-00823",
+                    format!(
+                        "If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `dstOffset` and `stride` must be multiples of `8` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
+                        flags, dst_offset, stride
                     ),
                 ),
             );

@@ -1878,12 +1878,10 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
 
 # Safety
 
-The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: If `unnormalizedCoordinates` is `VK_TRUE`, `minFilter` and `magFilter` must be equal
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`
 - `VUID-VkSamplerCreateInfo-addressModeU-01078`: If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
 - `VUID-VkSamplerCreateInfo-addressModeU-01079`: If `samplerMirrorClampToEdge` is not enabled, and if the VK_KHR_sampler_mirror_clamp_to_edge extension is not enabled, `addressModeU`, `addressModeV` and `addressModeW` must not be `VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE`
 - `VUID-VkSamplerCreateInfo-compareEnable-01080`: If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value

@@ -2129,7 +2129,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
 
 # Safety
 
-The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 48 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -2163,8 +2163,6 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 - `VUID-vkCmdCopyImage-srcImage-07743`: If `srcImage` and `dstImage` have a different VkImageType, one must be `VK_IMAGE_TYPE_3D` and the other must be `VK_IMAGE_TYPE_2D`
 - `VUID-vkCmdCopyImage-srcImage-07744`: If `srcImage` and `dstImage` have the same VkImageType, the `layerCount` member of `srcSubresource` and `dstSubresource` in each element of `pRegions` must match
 - `VUID-vkCmdCopyImage-srcImage-01790`: If `srcImage` and `dstImage` are both of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `extent.depth` must be `1`
-- `VUID-vkCmdCopyImage-srcImage-01791`: If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount`
-- `VUID-vkCmdCopyImage-dstImage-01792`: If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount`
 - `VUID-vkCmdCopyImage-srcImage-01546`: If `srcImage` is non-sparse then the image or disjoint plane to be copied must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdCopyImage-dstImage-01547`: If `dstImage` is non-sparse then the image or disjoint plane that is the destination of the copy must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdCopyImage-srcImage-01548`: If the VkFormat of each of `srcImage` and `dstImage` is not a multi-planar format, the VkFormat of each of `srcImage` and `dstImage` must be size-compatible
@@ -2213,8 +2211,8 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 64.
 
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 60: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 58: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_copy_image(
         &mut self,
@@ -2253,7 +2251,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 64.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_unchecked(
         &mut self,
@@ -2417,12 +2415,10 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
 
 # Safety
 
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`: `firstQuery` must be less than the number of queries in `queryPool`
 - `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
-- `VUID-vkCmdCopyQueryPoolResults-flags-00822`: If `VK_QUERY_RESULT_64_BIT` is not set in `flags` then `dstOffset` and `stride` must be multiples of `4`
-- `VUID-vkCmdCopyQueryPoolResults-flags-00823`: If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `dstOffset` and `stride` must be multiples of `8`
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`: `dstBuffer` must have enough storage, from `dstOffset`, to contain the result of each query, as described here
 - `VUID-vkCmdCopyQueryPoolResults-queryType-00827`: If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_TIMESTAMP`, `flags` must not contain `VK_QUERY_RESULT_PARTIAL_BIT`
 - `VUID-vkCmdCopyQueryPoolResults-None-07429`: All queries used by the command must not be active
@@ -2432,6 +2428,8 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html). Settled by the wrappers:
 
 - `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-vkCmdCopyQueryPoolResults-flags-00822`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
+- `VUID-vkCmdCopyQueryPoolResults-flags-00823`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -2444,7 +2442,7 @@ The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry
 - `VUID-vkCmdCopyQueryPoolResults-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_query_pool_results(
         &mut self,
@@ -2462,6 +2460,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                     query_pool,
                     dst_buffer,
                     dst_offset,
+                    stride,
                     flags,
                 );
             if !self.accept(r) {
@@ -2486,7 +2485,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_query_pool_results_unchecked(
         &mut self,

@@ -393,7 +393,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
 
 # Safety
 
-The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 48 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage2-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage2-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -427,8 +427,6 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 - `VUID-VkCopyImageInfo2-srcImage-07743`: If `srcImage` and `dstImage` have a different VkImageType, one must be `VK_IMAGE_TYPE_3D` and the other must be `VK_IMAGE_TYPE_2D`
 - `VUID-VkCopyImageInfo2-srcImage-07744`: If `srcImage` and `dstImage` have the same VkImageType, the `layerCount` member of `srcSubresource` and `dstSubresource` in each element of `pRegions` must match
 - `VUID-VkCopyImageInfo2-srcImage-01790`: If `srcImage` and `dstImage` are both of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `extent.depth` must be `1`
-- `VUID-VkCopyImageInfo2-srcImage-01791`: If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount`
-- `VUID-VkCopyImageInfo2-dstImage-01792`: If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount`
 - `VUID-VkCopyImageInfo2-srcImage-01546`: If `srcImage` is non-sparse then the image or disjoint plane to be copied must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkCopyImageInfo2-dstImage-01547`: If `dstImage` is non-sparse then the image or disjoint plane that is the destination of the copy must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkCopyImageInfo2-srcImage-01548`: If the VkFormat of each of `srcImage` and `dstImage` is not a multi-planar format, the VkFormat of each of `srcImage` and `dstImage` must be size-compatible

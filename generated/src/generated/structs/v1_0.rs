@@ -2874,6 +2874,8 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-anisotropyEnable-01070`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: dynamic (checks the rule as written (recogniser: number between two bounds, inclusive))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
@@ -2887,7 +2889,7 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {

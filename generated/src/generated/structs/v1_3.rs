@@ -607,8 +607,8 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 61.
 
-- 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 57: explicit rule; the wrappers do not check it*/
+- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 55: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {

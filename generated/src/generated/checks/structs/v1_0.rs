@@ -3205,6 +3205,34 @@ pub fn check_sampler_create_info(
             ),
         );
     }
+    if matches!(v.unnormalized_coordinates, 1)
+        && ((v.min_lod as f64).is_nan() || v.min_lod != 0.0
+            || (v.max_lod as f64).is_nan() || v.max_lod != 0.0)
+    {
+        return Err(
+            fail(
+                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074",
+                format!(
+                    "If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero (`unnormalizedCoordinates` = {:?}, `minLod` = {:?}, `maxLod` = {:?})",
+                    v.unnormalized_coordinates, v.min_lod, v.max_lod
+                ),
+            ),
+        );
+    }
+    if matches!(v.unnormalized_coordinates, 1)
+        && (!matches!(v.address_mode_u.as_raw(), 2 | 3)
+            || !matches!(v.address_mode_v.as_raw(), 2 | 3))
+    {
+        return Err(
+            fail(
+                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075",
+                format!(
+                    "If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER` (`unnormalizedCoordinates` = {:?}, `addressModeU` = {:?}, `addressModeV` = {:?})",
+                    v.unnormalized_coordinates, v.address_mode_u, v.address_mode_v
+                ),
+            ),
+        );
+    }
     if matches!(v.unnormalized_coordinates, 1) && !matches!(v.anisotropy_enable, 0) {
         return Err(
             fail(

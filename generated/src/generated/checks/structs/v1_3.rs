@@ -2129,6 +2129,50 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             );
         }
     }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+            && s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+            && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-srcImage-01791",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.extent.depth, i, e.src_subresource.layer_count
+                    ),
+                ),
+            );
+        }
+    }
+    for (i, e) in {
+        // SAFETY: the safe setter stored this array and its count.
+        unsafe { members(v.p_regions, v.region_count) }
+    }
+        .iter()
+        .enumerate()
+    {
+        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+            && s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+            && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
+        {
+            return Err(
+                fail(
+                    "VUID-VkCopyImageInfo2-dstImage-01792",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.extent.depth, i, e.dst_subresource.layer_count
+                    ),
+                ),
+            );
+        }
+    }
     if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
             fail(
