@@ -104,7 +104,7 @@ fn objects_of_another_device_are_refused() {
     }
     .expect("memory of the other device");
     assert_eq!(
-        vuid(unsafe { d.bind_buffer_memory(&buffer, &foreign_memory, 0) }),
+        vuid(d.bind_buffer_memory(&buffer, &foreign_memory, 0)),
         "VUID-vkBindBufferMemory-memory-parent"
     );
     assert_eq!(

@@ -1052,3 +1052,105 @@ fn buffer_creation_is_checked_against_the_device_and_the_layer_agrees() {
         });
     }
 }
+
+/// Memory for `buffer`, allocated with `chain` pushed into its allocate info.
+fn memory_for(
+    s: &Setup,
+    buffer: &tuff::Buffer,
+    chain: impl FnOnce(tuff::MemoryAllocateInfo<'_>) -> tuff::DeviceMemory,
+) -> tuff::DeviceMemory {
+    let reqs = s
+        .device
+        .get_buffer_memory_requirements(buffer)
+        .expect("memory requirements");
+    chain(
+        tuff::MemoryAllocateInfo::new()
+            .allocation_size(reqs.size)
+            .memory_type_index(
+                s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::HOST_VISIBLE),
+            ),
+    )
+}
+
+#[test]
+fn memory_is_bound_only_to_what_it_was_allocated_for_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let buffer = |usage| {
+        d.create_buffer(&tuff::BufferCreateInfo::new().size(64).usage(usage))
+            .expect("buffer")
+    };
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC;
+    let (a, b) = (buffer(usage), buffer(usage));
+    // Memory dedicated to `a`, bound to `b`.
+    let dedicated = memory_for(&s, &a, |info| {
+        let mut only_a = tuff::MemoryDedicatedAllocateInfo::new().buffer(Some(&a));
+        // SAFETY: the size and type are `a`'s requirements; one dedicated buffer.
+        unsafe { d.allocate_memory(&info.push_next(&mut only_a)) }.expect("dedicated memory")
+    });
+    let to_other = "VUID-vkBindBufferMemory-memory-01508";
+    assert_eq!(vuid(d.bind_buffer_memory(&b, &dedicated, 0)), to_other);
+    // Memory exportable as an opaque fd, bound to a buffer with no external handle
+    // type.
+    let exportable = memory_for(&s, &b, |info| {
+        let mut export = tuff::ExportMemoryAllocateInfo::new()
+            .handle_types(vk::ExternalMemoryHandleTypeFlags::OPAQUE_FD);
+        // SAFETY: lavapipe exports opaque fds of every memory type.
+        unsafe { d.allocate_memory(&info.push_next(&mut export)) }.expect("exportable memory")
+    });
+    let not_external = "VUID-vkBindBufferMemory-memory-02726";
+    assert_eq!(vuid(d.bind_buffer_memory(&b, &exportable, 0)), not_external);
+    // The dedicated memory binds to its buffer.
+    d.bind_buffer_memory(&a, &dedicated, 0)
+        .expect("the dedicated buffer");
+    assert_silent(&s.messages);
+    layer_names(&s.messages, to_other, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.bind_buffer_memory_unchecked(&b, &dedicated, 0) });
+    });
+    layer_names(&s.messages, not_external, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.bind_buffer_memory_unchecked(&b, &exportable, 0) });
+    });
+}
+
+#[test]
+fn a_buffer_with_a_device_address_needs_such_memory_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup_full_features(true);
+    let d = &s.device;
+    let buffer = d
+        .create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(64)
+                .usage(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
+        )
+        .expect("buffer");
+    let plain = memory_for(&s, &buffer, |info| {
+        // SAFETY: the size and type are the buffer's requirements, nothing chained.
+        unsafe { d.allocate_memory(&info) }.expect("memory")
+    });
+    let expected = "VUID-vkBindBufferMemory-bufferDeviceAddress-03339";
+    assert_eq!(vuid(d.bind_buffer_memory(&buffer, &plain, 0)), expected);
+    let addressable = memory_for(&s, &buffer, |info| {
+        let mut flags =
+            tuff::MemoryAllocateFlagsInfo::new().flags(vk::MemoryAllocateFlags::DEVICE_ADDRESS);
+        // SAFETY: as above, on a device with bufferDeviceAddress.
+        unsafe { d.allocate_memory(&info.push_next(&mut flags)) }.expect("memory")
+    });
+    d.bind_buffer_memory(&buffer, &addressable, 0)
+        .expect("memory with a device address");
+    assert_silent(&s.messages);
+    let other = d
+        .create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(64)
+                .usage(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
+        )
+        .expect("buffer");
+    layer_names(&s.messages, expected, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { d.bind_buffer_memory_unchecked(&other, &plain, 0) });
+    });
+}

@@ -3531,10 +3531,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     for (offset, size, rule) in buffer_cases {
         let memory = memory_for(&s, &b_reqs, size);
         let one = format!("VUID-vkBindBufferMemory-{rule}");
-        assert_eq!(
-            vuid(unsafe { d.bind_buffer_memory(&b, &memory, offset) }),
-            one
-        );
+        assert_eq!(vuid(d.bind_buffer_memory(&b, &memory, offset)), one);
         let two = format!("VUID-VkBindBufferMemoryInfo-{rule}");
         let infos = [tuff::BindBufferMemoryInfo::new(&b, &memory).memory_offset(offset)];
         assert_eq!(vuid(unsafe { d.bind_buffer_memory2(&infos) }), two);
@@ -3566,10 +3563,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     for (offset, size, rule, rule2) in image_cases {
         let memory = memory_for(&s, &i_reqs, size);
         let one = format!("VUID-vkBindImageMemory-{rule}");
-        assert_eq!(
-            vuid(unsafe { d.bind_image_memory(&i, &memory, offset) }),
-            one
-        );
+        assert_eq!(vuid(d.bind_image_memory(&i, &memory, offset)), one);
         let two = format!("VUID-VkBindImageMemoryInfo-{rule2}");
         let infos = [tuff::BindImageMemoryInfo::new(&i, &memory).memory_offset(offset)];
         assert_eq!(vuid(unsafe { d.bind_image_memory2(&infos) }), two);
@@ -3585,13 +3579,13 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     }
     // Bound once, correctly; a second bind of either is refused.
     let b_memory = memory_for(&s, &b_reqs, b_reqs.size);
-    unsafe { d.bind_buffer_memory(&b, &b_memory, 0) }.expect("bind");
+    d.bind_buffer_memory(&b, &b_memory, 0).expect("bind");
     let i_memory = memory_for(&s, &i_reqs, i_reqs.size);
-    unsafe { d.bind_image_memory(&i, &i_memory, 0) }.expect("bind");
+    d.bind_image_memory(&i, &i_memory, 0).expect("bind");
     assert_silent(&s.messages);
     let again = memory_for(&s, &b_reqs, b_reqs.size);
     assert_eq!(
-        vuid(unsafe { d.bind_buffer_memory(&b, &again, 0) }),
+        vuid(d.bind_buffer_memory(&b, &again, 0)),
         "VUID-vkBindBufferMemory-buffer-07459"
     );
     let infos = [tuff::BindBufferMemoryInfo::new(&b, &again)];
@@ -3601,7 +3595,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     );
     let again_i = memory_for(&s, &i_reqs, i_reqs.size);
     assert_eq!(
-        vuid(unsafe { d.bind_image_memory(&i, &again_i, 0) }),
+        vuid(d.bind_image_memory(&i, &again_i, 0)),
         "VUID-vkBindImageMemory-image-07460"
     );
     let infos_i = [tuff::BindImageMemoryInfo::new(&i, &again_i)];

@@ -686,9 +686,33 @@ pub(crate) fn image_created(
             array_layers: create_info.array_layers,
             usage: create_info.usage,
             bound: false,
+            external: external_handle_types(create_info.as_raw().p_next),
         },
     );
     image
+}
+
+/// The handle types a chained `VkExternalMemoryBufferCreateInfo` or
+/// `VkExternalMemoryImageCreateInfo` names (none without one).
+fn external_handle_types(next: *const core::ffi::c_void) -> vk::ExternalMemoryHandleTypeFlags {
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name (the two
+    // structs have the same layout).
+    let (buffer, image) = unsafe {
+        (
+            chained::<vk::ExternalMemoryBufferCreateInfo<'_>>(
+                next,
+                vk::StructureType::EXTERNAL_MEMORY_BUFFER_CREATE_INFO,
+            ),
+            chained::<vk::ExternalMemoryImageCreateInfo<'_>>(
+                next,
+                vk::StructureType::EXTERNAL_MEMORY_IMAGE_CREATE_INFO,
+            ),
+        )
+    };
+    buffer
+        .map(|b| b.handle_types)
+        .or(image.map(|i| i.handle_types))
+        .unwrap_or_default()
 }
 
 /// The device remembers what the swapchain's images are, as the images a
@@ -715,6 +739,7 @@ pub(crate) fn swapchain_created(
             array_layers: create_info.image_array_layers,
             usage: create_info.image_usage,
             bound: true,
+            external: vk::ExternalMemoryHandleTypeFlags::empty(),
         },
     );
     swapchain
@@ -755,6 +780,7 @@ pub(crate) fn buffer_created(
             flags: create_info.flags,
             bound: false,
             memory_offset: 0,
+            external: external_handle_types(create_info.as_raw().p_next),
         },
     );
     buffer
@@ -1313,10 +1339,46 @@ pub(crate) fn memory_allocated(
     raw: vk::DeviceMemory,
     allocate_info: &MemoryAllocateInfo<'_>,
 ) -> DeviceMemory {
+    let next = allocate_info.as_raw().p_next;
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (dedicated, export, flags) = unsafe {
+        (
+            chained::<vk::MemoryDedicatedAllocateInfo<'_>>(
+                next,
+                vk::StructureType::MEMORY_DEDICATED_ALLOCATE_INFO,
+            ),
+            chained::<vk::ExportMemoryAllocateInfo<'_>>(
+                next,
+                vk::StructureType::EXPORT_MEMORY_ALLOCATE_INFO,
+            ),
+            chained::<vk::MemoryAllocateFlagsInfo<'_>>(
+                next,
+                vk::StructureType::MEMORY_ALLOCATE_FLAGS_INFO,
+            ),
+        )
+    };
+    let dedicated = dedicated.and_then(|d| {
+        if d.buffer != vk::Buffer::null() {
+            Some((vk::ObjectType::BUFFER, d.buffer.as_raw()))
+        } else if d.image != vk::Image::null() {
+            Some((vk::ObjectType::IMAGE, d.image.as_raw()))
+        } else {
+            None
+        }
+    });
+    let asked = crate::retention::MemoryAsked {
+        dedicated,
+        export: export.map_or(vk::ExternalMemoryHandleTypeFlags::empty(), |e| {
+            e.handle_types
+        }),
+        device_address: flags
+            .is_some_and(|f| f.flags.contains(vk::MemoryAllocateFlags::DEVICE_ADDRESS)),
+    };
     device.live().allocated(
         raw,
         allocate_info.allocation_size,
         allocate_info.memory_type_index,
+        asked,
     );
     memory
 }
@@ -3089,6 +3151,152 @@ fn image_requirements(device: &Device, image: vk::Image) -> vk::MemoryRequiremen
     reqs
 }
 
+/// The rules of what an allocation asked for that a bind must match, by VUID.
+struct KindRules {
+    requires_dedicated: &'static str,
+    dedicated: &'static str,
+    protected: &'static str,
+    unprotected: &'static str,
+    export: &'static str,
+    device_address: Option<&'static str>,
+}
+
+/// The object a bind gives memory to, as [`check_memory_kind`] needs it.
+struct Bound {
+    ty: vk::ObjectType,
+    raw: u64,
+    protected: bool,
+    external: vk::ExternalMemoryHandleTypeFlags,
+    device_address: bool,
+}
+
+/// Refuses memory of the wrong kind for the object: not dedicated to it where it
+/// requires (or the memory is dedicated to another object), protected memory for an
+/// unprotected object or the reverse, exportable memory of no handle type the
+/// object names, or memory without a device address for a buffer with one.
+fn check_memory_kind(
+    device: &Device,
+    rules: &KindRules,
+    object: &Bound,
+    memory: vk::DeviceMemory,
+    offset: vk::DeviceSize,
+) -> Result<()> {
+    let Some((asked, type_index)) = device
+        .live()
+        .memory(memory, |m| (m.asked, m.memory_type_index))
+    else {
+        return Ok(());
+    };
+    let mine = asked.dedicated == Some((object.ty, object.raw));
+    if dedicated_required(device, object) && !mine {
+        refuse(
+            rules.requires_dedicated,
+            "the object requires a dedicated allocation (VkMemoryDedicatedRequirements), and \
+             the memory was not allocated with a VkMemoryDedicatedAllocateInfo naming it"
+                .into(),
+        )?;
+    }
+    if asked.dedicated.is_some_and(|(ty, _)| ty == object.ty) && (!mine || offset != 0) {
+        refuse(
+            rules.dedicated,
+            format!(
+                "the memory is dedicated to another object, or bound at an offset other than \
+                 zero (memoryOffset = {offset})"
+            ),
+        )?;
+    }
+    let physical = device.parent();
+    let types = physical.get_physical_device_memory_properties();
+    let protected_type = types
+        .memory_types_as_slice()
+        .get(type_index as usize)
+        .is_some_and(|t| {
+            t.property_flags
+                .contains(vk::MemoryPropertyFlags::PROTECTED)
+        });
+    if object.protected && !protected_type {
+        refuse(
+            rules.protected,
+            "a protected object must be bound to memory of a protected type".into(),
+        )?;
+    }
+    if !object.protected && protected_type {
+        refuse(
+            rules.unprotected,
+            "an unprotected object must not be bound to memory of a protected type".into(),
+        )?;
+    }
+    if !asked.export.is_empty() && !asked.export.intersects(object.external) {
+        refuse(
+            rules.export,
+            format!(
+                "the memory was allocated exportable as {:?}, which must include one of the \
+                 handle types the object was created with ({:?})",
+                asked.export, object.external
+            ),
+        )?;
+    }
+    if let Some(vuid) = rules.device_address {
+        let enabled = device.live().with_features(|f| f.v12.buffer_device_address) == vk::TRUE;
+        if enabled && object.device_address && !asked.device_address {
+            refuse(
+                vuid,
+                "the buffer was created with VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, so its \
+                 memory must have been allocated with VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT"
+                    .into(),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Whether the driver requires the object to have a dedicated allocation (a Vulkan
+/// 1.1 query; never below it).
+fn dedicated_required(device: &Device, object: &Bound) -> bool {
+    if !device.parent().parent().exts().version(1) {
+        return false;
+    }
+    let mut dedicated = vk::MemoryDedicatedRequirements::default();
+    let mut reqs = vk::MemoryRequirements2::default().push_next(&mut dedicated);
+    // SAFETY: the object is a live buffer or image of `device` (a wrapper's), and
+    // the chain is local.
+    unsafe {
+        if object.ty == vk::ObjectType::BUFFER {
+            let info = vk::BufferMemoryRequirementsInfo2::default()
+                .buffer(vk::Buffer::from_raw(object.raw));
+            device
+                .fns()
+                .get_buffer_memory_requirements2(&info, &mut reqs);
+        } else {
+            let info =
+                vk::ImageMemoryRequirementsInfo2::default().image(vk::Image::from_raw(object.raw));
+            device
+                .fns()
+                .get_image_memory_requirements2(&info, &mut reqs);
+        }
+    }
+    let _ = reqs;
+    dedicated.requires_dedicated_allocation == vk::TRUE
+}
+
+const KIND_BUFFER: KindRules = KindRules {
+    requires_dedicated: "VUID-vkBindBufferMemory-buffer-01444",
+    dedicated: "VUID-vkBindBufferMemory-memory-01508",
+    protected: "VUID-vkBindBufferMemory-None-01898",
+    unprotected: "VUID-vkBindBufferMemory-None-01899",
+    export: "VUID-vkBindBufferMemory-memory-02726",
+    device_address: Some("VUID-vkBindBufferMemory-bufferDeviceAddress-03339"),
+};
+
+const KIND_IMAGE: KindRules = KindRules {
+    requires_dedicated: "VUID-vkBindImageMemory-image-01445",
+    dedicated: "VUID-vkBindImageMemory-memory-01509",
+    protected: "VUID-vkBindImageMemory-None-01901",
+    unprotected: "VUID-vkBindImageMemory-None-01902",
+    export: "VUID-vkBindImageMemory-memory-02728",
+    device_address: None,
+};
+
 /// Refuses a binding that would give the buffer memory it cannot live in: bound
 /// before, sparse, or memory of the wrong type, too small past the offset, or at a
 /// misaligned offset.
@@ -3098,6 +3306,18 @@ pub(crate) fn bind_buffer_memory_checks(
     memory: &DeviceMemory,
     memory_offset: vk::DeviceSize,
 ) -> Result<()> {
+    if let Some(r) = device.live().buffer(buffer.raw()) {
+        let object = Bound {
+            ty: vk::ObjectType::BUFFER,
+            raw: buffer.raw().as_raw(),
+            protected: r.flags.contains(vk::BufferCreateFlags::PROTECTED),
+            external: r.external,
+            device_address: r
+                .usage
+                .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
+        };
+        check_memory_kind(device, &KIND_BUFFER, &object, memory.raw(), memory_offset)?;
+    }
     let record = device
         .live()
         .buffer(buffer.raw())
@@ -3157,6 +3377,16 @@ pub(crate) fn bind_image_memory_checks(
             "VUID-vkBindImageMemory-image-01608",
             "the image was created with VK_IMAGE_CREATE_DISJOINT_BIT; bind its planes with bind_image_memory2".into(),
         )?;
+    }
+    if let Some(r) = record {
+        let object = Bound {
+            ty: vk::ObjectType::IMAGE,
+            raw: image.raw().as_raw(),
+            protected: r.flags.contains(vk::ImageCreateFlags::PROTECTED),
+            external: r.external,
+            device_address: false,
+        };
+        check_memory_kind(device, &KIND_IMAGE, &object, memory.raw(), memory_offset)?;
     }
     let reqs = image_requirements(device, image.raw());
     check_bind(
@@ -4062,6 +4292,7 @@ fn family_count(physical: &PhysicalDevice) -> u32 {
 }
 
 /// A queue family index below the physical device's family count.
+#[cfg(feature = "khr_surface")]
 pub(crate) fn queue_family_exists(
     physical: &PhysicalDevice,
     queue_family_index: u32,

@@ -29,6 +29,8 @@ pub(crate) struct MemoryRecord {
     /// Its type's property flags and the device's `nonCoherentAtomSize`, read at the
     /// first map.
     pub(crate) host: Option<(vk::MemoryPropertyFlags, u64)>,
+    /// What its chained infos asked for, which binds are checked against.
+    pub(crate) asked: crate::retention::MemoryAsked,
 }
 
 /// A device memory mapped for host access; unmapped when dropped.

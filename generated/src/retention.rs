@@ -212,6 +212,19 @@ pub(crate) struct BufferRecord {
     pub bound: bool,
     /// Where in its memory it is bound (0 until it is).
     pub memory_offset: vk::DeviceSize,
+    /// `VkExternalMemoryBufferCreateInfo::handleTypes`.
+    pub external: vk::ExternalMemoryHandleTypeFlags,
+}
+
+/// What an allocation's chained infos asked for.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct MemoryAsked {
+    /// The buffer (`VK_OBJECT_TYPE_BUFFER`) or image it is dedicated to.
+    pub dedicated: Option<(vk::ObjectType, u64)>,
+    /// `VkExportMemoryAllocateInfo::handleTypes`.
+    pub export: vk::ExternalMemoryHandleTypeFlags,
+    /// Allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`.
+    pub device_address: bool,
 }
 
 /// An image's creation parameters, as its checks read them.
@@ -233,6 +246,8 @@ pub(crate) struct ImageRecord {
     pub usage: vk::ImageUsageFlags,
     /// Whether memory is bound to it.
     pub bound: bool,
+    /// `VkExternalMemoryImageCreateInfo::handleTypes`.
+    pub external: vk::ExternalMemoryHandleTypeFlags,
 }
 
 impl Default for Live {
@@ -636,7 +651,13 @@ impl Live {
     }
 
     /// Records a new device memory's size and type, which mapping checks against.
-    pub(crate) fn allocated(&self, raw: vk::DeviceMemory, size: u64, memory_type_index: u32) {
+    pub(crate) fn allocated(
+        &self,
+        raw: vk::DeviceMemory,
+        size: u64,
+        memory_type_index: u32,
+        asked: MemoryAsked,
+    ) {
         self.memories.lock().insert(
             raw.as_raw(),
             crate::mapping::MemoryRecord {
@@ -644,6 +665,7 @@ impl Live {
                 memory_type_index,
                 mapped: false,
                 host: None,
+                asked,
             },
         );
     }

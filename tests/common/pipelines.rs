@@ -62,7 +62,7 @@ pub fn host_buffer(
         )
     }
     .expect("memory");
-    unsafe { d.bind_buffer_memory(&buffer, &memory, 0) }.expect("bind");
+    d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
     (buffer, memory)
 }
 

@@ -326,7 +326,7 @@ impl Setup {
             )
         }
         .expect("image memory");
-        unsafe { d.bind_image_memory(image, &memory, 0) }.expect("bind image");
+        d.bind_image_memory(image, &memory, 0).expect("bind image");
         memory
     }
 

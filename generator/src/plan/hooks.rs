@@ -143,6 +143,10 @@ const UNPROVEN_BLOCKS: &str = "checked by the safe methods in every build (the s
 const UNPROVEN_SPARSE: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first";
 const BUFFER_INFO: &str = "checks the concurrent queue families against the physical device's family count, and a capture address against the flags";
 const BUFFER_ALONE: &str = "checks the size against the device's maxBufferSize, and the external handle types against what the physical device reports it can export for the buffer (the 1.3.239 layer checks neither: proven by the error alone)";
+const MEMORY_KIND: &str = "checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to";
+const UNPROVEN_DEDICATED: &str = "checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation";
+const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory";
+const NO_IMPORT: &str = "memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain";
 const SUBPASSES: &str = "checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer)";
 const ACTIVE_QUERIES: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
 const ACTIVE_QUERIES_ALONE: &str = "checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer)";
@@ -561,6 +565,13 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkBindBufferMemory-memory-01035", How::User(UNPROVEN)),
             ("VUID-vkBindBufferMemory-memoryOffset-01036", How::Dynamic(BIND_MEMORY)),
             ("VUID-vkBindBufferMemory-size-01037", How::Dynamic(BIND_MEMORY)),
+            ("VUID-vkBindBufferMemory-buffer-01444", How::User(UNPROVEN_DEDICATED)),
+            ("VUID-vkBindBufferMemory-memory-01508", How::Dynamic(MEMORY_KIND)),
+            ("VUID-vkBindBufferMemory-None-01898", How::User(UNPROVEN_PROTECTED)),
+            ("VUID-vkBindBufferMemory-None-01899", How::User(UNPROVEN_PROTECTED)),
+            ("VUID-vkBindBufferMemory-memory-02726", How::Dynamic(MEMORY_KIND)),
+            ("VUID-vkBindBufferMemory-memory-02727", How::Static(NO_IMPORT)),
+            ("VUID-vkBindBufferMemory-bufferDeviceAddress-03339", How::Dynamic(MEMORY_KIND)),
         ],
         ..NONE
     },
@@ -1429,6 +1440,12 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkBindImageMemory-memoryOffset-01048", How::Dynamic(BIND_MEMORY)),
             ("VUID-vkBindImageMemory-size-01049", How::Dynamic(BIND_MEMORY)),
             ("VUID-vkBindImageMemory-image-01608", How::User(UNPROVEN)),
+            ("VUID-vkBindImageMemory-image-01445", How::User(UNPROVEN_DEDICATED)),
+            ("VUID-vkBindImageMemory-memory-01509", How::Dynamic(MEMORY_KIND)),
+            ("VUID-vkBindImageMemory-None-01901", How::User(UNPROVEN_PROTECTED)),
+            ("VUID-vkBindImageMemory-None-01902", How::User(UNPROVEN_PROTECTED)),
+            ("VUID-vkBindImageMemory-memory-02728", How::Dynamic(MEMORY_KIND)),
+            ("VUID-vkBindImageMemory-memory-02729", How::Static(NO_IMPORT)),
         ],
         ..NONE
     },

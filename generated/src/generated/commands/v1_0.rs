@@ -237,18 +237,6 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time (
     }
     /**`vkBindBufferMemory`
 
-# Safety
-
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkBindBufferMemory-buffer-01444`: If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been allocated with VkMemoryDedicatedAllocateInfo::`buffer` equal to `buffer`
-- `VUID-vkBindBufferMemory-memory-01508`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not VK_NULL_HANDLE, then `buffer` must equal VkMemoryDedicatedAllocateInfo::`buffer`, and `memoryOffset` must be zero
-- `VUID-vkBindBufferMemory-None-01898`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-vkBindBufferMemory-None-01899`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-vkBindBufferMemory-memory-02726`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
-- `VUID-vkBindBufferMemory-memory-02727`: If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
-- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have been allocated with the `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT` bit set
-
 # Valid usage
 
 The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory.html). Settled by the wrappers:
@@ -262,13 +250,19 @@ The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khrono
 - `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindBufferMemory-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindBufferMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkBindBufferMemory-memory-01508`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
+- `VUID-vkBindBufferMemory-memory-02726`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
+- `VUID-vkBindBufferMemory-memory-02727`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
+- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 15.
+Left to the caller (listed one by one in the crate's `validation.json`): 11.
 
+- 1: checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation
+- 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
 - 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 13: explicit rule; the wrappers do not check it*/
+- 6: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn bind_buffer_memory(
+    pub fn bind_buffer_memory(
         &self,
         buffer: &Buffer,
         memory: &DeviceMemory,
@@ -293,7 +287,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 15.
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run time: `VUID-vkBindBufferMemory-buffer-parent`, `VUID-vkBindBufferMemory-memory-parent`, `VUID-vkBindBufferMemory-buffer-07459`, `VUID-vkBindBufferMemory-buffer-01030`, `VUID-vkBindBufferMemory-memoryOffset-01031`, `VUID-vkBindBufferMemory-memory-01035`, `VUID-vkBindBufferMemory-memoryOffset-01036`, `VUID-vkBindBufferMemory-size-01037`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run time: `VUID-vkBindBufferMemory-buffer-parent`, `VUID-vkBindBufferMemory-memory-parent`, `VUID-vkBindBufferMemory-buffer-07459`, `VUID-vkBindBufferMemory-buffer-01030`, `VUID-vkBindBufferMemory-memoryOffset-01031`, `VUID-vkBindBufferMemory-memory-01035`, `VUID-vkBindBufferMemory-memoryOffset-01036`, `VUID-vkBindBufferMemory-size-01037`, `VUID-vkBindBufferMemory-buffer-01444`, `VUID-vkBindBufferMemory-memory-01508`, `VUID-vkBindBufferMemory-None-01898`, `VUID-vkBindBufferMemory-None-01899`, `VUID-vkBindBufferMemory-memory-02726`, `VUID-vkBindBufferMemory-memory-02727`, `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_buffer_memory_unchecked(
         &self,
@@ -318,17 +312,6 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
     }
     /**`vkBindImageMemory`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkBindImageMemory-image-01445`: If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created with VkMemoryDedicatedAllocateInfo::`image` equal to `image`
-- `VUID-vkBindImageMemory-memory-01509`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not VK_NULL_HANDLE, then `image` must equal VkMemoryDedicatedAllocateInfo::`image` and `memoryOffset` must be zero
-- `VUID-vkBindImageMemory-None-01901`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-vkBindImageMemory-None-01902`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-vkBindImageMemory-memory-02728`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
-- `VUID-vkBindImageMemory-memory-02729`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
-
 # Valid usage
 
 The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory.html). Settled by the wrappers:
@@ -342,13 +325,18 @@ The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos
 - `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkBindImageMemory-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindImageMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkBindImageMemory-memory-01509`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
+- `VUID-vkBindImageMemory-memory-02728`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
+- `VUID-vkBindImageMemory-memory-02729`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17.
+Left to the caller (listed one by one in the crate's `validation.json`): 14.
 
+- 1: checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation
+- 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
 - 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 14: explicit rule; the wrappers do not check it*/
+- 8: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn bind_image_memory(
+    pub fn bind_image_memory(
         &self,
         image: &Image,
         memory: &DeviceMemory,
@@ -373,7 +361,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_image_memory`] checks at run time: `VUID-vkBindImageMemory-image-parent`, `VUID-vkBindImageMemory-memory-parent`, `VUID-vkBindImageMemory-image-07460`, `VUID-vkBindImageMemory-image-01045`, `VUID-vkBindImageMemory-memoryOffset-01046`, `VUID-vkBindImageMemory-memory-01047`, `VUID-vkBindImageMemory-memoryOffset-01048`, `VUID-vkBindImageMemory-size-01049`, `VUID-vkBindImageMemory-image-01608`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_image_memory`] checks at run time: `VUID-vkBindImageMemory-image-parent`, `VUID-vkBindImageMemory-memory-parent`, `VUID-vkBindImageMemory-image-07460`, `VUID-vkBindImageMemory-image-01045`, `VUID-vkBindImageMemory-memoryOffset-01046`, `VUID-vkBindImageMemory-memory-01047`, `VUID-vkBindImageMemory-memoryOffset-01048`, `VUID-vkBindImageMemory-size-01049`, `VUID-vkBindImageMemory-image-01608`, `VUID-vkBindImageMemory-image-01445`, `VUID-vkBindImageMemory-memory-01509`, `VUID-vkBindImageMemory-None-01901`, `VUID-vkBindImageMemory-None-01902`, `VUID-vkBindImageMemory-memory-02728`, `VUID-vkBindImageMemory-memory-02729`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_image_memory_unchecked(
         &self,
