@@ -14,17 +14,8 @@ mod tuff_setup;
 mod vulkan;
 
 use tuff::vk;
-use tuff_setup::setup;
+use tuff_setup::{setup, vuid};
 use vulkan::assert_silent;
-
-/// The VUID of a failed check, or a panic naming what came back instead.
-fn vuid<T>(r: tuff::Result<T>) -> &'static str {
-    match r {
-        Err(tuff::Error::Validation { vuid, .. }) => vuid,
-        Err(e) => panic!("expected a failed check, got {e}"),
-        Ok(_) => panic!("expected a failed check, got success"),
-    }
-}
 
 #[test]
 fn enum_and_flags_values_are_checked() {

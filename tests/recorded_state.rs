@@ -22,17 +22,8 @@ mod vulkan;
 mod x11_window;
 
 use tuff::{vk, Handle as _};
-use tuff_setup::{setup, setup_with, Setup, Wsi};
+use tuff_setup::{setup, setup_with, vuid, Setup, Wsi};
 use vulkan::assert_silent;
-
-/// The VUID of a refused call, or a panic naming what came back instead.
-fn vuid<T>(r: tuff::Result<T>) -> &'static str {
-    match r {
-        Err(tuff::Error::Validation { vuid, .. }) => vuid,
-        Err(e) => panic!("expected tuff to refuse the call, got {e}"),
-        Ok(_) => panic!("expected tuff to refuse the call, got success"),
-    }
-}
 
 /// Runs `unchecked` with the layer told to skip erroring calls, and fails unless it
 /// named `expected`.

@@ -22,17 +22,8 @@ mod vulkan;
 
 use pipelines::{host_buffer, uniform_set};
 use tuff::vk;
-use tuff_setup::{setup, Setup};
+use tuff_setup::{setup, vuid, Setup};
 use vulkan::assert_silent;
-
-/// The VUID of a refused call, or a panic naming what came back instead.
-fn vuid<T>(r: tuff::Result<T>) -> &'static str {
-    match r {
-        Err(tuff::Error::Validation { vuid, .. }) => vuid,
-        Err(e) => panic!("expected tuff to refuse the call, got {e}"),
-        Ok(_) => panic!("expected tuff to refuse the call, got success"),
-    }
-}
 
 /// Fails unless the layer reported `vuid` (and takes its messages).
 fn assert_layer_reports(s: &Setup, vuid: &str) {

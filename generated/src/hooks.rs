@@ -4421,6 +4421,21 @@ pub(crate) fn create_query_pool_checks(create_info: &QueryPoolCreateInfo<'_>) ->
 }
 
 /// Exportable handle types a fence's creation asks for: each one the physical device
+/// The first handle type of `wanted` that the physical device cannot export, or
+/// whose compatible types leave out one of `wanted`, as `query` reports a type:
+/// (exportable, compatible types). `None` when every one can be exported together.
+fn unexportable(wanted: u32, query: impl Fn(u32) -> (bool, u32)) -> Option<(u32, bool, u32)> {
+    (0..32)
+        .map(|i| 1u32 << i)
+        .filter(|b| wanted & b != 0)
+        .map(|bit| {
+            let (exportable, compatible) = query(bit);
+            (bit, exportable, compatible)
+        })
+        .find(|&(_, exportable, compatible)| !exportable || compatible & wanted != wanted)
+}
+
+/// Exportable handle types a fence's creation asks for: each one the physical device
 /// can export, and all of them compatible with each other.
 pub(crate) fn create_fence_checks(
     device: &Device,
@@ -4435,15 +4450,12 @@ pub(crate) fn create_fence_checks(
     }) else {
         return Ok(());
     };
+    let physical = device.parent();
     let wanted = export.handle_types;
-    for bit in (0..32)
-        .map(|i| 1u32 << i)
-        .filter(|b| wanted.as_raw() & b != 0)
-    {
+    let failed = unexportable(wanted.as_raw(), |bit| {
         let info = vk::PhysicalDeviceExternalFenceInfo::default()
             .handle_type(vk::ExternalFenceHandleTypeFlags::from_raw(bit));
         let mut props = vk::ExternalFenceProperties::default();
-        let physical = device.parent();
         // SAFETY: a live physical device of its instance, a valid info and an output
         // it owns; the fence struct is core 1.1, which the implicit checks required.
         unsafe {
@@ -4452,22 +4464,34 @@ pub(crate) fn create_fence_checks(
                 .fns()
                 .get_physical_device_external_fence_properties(physical.raw(), &info, &mut props)
         };
-        let exportable = props
-            .external_fence_features
-            .contains(vk::ExternalFenceFeatureFlags::EXPORTABLE);
-        if !exportable || !props.compatible_handle_types.contains(wanted) {
-            refuse(
-                "VUID-VkExportFenceCreateInfo-handleTypes-01446",
-                format!(
-                    "The bits in `handleTypes` must be supported and compatible, as reported by \
-                     VkExternalFenceProperties (`handleTypes` = {wanted:?}; for {:?}: \
-                     features {:?}, compatible {:?})",
-                    info.handle_type, props.external_fence_features, props.compatible_handle_types
-                ),
-            )?;
-        }
+        (
+            props
+                .external_fence_features
+                .contains(vk::ExternalFenceFeatureFlags::EXPORTABLE),
+            props.compatible_handle_types.as_raw(),
+        )
+    });
+    match failed {
+        Some(f) => refuse(
+            "VUID-VkExportFenceCreateInfo-handleTypes-01446",
+            unexportable_message("VkExternalFenceProperties", wanted.as_raw(), f),
+        ),
+        None => Ok(()),
     }
-    Ok(())
+}
+
+/// The refusal of [`unexportable`]'s finding.
+fn unexportable_message(
+    what: &str,
+    wanted: u32,
+    (bit, exportable, compatible): (u32, bool, u32),
+) -> String {
+    format!(
+        "The bits in `handleTypes` must be supported and compatible, as reported by {what} \
+         (`handleTypes` = {wanted:#x}; handle type {bit:#x} is {}exportable, compatible with \
+         {compatible:#x})",
+        if exportable { "" } else { "not " }
+    )
 }
 
 /// As [`create_fence_checks`], for a semaphore (of the type it is created with).
@@ -4492,20 +4516,18 @@ pub(crate) fn create_semaphore_checks(
     let Some(export) = export else {
         return Ok(());
     };
-    let mut ty =
-        ty.map(|t| vk::SemaphoreTypeCreateInfo::default().semaphore_type(t.semaphore_type));
+    let semaphore_type = ty.map(|t| t.semaphore_type);
+    let physical = device.parent();
     let wanted = export.handle_types;
-    for bit in (0..32)
-        .map(|i| 1u32 << i)
-        .filter(|b| wanted.as_raw() & b != 0)
-    {
+    let failed = unexportable(wanted.as_raw(), |bit| {
+        let mut ty =
+            semaphore_type.map(|t| vk::SemaphoreTypeCreateInfo::default().semaphore_type(t));
         let mut info = vk::PhysicalDeviceExternalSemaphoreInfo::default()
             .handle_type(vk::ExternalSemaphoreHandleTypeFlags::from_raw(bit));
         if let Some(t) = ty.as_mut() {
             info = info.push_next(t);
         }
         let mut props = vk::ExternalSemaphoreProperties::default();
-        let physical = device.parent();
         // SAFETY: as in `create_fence_checks`; the type struct chained is a local copy.
         unsafe {
             physical
@@ -4517,24 +4539,20 @@ pub(crate) fn create_semaphore_checks(
                     &mut props,
                 )
         };
-        let exportable = props
-            .external_semaphore_features
-            .contains(vk::ExternalSemaphoreFeatureFlags::EXPORTABLE);
-        if !exportable || !props.compatible_handle_types.contains(wanted) {
-            refuse(
-                "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
-                format!(
-                    "The bits in `handleTypes` must be supported and compatible, as reported by \
-                     VkExternalSemaphoreProperties (`handleTypes` = {wanted:?}; for {:?}: \
-                     features {:?}, compatible {:?})",
-                    info.handle_type,
-                    props.external_semaphore_features,
-                    props.compatible_handle_types
-                ),
-            )?;
-        }
+        (
+            props
+                .external_semaphore_features
+                .contains(vk::ExternalSemaphoreFeatureFlags::EXPORTABLE),
+            props.compatible_handle_types.as_raw(),
+        )
+    });
+    match failed {
+        Some(f) => refuse(
+            "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
+            unexportable_message("VkExternalSemaphoreProperties", wanted.as_raw(), f),
+        ),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// An event the host sets, resets or reads was not created device-only.
@@ -4743,6 +4761,31 @@ pub(crate) fn cmd_reset_query_pool_range<S: State>(
     Ok(())
 }
 
+/// Whether a subpass description (of either version) uses no attachment: every
+/// input, color, resolve and depth/stencil reference it has is unused.
+macro_rules! no_attachment {
+    ($d:expr) => {{
+        let d = $d;
+        // SAFETY: the safe setters stored every array with its count; resolve
+        // attachments, if any, are one per color attachment, and the depth/stencil
+        // reference outlives the create info.
+        let (input, color, resolve, depth) = unsafe {
+            (
+                crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
+                crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
+                crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
+                d.p_depth_stencil_attachment.as_ref(),
+            )
+        };
+        input
+            .iter()
+            .chain(color)
+            .chain(resolve)
+            .chain(depth)
+            .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
+    }};
+}
+
 /// The device remembers a render pass's subpasses and their view masks (from a
 /// chained `VkRenderPassMultiviewCreateInfo`).
 pub(crate) fn render_pass_created(
@@ -4765,27 +4808,10 @@ pub(crate) fn render_pass_created(
     let view_masks = (0..raw.subpass_count as usize)
         .map(|i| masks.get(i).copied().unwrap_or(0))
         .collect();
-    // SAFETY: the safe setters stored every array with its count.
+    // SAFETY: the safe setter stored the subpasses with their count.
     let no_attachments = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) }
         .iter()
-        .map(|d| {
-            // SAFETY: as above; resolve attachments, if any, are one per color one.
-            let (input, color, resolve) = unsafe {
-                (
-                    crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
-                    crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
-                    crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
-                )
-            };
-            // SAFETY: as above.
-            let depth = unsafe { d.p_depth_stencil_attachment.as_ref() };
-            input
-                .iter()
-                .chain(color)
-                .chain(resolve)
-                .chain(depth)
-                .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
-        })
+        .map(|d| no_attachment!(d))
         .collect();
     device.live().render_pass_created(
         render_pass.raw(),
@@ -4808,28 +4834,7 @@ pub(crate) fn render_pass2_created(
     // SAFETY: the safe setter stored the subpasses with their count.
     let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
-    let no_attachments = subpasses
-        .iter()
-        .map(|d| {
-            // SAFETY: the safe setters stored every array with its count; resolve
-            // attachments, if any, are one per color one.
-            let (input, color, resolve) = unsafe {
-                (
-                    crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
-                    crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
-                    crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
-                )
-            };
-            // SAFETY: as above.
-            let depth = unsafe { d.p_depth_stencil_attachment.as_ref() };
-            input
-                .iter()
-                .chain(color)
-                .chain(resolve)
-                .chain(depth)
-                .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
-        })
-        .collect();
+    let no_attachments = subpasses.iter().map(|d| no_attachment!(d)).collect();
     device.live().render_pass_created(
         render_pass.raw(),
         RenderPassRecord {

@@ -47,6 +47,16 @@ pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
     )
 }
 
+/// The VUID of a refused call, or a panic naming what came back instead.
+#[allow(dead_code)]
+pub fn vuid<T>(r: tuff::Result<T>) -> &'static str {
+    match r {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        Err(e) => panic!("expected tuff to refuse the call, got {e}"),
+        Ok(_) => panic!("expected tuff to refuse the call, got success"),
+    }
+}
+
 /// [`setup`], on a device that enables no feature at all (no Vulkan 1.2 or 1.3
 /// feature either), for rules that apply with one of `setup`'s features off.
 #[allow(dead_code)]
