@@ -725,20 +725,22 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     let allocators: [(&str, &dyn tuff::runtime::Allocator); 2] = [("gpu", &gpu), ("naive", &naive)];
     for (name, allocator) in allocators {
         let info = |usage| tuff::BufferCreateInfo::new().size(256).usage(usage);
-        let source = d
-            .create_buffer_in(
+        let source = unsafe {
+            d.create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_SRC),
                 allocator,
                 tuff::MemoryLocation::Upload,
             )
-            .expect("source");
-        let target = d
-            .create_buffer_in(
+        }
+        .expect("source");
+        let target = unsafe {
+            d.create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_DST),
                 allocator,
                 tuff::MemoryLocation::Readback,
             )
-            .expect("target");
+        }
+        .expect("target");
         assert!(source.memory().size() >= 256, "{name}");
         let words: Vec<u32> = (0..64).map(|i| i * 3 + 1).collect();
         source.memory().write(0, &words).expect("write");
@@ -774,14 +776,11 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     }
     // A buffer made and filled in one call; empty data still makes a valid buffer.
     let usage = vk::BufferUsageFlags::INDEX_BUFFER;
-    let filled = d
-        .create_buffer_with(usage, &[5u16, 6, 7], &gpu)
-        .expect("filled buffer");
+    let filled =
+        unsafe { d.create_buffer_with(usage, &[5u16, 6, 7], &gpu) }.expect("filled buffer");
     assert_eq!(filled.memory().read::<u16>(0, 3).expect("read"), [5, 6, 7]);
     let empty: [u32; 0] = [];
-    let empty = d
-        .create_buffer_with(usage, &empty, &naive)
-        .expect("empty buffer");
+    let empty = unsafe { d.create_buffer_with(usage, &empty, &naive) }.expect("empty buffer");
     assert!(empty.memory().size() >= 1);
     // An image in device-local memory, and the refusals.
     let image = unsafe {
@@ -804,11 +803,9 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     }
     .expect("image");
     assert!(image.memory().size() >= 64 * 64 * 4);
-    let refusal = |info: tuff::BufferCreateInfo<'_>| match d.create_buffer_in(
-        &info.size(64),
-        &gpu,
-        tuff::MemoryLocation::Upload,
-    ) {
+    let refusal = |info: tuff::BufferCreateInfo<'_>| match unsafe {
+        d.create_buffer_in(&info.size(64), &gpu, tuff::MemoryLocation::Upload)
+    } {
         Err(tuff::Error::Validation { vuid, .. }) => vuid,
         Err(other) => panic!("expected a refusal, got {other}"),
         Ok(_) => panic!("expected a refusal, got a buffer"),
@@ -848,10 +845,10 @@ fn an_allocator_of_another_device_is_refused() {
     let info = tuff::BufferCreateInfo::new()
         .size(64)
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    match s
-        .device
-        .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
-    {
+    match unsafe {
+        s.device
+            .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
+    } {
         Err(tuff::Error::Validation { vuid, .. }) => {
             assert_eq!(vuid, "VUID-vkBindBufferMemory-memory-parent")
         }
@@ -1055,7 +1052,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
             let info = tuff::BufferCreateInfo::new()
                 .size(64)
                 .usage(vk::BufferUsageFlags::TRANSFER_DST);
-            d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback)
+            unsafe { d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback) }
                 .expect("target")
         })
         .collect();

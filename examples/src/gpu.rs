@@ -180,9 +180,11 @@ impl Gpu {
         location: tuff::MemoryLocation,
     ) -> Result<tuff::Bound<tuff::Buffer>> {
         let info = tuff::BufferCreateInfo::new().size(size).usage(usage);
-        Ok(self
-            .device
-            .create_buffer_in(&info, &self.allocator, location)?)
+        // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
+        Ok(unsafe {
+            self.device
+                .create_buffer_in(&info, &self.allocator, location)
+        }?)
     }
 
     /// A 2D image in device-local memory, which the image keeps.

@@ -107,15 +107,21 @@ impl Device {
     /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
     /// (`VUID-VkBufferCreateInfo-size-00912`).
     ///
+    /// # Safety
+    ///
+    /// As [`Device::create_buffer_in`], for a create info of `usage` and the data's
+    /// size.
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// let allocator = device.gpu_allocator()?;
     /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
-    /// let indices = device.create_buffer_with(usage, &[0u32, 1, 2], &allocator)?;
+    /// // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
+    /// let indices = unsafe { device.create_buffer_with(usage, &[0u32, 1, 2], &allocator) }?;
     /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
     /// # Ok(()) }
     /// ```
-    pub fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
+    pub unsafe fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
         &self,
         usage: vk::BufferUsageFlags,
         data: &[T],
@@ -123,7 +129,8 @@ impl Device {
     ) -> Result<Bound<Buffer>> {
         let size = (core::mem::size_of_val(data) as u64).max(1);
         let info = BufferCreateInfo::new().size(size).usage(usage);
-        let buffer = self.create_buffer_in(&info, allocator, MemoryLocation::Upload)?;
+        // SAFETY: the caller upholds what `create_buffer_in` asks of the info.
+        let buffer = unsafe { self.create_buffer_in(&info, allocator, MemoryLocation::Upload) }?;
         buffer.memory().write(0, data)?;
         Ok(buffer)
     }
@@ -135,17 +142,27 @@ impl Device {
     /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
     /// fails.
     ///
+    /// # Safety
+    ///
+    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
+    /// lists for `info`, except those this method refuses above. With the emitted API
+    /// of this crate (core 1.0-1.3, WSI, debug utils) `create_buffer` is safe and the
+    /// list is empty; a crate generated from more of the registry, or a newer one,
+    /// may list rules, which is why this helper, written once for every
+    /// configuration, stays `unsafe`.
+    ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
     /// use tuff::{vk, MemoryLocation};
     /// let info = tuff::BufferCreateInfo::new()
     ///     .size(64)
     ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
+    /// // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
+    /// let uniforms = unsafe { device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload) }?;
     /// uniforms.memory().write(0, &[1.0f32; 16])?;
     /// # Ok(()) }
     /// ```
-    pub fn create_buffer_in<A: Allocator + ?Sized>(
+    pub unsafe fn create_buffer_in<A: Allocator + ?Sized>(
         &self,
         info: &BufferCreateInfo<'_>,
         allocator: &A,
@@ -173,7 +190,11 @@ impl Device {
              VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
         )?;
         refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
-        let buffer = self.create_buffer(info)?;
+        // `create_buffer` is safe in the pinned configuration and `unsafe` in wider
+        // ones.
+        #[allow(unused_unsafe)]
+        // SAFETY: the caller upholds the rules `create_buffer` lists.
+        let buffer = unsafe { self.create_buffer(info) }?;
         let requirements = self.get_buffer_memory_requirements(&buffer)?;
         let allocation = allocator
             .allocate(&AllocationRequest::new(requirements, location))
