@@ -4,6 +4,38 @@
 // tests/oracle.rs has a fixture for, the change to the fixture's smallest valid
 // value that breaks exactly that rule.
 oracle_cases! {
+    command_buffer_inheritance_info: vk::CommandBufferInheritanceInfo<'_> {
+        "VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056" => |v, l, o| {
+            v.occlusion_query_enable = 1;
+        },
+    },
+    command_buffer_inheritance_rendering_info: vk::CommandBufferInheritanceRenderingInfo<'_> {
+        "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008" => |v, l, o| {
+            v.view_mask = 1;
+        },
+    },
+    queue_submit2: args::QueueSubmit2 {
+        "VUID-vkQueueSubmit2-synchronization2-03866" on bare => |v, l, o| {
+        },
+    },
+    semaphore_submit_info: vk::SemaphoreSubmitInfo<'_> {
+        "VUID-VkSemaphoreSubmitInfo-stageMask-03929" => |v, l, o| {
+            v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x40);
+        },
+        "VUID-VkSemaphoreSubmitInfo-stageMask-03930" => |v, l, o| {
+            v.stage_mask |= vk::PipelineStageFlags2::from_raw(0x10);
+        },
+    },
+    device_group_command_buffer_begin_info: vk::DeviceGroupCommandBufferBeginInfo<'_> {
+        "VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107" => |v, l, o| {
+            v.device_mask = 0;
+        },
+    },
+    cmd_set_device_mask: args::CmdSetDeviceMask {
+        "VUID-vkCmdSetDeviceMask-deviceMask-00109" => |v, l, o| {
+            v.device_mask = 0;
+        },
+    },
     semaphore_type_create_info: vk::SemaphoreTypeCreateInfo<'_> {
         "VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252" on bare => |v, l, o| {
             v.semaphore_type = vk::SemaphoreType::from_raw(1);
@@ -685,6 +717,11 @@ oracle_cases! {
             v.final_layout = vk::ImageLayout::from_raw(1000241002);
         },
     },
+    input_attachment_aspect_reference: vk::InputAttachmentAspectReference {
+        "VUID-VkInputAttachmentAspectReference-aspectMask-01964" => |v, l, o| {
+            v.aspect_mask |= vk::ImageAspectFlags::from_raw(0x8);
+        },
+    },
     subpass_description: vk::SubpassDescription<'_> {
         "VUID-VkSubpassDescription-attachment-06913" => |v, l, o| {
             o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(3);
@@ -778,6 +815,17 @@ oracle_cases! {
             v.final_layout = vk::ImageLayout::from_raw(1000241002);
         },
     },
+    attachment_description_stencil_layout: vk::AttachmentDescriptionStencilLayout<'_> {
+        "VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308" => |v, l, o| {
+            v.stencil_initial_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309" => |v, l, o| {
+            v.stencil_final_layout = vk::ImageLayout::from_raw(2);
+        },
+        "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310" => |v, l, o| {
+            v.stencil_final_layout = vk::ImageLayout::from_raw(0);
+        },
+    },
     subpass_description2: vk::SubpassDescription2<'_> {
         "VUID-VkSubpassDescription2-attachment-06913" => |v, l, o| {
             o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(3);
@@ -798,6 +846,11 @@ oracle_cases! {
     attachment_reference2: vk::AttachmentReference2<'_> {
         "VUID-VkAttachmentReference2-layout-03077" => |v, l, o| {
             v.layout = vk::ImageLayout::from_raw(0);
+        },
+    },
+    attachment_reference_stencil_layout: vk::AttachmentReferenceStencilLayout<'_> {
+        "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318" => |v, l, o| {
+            v.stencil_layout = vk::ImageLayout::from_raw(0);
         },
     },
     subpass_dependency2: vk::SubpassDependency2<'_> {
@@ -830,6 +883,36 @@ oracle_cases! {
         },
         "VUID-VkFramebufferCreateInfo-flags-03189" on bare => |v, l, o| {
             v.flags |= vk::FramebufferCreateFlags::from_raw(0x1);
+        },
+    },
+    device_group_render_pass_begin_info: vk::DeviceGroupRenderPassBeginInfo<'_> {
+        "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906" => |v, l, o| {
+            v.device_mask = 0;
+        },
+    },
+    shader_module_create_info: vk::ShaderModuleCreateInfo<'_> {
+        "VUID-VkShaderModuleCreateInfo-codeSize-01085" => |v, l, o| {
+            v.code_size = 0;
+        },
+    },
+    compute_pipeline_create_info: vk::ComputePipelineCreateInfo<'_> {
+        "VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875" => |v, l, o| {
+            v.flags |= vk::PipelineCreateFlags::from_raw(0x100);
+        },
+    },
+    graphics_pipeline_create_info: vk::GraphicsPipelineCreateInfo<'_> {
+        "VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878" => |v, l, o| {
+            v.flags |= vk::PipelineCreateFlags::from_raw(0x100);
+        },
+    },
+    pipeline_cache_create_info: vk::PipelineCacheCreateInfo<'_> {
+        "VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892" => |v, l, o| {
+            v.flags |= vk::PipelineCacheCreateFlags::from_raw(0x1);
+        },
+    },
+    memory_allocate_info: vk::MemoryAllocateInfo<'_> {
+        "VUID-VkMemoryAllocateInfo-allocationSize-00638" => |v, l, o| {
+            v.allocation_size = 0;
         },
     },
     buffer_create_info: vk::BufferCreateInfo<'_> {
@@ -899,6 +982,12 @@ oracle_cases! {
             v.flags |= vk::ImageCreateFlags::from_raw(0x800);
         },
     },
+    image_stencil_usage_create_info: vk::ImageStencilUsageCreateInfo<'_> {
+        "VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539" => |v, l, o| {
+            v.stencil_usage |= vk::ImageUsageFlags::from_raw(0x40);
+            v.stencil_usage |= vk::ImageUsageFlags::from_raw(0x1);
+        },
+    },
     image_view_create_info: vk::ImageViewCreateInfo<'_> {
         "VUID-VkImageViewCreateInfo-subresourceRange-01718" => |v, l, o| {
             v.subresource_range.level_count = (o.image.mip_levels as i64 - v.subresource_range.base_mip_level as i64 + 1) as _;
@@ -956,6 +1045,11 @@ oracle_cases! {
         "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077" => |v, l, o| {
             v.unnormalized_coordinates = 1;
             v.compare_enable = 1;
+        },
+    },
+    descriptor_set_layout_binding: vk::DescriptorSetLayoutBinding<'_> {
+        "VUID-VkDescriptorSetLayoutBinding-descriptorType-04604" => |v, l, o| {
+            v.descriptor_type = vk::DescriptorType::from_raw(1000138000);
         },
     },
     push_constant_range: vk::PushConstantRange {
@@ -1683,6 +1777,11 @@ oracle_cases! {
     cmd_set_depth_bias: args::CmdSetDepthBias {
         "VUID-vkCmdSetDepthBias-depthBiasClamp-00790" => |v, l, o| {
             v.depth_bias_clamp = 1.0;
+        },
+    },
+    pipeline_depth_stencil_state_create_info: vk::PipelineDepthStencilStateCreateInfo<'_> {
+        "VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598" => |v, l, o| {
+            v.depth_bounds_test_enable = 1;
         },
     },
     cmd_set_depth_bounds: args::CmdSetDepthBounds {

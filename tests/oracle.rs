@@ -744,9 +744,20 @@ struct Graphics<'a> {
     blend_attachment: vk::PipelineColorBlendAttachmentState,
     blend: tuff::PipelineColorBlendStateCreateInfo<'a>,
     binding: Option<vk::VertexInputBindingDescription>,
+    depth_stencil: Option<tuff::PipelineDepthStencilStateCreateInfo<'a>>,
+    stages: [tuff::PipelineShaderStageCreateInfo<'a>; 2],
 }
 
 fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
+    graphics_with(s, edit, &|_| {})
+}
+
+/// [`graphics`], with a change to the create info itself after its parts are set.
+fn graphics_with(
+    s: &Setup,
+    edit: impl FnOnce(&mut Graphics<'_>),
+    edit_info: &dyn Fn(&mut vk::GraphicsPipelineCreateInfo<'_>),
+) -> Outcome {
     let d = &s.device;
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let vert = tuff_setup::shader(s, include_bytes!("../shaders/spv/test.vert.spv"));
@@ -760,8 +771,8 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
     let layout = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
         .expect("layout");
-    let stages = pipelines::test_stages(&vert, &frag);
     let mut parts = Graphics {
+        stages: pipelines::test_stages(&vert, &frag),
         assembly: tuff::PipelineInputAssemblyStateCreateInfo::new()
             .topology(vk::PrimitiveTopology::TRIANGLE_LIST),
         raster: tuff::PipelineRasterizationStateCreateInfo::new()
@@ -776,6 +787,7 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
         },
         blend: tuff::PipelineColorBlendStateCreateInfo::new(),
         binding: None,
+        depth_stencil: None,
     };
     edit(&mut parts);
     let blend_attachments = [parts.blend_attachment];
@@ -788,8 +800,8 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
         .scissor_count(1);
     let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
     let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
-    let info = tuff::GraphicsPipelineCreateInfo::new()
-        .stages(&stages)
+    let mut info = tuff::GraphicsPipelineCreateInfo::new()
+        .stages(&parts.stages)
         .vertex_input_state(Some(&vertex_input))
         .input_assembly_state(Some(&parts.assembly))
         .viewport_state(Some(&viewport))
@@ -800,6 +812,11 @@ fn graphics(s: &Setup, edit: impl FnOnce(&mut Graphics<'_>)) -> Outcome {
         .layout(Some(&layout))
         .render_pass(Some(&target.render_pass))
         .subpass(0);
+    if let Some(depth_stencil) = &parts.depth_stencil {
+        info = info.depth_stencil_state(Some(depth_stencil));
+    }
+    // SAFETY: as in `buffer_create_info`.
+    edit_info(unsafe { info.raw_values_mut() });
     let infos = [info];
     create!(
         s,
@@ -871,8 +888,31 @@ graphics_fixture!(
     |p| p.binding.insert(BINDING)
 );
 
+graphics_fixture!(
+    pipeline_depth_stencil_state_create_info,
+    vk::PipelineDepthStencilStateCreateInfo<'_>,
+    raw | p
+        | p.depth_stencil
+            .insert(tuff::PipelineDepthStencilStateCreateInfo::new())
+);
+
+fn graphics_pipeline_create_info(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::GraphicsPipelineCreateInfo<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    graphics_with(s, |_| {}, &|info| {
+        change(info, limits, &mut Objects::default())
+    })
+}
+
+#[path = "oracle/fixtures.rs"]
+mod fixtures;
+use fixtures::*;
+
 /// The parameters of a command that its rules name, as its safe method names them.
 mod args {
+    pub use super::fixtures::args::*;
     use tuff::vk;
 
     pub struct CmdSetEvent {
@@ -1328,6 +1368,21 @@ fn cmd_copy_image_to_buffer(
 /// Rules the 1.3.239 layer reports under another name than their VUID, each seen in
 /// its message for the case that breaks the rule.
 const LAYER_NAMES: &[(&str, &str)] = &[
+    // The 1.3.239 layer checks a semaphore's stage against the device's features
+    // under an unassigned name; its message states this rule.
+    (
+        "VUID-VkSemaphoreSubmitInfo-stageMask-03929",
+        "stageMask includes VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT when the device does not have geometryShader feature enabled",
+    ),
+    (
+        "VUID-VkSemaphoreSubmitInfo-stageMask-03930",
+        "stageMask includes VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT when the device does not have tessellationShader feature enabled",
+    ),
+    // Its parameter check states the code size rule in words (in words of four bytes).
+    (
+        "VUID-VkShaderModuleCreateInfo-codeSize-01085",
+        "pCreateInfo->codeSize / 4 must be greater than 0",
+    ),
     (
         "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
         "[ VUID-vkCmdCopyImageToBuffer-aspectMask-00211 ]",
@@ -1364,6 +1419,11 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "aspectMask-01964",
+        &["VUID-VkRenderPassCreateInfo-pNext-01963"],
+        "no format has a metadata aspect, so an input attachment's aspects that include it are not all present in its format",
+    ),
     (
         "flags-03189",
         &["flags-03190"],

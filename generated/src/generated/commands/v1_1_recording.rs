@@ -137,14 +137,12 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDeviceMask.html). Settled by the wrappers:
 
+- `VUID-vkCmdSetDeviceMask-deviceMask-00109`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdSetDeviceMask-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_set_device_mask(&mut self, device_mask: u32) {
         {

@@ -462,6 +462,7 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 
 - `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit2-synchronization2-03866`: dynamic (checks the rule as written (recogniser: feature must be enabled))
 - `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
@@ -470,10 +471,9 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 - `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
+Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 11: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn queue_submit2<'a>(

@@ -537,15 +537,13 @@ impl<'a> CommandBufferBeginInfo<'a> {
 
 The rules are on [`VkCommandBufferInheritanceInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceInfo.html). Settled by the wrappers:
 
+- `VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCommandBufferInheritanceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferInheritanceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceInfo<'a> {
@@ -639,11 +637,9 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-stage-parameter`: static (set from the safe counterpart, which the constructor requires)
 - `VUID-VkComputePipelineCreateInfo-layout-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 20.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 19: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -973,10 +969,11 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
 The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBinding.html). Settled by the wrappers:
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-04604`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
+Left to the caller (listed one by one in the crate's `validation.json`): 11.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 10: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1306,11 +1303,12 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`: dynamic (checks the viewports (scissors) are given or dynamic unless rasterization is discarded)
+- `VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`: dynamic (checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 289.
+Left to the caller (listed one by one in the crate's `validation.json`): 288.
 
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 287: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1915,11 +1913,9 @@ The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khro
 - `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
+- `VUID-VkMemoryAllocateInfo-allocationSize-00638`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 42.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 41: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 41 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
@@ -1982,11 +1978,9 @@ The rules are on [`VkPipelineCacheCreateInfo`'s reference page](https://registry
 - `VUID-VkPipelineCacheCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineCacheCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineCacheCreateInfo-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCacheCreateInfo<'a> {
@@ -2082,6 +2076,7 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineDepthStencilStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDepthStencilStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineDepthStencilStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -2089,10 +2084,7 @@ The rules are on [`VkPipelineDepthStencilStateCreateInfo`'s reference page](http
 - `VUID-VkPipelineDepthStencilStateCreateInfo-front-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkPipelineDepthStencilStateCreateInfo-back-parameter`: dynamic (checks the struct's own rules)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDepthStencilStateCreateInfo<'a> {
@@ -3028,14 +3020,12 @@ impl<'a> SemaphoreCreateInfo<'a> {
 
 The rules are on [`VkShaderModuleCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkShaderModuleCreateInfo-codeSize-01085`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkShaderModuleCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkShaderModuleCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkShaderModuleCreateInfo-pCode-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 12: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ShaderModuleCreateInfo<'a> {

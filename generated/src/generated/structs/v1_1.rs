@@ -388,12 +388,10 @@ unsafe impl<'a> Extends<BindSparseInfo<'a>> for DeviceGroupBindSparseInfo<'a> {}
 
 The rules are on [`VkDeviceGroupCommandBufferBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupCommandBufferBeginInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupCommandBufferBeginInfo<'a> {
@@ -447,13 +445,11 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a
 
 The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupRenderPassBeginInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 7: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {

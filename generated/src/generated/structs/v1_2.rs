@@ -105,11 +105,12 @@ impl<'a> AttachmentDescription2<'a> {
 
 The rules are on [`VkAttachmentDescriptionStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescriptionStencilLayout.html). Settled by the wrappers:
 
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescriptionStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -182,10 +183,9 @@ impl<'a> AttachmentReference2<'a> {
 
 The rules are on [`VkAttachmentReferenceStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReferenceStencilLayout.html). Settled by the wrappers:
 
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -498,11 +498,10 @@ for ImageFormatListCreateInfo<'a> {}
 
 The rules are on [`VkImageStencilUsageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageStencilUsageCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: dynamic (checks the rule as written (recogniser: flags with no bits but these))
 - `VUID-VkImageStencilUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageStencilUsageCreateInfo<'a> {

@@ -334,6 +334,7 @@ impl<'a> BufferMemoryBarrier2<'a> {
 
 The rules are on [`VkCommandBufferInheritanceRenderingInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceRenderingInfo.html). Settled by the wrappers:
 
+- `VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCommandBufferInheritanceRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
@@ -341,10 +342,7 @@ The rules are on [`VkCommandBufferInheritanceRenderingInfo`'s reference page](ht
 - `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 10: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferInheritanceRenderingInfo<'a> {
@@ -2256,15 +2254,14 @@ impl<'a> ResolveImageInfo2<'a> {
 
 The rules are on [`VkSemaphoreSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSubmitInfo.html). Settled by the wrappers:
 
+- `VUID-VkSemaphoreSubmitInfo-stageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkSemaphoreSubmitInfo-stageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkSemaphoreSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 12: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSubmitInfo<'a> {
