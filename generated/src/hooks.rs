@@ -21,6 +21,11 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
+mod render_pass;
+pub(crate) use render_pass::{
+    create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
+};
+
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
     submits

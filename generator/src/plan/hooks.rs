@@ -217,6 +217,8 @@ const CHAINED_COUNT: &str =
     "checks the chained struct's count against the count of the struct it extends";
 const RENDER_PASS_INDICES: &str =
     "checks each attachment, subpass and input attachment index against the render pass's counts";
+const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
+const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
 const PIPELINE_BOUND: &str =
     "checks a pipeline is bound at the command's bind point, which the recorder tracks";
 const SETS_BOUND: &str = "checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known)";
@@ -744,7 +746,35 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateRenderPass2",
+        check: call("hooks::create_render_pass2_checks", &["create_info"]),
+        check_last: call(
+            "hooks::render_pass2_reference_checks",
+            &["self", "create_info"],
+        ),
         created: call("hooks::render_pass2_created", &["self", "created", "create_info"]),
+        settles: &[
+            ("VUID-VkRenderPassCreateInfo2-attachment-03051", How::Dynamic(RENDER_PASS_INDICES)),
+            ("VUID-VkSubpassDescription2-attachment-03073", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pPreserveAttachments-03074", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pResolveAttachments-03065", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pResolveAttachments-03066", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pResolveAttachments-03067", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pResolveAttachments-03068", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pInputAttachments-02897", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pColorAttachments-02898", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pResolveAttachments-02899", How::User(UNPROVEN_RESOLVE_FEATURES)),
+            ("VUID-VkSubpassDescription2-pDepthStencilAttachment-02900", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-layout-02528", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-pDepthStencilAttachment-04440", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-attachment-02800", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-attachment-02801", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo2-attachment-02525", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription2-viewMask-06706", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo2-viewMask-03057", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo2-viewMask-03058", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo2-viewMask-03059", How::Dynamic(SUBPASS_REFERENCES)),
+        ],
         ..NONE
     },
     Special {
@@ -1275,8 +1305,30 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateRenderPass",
         check: call("hooks::create_render_pass_checks", &["create_info"]),
+        check_last: call(
+            "hooks::render_pass_reference_checks",
+            &["self", "create_info"],
+        ),
         created: call("hooks::render_pass_created", &["self", "created", "create_info"]),
         settles: &[
+            ("VUID-VkSubpassDescription-attachment-00853", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pPreserveAttachments-00854", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pResolveAttachments-00847", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pResolveAttachments-00848", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pResolveAttachments-00849", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pResolveAttachments-00850", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pInputAttachments-02647", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pColorAttachments-02648", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pResolveAttachments-02649", How::User(UNPROVEN_RESOLVE_FEATURES)),
+            ("VUID-VkSubpassDescription-pDepthStencilAttachment-02650", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pColorAttachments-06868", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pDepthStencilAttachment-01418", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-layout-02519", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkSubpassDescription-pDepthStencilAttachment-04438", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01929", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-02513", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-02514", How::Dynamic(SUBPASS_REFERENCES)),
+            ("VUID-VkRenderPassCreateInfo-pNext-02515", How::Dynamic(SUBPASS_REFERENCES)),
             ("VUID-VkRenderPassCreateInfo-attachment-00834", How::Dynamic(RENDER_PASS_INDICES)),
             ("VUID-VkRenderPassCreateInfo-pDependencies-06866", How::Dynamic(RENDER_PASS_INDICES)),
             ("VUID-VkRenderPassCreateInfo-pDependencies-06867", How::Dynamic(RENDER_PASS_INDICES)),

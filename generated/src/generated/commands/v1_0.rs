@@ -1759,7 +1759,7 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
 
 # Safety
 
-The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkAttachmentDescription-format-06698`: `format` must not be VK_FORMAT_UNDEFINED
 - `VUID-VkAttachmentDescription-format-06242`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
@@ -1773,12 +1773,8 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-VkRenderPassCreateInfo-pAttachments-01566`: For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
 - `VUID-VkRenderPassCreateInfo-pAttachments-01567`: For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
 - `VUID-VkRenderPassCreateInfo-pNext-01963`: If the `pNext` chain includes a VkRenderPassInputAttachmentAspectCreateInfo structure, for any element of the `pInputAttachments` member of any element of `pSubpasses` where the `attachment` member is not `VK_ATTACHMENT_UNUSED`, the `aspectMask` member of the corresponding element of VkRenderPassInputAttachmentAspectCreateInfo::`pAspectReferences` must only include aspects that are present in images of the format specified by the element of `pAttachments` at `attachment`
-- `VUID-VkRenderPassCreateInfo-pNext-01929`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, if its `dependencyCount` member is not zero, it must be equal to `dependencyCount`
 - `VUID-VkRenderPassCreateInfo-pNext-01930`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, for each non-zero element of `pViewOffsets`, the `srcSubpass` and `dstSubpass` members of `pDependencies` at the same index must not be equal
 - `VUID-VkRenderPassCreateInfo-pNext-02512`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, for any element of `pDependencies` with a `dependencyFlags` member that does not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`, the corresponding element of the `pViewOffsets` member of that VkRenderPassMultiviewCreateInfo instance must be `0`
-- `VUID-VkRenderPassCreateInfo-pNext-02513`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, elements of its `pViewMasks` member must either all be `0`, or all not be `0`
-- `VUID-VkRenderPassCreateInfo-pNext-02514`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, and each element of its `pViewMasks` member is `0`, the `dependencyFlags` member of each element of `pDependencies` must not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
-- `VUID-VkRenderPassCreateInfo-pNext-02515`: If the `pNext` chain includes a VkRenderPassMultiviewCreateInfo structure, and each element of its `pViewMasks` member is `0`, its `correlationMaskCount` member must be `0`
 - `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841`: Each view index must not be set in more than one element of `pCorrelationMasks`
 - `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555`: If the `multiview` feature is not enabled, each element of `pViewMasks` must be `0`
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697`: The index of the most significant bit in each element of `pViewMasks` must be less than `maxMultiviewViewCount`
@@ -1793,20 +1789,6 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-VkSubpassDependency-srcSubpass-00872`: If `srcSubpass` equals `dstSubpass` and that subpass has more than one bit set in the view mask, then `dependencyFlags` must include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
 - `VUID-VkSubpassDescription-attachment-06915`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED`, ts `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`
 - `VUID-VkSubpassDescription-loadOp-00846`: If the first use of an attachment in this render pass is as an input attachment, and the attachment is not also used as a color or depth/stencil attachment in the same subpass, then `loadOp` must not be `VK_ATTACHMENT_LOAD_OP_CLEAR`
-- `VUID-VkSubpassDescription-pResolveAttachments-00847`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not be `VK_ATTACHMENT_UNUSED`
-- `VUID-VkSubpassDescription-pResolveAttachments-00848`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkSubpassDescription-pResolveAttachments-00849`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkSubpassDescription-pResolveAttachments-00850`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have the same VkFormat as its corresponding color attachment
-- `VUID-VkSubpassDescription-pColorAttachments-06868`: If neither the VK_AMD_mixed_attachment_samples extension nor the VK_NV_framebuffer_mixed_samples extension is enabled, all attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have the same sample count
-- `VUID-VkSubpassDescription-pInputAttachments-02647`: All attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain at least `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription-pColorAttachments-02648`: All attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription-pResolveAttachments-02649`: All attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-02650`: If `pDepthStencilAttachment` is not `NULL` and the attachment is not `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-01418`: If neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, and if `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED` and any attachments in `pColorAttachments` are not `VK_ATTACHMENT_UNUSED`, they must have the same sample count
-- `VUID-VkSubpassDescription-attachment-00853`: Each element of `pPreserveAttachments` must not be `VK_ATTACHMENT_UNUSED`
-- `VUID-VkSubpassDescription-pPreserveAttachments-00854`: Each element of `pPreserveAttachments` must not also be an element of any other member of the subpass description
-- `VUID-VkSubpassDescription-layout-02519`: If any attachment is used by more than one VkAttachmentReference member, then each use must use the same `layout`
-- `VUID-VkSubpassDescription-pDepthStencilAttachment-04438`: `pDepthStencilAttachment` and `pColorAttachments` must not contain references to the same attachment
 
 # Valid usage
 
@@ -1826,6 +1808,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
             let r = self.validate_create_render_pass(create_info);
             r?;
         }
+        crate::hooks::render_pass_reference_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_render_pass_unchecked(create_info) }
@@ -1834,7 +1817,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
 
 # Safety
 
-The caller upholds the rules that [`Self::create_render_pass`] checks at run time: `VUID-VkRenderPassCreateInfo-attachment-00834`, `VUID-VkRenderPassCreateInfo-pDependencies-06866`, `VUID-VkRenderPassCreateInfo-pDependencies-06867`, `VUID-VkRenderPassCreateInfo-pNext-01926`, `VUID-VkRenderPassCreateInfo-pNext-01927`, `VUID-VkRenderPassCreateInfo-pNext-01928`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_render_pass`] checks at run time: `VUID-VkSubpassDescription-attachment-00853`, `VUID-VkSubpassDescription-pPreserveAttachments-00854`, `VUID-VkSubpassDescription-pResolveAttachments-00847`, `VUID-VkSubpassDescription-pResolveAttachments-00848`, `VUID-VkSubpassDescription-pResolveAttachments-00849`, `VUID-VkSubpassDescription-pResolveAttachments-00850`, `VUID-VkSubpassDescription-pInputAttachments-02647`, `VUID-VkSubpassDescription-pColorAttachments-02648`, `VUID-VkSubpassDescription-pResolveAttachments-02649`, `VUID-VkSubpassDescription-pDepthStencilAttachment-02650`, `VUID-VkSubpassDescription-pColorAttachments-06868`, `VUID-VkSubpassDescription-pDepthStencilAttachment-01418`, `VUID-VkSubpassDescription-layout-02519`, `VUID-VkSubpassDescription-pDepthStencilAttachment-04438`, `VUID-VkRenderPassCreateInfo-pNext-01929`, `VUID-VkRenderPassCreateInfo-pNext-02513`, `VUID-VkRenderPassCreateInfo-pNext-02514`, `VUID-VkRenderPassCreateInfo-pNext-02515`, `VUID-VkRenderPassCreateInfo-attachment-00834`, `VUID-VkRenderPassCreateInfo-pDependencies-06866`, `VUID-VkRenderPassCreateInfo-pDependencies-06867`, `VUID-VkRenderPassCreateInfo-pNext-01926`, `VUID-VkRenderPassCreateInfo-pNext-01927`, `VUID-VkRenderPassCreateInfo-pNext-01928`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_render_pass_unchecked<'a>(
         &self,

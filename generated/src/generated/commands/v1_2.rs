@@ -7,7 +7,7 @@ impl Device {
 
 # Safety
 
-The caller upholds these 68 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkAttachmentDescription2-format-06698`: `format` must not be VK_FORMAT_UNDEFINED
 - `VUID-VkAttachmentDescription2-format-06906`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
@@ -20,17 +20,12 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-VkAttachmentDescription2-format-06248`: If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure and `format` only includes a stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
 - `VUID-VkRenderPassCreateInfo2-None-03049`: If any two subpasses operate on attachments with overlapping ranges of the same `VkDeviceMemory` object, and at least one subpass writes to that area of `VkDeviceMemory`, a subpass dependency must be included (either directly or via some intermediate subpasses) between them
 - `VUID-VkRenderPassCreateInfo2-attachment-03050`: If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or the attachment indexed by any element of `pPreserveAttachments` in any given element of `pSubpasses` is bound to a range of a `VkDeviceMemory` object that overlaps with any other attachment in any subpass (including the same subpass), the `VkAttachmentDescription2` structures describing them must include `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT` in `flags`
-- `VUID-VkRenderPassCreateInfo2-attachment-03051`: If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or any element of `pPreserveAttachments` in any given element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, then it must be less than `attachmentCount`
 - `VUID-VkRenderPassCreateInfo2-pAttachments-02522`: For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
 - `VUID-VkRenderPassCreateInfo2-pAttachments-02523`: For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
 - `VUID-VkRenderPassCreateInfo2-pDependencies-03054`: For any element of `pDependencies`, if the `srcSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `srcStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the source subpass
 - `VUID-VkRenderPassCreateInfo2-pDependencies-03055`: For any element of `pDependencies`, if the `dstSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `dstStageMask` member of that dependency must be a pipeline stage supported by the pipeline identified by the `pipelineBindPoint` member of the destination subpass
 - `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056`: The set of bits included in any element of `pCorrelatedViewMasks` must not overlap with the set of bits included in any other element of `pCorrelatedViewMasks`
-- `VUID-VkRenderPassCreateInfo2-viewMask-03057`: If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, `correlatedViewMaskCount` must be `0`
-- `VUID-VkRenderPassCreateInfo2-viewMask-03058`: The VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` must either all be `0`, or all not be `0`
-- `VUID-VkRenderPassCreateInfo2-viewMask-03059`: If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, the `dependencyFlags` member of any element of `pDependencies` must not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
 - `VUID-VkRenderPassCreateInfo2-pDependencies-03060`: For any element of `pDependencies` where its `srcSubpass` member equals its `dstSubpass` member, if the `viewMask` member of the corresponding element of `pSubpasses` includes more than one bit, its `dependencyFlags` member must include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
-- `VUID-VkRenderPassCreateInfo2-attachment-02525`: If the `attachment` member of any element of the `pInputAttachments` member of any element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `aspectMask` member of that element of `pInputAttachments` must only include aspects that are present in images of the format specified by the element of `pAttachments` specified by `attachment`
 - `VUID-VkRenderPassCreateInfo2-srcSubpass-02526`: The `srcSubpass` member of each element of `pDependencies` must be less than `subpassCount`
 - `VUID-VkRenderPassCreateInfo2-dstSubpass-02527`: The `dstSubpass` member of each element of `pDependencies` must be less than `subpassCount`
 - `VUID-VkRenderPassCreateInfo2-pSubpasses-06473`: If the `pSubpasses` pNext chain includes a VkSubpassDescriptionDepthStencilResolve structure and the `pDepthStencilResolveAttachment` member is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, then `attachment` must be less than `attachmentCount`
@@ -48,24 +43,8 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-VkSubpassDependency2-dstStageMask-03937`: If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
 - `VUID-VkSubpassDescription2-attachment-06915`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED`, ts `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`
 - `VUID-VkSubpassDescription2-loadOp-03064`: If the first use of an attachment in this render pass is as an input attachment, and the attachment is not also used as a color or depth/stencil attachment in the same subpass, then `loadOp` must not be `VK_ATTACHMENT_LOAD_OP_CLEAR`
-- `VUID-VkSubpassDescription2-pResolveAttachments-03065`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that does not have the value `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have the value `VK_ATTACHMENT_UNUSED`
-- `VUID-VkSubpassDescription2-pResolveAttachments-03066`: If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkSubpassDescription2-pResolveAttachments-03067`: If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkSubpassDescription2-pResolveAttachments-03068`: Any given element of `pResolveAttachments` must have the same VkFormat as its corresponding color attachment
-- `VUID-VkSubpassDescription2-pInputAttachments-02897`: All attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain at least `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription2-pColorAttachments-02898`: All attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription2-pResolveAttachments-02899`: All attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`: If `pDepthStencilAttachment` is not `NULL` and the attachment is not `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`: If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, all attachments in `pDepthStencilAttachment` or `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have the same sample count
-- `VUID-VkSubpassDescription2-attachment-03073`: Each element of `pPreserveAttachments` must not be `VK_ATTACHMENT_UNUSED`
-- `VUID-VkSubpassDescription2-pPreserveAttachments-03074`: Any given element of `pPreserveAttachments` must not also be an element of any other member of the subpass description
-- `VUID-VkSubpassDescription2-layout-02528`: If any attachment is used by more than one VkAttachmentReference2 member, then each use must use the same `layout`
 - `VUID-VkSubpassDescription2-attachment-02799`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must be a valid combination of VkImageAspectFlagBits
-- `VUID-VkSubpassDescription2-attachment-02800`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not be `0`
-- `VUID-VkSubpassDescription2-attachment-02801`: If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not include `VK_IMAGE_ASPECT_METADATA_BIT`
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: An attachment must not be used in both `pDepthStencilAttachment` and `pColorAttachments`
 - `VUID-VkSubpassDescription2-attachment-06251`: If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED` and its `pNext` chain includes a VkAttachmentDescriptionStencilLayout structure, the `layout` member of `pDepthStencilAttachment` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkSubpassDescription2-viewMask-06706`: The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
 - `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not be `NULL` or have the value `VK_ATTACHMENT_UNUSED`
 - `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180`: If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilResolveAttachment` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
@@ -91,10 +70,12 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
+        crate::hooks::create_render_pass2_checks(create_info)?;
         {
             let r = self.validate_create_render_pass2(create_info);
             r?;
         }
+        crate::hooks::render_pass2_reference_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_render_pass2_unchecked(create_info) }
@@ -103,7 +84,7 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
 
 # Safety
 
-The caller upholds the rules that [`Self::create_render_pass2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_render_pass2`] checks at run time: `VUID-VkRenderPassCreateInfo2-attachment-03051`, `VUID-VkSubpassDescription2-attachment-03073`, `VUID-VkSubpassDescription2-pPreserveAttachments-03074`, `VUID-VkSubpassDescription2-pResolveAttachments-03065`, `VUID-VkSubpassDescription2-pResolveAttachments-03066`, `VUID-VkSubpassDescription2-pResolveAttachments-03067`, `VUID-VkSubpassDescription2-pResolveAttachments-03068`, `VUID-VkSubpassDescription2-pInputAttachments-02897`, `VUID-VkSubpassDescription2-pColorAttachments-02898`, `VUID-VkSubpassDescription2-pResolveAttachments-02899`, `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`, `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`, `VUID-VkSubpassDescription2-layout-02528`, `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`, `VUID-VkSubpassDescription2-attachment-02800`, `VUID-VkSubpassDescription2-attachment-02801`, `VUID-VkRenderPassCreateInfo2-attachment-02525`, `VUID-VkSubpassDescription2-viewMask-06706`, `VUID-VkRenderPassCreateInfo2-viewMask-03057`, `VUID-VkRenderPassCreateInfo2-viewMask-03058`, `VUID-VkRenderPassCreateInfo2-viewMask-03059`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_render_pass2_unchecked<'a>(
         &self,

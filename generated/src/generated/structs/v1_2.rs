@@ -1710,6 +1710,11 @@ unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for RenderPassAttachmentBeginIn
 
 The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo2.html). Settled by the wrappers:
 
+- `VUID-VkRenderPassCreateInfo2-attachment-03051`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo2-viewMask-03057`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkRenderPassCreateInfo2-viewMask-03058`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkRenderPassCreateInfo2-viewMask-03059`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkRenderPassCreateInfo2-attachment-02525`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkRenderPassCreateInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassCreateInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1720,7 +1725,7 @@ The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.k
 - `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 28 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 23 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo2<'a> {
@@ -2033,6 +2038,20 @@ impl<'a> SubpassDependency2<'a> {
 The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription2.html). Settled by the wrappers:
 
 - `VUID-VkSubpassDescription2-attachment-06913`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription2-pResolveAttachments-03065`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pResolveAttachments-03066`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pResolveAttachments-03067`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pResolveAttachments-03068`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pInputAttachments-02897`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pColorAttachments-02898`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-attachment-03073`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pPreserveAttachments-03074`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-layout-02528`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-attachment-02800`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-attachment-02801`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkSubpassDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubpassDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubpassDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2047,11 +2066,13 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-multiview-06558`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription2-viewMask-06706`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 39.
+Left to the caller (listed one by one in the crate's `validation.json`): 24.
 
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 33: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first
+- 17: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {

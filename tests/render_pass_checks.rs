@@ -1,0 +1,534 @@
+//! Render pass creation: what each subpass references is checked against the render
+//! pass's attachments (formats and their features, sample counts, layouts,
+//! preserved attachments) and its view masks against each other.
+//!
+//! Each case changes one valid render pass so that it breaks one rule, and builds it
+//! through both `vkCreateRenderPass` and `vkCreateRenderPass2` (where the rule has a
+//! VUID there). tuff must refuse the safe call with the rule's VUID; the validation
+//! layer, for the `_unchecked` twin (with a messenger that makes it skip a call it
+//! finds wrong), must name that VUID and nothing else but the rules the case says the
+//! same change breaks, or say nothing (the rule is then proven by the error alone).
+//!
+//! SAFETY of the `unsafe` blocks: `create_render_pass` and `create_render_pass2` are
+//! `unsafe` for rules their `# Safety` sections list, which these render passes keep
+//! but for the one each case breaks on purpose, which tuff refuses and the layer
+//! skips.
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::Setup;
+
+const GENERAL: vk::ImageLayout = vk::ImageLayout::GENERAL;
+const COLOR: vk::ImageLayout = vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL;
+const READ: vk::ImageLayout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
+const DEPTH: vk::ImageLayout = vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+const ONE: vk::SampleCountFlags = vk::SampleCountFlags::TYPE_1;
+const FOUR: vk::SampleCountFlags = vk::SampleCountFlags::TYPE_4;
+
+/// The render pass's attachments, by index: one- and four-sample color, a
+/// depth/stencil one, a second one-sample color, a second four-sample color, a
+/// one-sample color of another format, a compressed format no attachment can have,
+/// and a four-sample depth/stencil one.
+const ATTACHMENTS: [(vk::Format, vk::SampleCountFlags); 8] = [
+    (vk::Format::R8G8B8A8_UNORM, ONE),
+    (vk::Format::R8G8B8A8_UNORM, FOUR),
+    (vk::Format::D32_SFLOAT_S8_UINT, ONE),
+    (vk::Format::R8G8B8A8_UNORM, ONE),
+    (vk::Format::R8G8B8A8_UNORM, FOUR),
+    (vk::Format::R8_UNORM, ONE),
+    (vk::Format::BC1_RGBA_UNORM_BLOCK, ONE),
+    (vk::Format::D32_SFLOAT_S8_UINT, FOUR),
+];
+
+/// A render pass of one subpass (or as many as it has view masks), in terms both
+/// create infos can express.
+#[derive(Clone)]
+struct Spec {
+    inputs: Vec<(u32, vk::ImageLayout, vk::ImageAspectFlags)>,
+    colors: Vec<(u32, vk::ImageLayout)>,
+    resolves: Option<Vec<(u32, vk::ImageLayout)>>,
+    depth: Option<(u32, vk::ImageLayout)>,
+    preserve: Vec<u32>,
+    /// One view mask per subpass; empty for one subpass without multiview (no
+    /// `VkRenderPassMultiviewCreateInfo` is chained to `vkCreateRenderPass`'s).
+    view_masks: Vec<u32>,
+    correlation_masks: Vec<u32>,
+    /// A dependency of subpass 0 on itself, with these flags.
+    self_dependency: Option<vk::DependencyFlags>,
+    /// View offsets of the multiview info, one per dependency it describes.
+    view_offsets: Vec<i32>,
+}
+
+impl Default for Spec {
+    fn default() -> Self {
+        Spec {
+            inputs: vec![],
+            colors: vec![(0, COLOR)],
+            resolves: None,
+            depth: None,
+            preserve: vec![],
+            view_masks: vec![],
+            correlation_masks: vec![],
+            self_dependency: None,
+            view_offsets: vec![],
+        }
+    }
+}
+
+fn descriptions() -> Vec<vk::AttachmentDescription> {
+    ATTACHMENTS
+        .iter()
+        .map(|&(format, samples)| vk::AttachmentDescription {
+            format,
+            samples,
+            load_op: vk::AttachmentLoadOp::DONT_CARE,
+            store_op: vk::AttachmentStoreOp::DONT_CARE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: GENERAL,
+            ..Default::default()
+        })
+        .collect()
+}
+
+fn dependency(flags: vk::DependencyFlags) -> vk::SubpassDependency {
+    let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+    vk::SubpassDependency {
+        src_subpass: 0,
+        dst_subpass: 0,
+        src_stage_mask: stage,
+        dst_stage_mask: stage,
+        src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+        dst_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+        dependency_flags: flags,
+    }
+}
+
+/// `spec` through `vkCreateRenderPass`: the safe call's result, and what the layer
+/// said of the unchecked one.
+fn create1(s: &Setup, spec: &Spec) -> (tuff::Result<()>, Vec<String>) {
+    let r = |(attachment, layout): (u32, vk::ImageLayout)| vk::AttachmentReference {
+        attachment,
+        layout,
+    };
+    let inputs: Vec<_> = spec.inputs.iter().map(|&(a, l, _)| r((a, l))).collect();
+    let colors: Vec<_> = spec.colors.iter().copied().map(r).collect();
+    let resolves: Option<Vec<_>> = spec
+        .resolves
+        .as_ref()
+        .map(|v| v.iter().copied().map(r).collect());
+    let depth = spec.depth.map(r);
+    let mut subpass = tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .input_attachments(&inputs)
+        .color_attachments(&colors)
+        .depth_stencil_attachment(depth.as_ref())
+        .preserve_attachments(&spec.preserve);
+    if let Some(resolves) = &resolves {
+        subpass = subpass
+            .resolve_attachments(resolves)
+            .expect("one per color");
+    }
+    let subpasses = vec![subpass; spec.view_masks.len().max(1)];
+    let attachments = descriptions();
+    let dependencies: Vec<_> = spec.self_dependency.into_iter().map(dependency).collect();
+    let mut multiview = tuff::RenderPassMultiviewCreateInfo::new()
+        .view_masks(&spec.view_masks)
+        .view_offsets(&spec.view_offsets)
+        .correlation_masks(&spec.correlation_masks);
+    let mut info = tuff::RenderPassCreateInfo::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies);
+    if !spec.view_masks.is_empty() {
+        info = info.push_next(&mut multiview);
+    }
+    let safe = unsafe { s.device.create_render_pass(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_render_pass_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+/// `spec` through `vkCreateRenderPass2`.
+fn create2(s: &Setup, spec: &Spec) -> (tuff::Result<()>, Vec<String>) {
+    let r = |&(attachment, layout): &(u32, vk::ImageLayout)| {
+        tuff::AttachmentReference2::new()
+            .attachment(attachment)
+            .layout(layout)
+    };
+    let inputs: Vec<_> = spec
+        .inputs
+        .iter()
+        .map(|&(a, l, aspect)| r(&(a, l)).aspect_mask(aspect))
+        .collect();
+    let colors: Vec<_> = spec.colors.iter().map(r).collect();
+    let resolves: Option<Vec<_>> = spec.resolves.as_ref().map(|v| v.iter().map(r).collect());
+    let depth = spec.depth.as_ref().map(r);
+    let subpass = |view_mask| {
+        let mut subpass = tuff::SubpassDescription2::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .view_mask(view_mask)
+            .input_attachments(&inputs)
+            .color_attachments(&colors)
+            .depth_stencil_attachment(depth.as_ref())
+            .preserve_attachments(&spec.preserve);
+        if let Some(resolves) = &resolves {
+            subpass = subpass
+                .resolve_attachments(resolves)
+                .expect("one per color");
+        }
+        subpass
+    };
+    let subpasses: Vec<_> = if spec.view_masks.is_empty() {
+        vec![subpass(0)]
+    } else {
+        spec.view_masks.iter().map(|&m| subpass(m)).collect()
+    };
+    let attachments: Vec<_> = descriptions()
+        .iter()
+        .map(|a| {
+            tuff::AttachmentDescription2::new()
+                .format(a.format)
+                .samples(a.samples)
+                .load_op(a.load_op)
+                .store_op(a.store_op)
+                .stencil_load_op(a.stencil_load_op)
+                .stencil_store_op(a.stencil_store_op)
+                .initial_layout(a.initial_layout)
+                .final_layout(a.final_layout)
+        })
+        .collect();
+    let dependencies: Vec<_> = spec
+        .self_dependency
+        .into_iter()
+        .map(|flags| {
+            let d = dependency(flags);
+            tuff::SubpassDependency2::new()
+                .src_subpass(d.src_subpass)
+                .dst_subpass(d.dst_subpass)
+                .src_stage_mask(d.src_stage_mask)
+                .dst_stage_mask(d.dst_stage_mask)
+                .src_access_mask(d.src_access_mask)
+                .dst_access_mask(d.dst_access_mask)
+                .dependency_flags(d.dependency_flags)
+        })
+        .collect();
+    let info = tuff::RenderPassCreateInfo2::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies)
+        .correlated_view_masks(&spec.correlation_masks);
+    let safe = unsafe { s.device.create_render_pass2(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_render_pass2_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+/// Runs `unchecked` with the layer told to skip erroring calls, and returns what it
+/// said.
+fn under_layer(s: &Setup, unchecked: impl FnOnce()) -> Vec<String> {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    s.messages.take()
+}
+
+/// One case: the rule's VUID through each create info (`""` where it has none), the
+/// rules the same change necessarily breaks too (which the layer may name beside
+/// it, each with why), and the change.
+struct Case {
+    vuids: (&'static str, &'static str),
+    also: &'static [&'static str],
+    change: fn(&mut Spec),
+}
+
+const CASES: &[Case] = &[
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-attachment-00853",
+            "VUID-VkSubpassDescription2-attachment-03073",
+        ),
+        also: &[],
+        change: |s| s.preserve = vec![vk::ATTACHMENT_UNUSED],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pPreserveAttachments-00854",
+            "VUID-VkSubpassDescription2-pPreserveAttachments-03074",
+        ),
+        also: &[],
+        change: |s| s.preserve = vec![0],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pResolveAttachments-00847",
+            "VUID-VkSubpassDescription2-pResolveAttachments-03065",
+        ),
+        also: &[],
+        change: |s| {
+            s.colors = vec![(vk::ATTACHMENT_UNUSED, COLOR)];
+            s.resolves = Some(vec![(3, COLOR)]);
+        },
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pResolveAttachments-00848",
+            "VUID-VkSubpassDescription2-pResolveAttachments-03066",
+        ),
+        also: &[],
+        change: |s| s.resolves = Some(vec![(3, COLOR)]),
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pResolveAttachments-00849",
+            "VUID-VkSubpassDescription2-pResolveAttachments-03067",
+        ),
+        also: &[],
+        change: |s| {
+            s.colors = vec![(1, COLOR)];
+            s.resolves = Some(vec![(4, COLOR)]);
+        },
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pResolveAttachments-00850",
+            "VUID-VkSubpassDescription2-pResolveAttachments-03068",
+        ),
+        also: &[],
+        change: |s| {
+            s.colors = vec![(1, COLOR)];
+            s.resolves = Some(vec![(5, COLOR)]);
+        },
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pInputAttachments-02647",
+            "VUID-VkSubpassDescription2-pInputAttachments-02897",
+        ),
+        also: &[],
+        change: |s| s.inputs = vec![(6, READ, vk::ImageAspectFlags::COLOR)],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pColorAttachments-02648",
+            "VUID-VkSubpassDescription2-pColorAttachments-02898",
+        ),
+        also: &[],
+        change: |s| s.colors = vec![(6, COLOR)],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pDepthStencilAttachment-02650",
+            "VUID-VkSubpassDescription2-pDepthStencilAttachment-02900",
+        ),
+        also: &[],
+        change: |s| s.depth = Some((3, DEPTH)),
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pColorAttachments-06868",
+            "VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872",
+        ),
+        also: &[],
+        change: |s| s.colors = vec![(0, COLOR), (1, COLOR)],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pDepthStencilAttachment-01418",
+            "VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872",
+        ),
+        also: &[],
+        change: |s| s.depth = Some((7, DEPTH)),
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-layout-02519",
+            "VUID-VkSubpassDescription2-layout-02528",
+        ),
+        also: &[],
+        change: |s| s.inputs = vec![(0, GENERAL, vk::ImageAspectFlags::COLOR)],
+    },
+    Case {
+        vuids: (
+            "VUID-VkSubpassDescription-pDepthStencilAttachment-04438",
+            "VUID-VkSubpassDescription2-pDepthStencilAttachment-04440",
+        ),
+        // No format lavapipe has is both a color and a depth/stencil attachment, so
+        // one attachment in both places lacks a feature one of them needs.
+        also: &[
+            "VUID-VkSubpassDescription-pDepthStencilAttachment-02650",
+            "VUID-VkSubpassDescription2-pDepthStencilAttachment-02900",
+        ],
+        change: |s| s.depth = Some((0, COLOR)),
+    },
+    Case {
+        vuids: ("", "VUID-VkSubpassDescription2-attachment-02800"),
+        // The 1.3.239 layer also reads an empty mask of a color format as missing
+        // the color aspect, under the rule of aspects present in the format.
+        also: &["VUID-VkRenderPassCreateInfo2-attachment-02525"],
+        change: |s| s.inputs = vec![(3, READ, vk::ImageAspectFlags::empty())],
+    },
+    Case {
+        vuids: ("", "VUID-VkSubpassDescription2-attachment-02801"),
+        // No format has a metadata aspect.
+        also: &["VUID-VkRenderPassCreateInfo2-attachment-02525"],
+        change: |s| {
+            s.inputs = vec![(
+                3,
+                READ,
+                vk::ImageAspectFlags::COLOR | vk::ImageAspectFlags::METADATA,
+            )]
+        },
+    },
+    Case {
+        vuids: ("", "VUID-VkRenderPassCreateInfo2-attachment-02525"),
+        also: &[],
+        change: |s| s.inputs = vec![(3, READ, vk::ImageAspectFlags::DEPTH)],
+    },
+    Case {
+        vuids: ("", "VUID-VkSubpassDescription2-viewMask-06706"),
+        also: &[],
+        change: |s| s.view_masks = vec![1 << 31],
+    },
+    Case {
+        vuids: ("VUID-VkRenderPassCreateInfo-pNext-01929", ""),
+        also: &[],
+        change: |s| {
+            s.view_masks = vec![1];
+            s.self_dependency =
+                Some(vk::DependencyFlags::BY_REGION | vk::DependencyFlags::VIEW_LOCAL);
+            s.view_offsets = vec![0, 0];
+        },
+    },
+    Case {
+        vuids: (
+            "VUID-VkRenderPassCreateInfo-pNext-02513",
+            "VUID-VkRenderPassCreateInfo2-viewMask-03058",
+        ),
+        also: &[],
+        change: |s| s.view_masks = vec![1, 0],
+    },
+    Case {
+        vuids: (
+            "VUID-VkRenderPassCreateInfo-pNext-02515",
+            "VUID-VkRenderPassCreateInfo2-viewMask-03057",
+        ),
+        also: &[],
+        change: |s| {
+            s.view_masks = vec![0];
+            s.correlation_masks = vec![1];
+        },
+    },
+    Case {
+        vuids: (
+            "VUID-VkRenderPassCreateInfo-pNext-02514",
+            "VUID-VkRenderPassCreateInfo2-viewMask-03059",
+        ),
+        also: &[],
+        change: |s| {
+            s.view_masks = vec![0];
+            s.self_dependency =
+                Some(vk::DependencyFlags::BY_REGION | vk::DependencyFlags::VIEW_LOCAL);
+        },
+    },
+];
+
+/// The render pass every case starts from is valid through both create infos, so
+/// that a case cannot pass on a rule it did not break.
+#[test]
+fn the_cases_start_from_a_valid_render_pass() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup_full_features(true);
+    let mut valid = vec![Spec::default()];
+    // The parts the cases use, each valid on its own: a resolve, an input
+    // attachment, a depth attachment, view masks with a view-local dependency.
+    valid.push(Spec {
+        colors: vec![(1, COLOR)],
+        resolves: Some(vec![(3, COLOR)]),
+        ..Spec::default()
+    });
+    valid.push(Spec {
+        inputs: vec![(3, READ, vk::ImageAspectFlags::COLOR)],
+        depth: Some((2, DEPTH)),
+        preserve: vec![5],
+        ..Spec::default()
+    });
+    valid.push(Spec {
+        view_masks: vec![1],
+        correlation_masks: vec![1],
+        self_dependency: Some(vk::DependencyFlags::BY_REGION | vk::DependencyFlags::VIEW_LOCAL),
+        view_offsets: vec![0],
+        ..Spec::default()
+    });
+    for (n, spec) in valid.iter().enumerate() {
+        for (version, (safe, layer)) in [(1, create1(&s, spec)), (2, create2(&s, spec))] {
+            assert!(
+                safe.is_ok(),
+                "render pass {n} through version {version}: tuff refused it: {safe:?}"
+            );
+            assert!(
+                layer.is_empty(),
+                "render pass {n} through version {version}: the layer said:\n{}",
+                layer.join("\n")
+            );
+        }
+    }
+}
+
+/// Each case is refused with its rule's VUID through both create infos, and the
+/// layer names the same rule or nothing.
+#[test]
+fn each_broken_reference_rule_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup_full_features(true);
+    let mut failures = Vec::new();
+    let (mut by_layer, mut alone) = (0, Vec::new());
+    for case in CASES {
+        let mut spec = Spec::default();
+        (case.change)(&mut spec);
+        for (vuid, (safe, layer)) in [
+            (case.vuids.0, create1(&s, &spec)),
+            (case.vuids.1, create2(&s, &spec)),
+        ] {
+            if vuid.is_empty() {
+                continue;
+            }
+            match &safe {
+                Err(tuff::Error::Validation { vuid: got, .. }) if *got == vuid => {}
+                other => {
+                    failures.push(format!("{vuid}: the safe method returned {other:?}"));
+                    continue;
+                }
+            }
+            let names = |m: &String, v: &str| m.contains(&format!("[ {v} ]"));
+            if layer.is_empty() {
+                alone.push(vuid);
+            } else if layer.iter().any(|m| names(m, vuid))
+                && layer
+                    .iter()
+                    .all(|m| names(m, vuid) || case.also.iter().any(|a| names(m, a)))
+            {
+                by_layer += 1;
+            } else {
+                failures.push(format!(
+                    "{vuid}: the layer said something else:\n  {}",
+                    layer.join("\n  ")
+                ));
+            }
+        }
+    }
+    println!(
+        "render pass references: the layer named {by_layer}, the error alone proves {} ({})",
+        alone.len(),
+        alone.join(", ")
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
