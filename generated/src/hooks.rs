@@ -21,7 +21,9 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
+mod pipeline;
 mod render_pass;
+pub(crate) use pipeline::graphics_pipeline_state_checks;
 pub(crate) use render_pass::{
     create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
 };
@@ -4818,11 +4820,14 @@ pub(crate) fn render_pass_created(
         .iter()
         .map(|d| no_attachment!(d))
         .collect();
+    let (color_formats, depth_formats) = render_pass::subpass_formats(create_info);
     device.live().render_pass_created(
         render_pass.raw(),
         RenderPassRecord {
             view_masks,
             no_attachments,
+            color_formats,
+            depth_formats,
         },
     );
     render_pass
@@ -4840,11 +4845,14 @@ pub(crate) fn render_pass2_created(
     let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
     let no_attachments = subpasses.iter().map(|d| no_attachment!(d)).collect();
+    let (color_formats, depth_formats) = render_pass::subpass_formats2(create_info);
     device.live().render_pass_created(
         render_pass.raw(),
         RenderPassRecord {
             view_masks,
             no_attachments,
+            color_formats,
+            depth_formats,
         },
     );
     render_pass

@@ -124,6 +124,10 @@ pub(crate) struct RenderPassRecord {
     pub view_masks: Vec<u32>,
     /// Whether each subpass uses no attachment (every reference unused, or none).
     pub no_attachments: Vec<bool>,
+    /// Each subpass's color attachments' formats (`UNDEFINED` for an unused one).
+    pub color_formats: Vec<Vec<vk::Format>>,
+    /// Each subpass's depth/stencil attachment's format, if it uses one.
+    pub depth_formats: Vec<Option<vk::Format>>,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its

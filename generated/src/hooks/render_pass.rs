@@ -208,6 +208,39 @@ impl Pass {
         }
     }
 
+    /// Each subpass's color attachments' formats and depth/stencil attachment's
+    /// format, for the render pass's record. An index past the attachments (which
+    /// only the unchecked path lets through) reads as `UNDEFINED`.
+    fn formats(&self) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
+        let format = |r: &Ref| {
+            self.attachments
+                .get(r.attachment as usize)
+                .map_or(vk::Format::UNDEFINED, |a| a.0)
+        };
+        let colors = self
+            .subpasses
+            .iter()
+            .map(|s| {
+                s.colors
+                    .iter()
+                    .map(|r| {
+                        if r.used() {
+                            format(r)
+                        } else {
+                            vk::Format::UNDEFINED
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let depths = self
+            .subpasses
+            .iter()
+            .map(|s| s.depth.filter(Ref::used).map(|r| format(&r)))
+            .collect();
+        (colors, depths)
+    }
+
     fn vuid(&self, rule: Rule) -> &'static str {
         if self.second {
             rule.1
@@ -462,7 +495,7 @@ fn check_view_masks(
 }
 
 /// The device's `maxMultiviewViewCount`, where the instance can ask for it.
-fn multiview_view_count(device: &Device) -> Option<u32> {
+pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
     let physical = device.parent();
     let instance = physical.parent();
     if !instance.exts().version(1) {
@@ -539,4 +572,18 @@ pub(crate) fn render_pass2_reference_checks(
     let masks: Vec<_> = subpasses.iter().map(|s| s.view_mask).collect();
     let flags: Vec<_> = dependencies.iter().map(|d| d.dependency_flags).collect();
     check_view_masks(device, &masks, raw.correlated_view_mask_count, &flags, true)
+}
+
+/// Each subpass's color and depth/stencil formats, for `vkCreateRenderPass`'s record.
+pub(crate) fn subpass_formats(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
+    Pass::of(create_info).formats()
+}
+
+/// [`subpass_formats`] for `vkCreateRenderPass2`.
+pub(crate) fn subpass_formats2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
+    Pass::of2(create_info).formats()
 }

@@ -217,6 +217,10 @@ const CHAINED_COUNT: &str =
     "checks the chained struct's count against the count of the struct it extends";
 const RENDER_PASS_INDICES: &str =
     "checks each attachment, subpass and input attachment index against the render pass's counts";
+const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
+const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
+const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first";
+const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
 const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
 const PIPELINE_BOUND: &str =
@@ -1277,12 +1281,56 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateGraphicsPipelines",
         check: call("hooks::create_graphics_pipelines_checks", &["self", "create_infos"]),
+        check_last: call(
+            "hooks::graphics_pipeline_state_checks",
+            &["self", "create_infos"],
+        ),
         created: call(
             "hooks::graphics_pipelines_created",
             &["self", "created", "create_infos"],
         ),
         settles: &[
             ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::Dynamic(SHADER_LAYOUT)),
+            ("VUID-VkGraphicsPipelineCreateInfo-flags-00764", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-flags-00722", How::Dynamic(PIPELINE_STATE_ALONE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-flags-00723", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-flags-00724", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-stage-06897", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-stage-00727", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00729", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00730", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00731", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00736", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-topology-00737", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-02097", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-02098", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-layout-06602", How::Dynamic(PIPELINE_STATE_ALONE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751", How::Dynamic(PIPELINE_STATE_ALONE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06046", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-multiview-06577", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06578", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06581", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06585", How::User(UNPROVEN_DEPTH_FORMAT)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06586", How::User(UNPROVEN_DEPTH_FORMAT)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06587", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06588", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06589", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06043", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06044", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06042", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06055", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06041", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06062", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755", How::User(UNPROVEN_DEPTH_BOUNDS)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133", How::Dynamic(PIPELINE_STATE)),
             (
                 "VUID-VkGraphicsPipelineCreateInfo-pStages-06600",
                 How::Dynamic("checks the stages are set when stageCount is not 0 (the layer would read the NULL array too: proven by the error alone)"),

@@ -1,0 +1,543 @@
+//! The checks of graphics pipeline creation over the pipeline's state as a whole:
+//! derivatives, the set of shader stages and the topology they need, the state
+//! structs the pipeline must have, what its subpass (or, for dynamic rendering, its
+//! chained `VkPipelineRenderingCreateInfo`) renders to, and fixed-function values
+//! that need a feature unless their state is dynamic.
+//!
+//! tuff emits no graphics pipeline library, so every pipeline is complete: it has
+//! vertex input and pre-rasterization shader state, and fragment shader and fragment
+//! output interface state unless rasterization is discarded (and not dynamically).
+
+use super::*;
+
+/// The state structs a graphics create info points to.
+struct States<'a> {
+    stages: &'a [vk::PipelineShaderStageCreateInfo<'a>],
+    vertex_input: Option<&'a vk::PipelineVertexInputStateCreateInfo<'a>>,
+    assembly: Option<&'a vk::PipelineInputAssemblyStateCreateInfo<'a>>,
+    tessellation: Option<&'a vk::PipelineTessellationStateCreateInfo<'a>>,
+    viewport: Option<&'a vk::PipelineViewportStateCreateInfo<'a>>,
+    raster: Option<&'a vk::PipelineRasterizationStateCreateInfo<'a>>,
+    multisample: Option<&'a vk::PipelineMultisampleStateCreateInfo<'a>>,
+    depth_stencil: Option<&'a vk::PipelineDepthStencilStateCreateInfo<'a>>,
+    blend: Option<&'a vk::PipelineColorBlendStateCreateInfo<'a>>,
+    blend_attachments: &'a [vk::PipelineColorBlendAttachmentState],
+    dynamic: &'a [vk::DynamicState],
+}
+
+impl<'a> States<'a> {
+    /// # Safety
+    ///
+    /// `raw` is a safe create info's: each pointer set through a safe setter, to a
+    /// struct that outlives it, and each array stored with its count.
+    unsafe fn of(raw: &'a vk::GraphicsPipelineCreateInfo<'a>) -> Self {
+        // SAFETY: as the caller promises.
+        unsafe {
+            let blend = raw.p_color_blend_state.as_ref();
+            States {
+                stages: crate::retention::raw_slice(raw.p_stages, raw.stage_count),
+                vertex_input: raw.p_vertex_input_state.as_ref(),
+                assembly: raw.p_input_assembly_state.as_ref(),
+                tessellation: raw.p_tessellation_state.as_ref(),
+                viewport: raw.p_viewport_state.as_ref(),
+                raster: raw.p_rasterization_state.as_ref(),
+                multisample: raw.p_multisample_state.as_ref(),
+                depth_stencil: raw.p_depth_stencil_state.as_ref(),
+                blend,
+                blend_attachments: blend.map_or(&[][..], |b| {
+                    crate::retention::raw_slice(b.p_attachments, b.attachment_count)
+                }),
+                dynamic: raw.p_dynamic_state.as_ref().map_or(&[][..], |d| {
+                    crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
+                }),
+            }
+        }
+    }
+
+    fn dynamic(&self, state: vk::DynamicState) -> bool {
+        self.dynamic.contains(&state)
+    }
+
+    /// Whether the pipeline has fragment shader and fragment output interface state.
+    fn fragment(&self) -> bool {
+        self.dynamic(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)
+            || self
+                .raster
+                .is_none_or(|r| r.rasterizer_discard_enable == vk::FALSE)
+    }
+}
+
+/// What a graphics pipeline renders to: its subpass's color formats and
+/// depth/stencil format, or those of its chained `VkPipelineRenderingCreateInfo`.
+struct Targets {
+    colors: Vec<vk::Format>,
+    depth: Option<vk::Format>,
+}
+
+/// The checks of `vkCreateGraphicsPipelines` over each pipeline's state as a
+/// whole. They read the render pass's record and query format features, so they
+/// run after the checks of the values.
+pub(crate) fn graphics_pipeline_state_checks(
+    device: &Device,
+    create_infos: &[GraphicsPipelineCreateInfo<'_>],
+) -> Result<()> {
+    for (i, info) in create_infos.iter().enumerate() {
+        let raw = info.as_raw();
+        // SAFETY: `raw` is a safe struct's.
+        let states = unsafe { States::of(raw) };
+        let at = format!("pCreateInfos[{i}]");
+        check_derivative(raw, create_infos.len(), &at)?;
+        check_stages(&states, &at)?;
+        check_present(raw, &states, &at)?;
+        let targets = match raw.render_pass == vk::RenderPass::null() {
+            false => subpass_targets(device, raw, &at)?,
+            true => rendering_targets(device, raw, &at)?,
+        };
+        if states.fragment() {
+            check_targets(device, raw, &states, &targets, &at)?;
+        }
+        check_fixed_function(device, &states, &at)?;
+    }
+    Ok(())
+}
+
+/// A derivative names its base one way only.
+fn check_derivative(
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    count: usize,
+    at: &str,
+) -> Result<()> {
+    if raw.flags.contains(vk::PipelineCreateFlags::DISPATCH_BASE) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-00764",
+            format!("{at}.flags includes VK_PIPELINE_CREATE_DISPATCH_BASE, which only compute pipelines take"),
+        )?;
+    }
+    if !raw.flags.contains(vk::PipelineCreateFlags::DERIVATIVE) {
+        return Ok(());
+    }
+    let (handle, index) = (
+        raw.base_pipeline_handle != vk::Pipeline::null(),
+        raw.base_pipeline_index,
+    );
+    if !handle && index == -1 {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-00722",
+            format!("{at} is a derivative with neither a base pipeline handle nor an index"),
+        )?;
+    }
+    if !handle && (index < 0 || index as usize >= count) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-00723",
+            format!("{at}.basePipelineIndex ({index}) is no index into the {count} create infos"),
+        )?;
+    }
+    if handle && index != -1 {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-00724",
+            format!("{at} names a base pipeline by handle and by index ({index})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The stages: each at most once, a vertex shader, tessellation stages in pairs
+/// with their state and the patch-list topology.
+fn check_stages(states: &States<'_>, at: &str) -> Result<()> {
+    let mut seen = vk::ShaderStageFlags::empty();
+    for (j, s) in states.stages.iter().enumerate() {
+        if seen.intersects(s.stage) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-stage-06897",
+                format!(
+                    "{at}.pStages[{j}].stage ({:?}) is the stage of an earlier element",
+                    s.stage
+                ),
+            )?;
+        }
+        seen |= s.stage;
+    }
+    if !seen.contains(vk::ShaderStageFlags::VERTEX) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-stage-00727",
+            format!("{at} has no vertex shader stage"),
+        )?;
+    }
+    let control = seen.contains(vk::ShaderStageFlags::TESSELLATION_CONTROL);
+    let evaluation = seen.contains(vk::ShaderStageFlags::TESSELLATION_EVALUATION);
+    if control && !evaluation {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-00729",
+            format!("{at} has a tessellation control stage without an evaluation stage"),
+        )?;
+    }
+    if evaluation && !control {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-00730",
+            format!("{at} has a tessellation evaluation stage without a control stage"),
+        )?;
+    }
+    if control && evaluation && states.tessellation.is_none() {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-00731",
+            format!("{at} has tessellation stages but no pTessellationState"),
+        )?;
+    }
+    let patches = states
+        .assembly
+        .is_some_and(|a| a.topology == vk::PrimitiveTopology::PATCH_LIST);
+    if (control || evaluation) && states.assembly.is_some() && !patches {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-00736",
+            format!("{at} has tessellation stages, so its topology must be VK_PRIMITIVE_TOPOLOGY_PATCH_LIST"),
+        )?;
+    }
+    if patches && !(control || evaluation) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-topology-00737",
+            format!(
+                "{at}'s topology is VK_PRIMITIVE_TOPOLOGY_PATCH_LIST without tessellation stages"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// The state structs and layout a complete pipeline needs.
+fn check_present(
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    states: &States<'_>,
+    at: &str,
+) -> Result<()> {
+    let needs = [
+        (
+            states.vertex_input.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-02097",
+            "pVertexInputState",
+        ),
+        (
+            states.assembly.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-02098",
+            "pInputAssemblyState",
+        ),
+        (
+            states.raster.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601",
+            "pRasterizationState",
+        ),
+        (
+            raw.layout != vk::PipelineLayout::null(),
+            "VUID-VkGraphicsPipelineCreateInfo-layout-06602",
+            "layout",
+        ),
+        (
+            states
+                .raster
+                .is_none_or(|r| r.rasterizer_discard_enable != vk::FALSE)
+                || states.viewport.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750",
+            "pViewportState (rasterization is not discarded)",
+        ),
+        (
+            !states.fragment() || states.multisample.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751",
+            "pMultisampleState (the pipeline has fragment output state)",
+        ),
+    ];
+    for (given, vuid, what) in needs {
+        if !given {
+            refuse(vuid, format!("{at} has no {what}"))?;
+        }
+    }
+    Ok(())
+}
+
+/// The subpass's targets, from the render pass's record.
+fn subpass_targets(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    at: &str,
+) -> Result<Targets> {
+    let Some(record) = device.live().render_pass(raw.render_pass) else {
+        return Ok(Targets {
+            colors: Vec::new(),
+            depth: None,
+        });
+    };
+    let count = record.view_masks.len();
+    let subpass = raw.subpass as usize;
+    if subpass >= count {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06046",
+            format!(
+                "{at}.subpass ({subpass}) is not a subpass of its render pass, which has {count}"
+            ),
+        )?;
+    }
+    Ok(Targets {
+        colors: record
+            .color_formats
+            .get(subpass)
+            .cloned()
+            .unwrap_or_default(),
+        depth: record.depth_formats.get(subpass).copied().flatten(),
+    })
+}
+
+/// The targets of dynamic rendering, from a chained `VkPipelineRenderingCreateInfo`
+/// (none without one), and its rules.
+fn rendering_targets(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    at: &str,
+) -> Result<Targets> {
+    let (dynamic_rendering, multiview) = device
+        .live()
+        .with_features(|f| (f.v13.dynamic_rendering, f.v11.multiview));
+    if dynamic_rendering == vk::FALSE {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576",
+            format!("{at} has no render pass, and the device was created without dynamicRendering"),
+        )?;
+    }
+    // SAFETY: `raw` is a safe struct's.
+    let rendering: Option<&vk::PipelineRenderingCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::PIPELINE_RENDERING_CREATE_INFO,
+        )
+    };
+    let Some(r) = rendering else {
+        return Ok(Targets {
+            colors: Vec::new(),
+            depth: None,
+        });
+    };
+    if r.view_mask != 0 && multiview == vk::FALSE {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-multiview-06577",
+            format!("{at}'s VkPipelineRenderingCreateInfo::viewMask is {:#x}, but the device was created without multiview", r.view_mask),
+        )?;
+    }
+    let highest = 32 - r.view_mask.leading_zeros();
+    if let Some(max) = super::render_pass::multiview_view_count(device) {
+        if highest > max {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06578",
+                format!("{at}'s VkPipelineRenderingCreateInfo::viewMask ({:#x}) names view {}, past maxMultiviewViewCount ({max})", r.view_mask, highest - 1),
+            )?;
+        }
+    }
+    // SAFETY: the safe setter stores the formats with their count.
+    let colors = unsafe {
+        crate::retention::raw_slice(r.p_color_attachment_formats, r.color_attachment_count)
+    };
+    let (depth, stencil) = (r.depth_attachment_format, r.stencil_attachment_format);
+    let defined = |f: vk::Format| f != vk::Format::UNDEFINED;
+    for (k, &f) in colors.iter().enumerate().filter(|(_, f)| defined(**f)) {
+        if !features(device, f)?.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06581",
+                format!(
+                    "{at}'s pColorAttachmentFormats[{k}] ({f:?}) has no color attachment feature"
+                ),
+            )?;
+        }
+    }
+    let aspects = |f| crate::formats::aspects(f).unwrap_or_default();
+    for (format, what, feature_vuid, aspect, aspect_vuid) in [
+        (
+            depth,
+            "depthAttachmentFormat",
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06585",
+            vk::ImageAspectFlags::DEPTH,
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06587",
+        ),
+        (
+            stencil,
+            "stencilAttachmentFormat",
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06586",
+            vk::ImageAspectFlags::STENCIL,
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06588",
+        ),
+    ] {
+        if !defined(format) {
+            continue;
+        }
+        if !aspects(format).contains(aspect) {
+            refuse(
+                aspect_vuid,
+                format!("{at}'s {what} ({format:?}) has no {aspect:?} aspect"),
+            )?;
+        }
+        if !features(device, format)?.contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
+            refuse(
+                feature_vuid,
+                format!("{at}'s {what} ({format:?}) has no depth/stencil attachment feature"),
+            )?;
+        }
+    }
+    if defined(depth) && defined(stencil) && depth != stencil {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06589",
+            format!("{at}'s depthAttachmentFormat ({depth:?}) and stencilAttachmentFormat ({stencil:?}) differ"),
+        )?;
+    }
+    Ok(Targets {
+        colors: colors.to_vec(),
+        depth: [depth, stencil].into_iter().find(|f| defined(*f)),
+    })
+}
+
+/// What a color blend state and a depth/stencil state need of the targets.
+fn check_targets(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    states: &States<'_>,
+    targets: &Targets,
+    at: &str,
+) -> Result<()> {
+    let pass = raw.render_pass != vk::RenderPass::null();
+    let pick = |with_pass, without| if pass { with_pass } else { without };
+    if pass && targets.depth.is_some() && states.depth_stencil.is_none() {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06043",
+            format!(
+                "{at}'s subpass uses a depth/stencil attachment, but it has no pDepthStencilState"
+            ),
+        )?;
+    }
+    let colors = targets.colors.len();
+    if colors == 0 {
+        return Ok(());
+    }
+    let Some(blend) = states.blend else {
+        if pass {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06044",
+                format!("{at}'s subpass uses color attachments, but it has no pColorBlendState"),
+            )?;
+        }
+        return Ok(());
+    };
+    if blend.attachment_count as usize != colors {
+        refuse(
+            pick(
+                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06042",
+                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06055",
+            ),
+            format!(
+                "{at}'s pColorBlendState has {} attachments, but it renders to {colors} colors",
+                blend.attachment_count
+            ),
+        )?;
+    }
+    for (k, (a, &format)) in states
+        .blend_attachments
+        .iter()
+        .zip(&targets.colors)
+        .enumerate()
+    {
+        if a.blend_enable == vk::FALSE || format == vk::Format::UNDEFINED {
+            continue;
+        }
+        if !features(device, format)?.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND) {
+            refuse(
+                pick(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06041",
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06062",
+                ),
+                format!("{at} blends into color attachment {k}, whose format {format:?} does not support blending"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Values that need a feature unless their state is dynamic, and the dynamic
+/// states that replace a count.
+fn check_fixed_function(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    let f = device.live().features();
+    if let Some(r) = states.raster {
+        if f.wide_lines == vk::FALSE
+            && !states.dynamic(vk::DynamicState::LINE_WIDTH)
+            && r.line_width != 1.0
+        {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749",
+                format!(
+                    "{at}'s lineWidth is {}, but the device was created without wideLines",
+                    r.line_width
+                ),
+            )?;
+        }
+        if f.depth_bias_clamp == vk::FALSE
+            && !states.dynamic(vk::DynamicState::DEPTH_BIAS)
+            && r.depth_bias_enable == vk::TRUE
+            && r.depth_bias_clamp != 0.0
+        {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754",
+                format!("{at}'s depthBiasClamp is {}, but the device was created without depthBiasClamp", r.depth_bias_clamp),
+            )?;
+        }
+    }
+    if let Some(d) = states.depth_stencil.filter(|_| states.fragment()) {
+        let inside = |v: f32| (0.0..=1.0).contains(&v);
+        if !states.dynamic(vk::DynamicState::DEPTH_BOUNDS)
+            && d.depth_bounds_test_enable == vk::TRUE
+            && !(inside(d.min_depth_bounds) && inside(d.max_depth_bounds))
+        {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755",
+                format!(
+                    "{at}'s depth bounds ({}, {}) are not both between 0.0 and 1.0",
+                    d.min_depth_bounds, d.max_depth_bounds
+                ),
+            )?;
+        }
+    }
+    for (with_count, plain, count, what, zero_vuid, both_vuid) in [
+        (
+            vk::DynamicState::VIEWPORT_WITH_COUNT,
+            vk::DynamicState::VIEWPORT,
+            states.viewport.map_or(0, |v| v.viewport_count),
+            "viewport",
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379",
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132",
+        ),
+        (
+            vk::DynamicState::SCISSOR_WITH_COUNT,
+            vk::DynamicState::SCISSOR,
+            states.viewport.map_or(0, |v| v.scissor_count),
+            "scissor",
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380",
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133",
+        ),
+    ] {
+        if !states.dynamic(with_count) {
+            continue;
+        }
+        if count != 0 {
+            refuse(
+                zero_vuid,
+                format!("{at} sets its {what} count dynamically, so the viewport state's count must be 0, not {count}"),
+            )?;
+        }
+        if states.dynamic(plain) {
+            refuse(
+                both_vuid,
+                format!("{at} makes both {plain:?} and {with_count:?} dynamic"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// What an image of `format` can do with either tiling.
+fn features(device: &Device, format: vk::Format) -> Result<vk::FormatFeatureFlags> {
+    device
+        .parent()
+        .get_physical_device_format_properties(format)
+        .map(|p| p.linear_tiling_features | p.optimal_tiling_features)
+}

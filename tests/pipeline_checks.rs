@@ -1,0 +1,827 @@
+//! Graphics pipeline creation: the pipeline's state as a whole is checked
+//! (derivatives, its stages and topology, the state structs it must have, what its
+//! subpass or its dynamic rendering formats render to, and fixed-function values
+//! that need a feature).
+//!
+//! Each case changes one valid pipeline so that it breaks one rule. tuff must refuse
+//! the safe call with the rule's VUID; the validation layer, for the `_unchecked`
+//! twin (with a messenger that makes it skip a call it finds wrong), must name that
+//! VUID and nothing else but the rules the case says the same change breaks, or say
+//! nothing (the rule is then proven by the error alone).
+//!
+//! SAFETY of the `unsafe` blocks: `create_graphics_pipelines` is `unsafe` for rules
+//! its `# Safety` section lists, which these pipelines keep but for the one each
+//! case breaks on purpose, which tuff refuses and the layer skips. The shaders are
+//! the repository's (see `tuff_setup::shader`).
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::Setup;
+
+const RGBA8: vk::Format = vk::Format::R8G8B8A8_UNORM;
+const D32S8: vk::Format = vk::Format::D32_SFLOAT_S8_UINT;
+
+/// What a pipeline renders to.
+#[derive(Clone)]
+enum Target {
+    /// Subpass `subpass` of a render pass of one subpass with these color
+    /// attachments and depth/stencil attachment.
+    Pass {
+        colors: Vec<vk::Format>,
+        depth: Option<vk::Format>,
+        subpass: u32,
+    },
+    /// Dynamic rendering with a chained `VkPipelineRenderingCreateInfo`.
+    Rendering {
+        view_mask: u32,
+        colors: Vec<vk::Format>,
+        depth: vk::Format,
+        stencil: vk::Format,
+    },
+}
+
+/// A graphics pipeline, in parts a case can change.
+#[derive(Clone)]
+struct Parts {
+    flags: vk::PipelineCreateFlags,
+    /// Name the base pipeline by handle (a pipeline made for it).
+    base_handle: bool,
+    base_index: i32,
+    /// The stages, each with the repository's shader of that stage: the test
+    /// shaders, or the Bézier ones for a pipeline with tessellation.
+    stages: Vec<vk::ShaderStageFlags>,
+    bezier: bool,
+    vertex_input: bool,
+    topology: Option<vk::PrimitiveTopology>,
+    tessellation: bool,
+    viewport_counts: Option<(u32, u32)>,
+    raster: bool,
+    discard: bool,
+    line_width: f32,
+    depth_bias: Option<f32>,
+    multisample: bool,
+    depth_stencil: Option<(bool, f32, f32)>,
+    /// Each color blend attachment's `blendEnable`; `None` for no blend state.
+    blend: Option<Vec<bool>>,
+    dynamic: Vec<vk::DynamicState>,
+    layout: bool,
+    target: Target,
+}
+
+impl Default for Parts {
+    fn default() -> Self {
+        Parts {
+            flags: vk::PipelineCreateFlags::empty(),
+            base_handle: false,
+            base_index: -1,
+            stages: vec![vk::ShaderStageFlags::VERTEX, vk::ShaderStageFlags::FRAGMENT],
+            bezier: false,
+            vertex_input: true,
+            topology: Some(vk::PrimitiveTopology::TRIANGLE_LIST),
+            tessellation: false,
+            viewport_counts: Some((1, 1)),
+            raster: true,
+            discard: false,
+            line_width: 1.0,
+            depth_bias: None,
+            multisample: true,
+            depth_stencil: None,
+            blend: Some(vec![false]),
+            dynamic: vec![vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR],
+            layout: true,
+            target: Target::Pass {
+                colors: vec![RGBA8],
+                depth: None,
+                subpass: 0,
+            },
+        }
+    }
+}
+
+impl Parts {
+    /// The parts of a pipeline with tessellation (on a device that has the feature).
+    fn tessellated() -> Parts {
+        Parts {
+            stages: vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::TESSELLATION_CONTROL,
+                vk::ShaderStageFlags::TESSELLATION_EVALUATION,
+                vk::ShaderStageFlags::FRAGMENT,
+            ],
+            bezier: true,
+            topology: Some(vk::PrimitiveTopology::PATCH_LIST),
+            tessellation: true,
+            ..Parts::default()
+        }
+    }
+}
+
+/// A render pass of one subpass that writes these attachments.
+fn render_pass(s: &Setup, colors: &[vk::Format], depth: Option<vk::Format>) -> tuff::RenderPass {
+    let description = |format, layout| vk::AttachmentDescription {
+        format,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::DONT_CARE,
+        store_op: vk::AttachmentStoreOp::STORE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: vk::ImageLayout::UNDEFINED,
+        final_layout: layout,
+        ..Default::default()
+    };
+    let color = vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL;
+    let depth_layout = vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    let mut attachments: Vec<_> = colors.iter().map(|&f| description(f, color)).collect();
+    attachments.extend(depth.map(|f| description(f, depth_layout)));
+    let color_refs: Vec<_> = (0..colors.len() as u32)
+        .map(|attachment| vk::AttachmentReference {
+            attachment,
+            layout: color,
+        })
+        .collect();
+    let depth_ref = depth.map(|_| vk::AttachmentReference {
+        attachment: colors.len() as u32,
+        layout: depth_layout,
+    });
+    let subpasses = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color_refs)
+        .depth_stencil_attachment(depth_ref.as_ref())];
+    let info = tuff::RenderPassCreateInfo::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses);
+    unsafe { s.device.create_render_pass(&info) }.expect("render pass")
+}
+
+/// The shaders and layout every pipeline here uses: a layout that covers the test
+/// shaders and the Bézier ones (a storage buffer for the vertex stage, 112 bytes of
+/// push constants for the others).
+struct Common {
+    test: [tuff::ShaderModule; 2],
+    bezier: [tuff::ShaderModule; 4],
+    layout: tuff::PipelineLayout,
+    _set_layout: tuff::DescriptorSetLayout,
+}
+
+fn common(s: &Setup) -> Common {
+    let shader = |bytes: &[u8]| tuff_setup::shader(s, bytes);
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::VERTEX)];
+    let set_layout = unsafe {
+        s.device.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+    }
+    .expect("set layout");
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::TESSELLATION_CONTROL
+            | vk::ShaderStageFlags::TESSELLATION_EVALUATION
+            | vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 112,
+    }];
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = s
+        .device
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(&push),
+        )
+        .expect("layout");
+    Common {
+        test: [
+            shader(include_bytes!("../shaders/spv/test.vert.spv")),
+            shader(include_bytes!("../shaders/spv/test.frag.spv")),
+        ],
+        bezier: [
+            shader(include_bytes!("../shaders/spv/bezier.vert.spv")),
+            shader(include_bytes!("../shaders/spv/bezier.tesc.spv")),
+            shader(include_bytes!("../shaders/spv/bezier.tese.spv")),
+            shader(include_bytes!("../shaders/spv/bezier.frag.spv")),
+        ],
+        layout,
+        _set_layout: set_layout,
+    }
+}
+
+/// Builds `parts` through the safe method and, where `layer`, under the layer
+/// through the unchecked one.
+fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()>, Vec<String>) {
+    let module = |stage: vk::ShaderStageFlags| {
+        let i = match stage {
+            vk::ShaderStageFlags::VERTEX => 0,
+            vk::ShaderStageFlags::TESSELLATION_CONTROL => 1,
+            vk::ShaderStageFlags::TESSELLATION_EVALUATION => 2,
+            _ => 3,
+        };
+        match (parts.bezier, i) {
+            (true, i) => &c.bezier[i],
+            (false, 0) => &c.test[0],
+            (false, _) => &c.test[1],
+        }
+    };
+    let stages: Vec<_> = parts
+        .stages
+        .iter()
+        .map(|&stage| {
+            tuff::PipelineShaderStageCreateInfo::new(c"main")
+                .stage(stage)
+                .module(Some(module(stage)))
+        })
+        .collect();
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
+    let assembly = parts
+        .topology
+        .map(|t| tuff::PipelineInputAssemblyStateCreateInfo::new().topology(t));
+    let tessellation = tuff::PipelineTessellationStateCreateInfo::new().patch_control_points(16);
+    // Static viewports and scissors are given; dynamic ones only counted.
+    let viewports = vec![
+        vk::Viewport {
+            width: 4.0,
+            height: 4.0,
+            max_depth: 1.0,
+            ..Default::default()
+        };
+        parts.viewport_counts.map_or(0, |c| c.0 as usize)
+    ];
+    let scissors = vec![
+        vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 4,
+                height: 4,
+            },
+        };
+        parts.viewport_counts.map_or(0, |c| c.1 as usize)
+    ];
+    let viewport = parts.viewport_counts.map(|(v, s)| {
+        let mut state = tuff::PipelineViewportStateCreateInfo::new();
+        state = match parts.dynamic.contains(&vk::DynamicState::VIEWPORT) {
+            true => state.viewport_count(v),
+            false => state.viewports(&viewports),
+        };
+        match parts.dynamic.contains(&vk::DynamicState::SCISSOR) {
+            true => state.scissor_count(s),
+            false => state.scissors(&scissors),
+        }
+    });
+    let mut raster = tuff::PipelineRasterizationStateCreateInfo::new()
+        .polygon_mode(vk::PolygonMode::FILL)
+        .cull_mode(vk::CullModeFlags::NONE)
+        .rasterizer_discard_enable(parts.discard as vk::Bool32)
+        .line_width(parts.line_width);
+    if let Some(clamp) = parts.depth_bias {
+        raster = raster.depth_bias_enable(vk::TRUE).depth_bias_clamp(clamp);
+    }
+    let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
+        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+    let depth_stencil = parts.depth_stencil.map(|(bounds, min, max)| {
+        tuff::PipelineDepthStencilStateCreateInfo::new()
+            .depth_bounds_test_enable(bounds as vk::Bool32)
+            .min_depth_bounds(min)
+            .max_depth_bounds(max)
+    });
+    let blend_attachments: Vec<_> = parts
+        .blend
+        .iter()
+        .flatten()
+        .map(|&enable| vk::PipelineColorBlendAttachmentState {
+            blend_enable: enable as vk::Bool32,
+            color_write_mask: vk::ColorComponentFlags::RGBA,
+            ..Default::default()
+        })
+        .collect();
+    let blend = parts
+        .blend
+        .as_ref()
+        .map(|_| tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments));
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&parts.dynamic);
+    let pass = match &parts.target {
+        Target::Pass { colors, depth, .. } => Some(render_pass(s, colors, *depth)),
+        Target::Rendering { .. } => None,
+    };
+    let (rendering_colors, mut rendering) = match &parts.target {
+        Target::Rendering {
+            view_mask,
+            colors,
+            depth,
+            stencil,
+        } => (colors.clone(), Some((*view_mask, *depth, *stencil))),
+        Target::Pass { .. } => (Vec::new(), None),
+    };
+    let mut rendering_info = rendering.take().map(|(view_mask, depth, stencil)| {
+        tuff::PipelineRenderingCreateInfo::new()
+            .view_mask(view_mask)
+            .color_attachment_formats(&rendering_colors)
+            .depth_attachment_format(depth)
+            .stencil_attachment_format(stencil)
+    });
+    let base = parts.base_handle.then(|| {
+        let (mut made, _) = unsafe {
+            s.device
+                .create_graphics_pipelines(None, &[base_info(c, pass.as_ref())])
+        }
+        .expect("base pipeline");
+        made.pop().expect("one pipeline")
+    });
+    let mut info = tuff::GraphicsPipelineCreateInfo::new()
+        .flags(parts.flags)
+        .stages(&stages)
+        .vertex_input_state(parts.vertex_input.then_some(&vertex_input))
+        .input_assembly_state(assembly.as_ref())
+        .tessellation_state(parts.tessellation.then_some(&tessellation))
+        .viewport_state(viewport.as_ref())
+        .rasterization_state(parts.raster.then_some(&raster))
+        .multisample_state(parts.multisample.then_some(&multisample))
+        .depth_stencil_state(depth_stencil.as_ref())
+        .color_blend_state(blend.as_ref())
+        .dynamic_state(Some(&dynamic))
+        .layout(parts.layout.then_some(&c.layout))
+        .render_pass(pass.as_ref())
+        .base_pipeline_handle(base.as_ref())
+        .base_pipeline_index(parts.base_index);
+    if let Target::Pass { subpass, .. } = parts.target {
+        info = info.subpass(subpass);
+    }
+    if let Some(r) = rendering_info.as_mut() {
+        info = info.push_next(r);
+    }
+    let infos = [info];
+    let safe = unsafe { s.device.create_graphics_pipelines(None, &infos) }.map(drop);
+    if !layer {
+        return (safe, Vec::new());
+    }
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_graphics_pipelines_unchecked(None, &infos) };
+    });
+    (safe, layer)
+}
+
+/// The create info of a base pipeline that allows derivatives: the test pipeline.
+fn base_info<'a>(
+    c: &'a Common,
+    pass: Option<&'a tuff::RenderPass>,
+) -> tuff::GraphicsPipelineCreateInfo<'a> {
+    // Leaked: the info outlives this function; a few bytes once per case.
+    let parts: &'a _ = Box::leak(Box::new((
+        [
+            tuff::PipelineShaderStageCreateInfo::new(c"main")
+                .stage(vk::ShaderStageFlags::VERTEX)
+                .module(Some(&c.test[0])),
+            tuff::PipelineShaderStageCreateInfo::new(c"main")
+                .stage(vk::ShaderStageFlags::FRAGMENT)
+                .module(Some(&c.test[1])),
+        ],
+        tuff::PipelineVertexInputStateCreateInfo::new(),
+        tuff::PipelineInputAssemblyStateCreateInfo::new()
+            .topology(vk::PrimitiveTopology::TRIANGLE_LIST),
+        tuff::PipelineViewportStateCreateInfo::new()
+            .viewport_count(1)
+            .scissor_count(1),
+        tuff::PipelineRasterizationStateCreateInfo::new().line_width(1.0),
+        tuff::PipelineMultisampleStateCreateInfo::new()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1),
+        [vk::PipelineColorBlendAttachmentState {
+            color_write_mask: vk::ColorComponentFlags::RGBA,
+            ..Default::default()
+        }],
+        [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR],
+    )));
+    let blend: &'a _ = Box::leak(Box::new(
+        tuff::PipelineColorBlendStateCreateInfo::new().attachments(&parts.6),
+    ));
+    let dynamic: &'a _ = Box::leak(Box::new(
+        tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&parts.7),
+    ));
+    tuff::GraphicsPipelineCreateInfo::new()
+        .flags(vk::PipelineCreateFlags::ALLOW_DERIVATIVES)
+        .stages(&parts.0)
+        .vertex_input_state(Some(&parts.1))
+        .input_assembly_state(Some(&parts.2))
+        .viewport_state(Some(&parts.3))
+        .rasterization_state(Some(&parts.4))
+        .multisample_state(Some(&parts.5))
+        .color_blend_state(Some(blend))
+        .dynamic_state(Some(dynamic))
+        .layout(Some(&c.layout))
+        .render_pass(pass)
+        .subpass(0)
+}
+
+/// Runs `unchecked` with the layer told to skip erroring calls, and returns what it
+/// said.
+fn under_layer(s: &Setup, unchecked: impl FnOnce()) -> Vec<String> {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    s.messages.take()
+}
+
+/// The device a case runs on.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum On {
+    /// The tests' device: no Vulkan 1.0 feature, dynamic rendering on.
+    Fixture,
+    /// Every feature the physical device has.
+    Full,
+    /// No feature at all.
+    Bare,
+}
+
+/// One case: the rule, the device, the rules the same change necessarily breaks
+/// too (which the layer may name beside it), and the change.
+struct Case {
+    vuid: &'static str,
+    on: On,
+    /// Whether the unchecked call may run under the layer: not where the 1.3.239
+    /// layer lets the broken call through to a driver that crashes on it.
+    layer: bool,
+    also: &'static [&'static str],
+    change: fn(&mut Parts),
+}
+
+const fn case(vuid: &'static str, change: fn(&mut Parts)) -> Case {
+    Case {
+        vuid,
+        on: On::Fixture,
+        layer: true,
+        also: &[],
+        change,
+    }
+}
+
+fn rendering(
+    view_mask: u32,
+    colors: Vec<vk::Format>,
+    depth: vk::Format,
+    stencil: vk::Format,
+) -> Target {
+    Target::Rendering {
+        view_mask,
+        colors,
+        depth,
+        stencil,
+    }
+}
+
+const CASES: &[Case] = &[
+    case("VUID-VkGraphicsPipelineCreateInfo-flags-00764", |p| {
+        p.flags = vk::PipelineCreateFlags::DISPATCH_BASE
+    }),
+    // Without a handle or an index, the base is named by neither: 00723 breaks too.
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-flags-00723"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-flags-00722", |p| {
+            p.flags = vk::PipelineCreateFlags::DERIVATIVE
+        })
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-flags-00723", |p| {
+        p.flags = vk::PipelineCreateFlags::DERIVATIVE;
+        p.base_index = 1;
+    }),
+    // A handle and an index break the rule each way.
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-flags-00725"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-flags-00724", |p| {
+            p.flags = vk::PipelineCreateFlags::DERIVATIVE;
+            p.base_handle = true;
+            p.base_index = 0;
+        })
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-stage-06897", |p| {
+        p.stages = vec![
+            vk::ShaderStageFlags::VERTEX,
+            vk::ShaderStageFlags::VERTEX,
+            vk::ShaderStageFlags::FRAGMENT,
+        ]
+    }),
+    // The 1.3.239 layer also reports a pipeline without a vertex stage under 06896.
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-pStages-06896"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-stage-00727", |p| {
+            p.stages = vec![vk::ShaderStageFlags::FRAGMENT]
+        })
+    },
+    // The 1.3.239 layer takes an unpaired stage as no tessellation, so the patch list breaks 00737 for it; and the fragment shader's inputs, written by the missing evaluation stage, are not produced.
+    Case {
+        also: &[
+            "VUID-VkGraphicsPipelineCreateInfo-topology-00737",
+            "UNASSIGNED-CoreValidation-Shader-InputNotProduced",
+        ],
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00729", |p| {
+            *p = Parts::tessellated();
+            p.stages
+                .retain(|s| *s != vk::ShaderStageFlags::TESSELLATION_EVALUATION);
+        })
+    },
+    // As for 00729, the patch list.
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-topology-00737"],
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00730", |p| {
+            *p = Parts::tessellated();
+            p.stages
+                .retain(|s| *s != vk::ShaderStageFlags::TESSELLATION_CONTROL);
+        })
+    },
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00731", |p| {
+            *p = Parts::tessellated();
+            p.tessellation = false;
+        })
+    },
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00736", |p| {
+            *p = Parts::tessellated();
+            p.topology = Some(vk::PrimitiveTopology::TRIANGLE_LIST);
+        })
+    },
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-topology-00737", |p| {
+            p.topology = Some(vk::PrimitiveTopology::PATCH_LIST)
+        })
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-pStages-02097", |p| {
+        p.vertex_input = false
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-pStages-02098", |p| {
+        p.topology = None
+    }),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601",
+        |p| p.raster = false,
+    ),
+    // The 1.3.239 layer does not check it, and lavapipe crashes on a NULL layout.
+    Case {
+        layer: false,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-layout-06602", |p| {
+            p.layout = false
+        })
+    },
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750",
+        |p| p.viewport_counts = None,
+    ),
+    // As for the layout: lavapipe crashes on a NULL multisample state.
+    Case {
+        layer: false,
+        ..case(
+            "VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751",
+            |p| p.multisample = false,
+        )
+    },
+    // With the subpass out of range, the 1.3.239 layer also misreads the stage's resources (01688).
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-layout-01688"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06046", |p| {
+            p.target = Target::Pass {
+                colors: vec![RGBA8],
+                depth: None,
+                subpass: 1,
+            }
+        })
+    },
+    // The 1.3.239 layer also reports the NULL render pass under 06603, and the fragment output with no attachment it knows of.
+    Case {
+        also: &[
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06603",
+            "UNASSIGNED-CoreValidation-Shader-OutputNotConsumed",
+        ],
+        on: On::Bare,
+        ..case(
+            "VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576",
+            |p| p.target = rendering(0, vec![RGBA8], vk::Format::UNDEFINED, vk::Format::UNDEFINED),
+        )
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-multiview-06577", |p| {
+        p.target = rendering(1, vec![RGBA8], vk::Format::UNDEFINED, vk::Format::UNDEFINED)
+    }),
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06578", |p| {
+            p.target = rendering(
+                1 << 31,
+                vec![RGBA8],
+                vk::Format::UNDEFINED,
+                vk::Format::UNDEFINED,
+            )
+        })
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06581", |p| {
+        p.target = rendering(
+            0,
+            vec![vk::Format::BC1_RGBA_UNORM_BLOCK],
+            vk::Format::UNDEFINED,
+            vk::Format::UNDEFINED,
+        )
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06587", |p| {
+        p.depth_stencil = Some((false, 0.0, 1.0));
+        p.target = rendering(0, vec![RGBA8], vk::Format::S8_UINT, vk::Format::UNDEFINED)
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06588", |p| {
+        p.depth_stencil = Some((false, 0.0, 1.0));
+        p.target = rendering(
+            0,
+            vec![RGBA8],
+            vk::Format::UNDEFINED,
+            vk::Format::D32_SFLOAT,
+        )
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06589", |p| {
+        p.depth_stencil = Some((false, 0.0, 1.0));
+        p.target = rendering(0, vec![RGBA8], vk::Format::D32_SFLOAT, D32S8)
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06043", |p| {
+        p.target = Target::Pass {
+            colors: vec![RGBA8],
+            depth: Some(D32S8),
+            subpass: 0,
+        }
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06044", |p| {
+        p.blend = None
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06042", |p| {
+        p.blend = Some(vec![false, false])
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06055", |p| {
+        p.blend = Some(vec![false, false]);
+        p.target = rendering(0, vec![RGBA8], vk::Format::UNDEFINED, vk::Format::UNDEFINED)
+    }),
+    // The formats without blending are integer formats, which the test shader's
+    // float output does not match (a warning).
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-InterfaceTypeMismatch"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06041", |p| {
+            p.blend = Some(vec![true]);
+            p.target = Target::Pass {
+                colors: vec![vk::Format::R8G8B8A8_UINT],
+                depth: None,
+                subpass: 0,
+            }
+        })
+    },
+    // The formats without blending are integer formats, which the test shader's
+    // float output does not match (a warning).
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-InterfaceTypeMismatch"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06062", |p| {
+            p.blend = Some(vec![true]);
+            p.target = rendering(
+                0,
+                vec![vk::Format::R8G8B8A8_UINT],
+                vk::Format::UNDEFINED,
+                vk::Format::UNDEFINED,
+            )
+        })
+    },
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749",
+        |p| p.line_width = 2.0,
+    ),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754",
+        |p| p.depth_bias = Some(0.5),
+    ),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379",
+        |p| {
+            p.dynamic = vec![
+                vk::DynamicState::VIEWPORT_WITH_COUNT,
+                vk::DynamicState::SCISSOR,
+            ]
+        },
+    ),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380",
+        |p| {
+            p.dynamic = vec![
+                vk::DynamicState::VIEWPORT,
+                vk::DynamicState::SCISSOR_WITH_COUNT,
+            ]
+        },
+    ),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132",
+        |p| {
+            p.viewport_counts = Some((0, 1));
+            p.dynamic = vec![
+                vk::DynamicState::VIEWPORT,
+                vk::DynamicState::VIEWPORT_WITH_COUNT,
+                vk::DynamicState::SCISSOR,
+            ]
+        },
+    ),
+    case(
+        "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133",
+        |p| {
+            p.viewport_counts = Some((1, 0));
+            p.dynamic = vec![
+                vk::DynamicState::VIEWPORT,
+                vk::DynamicState::SCISSOR,
+                vk::DynamicState::SCISSOR_WITH_COUNT,
+            ]
+        },
+    ),
+];
+
+/// The pipelines the cases start from are valid on their devices, so that a case
+/// cannot pass on a rule it did not break.
+#[test]
+fn the_cases_start_from_valid_pipelines() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let full = tuff_setup::setup_full_features(true);
+    for (s, parts, what) in [
+        (&s, Parts::default(), "the test pipeline"),
+        (
+            &s,
+            Parts {
+                target: rendering(0, vec![RGBA8], D32S8, D32S8),
+                depth_stencil: Some((false, 0.0, 1.0)),
+                ..Parts::default()
+            },
+            "the test pipeline with dynamic rendering",
+        ),
+        (&full, Parts::tessellated(), "the Bézier pipeline"),
+    ] {
+        let c = common(s);
+        let (safe, layer) = create(s, &c, &parts, true);
+        assert!(safe.is_ok(), "{what}: tuff refused it: {safe:?}");
+        assert!(
+            layer.is_empty(),
+            "{what}: the layer said:\n{}",
+            layer.join("\n")
+        );
+    }
+}
+
+/// Each case is refused with its rule's VUID, and the layer names the same rule or
+/// nothing.
+#[test]
+fn each_broken_pipeline_rule_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let fixture = tuff_setup::setup(true);
+    let full = tuff_setup::setup_full_features(true);
+    let bare = tuff_setup::setup_bare(true);
+    let mut failures = Vec::new();
+    let (mut by_layer, mut alone) = (0, Vec::new());
+    for case in CASES {
+        if std::env::var_os("CASE_TRACE").is_some() {
+            eprintln!("case: {}", case.vuid);
+        }
+        let s = match case.on {
+            On::Fixture => &fixture,
+            On::Full => &full,
+            On::Bare => &bare,
+        };
+        let c = common(s);
+        let mut parts = Parts::default();
+        (case.change)(&mut parts);
+        let (safe, layer) = create(s, &c, &parts, case.layer);
+        match &safe {
+            Err(tuff::Error::Validation { vuid, .. }) if *vuid == case.vuid => {}
+            other => {
+                failures.push(format!("{}: the safe method returned {other:?}", case.vuid));
+                continue;
+            }
+        }
+        let names = |m: &String, v: &str| m.contains(&format!("[ {v} ]"));
+        let also = |m: &String| case.also.iter().any(|a| names(m, a));
+        // A layer that names only rules the change breaks too does not check this
+        // one: the error alone proves it.
+        if layer.iter().all(also) {
+            alone.push(case.vuid);
+        } else if layer.iter().any(|m| names(m, case.vuid))
+            && layer.iter().all(|m| names(m, case.vuid) || also(m))
+        {
+            by_layer += 1;
+        } else {
+            failures.push(format!(
+                "{}: the layer said something else:\n  {}",
+                case.vuid,
+                layer.join("\n  ")
+            ));
+        }
+    }
+    println!(
+        "graphics pipeline state: the layer named {by_layer}, the error alone proves {} ({})",
+        alone.len(),
+        alone.join(", ")
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
