@@ -59,6 +59,8 @@ struct Parts {
     topology: Option<vk::PrimitiveTopology>,
     tessellation: bool,
     viewport_counts: Option<(u32, u32)>,
+    /// Each static scissor.
+    scissor: vk::Rect2D,
     raster: bool,
     discard: bool,
     line_width: f32,
@@ -84,6 +86,13 @@ impl Default for Parts {
             topology: Some(vk::PrimitiveTopology::TRIANGLE_LIST),
             tessellation: false,
             viewport_counts: Some((1, 1)),
+            scissor: vk::Rect2D {
+                offset: vk::Offset2D::default(),
+                extent: vk::Extent2D {
+                    width: 4,
+                    height: 4,
+                },
+            },
             raster: true,
             discard: false,
             line_width: 1.0,
@@ -252,16 +261,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         };
         parts.viewport_counts.map_or(0, |c| c.0 as usize)
     ];
-    let scissors = vec![
-        vk::Rect2D {
-            offset: vk::Offset2D::default(),
-            extent: vk::Extent2D {
-                width: 4,
-                height: 4,
-            },
-        };
-        parts.viewport_counts.map_or(0, |c| c.1 as usize)
-    ];
+    let scissors = vec![parts.scissor; parts.viewport_counts.map_or(0, |c| c.1 as usize)];
     let viewport = parts.viewport_counts.map(|(v, s)| {
         let mut state = tuff::PipelineViewportStateCreateInfo::new();
         state = match parts.dynamic.contains(&vk::DynamicState::VIEWPORT) {
@@ -737,6 +737,65 @@ const CASES: &[Case] = &[
             ]
         },
     ),
+    Case {
+        on: On::Full,
+        ..case(
+            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134",
+            |p| p.viewport_counts = Some((1, 2)),
+        )
+    },
+    // A viewport count of 0 without VIEWPORT_WITH_COUNT differs from a scissor count
+    // other than 0 (04134), or a scissor count of 0 breaks 04136.
+    Case {
+        on: On::Full,
+        also: &["VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134"],
+        ..case(
+            "VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135",
+            |p| p.viewport_counts = Some((0, 1)),
+        )
+    },
+    Case {
+        on: On::Full,
+        ..case(
+            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136",
+            |p| {
+                p.viewport_counts = Some((0, 0));
+                p.dynamic = vec![
+                    vk::DynamicState::VIEWPORT_WITH_COUNT,
+                    vk::DynamicState::SCISSOR,
+                ];
+            },
+        )
+    },
+    case("VUID-VkPipelineViewportStateCreateInfo-x-02821", |p| {
+        p.dynamic = vec![vk::DynamicState::VIEWPORT];
+        p.scissor.offset.x = -1;
+    }),
+    case("VUID-VkPipelineViewportStateCreateInfo-offset-02822", |p| {
+        p.dynamic = vec![vk::DynamicState::VIEWPORT];
+        p.scissor.offset.x = 1;
+        p.scissor.extent.width = i32::MAX as u32;
+    }),
+    case("VUID-VkPipelineViewportStateCreateInfo-offset-02823", |p| {
+        p.dynamic = vec![vk::DynamicState::VIEWPORT];
+        p.scissor.offset.y = 1;
+        p.scissor.extent.height = i32::MAX as u32;
+    }),
+    // The test fragment shader writes one attachment; the layer warns of the second.
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-InputNotProduced"],
+        ..case(
+            "VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605",
+            |p| {
+                p.blend = Some(vec![false, true]);
+                p.target = Target::Pass {
+                    colors: vec![RGBA8, RGBA8],
+                    depth: None,
+                    subpass: 0,
+                };
+            },
+        )
+    },
 ];
 
 /// The pipelines the cases start from are valid on their devices, so that a case
@@ -823,5 +882,129 @@ fn each_broken_pipeline_rule_is_refused_and_the_layer_agrees() {
         alone.len(),
         alone.join(", ")
     );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A compute pipeline of the test compute shader, with this stage and derivative.
+fn create_compute(
+    s: &Setup,
+    stage: vk::ShaderStageFlags,
+    flags: vk::PipelineCreateFlags,
+    base: Option<i32>,
+    index: i32,
+) -> (tuff::Result<()>, Vec<String>) {
+    let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/test.comp.spv"));
+    let bindings = [
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE | vk::ShaderStageFlags::VERTEX),
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(1)
+            .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE | vk::ShaderStageFlags::VERTEX),
+    ];
+    let set_layout = unsafe {
+        s.device.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+    }
+    .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("layout");
+    let info = |stage, flags, base| {
+        tuff::ComputePipelineCreateInfo::new(
+            tuff::PipelineShaderStageCreateInfo::new(c"main")
+                .stage(stage)
+                .module(Some(&module)),
+            &layout,
+        )
+        .flags(flags)
+        .base_pipeline_handle(base)
+        .base_pipeline_index(index)
+    };
+    let base_pipeline = base.map(|_| {
+        let base = info(
+            vk::ShaderStageFlags::COMPUTE,
+            vk::PipelineCreateFlags::ALLOW_DERIVATIVES,
+            None,
+        )
+        .base_pipeline_index(-1);
+        let (mut made, _) =
+            unsafe { s.device.create_compute_pipelines(None, &[base]) }.expect("base pipeline");
+        made.pop().expect("one pipeline")
+    });
+    let infos = [info(stage, flags, base_pipeline.as_ref())];
+    let safe = unsafe { s.device.create_compute_pipelines(None, &infos) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_compute_pipelines_unchecked(None, &infos) };
+    });
+    (safe, layer)
+}
+
+/// Compute pipelines: a stage other than compute, and a derivative that names its
+/// base no way or both ways, are refused; the layer names the same rules.
+#[test]
+fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let compute = vk::ShaderStageFlags::COMPUTE;
+    let none = vk::PipelineCreateFlags::empty();
+    let derivative = vk::PipelineCreateFlags::DERIVATIVE;
+    let (safe, layer) = create_compute(&s, compute, none, None, -1);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid pipeline: {safe:?} {layer:?}"
+    );
+    let names = |m: &String, v: &str| m.contains(&format!("[ {v} ]"));
+    let mut failures = Vec::new();
+    for (vuid, also, (safe, layer)) in [
+        (
+            "VUID-VkComputePipelineCreateInfo-stage-00701",
+            // The compute module has no entry point for the vertex stage.
+            &["VUID-VkPipelineShaderStageCreateInfo-pName-00707"][..],
+            create_compute(&s, vk::ShaderStageFlags::VERTEX, none, None, -1),
+        ),
+        (
+            "VUID-VkComputePipelineCreateInfo-flags-00697",
+            // Without a handle or an index, the base is named by neither.
+            &["VUID-VkComputePipelineCreateInfo-flags-00698"][..],
+            create_compute(&s, compute, derivative, None, -1),
+        ),
+        (
+            "VUID-VkComputePipelineCreateInfo-flags-00698",
+            &[][..],
+            create_compute(&s, compute, derivative, None, 1),
+        ),
+        (
+            "VUID-VkComputePipelineCreateInfo-flags-00699",
+            // A handle and an index break the rule each way.
+            &["VUID-VkComputePipelineCreateInfo-flags-00700"][..],
+            create_compute(&s, compute, derivative, Some(0), 0),
+        ),
+    ] {
+        match &safe {
+            Err(tuff::Error::Validation { vuid: got, .. }) if *got == vuid => {}
+            other => {
+                failures.push(format!("{vuid}: the safe method returned {other:?}"));
+                continue;
+            }
+        }
+        let implied = |m: &String| also.iter().any(|a| names(m, a));
+        let agrees = layer.iter().all(implied)
+            || (layer.iter().any(|m| names(m, vuid))
+                && layer.iter().all(|m| names(m, vuid) || implied(m)));
+        if !agrees {
+            failures.push(format!(
+                "{vuid}: the layer said something else:\n  {}",
+                layer.join("\n  ")
+            ));
+        }
+    }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -21,9 +21,14 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
+mod creation;
 mod pipeline;
 mod render_pass;
-pub(crate) use pipeline::graphics_pipeline_state_checks;
+use creation::image_create_rules;
+pub(crate) use creation::{
+    allocate_memory_checks, create_device_checks, descriptor_set_layout_checks, sampler_checks,
+};
+pub(crate) use pipeline::{compute_pipeline_state_checks, graphics_pipeline_state_checks};
 pub(crate) use render_pass::{
     create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
 };
@@ -1258,20 +1263,9 @@ pub(crate) fn device_created(
 ) -> Device {
     let device = Device::from_created(physical, raw, &create_info.enabled_extensions());
     let info = create_info.as_raw();
-    let mut features = crate::validation::Features::default();
-    // SAFETY: the safe setter stores a reference that outlives the create info.
-    if let Some(v10) = unsafe { info.p_enabled_features.as_ref() } {
-        features.v10 = *v10;
-    }
-    let mut next = info.p_next.cast::<vk::BaseInStructure<'_>>();
-    // SAFETY: the safe struct chains only structs pushed through `push_next`, each a
-    // valid Vulkan struct that starts with sType and pNext.
-    while let Some(node) = unsafe { next.as_ref() } {
-        // SAFETY: as above.
-        unsafe { crate::features::add_chained(next, &mut features) };
-        next = node.p_next;
-    }
-    device.live().set_features(features);
+    device
+        .live()
+        .set_features(creation::enabled_features(create_info));
     let queues = if info.p_queue_create_infos.is_null() {
         &[][..]
     } else {
@@ -2218,6 +2212,7 @@ pub(crate) fn create_compute_pipelines_checks(
     device: &Device,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Result<()> {
+    compute_pipeline_state_checks(create_infos)?;
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
@@ -3590,6 +3585,7 @@ pub(crate) fn create_image_checks(
     device: &Device,
     create_info: &ImageCreateInfo<'_>,
 ) -> Result<()> {
+    image_create_rules(device, create_info)?;
     let info = create_info.as_raw();
     let e = info.extent;
     let longest = e.width.max(e.height).max(e.depth).max(1);

@@ -86,7 +86,22 @@ pub(crate) fn graphics_pipeline_state_checks(
         // SAFETY: `raw` is a safe struct's.
         let states = unsafe { States::of(raw) };
         let at = format!("pCreateInfos[{i}]");
-        check_derivative(raw, create_infos.len(), &at)?;
+        if raw.flags.contains(vk::PipelineCreateFlags::DISPATCH_BASE) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-flags-00764",
+                format!("{at}.flags includes VK_PIPELINE_CREATE_DISPATCH_BASE, which only compute pipelines take"),
+            )?;
+        }
+        check_derivative(
+            raw.flags,
+            (
+                raw.base_pipeline_handle != vk::Pipeline::null(),
+                raw.base_pipeline_index,
+            ),
+            create_infos.len(),
+            &GRAPHICS_DERIVATIVE,
+            &at,
+        )?;
         check_stages(&states, &at)?;
         check_present(raw, &states, &at)?;
         let targets = match raw.render_pass == vk::RenderPass::null() {
@@ -95,47 +110,92 @@ pub(crate) fn graphics_pipeline_state_checks(
         };
         if states.fragment() {
             check_targets(device, raw, &states, &targets, &at)?;
+            check_blend_identical(device, &states, &at)?;
         }
+        check_viewport_state(&states, &at)?;
         check_fixed_function(device, &states, &at)?;
     }
     Ok(())
 }
 
-/// A derivative names its base one way only.
+/// The rules of a derivative pipeline, by create info: graphics or compute.
+struct DerivativeRules {
+    neither: &'static str,
+    bad_index: &'static str,
+    both_handle: &'static str,
+}
+
+const GRAPHICS_DERIVATIVE: DerivativeRules = DerivativeRules {
+    neither: "VUID-VkGraphicsPipelineCreateInfo-flags-00722",
+    bad_index: "VUID-VkGraphicsPipelineCreateInfo-flags-00723",
+    both_handle: "VUID-VkGraphicsPipelineCreateInfo-flags-00724",
+};
+
+const COMPUTE_DERIVATIVE: DerivativeRules = DerivativeRules {
+    neither: "VUID-VkComputePipelineCreateInfo-flags-00697",
+    bad_index: "VUID-VkComputePipelineCreateInfo-flags-00698",
+    both_handle: "VUID-VkComputePipelineCreateInfo-flags-00699",
+};
+
+/// A derivative names its base one way only: by handle, or by an index into the
+/// create infos.
 fn check_derivative(
-    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    flags: vk::PipelineCreateFlags,
+    (handle, index): (bool, i32),
     count: usize,
+    rules: &DerivativeRules,
     at: &str,
 ) -> Result<()> {
-    if raw.flags.contains(vk::PipelineCreateFlags::DISPATCH_BASE) {
-        refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-flags-00764",
-            format!("{at}.flags includes VK_PIPELINE_CREATE_DISPATCH_BASE, which only compute pipelines take"),
-        )?;
-    }
-    if !raw.flags.contains(vk::PipelineCreateFlags::DERIVATIVE) {
+    if !flags.contains(vk::PipelineCreateFlags::DERIVATIVE) {
         return Ok(());
     }
-    let (handle, index) = (
-        raw.base_pipeline_handle != vk::Pipeline::null(),
-        raw.base_pipeline_index,
-    );
     if !handle && index == -1 {
         refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-flags-00722",
+            rules.neither,
             format!("{at} is a derivative with neither a base pipeline handle nor an index"),
         )?;
     }
     if !handle && (index < 0 || index as usize >= count) {
         refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-flags-00723",
+            rules.bad_index,
             format!("{at}.basePipelineIndex ({index}) is no index into the {count} create infos"),
         )?;
     }
     if handle && index != -1 {
         refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-flags-00724",
+            rules.both_handle,
             format!("{at} names a base pipeline by handle and by index ({index})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkCreateComputePipelines` over each create info as a whole: its
+/// stage is a compute stage, and a derivative names its base one way.
+pub(crate) fn compute_pipeline_state_checks(
+    create_infos: &[ComputePipelineCreateInfo<'_>],
+) -> Result<()> {
+    for (i, info) in create_infos.iter().enumerate() {
+        let raw = info.as_raw();
+        let at = format!("pCreateInfos[{i}]");
+        if raw.stage.stage != vk::ShaderStageFlags::COMPUTE {
+            refuse(
+                "VUID-VkComputePipelineCreateInfo-stage-00701",
+                format!(
+                    "{at}.stage.stage is {:?}, not VK_SHADER_STAGE_COMPUTE_BIT",
+                    raw.stage.stage
+                ),
+            )?;
+        }
+        check_derivative(
+            raw.flags,
+            (
+                raw.base_pipeline_handle != vk::Pipeline::null(),
+                raw.base_pipeline_index,
+            ),
+            create_infos.len(),
+            &COMPUTE_DERIVATIVE,
+            &at,
         )?;
     }
     Ok(())
@@ -450,6 +510,89 @@ fn check_targets(
                 format!("{at} blends into color attachment {k}, whose format {format:?} does not support blending"),
             )?;
         }
+    }
+    Ok(())
+}
+
+/// Without independentBlend, every color attachment blends the same way.
+fn check_blend_identical(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    if device.live().features().independent_blend == vk::TRUE {
+        return Ok(());
+    }
+    let key = |a: &vk::PipelineColorBlendAttachmentState| {
+        (
+            a.blend_enable,
+            a.src_color_blend_factor,
+            a.dst_color_blend_factor,
+            a.color_blend_op,
+            a.src_alpha_blend_factor,
+            a.dst_alpha_blend_factor,
+            a.alpha_blend_op,
+            a.color_write_mask,
+        )
+    };
+    let mut all = states.blend_attachments.iter();
+    if let Some(first) = all.next() {
+        if let Some(k) = all.position(|a| key(a) != key(first)) {
+            refuse(
+                "VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605",
+                format!("{at}'s color blend attachment {} differs from attachment 0, but the device does not enable independentBlend", k + 1),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The viewport state's counts against the dynamic states that replace them, and
+/// its static scissors. With rasterization discarded (and not dynamically) the
+/// state is not read.
+fn check_viewport_state(states: &States<'_>, at: &str) -> Result<()> {
+    let Some(v) = states.viewport else {
+        return Ok(());
+    };
+    let discarded = states
+        .raster
+        .is_some_and(|r| r.rasterizer_discard_enable == vk::TRUE)
+        && !states.dynamic(vk::DynamicState::RASTERIZER_DISCARD_ENABLE);
+    if discarded {
+        return Ok(());
+    }
+    let viewports_counted = states.dynamic(vk::DynamicState::VIEWPORT_WITH_COUNT);
+    let scissors_counted = states.dynamic(vk::DynamicState::SCISSOR_WITH_COUNT);
+    if !viewports_counted && v.viewport_count == 0 {
+        refuse(
+            "VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135",
+            format!("{at}'s viewportCount is 0, and VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT is not dynamic"),
+        )?;
+    }
+    if !scissors_counted && v.scissor_count == 0 {
+        refuse(
+            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136",
+            format!(
+                "{at}'s scissorCount is 0, and VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT is not dynamic"
+            ),
+        )?;
+    }
+    if !viewports_counted && !scissors_counted && v.viewport_count != v.scissor_count {
+        refuse(
+            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134",
+            format!(
+                "{at}'s viewportCount ({}) and scissorCount ({}) differ",
+                v.viewport_count, v.scissor_count
+            ),
+        )?;
+    }
+    if !scissors_counted && !states.dynamic(vk::DynamicState::SCISSOR) && !v.p_scissors.is_null() {
+        // SAFETY: the safe setter stores the scissors with their count.
+        let scissors = unsafe { crate::retention::raw_slice(v.p_scissors, v.scissor_count) };
+        check_scissors(
+            scissors,
+            (
+                "VUID-VkPipelineViewportStateCreateInfo-x-02821",
+                "VUID-VkPipelineViewportStateCreateInfo-offset-02822",
+                "VUID-VkPipelineViewportStateCreateInfo-offset-02823",
+            ),
+        )?;
     }
     Ok(())
 }

@@ -219,8 +219,16 @@ const RENDER_PASS_INDICES: &str =
     "checks each attachment, subpass and input attachment index against the render pass's counts";
 const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
 const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
+const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos)";
 const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first";
 const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
+const UNPROVEN_PROTECTED_QUEUES: &str = "checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first";
+const UNPROVEN_INLINE_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: the tests' only device with inlineUniformBlock enables every feature lavapipe has, update-after-bind of inline uniform blocks included";
+const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image)";
+const DEVICE_QUEUES: &str = "checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures";
+const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
+const LAYOUT_BINDINGS: &str = "checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features";
+const SAMPLER_MODES: &str = "checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features";
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
 const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
 const PIPELINE_BOUND: &str =
@@ -635,6 +643,21 @@ pub const SPECIALS: &[Special] = &[
         check_last: call("hooks::create_image_checks", &["self", "create_info"]),
         created: call("hooks::image_created", &["self", "created", "create_info"]),
         settles: &[
+            ("VUID-VkImageCreateInfo-imageType-00956", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-imageType-00954", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-usage-00966", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-samples-02257", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-flags-01572", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-01577", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-usage-00964", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-usage-00965", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-02795", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-02796", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-02797", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-02798", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-Format-02536", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-02537", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-flags-04738", How::Dynamic(IMAGE_RULES)),
             ("VUID-VkImageCreateInfo-mipLevels-00958", How::Dynamic(FULL_CHAIN)),
             ("VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251", How::Dynamic(IMAGE_LIMITS)),
             ("VUID-VkImageCreateInfo-extent-02252", How::Dynamic(IMAGE_LIMITS)),
@@ -746,6 +769,17 @@ pub const SPECIALS: &[Special] = &[
             "VUID-VkQueryPoolCreateInfo-queryType-00792",
             How::Dynamic(STATISTICS),
         )],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateSampler",
+        check_last: call("hooks::sampler_checks", &["self", "create_info"]),
+        settles: &[
+            ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072", How::Dynamic(SAMPLER_MODES)),
+            ("VUID-VkSamplerCreateInfo-addressModeU-01079", How::Dynamic(SAMPLER_MODES)),
+            ("VUID-VkSamplerCreateInfo-pNext-06726", How::Dynamic(SAMPLER_MODES)),
+            ("VUID-VkSamplerCreateInfo-compareEnable-01423", How::Dynamic(SAMPLER_MODES)),
+        ],
         ..NONE
     },
     Special {
@@ -1088,10 +1122,28 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateDescriptorSetLayout",
+        check_last: call("hooks::descriptor_set_layout_checks", &["self", "create_info"]),
         created: call(
             "hooks::descriptor_set_layout_created",
             &["self", "created", "create_info"],
         ),
+        settles: &[
+            ("VUID-VkDescriptorSetLayoutCreateInfo-binding-00279", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBinding-descriptorType-01510", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBinding-descriptorType-02210", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211", How::User(UNPROVEN_INLINE_AFTER_BIND)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013", How::Dynamic(LAYOUT_BINDINGS)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014", How::Dynamic(LAYOUT_BINDINGS)),
+        ],
         ..NONE
     },
     Special {
@@ -1271,6 +1323,10 @@ pub const SPECIALS: &[Special] = &[
             &["self", "created", "create_infos"],
         ),
         settles: &[
+            ("VUID-VkComputePipelineCreateInfo-stage-00701", How::Dynamic(COMPUTE_STATE)),
+            ("VUID-VkComputePipelineCreateInfo-flags-00697", How::Dynamic(COMPUTE_STATE)),
+            ("VUID-VkComputePipelineCreateInfo-flags-00698", How::Dynamic(COMPUTE_STATE)),
+            ("VUID-VkComputePipelineCreateInfo-flags-00699", How::Dynamic(COMPUTE_STATE)),
             ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
@@ -1291,6 +1347,13 @@ pub const SPECIALS: &[Special] = &[
         ),
         settles: &[
             ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::Dynamic(SHADER_LAYOUT)),
+            ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-x-02821", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-offset-02822", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-offset-02823", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00764", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00722", How::Dynamic(PIPELINE_STATE_ALONE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00723", How::Dynamic(PIPELINE_STATE)),
@@ -1585,10 +1648,24 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateDevice",
+        check_last: call("hooks::create_device_checks", &["self", "create_info"]),
         check: call("hooks::device_extensions_emitted", &["create_info"]),
         created: call("hooks::device_created", &["self", "out", "create_info"]),
         error: call("presence::device_error", &["self", "create_info", "r"]),
         scope: call("hooks::create_device_scope", &["self", "create_info"]),
+        settles: &[
+            ("VUID-VkDeviceCreateInfo-pNext-00373", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceCreateInfo-pNext-02829", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceCreateInfo-pNext-02830", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceCreateInfo-pNext-06532", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceQueueCreateInfo-queueCount-00382", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceQueueCreateInfo-flags-02861", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceCreateInfo-queueFamilyIndex-02802", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceQueueCreateInfo-flags-06449", How::User(UNPROVEN_PROTECTED_QUEUES)),
+            ("VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755", How::User(UNPROVEN_PROTECTED_QUEUES)),
+        ],
         ..NONE
     },
     Special {
@@ -1608,8 +1685,16 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkAllocateMemory",
+        check_last: call("hooks::allocate_memory_checks", &["self", "allocate_info"]),
         keeps: Keeps::Nothing,
         created: call("hooks::memory_allocated", &["self", "created", "out", "allocate_info"]),
+        settles: &[
+            ("VUID-vkAllocateMemory-pAllocateInfo-01714", How::Dynamic(MEMORY_TYPES)),
+            ("VUID-vkAllocateMemory-pAllocateInfo-01713", How::Dynamic(MEMORY_TYPES)),
+            ("VUID-VkMemoryAllocateInfo-flags-03330", How::Dynamic(MEMORY_TYPES)),
+            ("VUID-VkMemoryAllocateInfo-flags-03331", How::Dynamic(MEMORY_TYPES)),
+            ("VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329", How::Dynamic(MEMORY_TYPES)),
+        ],
         ..NONE
     },
     Special {

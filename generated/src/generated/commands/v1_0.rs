@@ -159,19 +159,14 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
 
 # Safety
 
-The caller upholds these 17 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkAllocateMemory-pAllocateInfo-01713`: `pAllocateInfo->allocationSize` must be less than or equal to VkPhysicalDeviceMemoryProperties::`memoryHeaps`[`memindex`].`size` where `memindex` = VkPhysicalDeviceMemoryProperties::`memoryTypes`[`pAllocateInfo->memoryTypeIndex`].`heapIndex` as returned by vkGetPhysicalDeviceMemoryProperties for the VkPhysicalDevice that `device` was created from
-- `VUID-vkAllocateMemory-pAllocateInfo-01714`: `pAllocateInfo->memoryTypeIndex` must be less than VkPhysicalDeviceMemoryProperties::`memoryTypeCount` as returned by vkGetPhysicalDeviceMemoryProperties for the VkPhysicalDevice that `device` was created from
 - `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`: There must be less than `VkPhysicalDeviceLimits::maxMemoryAllocationCount` device memory allocations currently allocated on the device
 - `VUID-VkExportMemoryAllocateInfo-handleTypes-00656`: The bits in `handleTypes` must be supported and compatible, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
 - `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675`: If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must be a valid device mask
 - `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676`: If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must not be zero
 - `VUID-VkMemoryAllocateInfo-None-06657`: The parameters must not define more than one import operation
 - `VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872`: If the `protectedMemory` feature is not enabled, the `VkMemoryAllocateInfo::memoryTypeIndex` must not indicate a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: If VkMemoryOpaqueCaptureAddressAllocateInfo::`opaqueCaptureAddress` is not zero, `VkMemoryAllocateFlagsInfo::flags` must include `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`
-- `VUID-VkMemoryAllocateInfo-flags-03330`: If `VkMemoryAllocateFlagsInfo::flags` includes `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled
-- `VUID-VkMemoryAllocateInfo-flags-03331`: If `VkMemoryAllocateFlagsInfo::flags` includes `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`, the `bufferDeviceAddress` feature must be enabled
 - `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333`: If the parameters define an import operation, VkMemoryOpaqueCaptureAddressAllocateInfo::`opaqueCaptureAddress` must be zero
 - `VUID-VkMemoryDedicatedAllocateInfo-image-01432`: At least one of `image` and `buffer` must be VK_NULL_HANDLE
 - `VUID-VkMemoryDedicatedAllocateInfo-image-01434`: If `image` is not VK_NULL_HANDLE, `image` must have been created without `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` set in VkImageCreateInfo::`flags`
@@ -183,12 +178,14 @@ The caller upholds these 17 rules that no check of this method enforces (its com
 
 The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateMemory.html). Settled by the wrappers:
 
+- `VUID-vkAllocateMemory-pAllocateInfo-01713`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-vkAllocateMemory-pAllocateInfo-01714`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
 - `VUID-vkAllocateMemory-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAllocateMemory-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
 - `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn allocate_memory<'a>(
         &self,
@@ -198,6 +195,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
             let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
+        crate::hooks::allocate_memory_checks(self, allocate_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.allocate_memory_unchecked(allocate_info) }
@@ -206,7 +204,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::allocate_memory`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::allocate_memory`] checks at run time: `VUID-vkAllocateMemory-pAllocateInfo-01714`, `VUID-vkAllocateMemory-pAllocateInfo-01713`, `VUID-VkMemoryAllocateInfo-flags-03330`, `VUID-VkMemoryAllocateInfo-flags-03331`, `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn allocate_memory_unchecked<'a>(
         &self,
@@ -590,16 +588,12 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateComputePipelines-flags-00695`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateComputePipelines-flags-00696`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
 - `VUID-vkCreateComputePipelines-pipelineCache-02873`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
-- `VUID-VkComputePipelineCreateInfo-flags-00697`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is -1, `basePipelineHandle` must be a valid handle to a compute `VkPipeline`
-- `VUID-VkComputePipelineCreateInfo-flags-00698`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is VK_NULL_HANDLE, `basePipelineIndex` must be a valid index into the calling command&#8217;s `pCreateInfos` parameter
-- `VUID-VkComputePipelineCreateInfo-flags-00699`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is not -1, `basePipelineHandle` must be VK_NULL_HANDLE
 - `VUID-VkComputePipelineCreateInfo-flags-00700`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
-- `VUID-VkComputePipelineCreateInfo-stage-00701`: The `stage` member of `stage` must be `VK_SHADER_STAGE_COMPUTE_BIT`
 - `VUID-VkComputePipelineCreateInfo-stage-00702`: The shader code for the entry point identified by `stage` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
 - `VUID-VkComputePipelineCreateInfo-layout-01687`: The number of resources in `layout` accessible to the compute shader stage must be less than or equal to `VkPhysicalDeviceLimits::maxPerStageResources`
 - `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be `1`
@@ -674,7 +668,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -789,27 +783,12 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
 - `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingSampledImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, or `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: All bindings with descriptor type `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUpdateUnusedWhilePending` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingPartiallyBound` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingVariableDescriptorCount` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`: If VkPhysicalDeviceInlineUniformBlockFeatures::`descriptorBindingInlineUniformBlockUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` must not use `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT`
-- `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: The VkDescriptorSetLayoutBinding::`binding` members of the elements of the `pBindings` array must each have different values
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, `flags` must include `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`
 - `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, then all bindings must not have `descriptorType` of `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
 
@@ -830,6 +809,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
             let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
+        crate::hooks::descriptor_set_layout_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
@@ -838,7 +818,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
 
 # Safety
 
-The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time: `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_descriptor_set_layout_unchecked<'a>(
         &self,
@@ -1097,7 +1077,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 107 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 100 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1150,7 +1130,6 @@ The caller upholds these 107 rules that no check of this method enforces (its co
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not include variables decorated with the `ViewIndex` built-in decoration in their interfaces
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`: If the pipeline is being created with fragment shader state and `renderPass` is VK_NULL_HANDLE, fragment shaders in `pStages` must not include the `InputAttachment` capability
 - `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be equal to `stageCount`
-- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`: If the `independentBlend` feature is not enabled, all elements of `pAttachments` must be identical
 - `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: If `logicOpEnable` is `VK_TRUE`, `logicOp` must be a valid VkLogicOp value
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`: If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkPipelineColorBlendAttachmentState structures
 - `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
@@ -1189,12 +1168,6 @@ The caller upholds these 107 rules that no check of this method enforces (its co
 - `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`: For every `binding` specified by each element of `pVertexAttributeDescriptions`, a `VkVertexInputBindingDescription` must exist in `pVertexBindingDescriptions` with the same value of `binding`
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`: All elements of `pVertexBindingDescriptions` must describe distinct binding numbers
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`: All elements of `pVertexAttributeDescriptions` must describe distinct attribute locations
-- `VUID-VkPipelineViewportStateCreateInfo-x-02821`: The `x` and `y` members of `offset` member of any element of `pScissors` must be greater than or equal to `0`
-- `VUID-VkPipelineViewportStateCreateInfo-offset-02822`: Evaluation of (`offset.x` + `extent.width`) must not cause a signed integer addition overflow for any element of `pScissors`
-- `VUID-VkPipelineViewportStateCreateInfo-offset-02823`: Evaluation of (`offset.y` + `extent.height`) must not cause a signed integer addition overflow for any element of `pScissors`
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`: If the graphics pipeline is being created without `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` and `viewportCount` must be identical
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` set then `viewportCount` must be `0`, otherwise it must be greater than `0`
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`: If the graphics pipeline is being created with `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` must be `0`, otherwise it must be greater than `0`
 - `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
 - `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
 - `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
@@ -1241,7 +1214,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkGraphicsPipelineCreateInfo-flags-00764`, `VUID-VkGraphicsPipelineCreateInfo-flags-00722`, `VUID-VkGraphicsPipelineCreateInfo-flags-00723`, `VUID-VkGraphicsPipelineCreateInfo-flags-00724`, `VUID-VkGraphicsPipelineCreateInfo-stage-06897`, `VUID-VkGraphicsPipelineCreateInfo-stage-00727`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`, `VUID-VkGraphicsPipelineCreateInfo-topology-00737`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`, `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`, `VUID-VkGraphicsPipelineCreateInfo-layout-06602`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`, `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`, `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`, `VUID-VkPipelineViewportStateCreateInfo-x-02821`, `VUID-VkPipelineViewportStateCreateInfo-offset-02822`, `VUID-VkPipelineViewportStateCreateInfo-offset-02823`, `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`, `VUID-VkGraphicsPipelineCreateInfo-flags-00764`, `VUID-VkGraphicsPipelineCreateInfo-flags-00722`, `VUID-VkGraphicsPipelineCreateInfo-flags-00723`, `VUID-VkGraphicsPipelineCreateInfo-flags-00724`, `VUID-VkGraphicsPipelineCreateInfo-stage-06897`, `VUID-VkGraphicsPipelineCreateInfo-stage-00727`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`, `VUID-VkGraphicsPipelineCreateInfo-topology-00737`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`, `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`, `VUID-VkGraphicsPipelineCreateInfo-layout-06602`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`, `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`, `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_graphics_pipelines_unchecked<'a>(
         &self,
@@ -1302,39 +1275,24 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
 
 # Safety
 
-The caller upholds these 32 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 17 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateImage-flags-00939`: If the `flags` member of `pCreateInfo` includes `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, creating this `VkImage` must not cause the total required sparse memory for all currently valid sparse resources on the device to exceed `VkPhysicalDeviceLimits::sparseAddressSpaceSize`
-- `VUID-VkImageCreateInfo-imageType-00954`: If `imageType` is `VK_IMAGE_TYPE_2D` and `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `extent.width` and `extent.height` must be equal and `arrayLayers` must be greater than or equal to 6
-- `VUID-VkImageCreateInfo-imageType-00956`: If `imageType` is `VK_IMAGE_TYPE_1D`, both `extent.height` and `extent.depth` must be `1`
-- `VUID-VkImageCreateInfo-samples-02257`: If `samples` is not `VK_SAMPLE_COUNT_1_BIT`, then `imageType` must be `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `mipLevels` must be equal to `1`, and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`,
-- `VUID-VkImageCreateInfo-usage-00964`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
-- `VUID-VkImageCreateInfo-usage-00965`: If `usage` includes `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
-- `VUID-VkImageCreateInfo-usage-00966`: If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, `usage` must also contain at least one of `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-VkImageCreateInfo-None-01925`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT` must not also be set
 - `VUID-VkImageCreateInfo-sharingMode-01420`: If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
 - `VUID-VkImageCreateInfo-None-01891`: If any of the bits `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` are set, `VK_IMAGE_CREATE_PROTECTED_BIT` must not also be set
 - `VUID-VkImageCreateInfo-pNext-00990`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo structure, its `handleTypes` member must only contain bits that are also in VkExternalImageFormatProperties::`externalMemoryProperties.compatibleHandleTypes`, as returned by vkGetPhysicalDeviceImageFormatProperties2 with `format`, `imageType`, `tiling`, `usage`, and `flags` equal to those in this structure, and with a VkPhysicalDeviceExternalImageFormatInfo structure included in the `pNext` chain, with a `handleType` equal to any one of the handle types specified in VkExternalMemoryImageCreateInfo::`handleTypes`
 - `VUID-VkImageCreateInfo-physicalDeviceCount-01421`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`
 - `VUID-VkImageCreateInfo-flags-02259`: If `flags` contains `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT`, then `mipLevels` must be one, `arrayLayers` must be one, `imageType` must be `VK_IMAGE_TYPE_2D`. and `imageCreateMaybeLinear` (as defined in Image Creation Limits) must be `VK_FALSE`
-- `VUID-VkImageCreateInfo-flags-01572`: If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `format` must be a compressed image format
 - `VUID-VkImageCreateInfo-pNext-01443`: If the `pNext` chain includes a VkExternalMemoryImageCreateInfo or `VkExternalMemoryImageCreateInfoNV` structure whose `handleTypes` member is not `0`, `initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED`
 - `VUID-VkImageCreateInfo-format-06410`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `mipLevels` must be 1
 - `VUID-VkImageCreateInfo-format-06411`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkImageCreateInfo-format-06412`: If the image `format` is one of the formats that require a sampler {YCbCr} conversion, `imageType` must be `VK_IMAGE_TYPE_2D`
 - `VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260`: If `format` is a multi-planar format, and if `imageCreateFormatFeatures` (as defined in Image Creation Limits) does not contain `VK_FORMAT_FEATURE_DISJOINT_BIT`, then `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
-- `VUID-VkImageCreateInfo-format-01577`: If `format` is not a multi-planar format, and `flags` does not include `VK_IMAGE_CREATE_ALIAS_BIT`, `flags` must not contain `VK_IMAGE_CREATE_DISJOINT_BIT`
 - `VUID-VkImageCreateInfo-format-04712`: If `format` has a `_422` or `_420` suffix, `width` must be a multiple of 2
 - `VUID-VkImageCreateInfo-format-04713`: If `format` has a `_420` suffix, `height` must be a multiple of 2
-- `VUID-VkImageCreateInfo-format-02795`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-format-02796`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-format-02797`: If `format` is a depth-stencil format, `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-format-02798`: If `format` is a depth-stencil format, `usage` does not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure, then its VkImageStencilUsageCreateInfo::`stencilUsage` member must also not include `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`
-- `VUID-VkImageCreateInfo-Format-02536`: If `Format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.width` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferWidth`
-- `VUID-VkImageCreateInfo-format-02537`: If `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` member including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, `extent.height` must be less than or equal to `VkPhysicalDeviceLimits::maxFramebufferHeight`
 - `VUID-VkImageCreateInfo-format-02538`: If the `shaderStorageImageMultisample` feature is not enabled, `format` is a depth-stencil format and the `pNext` chain includes a VkImageStencilUsageCreateInfo structure with its `stencilUsage` including `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkImageCreateInfo-pNext-06722`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero, then each format in VkImageFormatListCreateInfo::`pViewFormats` must either be compatible with the `format` as described in the compatibility table or, if `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, be an uncompressed format that is size-compatible with `format`
-- `VUID-VkImageCreateInfo-flags-04738`: If `flags` does not contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` and the `pNext` chain includes a VkImageFormatListCreateInfo structure, then VkImageFormatListCreateInfo::`viewFormatCount` must be `0` or `1`
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
 
 # Valid usage
@@ -1365,7 +1323,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image`] checks at run time: `VUID-VkImageCreateInfo-mipLevels-00958`, `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`, `VUID-VkImageCreateInfo-extent-02252`, `VUID-VkImageCreateInfo-extent-02253`, `VUID-VkImageCreateInfo-extent-02254`, `VUID-VkImageCreateInfo-mipLevels-02255`, `VUID-VkImageCreateInfo-arrayLayers-02256`, `VUID-VkImageCreateInfo-samples-02258`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_image`] checks at run time: `VUID-VkImageCreateInfo-imageType-00956`, `VUID-VkImageCreateInfo-imageType-00954`, `VUID-VkImageCreateInfo-usage-00966`, `VUID-VkImageCreateInfo-samples-02257`, `VUID-VkImageCreateInfo-flags-01572`, `VUID-VkImageCreateInfo-format-01577`, `VUID-VkImageCreateInfo-usage-00964`, `VUID-VkImageCreateInfo-usage-00965`, `VUID-VkImageCreateInfo-format-02795`, `VUID-VkImageCreateInfo-format-02796`, `VUID-VkImageCreateInfo-format-02797`, `VUID-VkImageCreateInfo-format-02798`, `VUID-VkImageCreateInfo-Format-02536`, `VUID-VkImageCreateInfo-format-02537`, `VUID-VkImageCreateInfo-flags-04738`, `VUID-VkImageCreateInfo-mipLevels-00958`, `VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251`, `VUID-VkImageCreateInfo-extent-02252`, `VUID-VkImageCreateInfo-extent-02253`, `VUID-VkImageCreateInfo-extent-02254`, `VUID-VkImageCreateInfo-mipLevels-02255`, `VUID-VkImageCreateInfo-arrayLayers-02256`, `VUID-VkImageCreateInfo-samples-02258`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_image_unchecked<'a>(
         &self,
@@ -1810,18 +1768,14 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
-- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: If `unnormalizedCoordinates` is `VK_TRUE`, `minFilter` and `magFilter` must be equal
 - `VUID-VkSamplerCreateInfo-addressModeU-01078`: If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
-- `VUID-VkSamplerCreateInfo-addressModeU-01079`: If `samplerMirrorClampToEdge` is not enabled, and if the VK_KHR_sampler_mirror_clamp_to_edge extension is not enabled, `addressModeU`, `addressModeV` and `addressModeW` must not be `VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE`
 - `VUID-VkSamplerCreateInfo-compareEnable-01080`: If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value
 - `VUID-VkSamplerCreateInfo-minFilter-01645`: If sampler {YCbCr} conversion is enabled and the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_SEPARATE_RECONSTRUCTION_FILTER_BIT`, `minFilter` and `magFilter` must be equal to the sampler {YCbCr} conversion&#8217;s `chromaFilter`
 - `VUID-VkSamplerCreateInfo-addressModeU-01646`: If sampler {YCbCr} conversion is enabled, `addressModeU`, `addressModeV`, and `addressModeW` must be `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE`, `anisotropyEnable` must be `VK_FALSE`, and `unnormalizedCoordinates` must be `VK_FALSE`
 - `VUID-VkSamplerCreateInfo-None-01647`: if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
-- `VUID-VkSamplerCreateInfo-pNext-06726`: If `samplerFilterMinmax` is not enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
-- `VUID-VkSamplerCreateInfo-compareEnable-01423`: If `compareEnable` is `VK_TRUE`, the `reductionMode` member of VkSamplerReductionModeCreateInfo must be `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
 
 # Valid usage
 
@@ -1842,6 +1796,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_sampler(create_info);
             r?;
         }
+        crate::hooks::sampler_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_sampler_unchecked(create_info) }
@@ -1850,7 +1805,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_sampler`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_sampler`] checks at run time: `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`, `VUID-VkSamplerCreateInfo-addressModeU-01079`, `VUID-VkSamplerCreateInfo-pNext-06726`, `VUID-VkSamplerCreateInfo-compareEnable-01423`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_sampler_unchecked<'a>(
         &self,
@@ -3207,24 +3162,13 @@ impl PhysicalDevice {
 
 # Safety
 
-The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: All required device extensions for each extension in the VkDeviceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
-- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: The `queueFamilyIndex` member of each element of `pQueueCreateInfos` must be unique within `pQueueCreateInfos`, except that two members can share the same `queueFamilyIndex` if one describes protected-capable queues and one describes queues that are not protected-capable
-- `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`: If multiple elements of `pQueueCreateInfos` share the same `queueFamilyIndex`, the sum of their `queueCount` members must be less than or equal to the `queueCount` member of the `VkQueueFamilyProperties` structure, as returned by `vkGetPhysicalDeviceQueueFamilyProperties` in the `pQueueFamilyProperties`[queueFamilyIndex]
-- `VUID-VkDeviceCreateInfo-pNext-00373`: If the `pNext` chain includes a VkPhysicalDeviceFeatures2 structure, then `pEnabledFeatures` must be `NULL`
-- `VUID-VkDeviceCreateInfo-pNext-02829`: If the `pNext` chain includes a VkPhysicalDeviceVulkan11Features structure, then it must not include a VkPhysicalDevice16BitStorageFeatures, VkPhysicalDeviceMultiviewFeatures, VkPhysicalDeviceVariablePointersFeatures, VkPhysicalDeviceProtectedMemoryFeatures, VkPhysicalDeviceSamplerYcbcrConversionFeatures, or VkPhysicalDeviceShaderDrawParametersFeatures structure
-- `VUID-VkDeviceCreateInfo-pNext-02830`: If the `pNext` chain includes a VkPhysicalDeviceVulkan12Features structure, then it must not include a VkPhysicalDevice8BitStorageFeatures, VkPhysicalDeviceShaderAtomicInt64Features, VkPhysicalDeviceShaderFloat16Int8Features, VkPhysicalDeviceDescriptorIndexingFeatures, VkPhysicalDeviceScalarBlockLayoutFeatures, VkPhysicalDeviceImagelessFramebufferFeatures, VkPhysicalDeviceUniformBufferStandardLayoutFeatures, VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures, VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures, VkPhysicalDeviceHostQueryResetFeatures, VkPhysicalDeviceTimelineSemaphoreFeatures, VkPhysicalDeviceBufferDeviceAddressFeatures, or VkPhysicalDeviceVulkanMemoryModelFeatures structure
-- `VUID-VkDeviceCreateInfo-pNext-06532`: If the `pNext` chain includes a VkPhysicalDeviceVulkan13Features structure, then it must not include a VkPhysicalDeviceDynamicRenderingFeatures, VkPhysicalDeviceImageRobustnessFeatures, VkPhysicalDeviceInlineUniformBlockFeatures, VkPhysicalDeviceMaintenance4Features, VkPhysicalDevicePipelineCreationCacheControlFeatures, VkPhysicalDevicePrivateDataFeatures, VkPhysicalDeviceShaderDemoteToHelperInvocationFeatures, VkPhysicalDeviceShaderIntegerDotProductFeatures, VkPhysicalDeviceShaderTerminateInvocationFeatures, VkPhysicalDeviceSubgroupSizeControlFeatures, VkPhysicalDeviceSynchronization2Features, VkPhysicalDeviceTextureCompressionASTCHDRFeatures, or VkPhysicalDeviceZeroInitializeWorkgroupMemoryFeatures structure
 - `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: If `enabledLayerCount` is not `0`, `ppEnabledLayerNames` must be a valid pointer to an array of `enabledLayerCount` null-terminated UTF-8 strings
 - `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`: Each element of `pPhysicalDevices` must be unique
 - `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376`: All elements of `pPhysicalDevices` must be in the same device group as enumerated by vkEnumeratePhysicalDeviceGroups
 - `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377`: If `physicalDeviceCount` is not `0`, the `physicalDevice` parameter of vkCreateDevice must be an element of `pPhysicalDevices`
-- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties`
-- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: `queueCount` must be less than or equal to the `queueCount` member of the `VkQueueFamilyProperties` structure, as returned by `vkGetPhysicalDeviceQueueFamilyProperties` in the `pQueueFamilyProperties`[queueFamilyIndex]
-- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: Each element of `pQueuePriorities` must be between `0.0` and `1.0` inclusive
-- `VUID-VkDeviceQueueCreateInfo-flags-02861`: If the `protectedMemory` feature is not enabled, the `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT` bit of `flags` must not be set
-- `VUID-VkDeviceQueueCreateInfo-flags-06449`: If `flags` includes `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, `queueFamilyIndex` must be the index of a queue family that includes the `VK_QUEUE_PROTECTED_BIT` capability
 - `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
 - `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
 - `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
@@ -3249,6 +3193,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_device(create_info);
             r?;
         }
+        crate::hooks::create_device_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_device_unchecked(create_info) }
@@ -3257,7 +3202,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_device`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_device`] checks at run time: `VUID-VkDeviceCreateInfo-pNext-00373`, `VUID-VkDeviceCreateInfo-pNext-02829`, `VUID-VkDeviceCreateInfo-pNext-02830`, `VUID-VkDeviceCreateInfo-pNext-06532`, `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`, `VUID-VkDeviceQueueCreateInfo-queueCount-00382`, `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`, `VUID-VkDeviceQueueCreateInfo-flags-02861`, `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`, `VUID-VkDeviceQueueCreateInfo-flags-06449`, `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_device_unchecked<'a>(
         &self,

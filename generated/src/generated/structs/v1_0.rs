@@ -629,6 +629,10 @@ impl<'a> CommandPoolCreateInfo<'a> {
 
 The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkComputePipelineCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkComputePipelineCreateInfo-flags-00697`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
+- `VUID-VkComputePipelineCreateInfo-flags-00698`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
+- `VUID-VkComputePipelineCreateInfo-flags-00699`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
+- `VUID-VkComputePipelineCreateInfo-stage-00701`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
 - `VUID-VkComputePipelineCreateInfo-layout-00703`: dynamic (checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage)
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -639,7 +643,7 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -968,13 +972,15 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
 
 The rules are on [`VkDescriptorSetLayoutBinding`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBinding.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-04604`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
+Left to the caller (listed one by one in the crate's `validation.json`): 9.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 10: explicit rule; the wrappers do not check it*/
+- 8: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -1025,13 +1031,14 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
 
 The rules are on [`VkDescriptorSetLayoutCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutCreateInfo<'a> {
@@ -1060,6 +1067,11 @@ impl<'a> DescriptorSetLayoutCreateInfo<'a> {
 
 The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-00373`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-02829`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-02830`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-06532`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
 - `VUID-VkDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -1069,9 +1081,10 @@ The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkDeviceCreateInfo-pEnabledFeatures-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 31.
+Left to the caller (listed one by one in the crate's `validation.json`): 26.
 
-- 30: explicit rule; the wrappers do not check it
+- 1: checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first
+- 24: explicit rule; the wrappers do not check it
 - 1: not settable safely (deprecated by the specification)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1121,14 +1134,18 @@ impl<'a> DeviceCreateInfo<'a> {
 
 The rules are on [`VkDeviceQueueCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
 - `VUID-VkDeviceQueueCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceQueueCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceQueueCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkDeviceQueueCreateInfo-flags-02861`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueCreateInfo<'a> {
@@ -1555,11 +1572,17 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-extent-02252`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
 - `VUID-VkImageCreateInfo-extent-02253`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
 - `VUID-VkImageCreateInfo-extent-02254`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
+- `VUID-VkImageCreateInfo-imageType-00954`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-imageType-00956`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
 - `VUID-VkImageCreateInfo-imageType-00957`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-mipLevels-00958`: dynamic (checks the level count against the levels of a full chain for the extent)
 - `VUID-VkImageCreateInfo-arrayLayers-02256`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
 - `VUID-VkImageCreateInfo-imageType-00961`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageCreateInfo-samples-02257`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
 - `VUID-VkImageCreateInfo-usage-00963`: dynamic (checks the rule as written (recogniser: flags with no bits but these))
+- `VUID-VkImageCreateInfo-usage-00964`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-usage-00965`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-usage-00966`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
 - `VUID-VkImageCreateInfo-samples-02258`: dynamic (checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected))
 - `VUID-VkImageCreateInfo-usage-00968`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-flags-00969`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
@@ -1578,12 +1601,21 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-format-00943`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-flags-01890`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-VkImageCreateInfo-flags-01572`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-01577`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-02795`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-02796`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-02797`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-02798`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-Format-02536`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-format-02537`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
+- `VUID-VkImageCreateInfo-flags-04738`: dynamic (checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 97.
+Left to the caller (listed one by one in the crate's `validation.json`): 82.
 
 - 15: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 81: explicit rule; the wrappers do not check it*/
+- 66: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageCreateInfo<'a> {
@@ -1953,8 +1985,11 @@ The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khro
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkMemoryAllocateInfo-allocationSize-00638`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-flags-03330`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-flags-03331`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 41 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
@@ -2048,6 +2083,7 @@ impl<'a> PipelineCacheCreateInfo<'a> {
 
 The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorBlendStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -2055,7 +2091,7 @@ The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https:
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -2665,14 +2701,20 @@ The rules are on [`VkPipelineViewportStateCreateInfo`'s reference page](https://
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
 - `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-VkPipelineViewportStateCreateInfo-x-02821`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
+- `VUID-VkPipelineViewportStateCreateInfo-offset-02822`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
+- `VUID-VkPipelineViewportStateCreateInfo-offset-02823`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineViewportStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineViewportStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
+- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
-- 8: explicit rule; the wrappers do not check it
+- 2: explicit rule; the wrappers do not check it
 - 2: written by hand in the specification; not derived, so not checked*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -2908,11 +2950,13 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-maxLod-01973`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkSamplerCreateInfo-anisotropyEnable-01070`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-anisotropyEnable-01071`: dynamic (checks the rule as written (recogniser: number between two bounds, inclusive))
+- `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`: dynamic (checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features)
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSamplerCreateInfo-addressModeU-01079`: dynamic (checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features)
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSamplerCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2923,8 +2967,10 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-addressModeU-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeV-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-addressModeW-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkSamplerCreateInfo-pNext-06726`: dynamic (checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features)
+- `VUID-VkSamplerCreateInfo-compareEnable-01423`: dynamic (checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerCreateInfo<'a> {

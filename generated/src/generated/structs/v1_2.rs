@@ -271,10 +271,24 @@ for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 
 The rules are on [`VkDescriptorSetLayoutBindingFlagsCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBindingFlagsCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 1: checked by the safe methods in every build, but no test breaks it: the tests' only device with inlineUniformBlock enables every feature lavapipe has, update-after-bind of inline uniform blocks included
+- 4: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBindingFlagsCreateInfo<'a> {

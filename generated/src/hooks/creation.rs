@@ -1,0 +1,684 @@
+//! Checks of creations whose rules read more than one value at a time: a device's
+//! queues and feature structs against the physical device, an allocation against the
+//! memory types and the device's features, a descriptor set layout's bindings and
+//! their flags, and a sampler's filters and modes.
+
+use super::*;
+
+/// The core features a device create info enables (given directly, in a chained
+/// `VkPhysicalDeviceFeatures2`, a core version's features struct, or the struct of
+/// the extension a core feature came from).
+pub(crate) fn enabled_features(create_info: &DeviceCreateInfo<'_>) -> crate::validation::Features {
+    let info = create_info.as_raw();
+    let mut features = crate::validation::Features::default();
+    // SAFETY: the safe setter stores a reference that outlives the create info.
+    if let Some(v10) = unsafe { info.p_enabled_features.as_ref() } {
+        features.v10 = *v10;
+    }
+    for node in chain(info.p_next) {
+        // SAFETY: each node is a valid Vulkan struct that starts with sType and
+        // pNext (see `chain`).
+        unsafe { crate::features::add_chained(node, &mut features) };
+    }
+    features
+}
+
+/// The structs of a safe struct's `pNext` chain.
+fn chain(
+    next: *const core::ffi::c_void,
+) -> impl Iterator<Item = *const vk::BaseInStructure<'static>> {
+    let mut next = next.cast::<vk::BaseInStructure<'static>>();
+    core::iter::from_fn(move || {
+        // SAFETY: a safe struct chains only structs pushed through `push_next`, each
+        // a valid Vulkan struct that starts with sType and pNext.
+        let node = unsafe { next.as_ref() }?;
+        let this = next;
+        next = node.p_next;
+        Some(this)
+    })
+}
+
+/// The sTypes in a safe struct's `pNext` chain.
+fn chained_types(next: *const core::ffi::c_void) -> Vec<vk::StructureType> {
+    // SAFETY: as in `chain`.
+    chain(next).map(|n| unsafe { (*n).s_type }).collect()
+}
+
+/// The feature structs whose features each core version's features struct took
+/// over, which the chain must not hold beside it (`VkDeviceCreateInfo-pNext-02829`,
+/// `02830`, `06532`).
+const TAKEN_OVER: [(vk::StructureType, &str, &[vk::StructureType]); 3] = [
+    (
+        vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_1_FEATURES,
+        "VUID-VkDeviceCreateInfo-pNext-02829",
+        &[
+            vk::StructureType::PHYSICAL_DEVICE_16BIT_STORAGE_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_MULTIVIEW_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_VARIABLE_POINTERS_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_PROTECTED_MEMORY_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SAMPLER_YCBCR_CONVERSION_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_DRAW_PARAMETERS_FEATURES,
+        ],
+    ),
+    (
+        vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+        "VUID-VkDeviceCreateInfo-pNext-02830",
+        &[
+            vk::StructureType::PHYSICAL_DEVICE_8BIT_STORAGE_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_ATOMIC_INT64_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_DESCRIPTOR_INDEXING_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SCALAR_BLOCK_LAYOUT_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_IMAGELESS_FRAMEBUFFER_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_UNIFORM_BUFFER_STANDARD_LAYOUT_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_SUBGROUP_EXTENDED_TYPES_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SEPARATE_DEPTH_STENCIL_LAYOUTS_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_HOST_QUERY_RESET_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_VULKAN_MEMORY_MODEL_FEATURES,
+        ],
+    ),
+    (
+        vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+        "VUID-VkDeviceCreateInfo-pNext-06532",
+        &[
+            vk::StructureType::PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_IMAGE_ROBUSTNESS_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_INLINE_UNIFORM_BLOCK_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_PIPELINE_CREATION_CACHE_CONTROL_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_PRIVATE_DATA_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_DEMOTE_TO_HELPER_INVOCATION_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_INTEGER_DOT_PRODUCT_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SHADER_TERMINATE_INVOCATION_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SUBGROUP_SIZE_CONTROL_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_TEXTURE_COMPRESSION_ASTC_HDR_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_ZERO_INITIALIZE_WORKGROUP_MEMORY_FEATURES,
+        ],
+    ),
+];
+
+/// The checks of `vkCreateDevice` over its queue create infos, against the
+/// physical device's queue families, and over its chain of feature structs.
+pub(crate) fn create_device_checks(
+    physical: &PhysicalDevice,
+    create_info: &DeviceCreateInfo<'_>,
+) -> Result<()> {
+    let info = create_info.as_raw();
+    let types = chained_types(info.p_next);
+    if types.contains(&vk::StructureType::PHYSICAL_DEVICE_FEATURES_2)
+        && !info.p_enabled_features.is_null()
+    {
+        refuse(
+            "VUID-VkDeviceCreateInfo-pNext-00373",
+            "the chain holds a VkPhysicalDeviceFeatures2, so pEnabledFeatures must be NULL".into(),
+        )?;
+    }
+    for (version, vuid, taken) in TAKEN_OVER {
+        if let Some(t) = types
+            .iter()
+            .find(|t| types.contains(&version) && taken.contains(t))
+        {
+            refuse(
+                vuid,
+                format!("the chain holds {version:?} and {t:?}, whose features it took over"),
+            )?;
+        }
+    }
+    let families = physical.get_physical_device_queue_family_properties()?;
+    let protected_memory = enabled_features(create_info).v11.protected_memory == vk::TRUE;
+    // SAFETY: the safe setter stores the queue create infos with their count.
+    let queues = unsafe {
+        crate::retention::raw_slice(info.p_queue_create_infos, info.queue_create_info_count)
+    };
+    for (i, q) in queues.iter().enumerate() {
+        let at = format!("pQueueCreateInfos[{i}]");
+        let Some(family) = families.get(q.queue_family_index as usize) else {
+            return refuse(
+                "VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381",
+                format!("{at}.queueFamilyIndex ({}) must be less than the physical device's {} queue families", q.queue_family_index, families.len()),
+            );
+        };
+        if q.queue_count > family.queue_count {
+            refuse(
+                "VUID-VkDeviceQueueCreateInfo-queueCount-00382",
+                format!(
+                    "{at}.queueCount ({}) is more than family {} has ({})",
+                    q.queue_count, q.queue_family_index, family.queue_count
+                ),
+            )?;
+        }
+        // SAFETY: the safe setter stores the priorities with their count.
+        let priorities =
+            unsafe { crate::retention::raw_slice(q.p_queue_priorities, q.queue_count) };
+        if let Some(p) = priorities.iter().find(|p| !(0.0..=1.0).contains(*p)) {
+            refuse(
+                "VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383",
+                format!("{at} has priority {p}, outside 0.0 to 1.0"),
+            )?;
+        }
+        let protected = q.flags.contains(vk::DeviceQueueCreateFlags::PROTECTED);
+        if protected && !protected_memory {
+            refuse(
+                "VUID-VkDeviceQueueCreateInfo-flags-02861",
+                format!("{at} asks for protected queues, but the device does not enable protectedMemory"),
+            )?;
+        }
+        if protected && !family.queue_flags.contains(vk::QueueFlags::PROTECTED) {
+            refuse(
+                "VUID-VkDeviceQueueCreateInfo-flags-06449",
+                format!(
+                    "{at} asks for protected queues of family {}, which has none",
+                    q.queue_family_index
+                ),
+            )?;
+        }
+        let twin = |o: &vk::DeviceQueueCreateInfo<'_>| {
+            o.queue_family_index == q.queue_family_index
+                && o.flags.contains(vk::DeviceQueueCreateFlags::PROTECTED) == protected
+        };
+        if queues[..i].iter().any(twin) {
+            refuse(
+                "VUID-VkDeviceCreateInfo-queueFamilyIndex-02802",
+                format!("{at} names family {} again", q.queue_family_index),
+            )?;
+        }
+    }
+    // Only a protected and an unprotected create info may share a family; their
+    // queues together are still the family's.
+    for q in queues {
+        let Some(family) = families.get(q.queue_family_index as usize) else {
+            continue;
+        };
+        let shared: u32 = queues
+            .iter()
+            .filter(|o| o.queue_family_index == q.queue_family_index)
+            .map(|o| o.queue_count)
+            .sum();
+        if shared > family.queue_count {
+            refuse(
+                "VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755",
+                format!(
+                    "the queue create infos of family {} ask for {shared} queues; it has {}",
+                    q.queue_family_index, family.queue_count
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkAllocateMemory` against the physical device's memory types and
+/// heaps, and of its chained flags against the device's features.
+pub(crate) fn allocate_memory_checks(
+    device: &Device,
+    allocate_info: &MemoryAllocateInfo<'_>,
+) -> Result<()> {
+    let info = allocate_info.as_raw();
+    let memory = device.parent().get_physical_device_memory_properties();
+    let index = info.memory_type_index;
+    let Some(ty) = memory.memory_types_as_slice().get(index as usize) else {
+        return refuse(
+            "VUID-vkAllocateMemory-pAllocateInfo-01714",
+            format!(
+                "memoryTypeIndex ({index}) must be less than the physical device's {} memory types",
+                memory.memory_type_count
+            ),
+        );
+    };
+    let heap = memory.memory_heaps[ty.heap_index as usize];
+    if info.allocation_size > heap.size {
+        refuse(
+            "VUID-vkAllocateMemory-pAllocateInfo-01713",
+            format!(
+                "allocationSize ({}) is more than memory type {index}'s heap holds ({})",
+                info.allocation_size, heap.size
+            ),
+        )?;
+    }
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (flags, capture) = unsafe {
+        (
+            chained::<vk::MemoryAllocateFlagsInfo<'_>>(
+                info.p_next,
+                vk::StructureType::MEMORY_ALLOCATE_FLAGS_INFO,
+            ),
+            chained::<vk::MemoryOpaqueCaptureAddressAllocateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::MEMORY_OPAQUE_CAPTURE_ADDRESS_ALLOCATE_INFO,
+            ),
+        )
+    };
+    let flags = flags.map_or(vk::MemoryAllocateFlags::empty(), |f| f.flags);
+    let (address, replay) = device.live().with_features(|f| {
+        (
+            f.v12.buffer_device_address,
+            f.v12.buffer_device_address_capture_replay,
+        )
+    });
+    if flags.contains(vk::MemoryAllocateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY) && replay == vk::FALSE
+    {
+        refuse(
+            "VUID-VkMemoryAllocateInfo-flags-03330",
+            "the allocation asks for capture and replay of device addresses, but the device does not enable bufferDeviceAddressCaptureReplay".into(),
+        )?;
+    }
+    if flags.contains(vk::MemoryAllocateFlags::DEVICE_ADDRESS) && address == vk::FALSE {
+        refuse(
+            "VUID-VkMemoryAllocateInfo-flags-03331",
+            "the allocation asks for a device address, but the device does not enable bufferDeviceAddress".into(),
+        )?;
+    }
+    if let Some(c) = capture.filter(|c| c.opaque_capture_address != 0) {
+        if !flags.contains(vk::MemoryAllocateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY) {
+            refuse(
+                "VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329",
+                format!("the allocation gives an opaque capture address ({:#x}) without VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT", c.opaque_capture_address),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Which descriptor types the update-after-bind feature of each
+/// `descriptorBinding*UpdateAfterBind` covers, with the rule of its absence.
+const UPDATE_AFTER_BIND: [(&[vk::DescriptorType], &str, &str); 6] = [
+    (
+        &[vk::DescriptorType::UNIFORM_BUFFER],
+        "descriptorBindingUniformBufferUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005",
+    ),
+    (
+        &[
+            vk::DescriptorType::SAMPLER,
+            vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+            vk::DescriptorType::SAMPLED_IMAGE,
+        ],
+        "descriptorBindingSampledImageUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006",
+    ),
+    (
+        &[vk::DescriptorType::STORAGE_IMAGE],
+        "descriptorBindingStorageImageUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007",
+    ),
+    (
+        &[vk::DescriptorType::STORAGE_BUFFER],
+        "descriptorBindingStorageBufferUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008",
+    ),
+    (
+        &[vk::DescriptorType::UNIFORM_TEXEL_BUFFER],
+        "descriptorBindingUniformTexelBufferUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009",
+    ),
+    (
+        &[vk::DescriptorType::STORAGE_TEXEL_BUFFER],
+        "descriptorBindingStorageTexelBufferUpdateAfterBind",
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010",
+    ),
+];
+
+/// The checks of `vkCreateDescriptorSetLayout` over its bindings as a set and a
+/// chained `VkDescriptorSetLayoutBindingFlagsCreateInfo` against the device's
+/// descriptor-indexing features.
+pub(crate) fn descriptor_set_layout_checks(
+    device: &Device,
+    create_info: &DescriptorSetLayoutCreateInfo<'_>,
+) -> Result<()> {
+    let info = create_info.as_raw();
+    // SAFETY: the safe setter stores the bindings with their count.
+    let bindings = unsafe { crate::retention::raw_slice(info.p_bindings, info.binding_count) };
+    for (i, b) in bindings.iter().enumerate() {
+        if bindings[..i].iter().any(|o| o.binding == b.binding) {
+            refuse(
+                "VUID-VkDescriptorSetLayoutCreateInfo-binding-00279",
+                format!(
+                    "pBindings[{i}] is binding {}, as an earlier element is",
+                    b.binding
+                ),
+            )?;
+        }
+        if b.descriptor_type == vk::DescriptorType::INPUT_ATTACHMENT
+            && b.descriptor_count != 0
+            && !(vk::ShaderStageFlags::FRAGMENT).contains(b.stage_flags)
+        {
+            refuse(
+                "VUID-VkDescriptorSetLayoutBinding-descriptorType-01510",
+                format!("pBindings[{i}] is an input attachment for stages {:?}: only the fragment stage reads one", b.stage_flags),
+            )?;
+        }
+        if b.descriptor_type == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
+            let max = vulkan13_properties(device).map(|p| p.max_inline_uniform_block_size);
+            if let Some(max) = max.filter(|&max| b.descriptor_count > max) {
+                refuse(
+                    "VUID-VkDescriptorSetLayoutBinding-descriptorType-02210",
+                    format!("pBindings[{i}] is an inline uniform block of {} bytes, more than maxInlineUniformBlockSize ({max})", b.descriptor_count),
+                )?;
+            }
+        }
+    }
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let binding_flags: Option<&vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO,
+        )
+    };
+    let Some(binding_flags) = binding_flags else {
+        return Ok(());
+    };
+    if binding_flags.binding_count != 0 && binding_flags.binding_count != info.binding_count {
+        return refuse(
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002",
+            format!(
+                "the chained binding flags are for {} bindings; the layout has {}",
+                binding_flags.binding_count, info.binding_count
+            ),
+        );
+    }
+    // SAFETY: the safe setter stores the flags with their count.
+    let flags = unsafe {
+        crate::retention::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
+    };
+    let (v12, v13) = device.live().with_features(|f| (f.v12, f.v13));
+    let on = |b: vk::Bool32| b == vk::TRUE;
+    let update_after_bind_features = [
+        on(v12.descriptor_binding_uniform_buffer_update_after_bind),
+        on(v12.descriptor_binding_sampled_image_update_after_bind),
+        on(v12.descriptor_binding_storage_image_update_after_bind),
+        on(v12.descriptor_binding_storage_buffer_update_after_bind),
+        on(v12.descriptor_binding_uniform_texel_buffer_update_after_bind),
+        on(v12.descriptor_binding_storage_texel_buffer_update_after_bind),
+    ];
+    for (i, (f, b)) in flags.iter().zip(bindings).enumerate() {
+        let at = format!("pBindingFlags[{i}]");
+        let ty = b.descriptor_type;
+        if f.contains(vk::DescriptorBindingFlags::UPDATE_AFTER_BIND) {
+            for ((types, feature, vuid), enabled) in
+                UPDATE_AFTER_BIND.iter().zip(update_after_bind_features)
+            {
+                if types.contains(&ty) && !enabled {
+                    refuse(
+                        vuid,
+                        format!("{at} updates a {ty:?} binding after bind, but the device does not enable {feature}"),
+                    )?;
+                }
+            }
+            if ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK
+                && !on(v13.descriptor_binding_inline_uniform_block_update_after_bind)
+            {
+                refuse(
+                    "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211",
+                    format!("{at} updates an inline uniform block after bind, but the device does not enable descriptorBindingInlineUniformBlockUpdateAfterBind"),
+                )?;
+            }
+            let never = [
+                vk::DescriptorType::INPUT_ATTACHMENT,
+                vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
+                vk::DescriptorType::STORAGE_BUFFER_DYNAMIC,
+            ];
+            if never.contains(&ty) {
+                refuse(
+                    "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011",
+                    format!("{at} updates a {ty:?} binding after bind, which no device allows"),
+                )?;
+            }
+        }
+        for (flag, enabled, feature, vuid) in [
+            (
+                vk::DescriptorBindingFlags::UPDATE_UNUSED_WHILE_PENDING,
+                v12.descriptor_binding_update_unused_while_pending,
+                "descriptorBindingUpdateUnusedWhilePending",
+                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012",
+            ),
+            (
+                vk::DescriptorBindingFlags::PARTIALLY_BOUND,
+                v12.descriptor_binding_partially_bound,
+                "descriptorBindingPartiallyBound",
+                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013",
+            ),
+            (
+                vk::DescriptorBindingFlags::VARIABLE_DESCRIPTOR_COUNT,
+                v12.descriptor_binding_variable_descriptor_count,
+                "descriptorBindingVariableDescriptorCount",
+                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014",
+            ),
+        ] {
+            if f.contains(flag) && !on(enabled) {
+                refuse(vuid, format!("{at} has {flag:?}, but the device does not enable {feature}"))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCreateSampler` over its filters and address modes together,
+/// and a chained reduction mode, against the device's features.
+pub(crate) fn sampler_checks(device: &Device, create_info: &SamplerCreateInfo<'_>) -> Result<()> {
+    let info = create_info.as_raw();
+    if info.unnormalized_coordinates == vk::TRUE && info.min_filter != info.mag_filter {
+        refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072",
+            format!("with unnormalized coordinates, minFilter ({:?}) and magFilter ({:?}) must be equal", info.min_filter, info.mag_filter),
+        )?;
+    }
+    let (mirror, minmax) = device.live().with_features(|f| {
+        (
+            f.v12.sampler_mirror_clamp_to_edge,
+            f.v12.sampler_filter_minmax,
+        )
+    });
+    let modes = [
+        info.address_mode_u,
+        info.address_mode_v,
+        info.address_mode_w,
+    ];
+    if mirror == vk::FALSE && modes.contains(&vk::SamplerAddressMode::MIRROR_CLAMP_TO_EDGE) {
+        refuse(
+            "VUID-VkSamplerCreateInfo-addressModeU-01079",
+            format!("address modes {modes:?} use MIRROR_CLAMP_TO_EDGE, but the device does not enable samplerMirrorClampToEdge"),
+        )?;
+    }
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let reduction: Option<&vk::SamplerReductionModeCreateInfo<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::SAMPLER_REDUCTION_MODE_CREATE_INFO,
+        )
+    };
+    let Some(mode) = reduction
+        .map(|r| r.reduction_mode)
+        .filter(|m| *m != vk::SamplerReductionMode::WEIGHTED_AVERAGE)
+    else {
+        return Ok(());
+    };
+    if minmax == vk::FALSE {
+        refuse(
+            "VUID-VkSamplerCreateInfo-pNext-06726",
+            format!("the chained reduction mode is {mode:?}, but the device does not enable samplerFilterMinmax"),
+        )?;
+    }
+    if info.compare_enable == vk::TRUE {
+        refuse(
+            "VUID-VkSamplerCreateInfo-compareEnable-01423",
+            format!("a comparing sampler reduces by weighted average, not {mode:?}"),
+        )?;
+    }
+    Ok(())
+}
+
+/// Whether `format` is a block-compressed format (its texel blocks span more than
+/// one texel, and it is not one of the 4:2:2 formats, whose blocks also do).
+fn compressed(format: vk::Format) -> bool {
+    let subsampled = (1_000_156_000..1_000_157_000).contains(&format.as_raw());
+    crate::formats::block(format, vk::ImageAspectFlags::COLOR)
+        .is_some_and(|(_, [w, h, _])| (w > 1 || h > 1) && !subsampled)
+}
+
+/// The checks of `vkCreateImage` that relate its type, extent, flags, usage and
+/// format to each other and to a chained stencil usage or format list. They come
+/// before the checks that ask the physical device about the image.
+pub(crate) fn image_create_rules(device: &Device, create_info: &ImageCreateInfo<'_>) -> Result<()> {
+    let info = create_info.as_raw();
+    let (flags, usage, e) = (info.flags, info.usage, info.extent);
+    if info.image_type == vk::ImageType::TYPE_1D && (e.height != 1 || e.depth != 1) {
+        refuse(
+            "VUID-VkImageCreateInfo-imageType-00956",
+            format!(
+                "a 1D image has height and depth 1 (extent = {}x{}x{})",
+                e.width, e.height, e.depth
+            ),
+        )?;
+    }
+    if info.image_type == vk::ImageType::TYPE_2D
+        && flags.contains(vk::ImageCreateFlags::CUBE_COMPATIBLE)
+        && (e.width != e.height || info.array_layers < 6)
+    {
+        refuse(
+            "VUID-VkImageCreateInfo-imageType-00954",
+            format!("a cube-compatible image is square with at least 6 layers (extent = {}x{}, arrayLayers = {})", e.width, e.height, info.array_layers),
+        )?;
+    }
+    let attachments = vk::ImageUsageFlags::COLOR_ATTACHMENT
+        | vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT
+        | vk::ImageUsageFlags::INPUT_ATTACHMENT;
+    if usage.contains(vk::ImageUsageFlags::TRANSIENT_ATTACHMENT) && !usage.intersects(attachments) {
+        refuse(
+            "VUID-VkImageCreateInfo-usage-00966",
+            format!("a transient image is an attachment too (usage = {usage:?})"),
+        )?;
+    }
+    if info.samples != vk::SampleCountFlags::TYPE_1
+        && (info.image_type != vk::ImageType::TYPE_2D
+            || flags.contains(vk::ImageCreateFlags::CUBE_COMPATIBLE)
+            || info.mip_levels != 1
+            || info.tiling == vk::ImageTiling::LINEAR)
+    {
+        refuse(
+            "VUID-VkImageCreateInfo-samples-02257",
+            format!("a multisampled image ({:?}) is an optimal 2D image of one level, not cube-compatible", info.samples),
+        )?;
+    }
+    if flags.contains(vk::ImageCreateFlags::BLOCK_TEXEL_VIEW_COMPATIBLE) && !compressed(info.format)
+    {
+        refuse(
+            "VUID-VkImageCreateInfo-flags-01572",
+            format!(
+                "a block-texel-view-compatible image has a compressed format, not {:?}",
+                info.format
+            ),
+        )?;
+    }
+    let planes = vk::ImageAspectFlags::PLANE_0;
+    let multi_planar = crate::formats::aspects(info.format).is_some_and(|a| a.contains(planes));
+    if flags.contains(vk::ImageCreateFlags::DISJOINT)
+        && !multi_planar
+        && !flags.contains(vk::ImageCreateFlags::ALIAS)
+    {
+        refuse(
+            "VUID-VkImageCreateInfo-format-01577",
+            format!(
+                "a disjoint image has a multi-planar format, not {:?}",
+                info.format
+            ),
+        )?;
+    }
+    let limits = limits(device);
+    let max = (limits.max_framebuffer_width, limits.max_framebuffer_height);
+    if usage.intersects(attachments | vk::ImageUsageFlags::TRANSIENT_ATTACHMENT) {
+        if e.width > max.0 {
+            refuse(
+                "VUID-VkImageCreateInfo-usage-00964",
+                format!(
+                    "an attachment image is at most maxFramebufferWidth ({}) wide, not {}",
+                    max.0, e.width
+                ),
+            )?;
+        }
+        if e.height > max.1 {
+            refuse(
+                "VUID-VkImageCreateInfo-usage-00965",
+                format!(
+                    "an attachment image is at most maxFramebufferHeight ({}) high, not {}",
+                    max.1, e.height
+                ),
+            )?;
+        }
+    }
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (stencil, list) = unsafe {
+        (
+            chained::<vk::ImageStencilUsageCreateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::IMAGE_STENCIL_USAGE_CREATE_INFO,
+            ),
+            chained::<vk::ImageFormatListCreateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::IMAGE_FORMAT_LIST_CREATE_INFO,
+            ),
+        )
+    };
+    let depth_stencil = crate::formats::aspects(info.format)
+        .is_some_and(|a| a.intersects(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL));
+    if let Some(stencil) = stencil.filter(|_| depth_stencil) {
+        let s = stencil.stencil_usage;
+        for (bit, given, vuid) in [
+            (
+                vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+                true,
+                "VUID-VkImageCreateInfo-format-02795",
+            ),
+            (
+                vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+                false,
+                "VUID-VkImageCreateInfo-format-02796",
+            ),
+            (
+                vk::ImageUsageFlags::TRANSIENT_ATTACHMENT,
+                true,
+                "VUID-VkImageCreateInfo-format-02797",
+            ),
+            (
+                vk::ImageUsageFlags::TRANSIENT_ATTACHMENT,
+                false,
+                "VUID-VkImageCreateInfo-format-02798",
+            ),
+        ] {
+            if usage.contains(bit) == given && s.contains(bit) != given {
+                refuse(
+                    vuid,
+                    format!("the stencil usage {s:?} must {}include {bit:?}, as the usage {usage:?} does{}", if given { "" } else { "not " }, if given { "" } else { " not" }),
+                )?;
+            }
+        }
+        if s.contains(vk::ImageUsageFlags::INPUT_ATTACHMENT) {
+            if e.width > max.0 {
+                refuse(
+                    "VUID-VkImageCreateInfo-Format-02536",
+                    format!("a stencil input attachment is at most maxFramebufferWidth ({}) wide, not {}", max.0, e.width),
+                )?;
+            }
+            if e.height > max.1 {
+                refuse(
+                    "VUID-VkImageCreateInfo-format-02537",
+                    format!("a stencil input attachment is at most maxFramebufferHeight ({}) high, not {}", max.1, e.height),
+                )?;
+            }
+        }
+    }
+    if let Some(list) = list {
+        if !flags.contains(vk::ImageCreateFlags::MUTABLE_FORMAT) && list.view_format_count > 1 {
+            refuse(
+                "VUID-VkImageCreateInfo-flags-04738",
+                format!(
+                    "an image without MUTABLE_FORMAT lists at most one view format, not {}",
+                    list.view_format_count
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,794 @@
+//! Creations whose rules read several values at once: a device's queues and
+//! feature structs, an allocation's memory type and flags, a descriptor set layout's
+//! bindings and binding flags, and a sampler's filters and modes.
+//!
+//! Each case breaks one rule. tuff must refuse the safe call with the rule's VUID;
+//! the validation layer, for the `_unchecked` twin (with a messenger that makes it
+//! skip a call it finds wrong), must name that VUID and nothing else but the rules
+//! the case says the same change breaks, or say nothing (the rule is then proven by
+//! the error alone).
+//!
+//! SAFETY of the `unsafe` blocks: the methods are `unsafe` for rules their
+//! `# Safety` sections list, which these calls keep but for the one each case
+//! breaks on purpose, which tuff refuses and the layer skips.
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::{vk, Handle as _};
+use tuff_setup::Setup;
+
+/// Runs `unchecked` with the layer told to skip erroring calls, and returns what it
+/// said.
+fn under_layer(s: &Setup, unchecked: impl FnOnce()) -> Vec<String> {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    s.messages.take()
+}
+
+/// Rules the 1.3.239 layer reports under the VUID a later registry gives them; its
+/// message states the rule.
+const RENAMED: &[(&str, &str)] = &[(
+    "VUID-VkDescriptorSetLayoutBinding-descriptorType-02210",
+    "VUID-VkDescriptorSetLayoutBinding-descriptorType-08004",
+)];
+
+/// What the cases saw: failures, and the rules the layer named or left to the error.
+#[derive(Default)]
+struct Verdicts {
+    failures: Vec<String>,
+    by_layer: usize,
+    alone: Vec<&'static str>,
+}
+
+impl Verdicts {
+    /// Judges one case: the safe call's result and what the layer said of the
+    /// unchecked one, with the rules the same change breaks too.
+    fn judge(
+        &mut self,
+        vuid: &'static str,
+        also: &[&str],
+        safe: tuff::Result<()>,
+        layer: Vec<String>,
+    ) {
+        match &safe {
+            Err(tuff::Error::Validation { vuid: got, .. }) if *got == vuid => {}
+            other => {
+                self.failures
+                    .push(format!("{vuid}: the safe method returned {other:?}"));
+                return;
+            }
+        }
+        let names = |m: &String, v: &str| {
+            m.contains(&format!("[ {v} ]"))
+                || RENAMED
+                    .iter()
+                    .any(|(rule, name)| *rule == v && m.contains(&format!("[ {name} ]")))
+        };
+        let implied = |m: &String| also.iter().any(|a| names(m, a));
+        if layer.iter().all(implied) {
+            self.alone.push(vuid);
+        } else if layer.iter().any(|m| names(m, vuid))
+            && layer.iter().all(|m| names(m, vuid) || implied(m))
+        {
+            self.by_layer += 1;
+        } else {
+            self.failures.push(format!(
+                "{vuid}: the layer said something else:\n  {}",
+                layer.join("\n  ")
+            ));
+        }
+    }
+
+    fn finish(self, what: &str) {
+        println!(
+            "{what}: the layer named {}, the error alone proves {} ({})",
+            self.by_layer,
+            self.alone.len(),
+            self.alone.join(", ")
+        );
+        assert!(self.failures.is_empty(), "{}", self.failures.join("\n"));
+    }
+}
+
+/// A device create info's parts a case can change.
+#[derive(Clone)]
+struct DeviceParts {
+    queues: Vec<(u32, vk::DeviceQueueCreateFlags, Vec<f32>)>,
+    features2: bool,
+    enabled_features: bool,
+    /// Chain a core version's features struct and one of the structs it took over.
+    both: Option<u32>,
+}
+
+impl Default for DeviceParts {
+    fn default() -> Self {
+        DeviceParts {
+            queues: vec![(0, vk::DeviceQueueCreateFlags::empty(), vec![1.0])],
+            features2: false,
+            enabled_features: false,
+            both: None,
+        }
+    }
+}
+
+fn create_device(s: &Setup, p: &DeviceParts) -> (tuff::Result<()>, Vec<String>) {
+    let queues: Vec<_> = p
+        .queues
+        .iter()
+        .map(|(family, flags, priorities)| {
+            tuff::DeviceQueueCreateInfo::new()
+                .flags(*flags)
+                .queue_family_index(*family)
+                .queue_priorities(priorities)
+        })
+        .collect();
+    let features = vk::PhysicalDeviceFeatures::default();
+    let mut features2 = tuff::PhysicalDeviceFeatures2::new();
+    let mut v11 = tuff::PhysicalDeviceVulkan11Features::new();
+    let mut multiview = tuff::PhysicalDeviceMultiviewFeatures::new();
+    let mut v12 = tuff::PhysicalDeviceVulkan12Features::new();
+    let mut timeline = tuff::PhysicalDeviceTimelineSemaphoreFeatures::new();
+    let mut v13 = tuff::PhysicalDeviceVulkan13Features::new();
+    let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new();
+    let mut info = tuff::DeviceCreateInfo::new().queue_create_infos(&queues);
+    if p.enabled_features {
+        info = info.enabled_features(Some(&features));
+    }
+    if p.features2 {
+        info = info.push_next(&mut features2);
+    }
+    match p.both {
+        Some(1) => info = info.push_next(&mut v11).push_next(&mut multiview),
+        Some(2) => info = info.push_next(&mut v12).push_next(&mut timeline),
+        Some(3) => info = info.push_next(&mut v13).push_next(&mut sync2),
+        _ => {}
+    }
+    let safe = unsafe { s.physical.create_device(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.physical.create_device_unchecked(&info) };
+    });
+    // After skipping a device creation the layer also says that it made no device,
+    // naming no rule.
+    let layer = layer
+        .into_iter()
+        .filter(|m| !m.contains("vkCreateDevice:  Failed to create device chain."))
+        .collect();
+    (safe, layer)
+}
+
+#[test]
+fn device_creation_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let (safe, layer) = create_device(&s, &DeviceParts::default());
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid device: {safe:?} {layer:?}"
+    );
+    let none = vk::DeviceQueueCreateFlags::empty();
+    let cases: [(&str, &[&str], DeviceParts); 9] = [
+        (
+            "VUID-VkDeviceCreateInfo-pNext-00373",
+            &[],
+            DeviceParts {
+                features2: true,
+                enabled_features: true,
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceCreateInfo-pNext-02829",
+            &[],
+            DeviceParts {
+                both: Some(1),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceCreateInfo-pNext-02830",
+            &[],
+            DeviceParts {
+                both: Some(2),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceCreateInfo-pNext-06532",
+            &[],
+            DeviceParts {
+                both: Some(3),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381",
+            &[],
+            DeviceParts {
+                queues: vec![(64, none, vec![1.0])],
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceQueueCreateInfo-queueCount-00382",
+            &[],
+            DeviceParts {
+                queues: vec![(0, none, vec![1.0; 64])],
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383",
+            &[],
+            DeviceParts {
+                queues: vec![(0, none, vec![2.0])],
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceQueueCreateInfo-flags-02861",
+            // The test's physical device has no protected queues either.
+            &["VUID-VkDeviceQueueCreateInfo-flags-06449"],
+            DeviceParts {
+                queues: vec![(0, vk::DeviceQueueCreateFlags::PROTECTED, vec![1.0])],
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceCreateInfo-queueFamilyIndex-02802",
+            &[],
+            DeviceParts {
+                queues: vec![(0, none, vec![1.0]), (0, none, vec![1.0])],
+                ..Default::default()
+            },
+        ),
+    ];
+    let mut v = Verdicts::default();
+    for (vuid, also, parts) in cases {
+        let (safe, layer) = create_device(&s, &parts);
+        v.judge(vuid, also, safe, layer);
+    }
+    v.finish("device creation");
+}
+
+#[test]
+fn allocation_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let memory = s.physical.get_physical_device_memory_properties();
+    let allocate = |size: u64, index: u32, flags: vk::MemoryAllocateFlags, capture: u64| {
+        let mut flags = tuff::MemoryAllocateFlagsInfo::new().flags(flags);
+        let mut address =
+            tuff::MemoryOpaqueCaptureAddressAllocateInfo::new().opaque_capture_address(capture);
+        let info = tuff::MemoryAllocateInfo::new()
+            .allocation_size(size)
+            .memory_type_index(index)
+            .push_next(&mut flags)
+            .push_next(&mut address);
+        let safe = unsafe { s.device.allocate_memory(&info) }.map(drop);
+        let layer = under_layer(&s, || {
+            let _ = unsafe { s.device.allocate_memory_unchecked(&info) };
+        });
+        (safe, layer)
+    };
+    let none = vk::MemoryAllocateFlags::empty();
+    let (safe, layer) = allocate(64, 0, none, 0);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid allocation: {safe:?} {layer:?}"
+    );
+    let heap = memory.memory_heaps[memory.memory_types[0].heap_index as usize].size;
+    let mut v = Verdicts::default();
+    for (vuid, (safe, layer)) in [
+        (
+            "VUID-vkAllocateMemory-pAllocateInfo-01714",
+            allocate(64, memory.memory_type_count, none, 0),
+        ),
+        (
+            "VUID-vkAllocateMemory-pAllocateInfo-01713",
+            allocate(heap + 1, 0, none, 0),
+        ),
+        (
+            "VUID-VkMemoryAllocateInfo-flags-03330",
+            allocate(
+                64,
+                0,
+                vk::MemoryAllocateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY,
+                0,
+            ),
+        ),
+        (
+            "VUID-VkMemoryAllocateInfo-flags-03331",
+            allocate(64, 0, vk::MemoryAllocateFlags::DEVICE_ADDRESS, 0),
+        ),
+        (
+            "VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329",
+            allocate(64, 0, none, 0x1000),
+        ),
+    ] {
+        v.judge(vuid, &[], safe, layer);
+    }
+    v.finish("allocation");
+}
+
+/// One binding of a descriptor set layout: binding number, type, count, stages and
+/// binding flags.
+type Binding = (
+    u32,
+    vk::DescriptorType,
+    u32,
+    vk::ShaderStageFlags,
+    vk::DescriptorBindingFlags,
+);
+
+fn create_set_layout(
+    s: &Setup,
+    bindings: &[Binding],
+    flag_count: Option<usize>,
+) -> (tuff::Result<()>, Vec<String>) {
+    let list: Vec<_> = bindings
+        .iter()
+        .map(|&(binding, ty, count, stages, _)| {
+            tuff::DescriptorSetLayoutBinding::new()
+                .binding(binding)
+                .descriptor_type(ty)
+                .descriptor_count(count)
+                .stage_flags(stages)
+        })
+        .collect();
+    let flags: Vec<_> = bindings.iter().map(|b| b.4).collect();
+    let flags = &flags[..flag_count.unwrap_or(flags.len())];
+    let mut binding_flags =
+        tuff::DescriptorSetLayoutBindingFlagsCreateInfo::new().binding_flags(flags);
+    let after_bind = flags
+        .iter()
+        .any(|f| f.contains(vk::DescriptorBindingFlags::UPDATE_AFTER_BIND));
+    let mut info = tuff::DescriptorSetLayoutCreateInfo::new()
+        .bindings(&list)
+        .push_next(&mut binding_flags);
+    if after_bind {
+        info = info.flags(vk::DescriptorSetLayoutCreateFlags::UPDATE_AFTER_BIND_POOL);
+    }
+    let safe = unsafe { s.device.create_descriptor_set_layout(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_descriptor_set_layout_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+#[test]
+fn set_layout_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let full = tuff_setup::setup_full_features(true);
+    let compute = vk::ShaderStageFlags::COMPUTE;
+    let fragment = vk::ShaderStageFlags::FRAGMENT;
+    let no = vk::DescriptorBindingFlags::empty();
+    let after = vk::DescriptorBindingFlags::UPDATE_AFTER_BIND;
+    let ty = vk::DescriptorType::UNIFORM_BUFFER;
+    let valid: [Binding; 2] = [(0, ty, 1, compute, no), (1, ty, 1, compute, no)];
+    let (safe, layer) = create_set_layout(&s, &valid, None);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid layout: {safe:?} {layer:?}"
+    );
+    let block = vk::DescriptorType::INLINE_UNIFORM_BLOCK;
+    let max_block = {
+        let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+        let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+        // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+        unsafe {
+            full.instance
+                .fns()
+                .get_physical_device_properties2(full.physical.raw(), &mut p2)
+        };
+        p13.max_inline_uniform_block_size
+    };
+    let mut v = Verdicts::default();
+    let mut run = |s: &Setup, vuid: &'static str, bindings: &[Binding], count: Option<usize>| {
+        let (safe, layer) = create_set_layout(s, bindings, count);
+        v.judge(vuid, &[], safe, layer);
+    };
+    run(
+        &s,
+        "VUID-VkDescriptorSetLayoutCreateInfo-binding-00279",
+        &[(0, ty, 1, compute, no), (0, ty, 1, compute, no)],
+        None,
+    );
+    run(
+        &s,
+        "VUID-VkDescriptorSetLayoutBinding-descriptorType-01510",
+        &[(0, vk::DescriptorType::INPUT_ATTACHMENT, 1, compute, no)],
+        None,
+    );
+    run(
+        &full,
+        "VUID-VkDescriptorSetLayoutBinding-descriptorType-02210",
+        &[(0, block, (max_block + 4) & !3, fragment, no)],
+        None,
+    );
+    run(
+        &s,
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002",
+        &valid,
+        Some(1),
+    );
+    for (ty, vuid) in [
+        (
+            vk::DescriptorType::UNIFORM_BUFFER,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005",
+        ),
+        (
+            vk::DescriptorType::SAMPLED_IMAGE,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006",
+        ),
+        (
+            vk::DescriptorType::STORAGE_IMAGE,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007",
+        ),
+        (
+            vk::DescriptorType::STORAGE_BUFFER,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008",
+        ),
+        (
+            vk::DescriptorType::UNIFORM_TEXEL_BUFFER,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009",
+        ),
+        (
+            vk::DescriptorType::STORAGE_TEXEL_BUFFER,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010",
+        ),
+    ] {
+        run(&s, vuid, &[(0, ty, 1, compute, after)], None);
+    }
+    run(
+        &s,
+        "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011",
+        &[(0, vk::DescriptorType::INPUT_ATTACHMENT, 1, fragment, after)],
+        None,
+    );
+    for (flag, vuid) in [
+        (
+            vk::DescriptorBindingFlags::UPDATE_UNUSED_WHILE_PENDING,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012",
+        ),
+        (
+            vk::DescriptorBindingFlags::PARTIALLY_BOUND,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013",
+        ),
+        (
+            vk::DescriptorBindingFlags::VARIABLE_DESCRIPTOR_COUNT,
+            "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014",
+        ),
+    ] {
+        run(&s, vuid, &[(0, ty, 1, compute, flag)], None);
+    }
+    v.finish("descriptor set layouts");
+}
+
+/// A sampler's parts a case can change.
+#[derive(Clone, Copy)]
+struct SamplerParts {
+    min: vk::Filter,
+    unnormalized: bool,
+    mode: vk::SamplerAddressMode,
+    compare: bool,
+    reduction: vk::SamplerReductionMode,
+}
+
+fn create_sampler(s: &Setup, p: SamplerParts) -> (tuff::Result<()>, Vec<String>) {
+    let mut reduction = tuff::SamplerReductionModeCreateInfo::new().reduction_mode(p.reduction);
+    let info = tuff::SamplerCreateInfo::new()
+        .min_filter(p.min)
+        .mag_filter(vk::Filter::NEAREST)
+        .mipmap_mode(vk::SamplerMipmapMode::NEAREST)
+        .address_mode_u(p.mode)
+        .address_mode_v(p.mode)
+        .address_mode_w(p.mode)
+        .unnormalized_coordinates(p.unnormalized as vk::Bool32)
+        .compare_enable(p.compare as vk::Bool32)
+        .compare_op(vk::CompareOp::LESS)
+        .push_next(&mut reduction);
+    let safe = unsafe { s.device.create_sampler(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_sampler_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+#[test]
+fn sampler_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let full = tuff_setup::setup_full_features(true);
+    let valid = SamplerParts {
+        min: vk::Filter::NEAREST,
+        unnormalized: false,
+        mode: vk::SamplerAddressMode::CLAMP_TO_EDGE,
+        compare: false,
+        reduction: vk::SamplerReductionMode::WEIGHTED_AVERAGE,
+    };
+    for s in [&s, &full] {
+        let (safe, layer) = create_sampler(s, valid);
+        assert!(
+            safe.is_ok() && layer.is_empty(),
+            "the valid sampler: {safe:?} {layer:?}"
+        );
+    }
+    let mut v = Verdicts::default();
+    for (s, vuid, parts) in [
+        (
+            &s,
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072",
+            SamplerParts {
+                min: vk::Filter::LINEAR,
+                unnormalized: true,
+                ..valid
+            },
+        ),
+        (
+            &s,
+            "VUID-VkSamplerCreateInfo-addressModeU-01079",
+            SamplerParts {
+                mode: vk::SamplerAddressMode::MIRROR_CLAMP_TO_EDGE,
+                ..valid
+            },
+        ),
+        (
+            &s,
+            "VUID-VkSamplerCreateInfo-pNext-06726",
+            SamplerParts {
+                reduction: vk::SamplerReductionMode::MIN,
+                ..valid
+            },
+        ),
+        (
+            &full,
+            "VUID-VkSamplerCreateInfo-compareEnable-01423",
+            SamplerParts {
+                compare: true,
+                reduction: vk::SamplerReductionMode::MIN,
+                ..valid
+            },
+        ),
+    ] {
+        let (safe, layer) = create_sampler(s, parts);
+        v.judge(vuid, &[], safe, layer);
+    }
+    v.finish("samplers");
+}
+
+/// An image create info's parts a case can change.
+#[derive(Clone, Copy)]
+struct ImageParts {
+    ty: vk::ImageType,
+    format: vk::Format,
+    extent: vk::Extent3D,
+    mip_levels: u32,
+    layers: u32,
+    samples: vk::SampleCountFlags,
+    flags: vk::ImageCreateFlags,
+    usage: vk::ImageUsageFlags,
+    stencil_usage: Option<vk::ImageUsageFlags>,
+    view_formats: usize,
+}
+
+const IMAGE: ImageParts = ImageParts {
+    ty: vk::ImageType::TYPE_2D,
+    format: vk::Format::R8G8B8A8_UNORM,
+    extent: vk::Extent3D {
+        width: 4,
+        height: 4,
+        depth: 1,
+    },
+    mip_levels: 1,
+    layers: 1,
+    samples: vk::SampleCountFlags::TYPE_1,
+    flags: vk::ImageCreateFlags::empty(),
+    usage: vk::ImageUsageFlags::SAMPLED,
+    stencil_usage: None,
+    view_formats: 0,
+};
+
+fn create_image(s: &Setup, p: ImageParts) -> (tuff::Result<()>, Vec<String>) {
+    let formats = [p.format, vk::Format::R8G8B8A8_SRGB][..p.view_formats].to_vec();
+    let mut list = tuff::ImageFormatListCreateInfo::new().view_formats(&formats);
+    let mut stencil =
+        tuff::ImageStencilUsageCreateInfo::new().stencil_usage(p.stencil_usage.unwrap_or_default());
+    let mut info = tuff::ImageCreateInfo::new()
+        .flags(p.flags)
+        .image_type(p.ty)
+        .format(p.format)
+        .extent(p.extent)
+        .mip_levels(p.mip_levels)
+        .array_layers(p.layers)
+        .samples(p.samples)
+        .usage(p.usage);
+    if p.view_formats > 0 {
+        info = info.push_next(&mut list);
+    }
+    if p.stencil_usage.is_some() {
+        info = info.push_next(&mut stencil);
+    }
+    let safe = unsafe { s.device.create_image(&info) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_image_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+#[test]
+fn image_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let limits = s.physical.get_physical_device_properties().limits;
+    let depth = ImageParts {
+        format: vk::Format::D32_SFLOAT_S8_UINT,
+        usage: vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+        stencil_usage: Some(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
+        ..IMAGE
+    };
+    for valid in [IMAGE, depth] {
+        let (safe, layer) = create_image(&s, valid);
+        assert!(
+            safe.is_ok() && layer.is_empty(),
+            "the valid image: {safe:?} {layer:?}"
+        );
+    }
+    let color = vk::ImageUsageFlags::COLOR_ATTACHMENT;
+    let transient = vk::ImageUsageFlags::TRANSIENT_ATTACHMENT;
+    let ds = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+    let cases: [(&str, &[&str], ImageParts); 14] = [
+        (
+            "VUID-VkImageCreateInfo-imageType-00956",
+            &[],
+            ImageParts {
+                ty: vk::ImageType::TYPE_1D,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-imageType-00954",
+            &[],
+            ImageParts {
+                flags: vk::ImageCreateFlags::CUBE_COMPATIBLE,
+                layers: 6,
+                extent: vk::Extent3D {
+                    width: 4,
+                    height: 2,
+                    depth: 1,
+                },
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-usage-00966",
+            &[],
+            ImageParts {
+                usage: transient,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-samples-02257",
+            &[],
+            ImageParts {
+                samples: vk::SampleCountFlags::TYPE_4,
+                mip_levels: 2,
+                usage: color,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-flags-01572",
+            &[],
+            ImageParts {
+                flags: vk::ImageCreateFlags::BLOCK_TEXEL_VIEW_COMPATIBLE
+                    | vk::ImageCreateFlags::MUTABLE_FORMAT,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-01577",
+            &[],
+            ImageParts {
+                flags: vk::ImageCreateFlags::DISJOINT,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-usage-00964",
+            // An image wider than the framebuffer limit is wider than the device's
+            // 2D images too, on the test's device.
+            &["VUID-VkImageCreateInfo-extent-02252"],
+            ImageParts {
+                usage: color,
+                extent: vk::Extent3D {
+                    width: limits.max_framebuffer_width + 1,
+                    height: 4,
+                    depth: 1,
+                },
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-usage-00965",
+            &["VUID-VkImageCreateInfo-extent-02253"],
+            ImageParts {
+                usage: color,
+                extent: vk::Extent3D {
+                    width: 4,
+                    height: limits.max_framebuffer_height + 1,
+                    depth: 1,
+                },
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-02795",
+            &[],
+            ImageParts {
+                stencil_usage: Some(vk::ImageUsageFlags::SAMPLED),
+                ..depth
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-02796",
+            &[],
+            ImageParts {
+                usage: vk::ImageUsageFlags::SAMPLED,
+                stencil_usage: Some(ds),
+                ..depth
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-02797",
+            &[],
+            ImageParts {
+                usage: ds | transient,
+                stencil_usage: Some(ds),
+                ..depth
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-02798",
+            &[],
+            ImageParts {
+                stencil_usage: Some(ds | transient),
+                ..depth
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-Format-02536",
+            &["VUID-VkImageCreateInfo-extent-02252"],
+            ImageParts {
+                usage: vk::ImageUsageFlags::SAMPLED,
+                stencil_usage: Some(vk::ImageUsageFlags::INPUT_ATTACHMENT),
+                extent: vk::Extent3D {
+                    width: limits.max_framebuffer_width + 1,
+                    height: 4,
+                    depth: 1,
+                },
+                ..depth
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-flags-04738",
+            &[],
+            ImageParts {
+                view_formats: 2,
+                ..IMAGE
+            },
+        ),
+    ];
+    let mut v = Verdicts::default();
+    for (vuid, also, parts) in cases {
+        let (safe, layer) = create_image(&s, parts);
+        v.judge(vuid, also, safe, layer);
+    }
+    v.finish("images");
+}
