@@ -902,6 +902,142 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     assert_silent(&s.messages);
 }
 
+/// A recorder whose one-query pool is reset, inside a render pass instance of
+/// `render_pass` begun with `vkCmdBeginRenderPass2`.
+fn begun2<'c>(
+    cb: &'c mut tuff::CommandBuffer,
+    (rp, fb): (&tuff::RenderPass, &tuff::Framebuffer),
+    pool: &tuff::QueryPool,
+) -> tuff::Recorder<'c, tuff::InRenderPass> {
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    // SAFETY: no query of the pool is active.
+    unsafe { rec.cmd_reset_query_pool(pool, 0, 1) }.expect("reset");
+    let clear = [vk::ClearValue::default()];
+    // SAFETY: as in `in_render_pass`.
+    unsafe {
+        rec.cmd_begin_render_pass2(
+            &tuff::RenderPassBeginInfo::new(rp, fb)
+                .render_area(AREA)
+                .clear_values(&clear),
+            &tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE),
+        )
+    }
+}
+
+/// A recorder inside dynamic rendering to `view`, with the one query of `pool`
+/// begun.
+fn rendered<'c>(
+    cb: &'c mut tuff::CommandBuffer,
+    view: &tuff::ImageView,
+    pool: &tuff::QueryPool,
+) -> tuff::Recorder<'c, tuff::InRendering> {
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    // SAFETY: no query of the pool is active.
+    unsafe { rec.cmd_reset_query_pool(pool, 0, 1) }.expect("reset");
+    let color = [tuff::RenderingAttachmentInfo::new()
+        .image_view(Some(view))
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)];
+    let rendering = tuff::RenderingInfo::new()
+        .render_area(AREA)
+        .layer_count(1)
+        .color_attachments(&color);
+    // SAFETY: the view is the target's, in the layout the rendering names.
+    let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+    // SAFETY: the pool was reset before, in the same buffer.
+    unsafe { rec.cmd_begin_query(pool, 0, vk::QueryControlFlags::empty()) }.expect("begin query");
+    rec
+}
+
+const AREA: vk::Rect2D = vk::Rect2D {
+    offset: vk::Offset2D { x: 0, y: 0 },
+    extent: vk::Extent2D {
+        width: 4,
+        height: 4,
+    },
+};
+
+/// The rules the recorder's subpass and active queries settle, through the commands
+/// the test above does not use: `vkCmdEndRenderPass2`, `vkCmdEndRendering`, and an
+/// end of a query in another subpass than its begin.
+#[test]
+fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let (two, two_fb) = two_subpasses(&s, &target);
+    let one = (&target.render_pass, &target.framebuffer);
+    let occlusion = s
+        .device
+        .create_query_pool(
+            &tuff::QueryPoolCreateInfo::new()
+                .query_type(vk::QueryType::OCCLUSION)
+                .query_count(1),
+        )
+        .expect("query pool");
+    let none = vk::QueryControlFlags::empty();
+    let end_info = tuff::SubpassEndInfo::new();
+    let query = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
+        // SAFETY: the pool was reset before, in the same buffer.
+        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    };
+
+    // Ended in the first of two subpasses.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
+    assert_eq!(
+        vuid(rec.cmd_end_render_pass2(&end_info).end()),
+        "VUID-vkCmdEndRenderPass2-None-03103"
+    );
+    // A query left active at the instance's end.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = begun2(&mut cb, one, &occlusion);
+    query(&mut rec);
+    assert_eq!(
+        vuid(rec.cmd_end_render_pass2(&end_info).end()),
+        "VUID-vkCmdEndRenderPass2-None-07005"
+    );
+    // A query ended in the subpass after the one it began in.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
+    query(&mut rec);
+    rec.cmd_next_subpass(vk::SubpassContents::INLINE);
+    assert_eq!(
+        vuid(unsafe { rec.cmd_end_query(&occlusion, 0) }),
+        "VUID-vkCmdEndQuery-None-07007"
+    );
+    drop(rec);
+    // A query left active at the end of dynamic rendering.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    assert_eq!(
+        vuid(
+            rendered(&mut cb, &target.view, &occlusion)
+                .cmd_end_rendering()
+                .end()
+        ),
+        "VUID-vkCmdEndRendering-None-06999"
+    );
+    assert_silent(&s.messages);
+
+    // Through `_unchecked`, under the layer; the buffers are never submitted and
+    // are dropped unended.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
+    layer_names(&s.messages, "VUID-vkCmdEndRenderPass2-None-03103", || {
+        // SAFETY: see the module docs.
+        drop(unsafe { rec.cmd_end_render_pass2_unchecked(&end_info) });
+    });
+    // (The 1.3.239 layer checks neither a query left active at the end of an
+    // instance, as for `vkCmdEndRenderPass`, nor one ended in another subpass: the
+    // refusals above alone show 07005, 06999 and 07007.)
+    assert_silent(&s.messages);
+}
+
 /// The 1.3.239 layer does not check this rule at the bind: the refusal alone shows
 /// it.
 #[test]

@@ -3221,6 +3221,43 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         .expect("vertex pipeline");
     let vertex_pipeline = vertex_pipeline.pop().expect("one pipeline");
     let (vertices, _vertex_memory) = host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
+    // A pipeline whose vertex shader reads a storage buffer of set 0.
+    let set_vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/bezier.vert.spv"));
+    let set_stages = pipelines::test_stages(&set_vert, &p.frag);
+    let set_binding = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::VERTEX)];
+    // SAFETY: see the module docs.
+    let set_layout = unsafe {
+        s.device.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&set_binding),
+        )
+    }
+    .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::FRAGMENT,
+        offset: 0,
+        size: 16,
+    }];
+    let set_pipeline_layout = s
+        .device
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(&push),
+        )
+        .expect("layout");
+    let (mut set_pipeline, _) = pipelines::with_graphics_info(
+        &set_stages,
+        &set_pipeline_layout,
+        &target.render_pass,
+        |info| unsafe { s.device.create_graphics_pipelines(None, &[info]) },
+    )
+    .expect("pipeline with a set");
+    let set_pipeline = set_pipeline.pop().expect("one pipeline");
     for unchecked in [false, true] {
         s.messages.abort_on_error(unchecked);
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -3285,6 +3322,19 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             assert_layer_reports(&s, past);
         } else {
             assert_eq!(vuid(unsafe { rec.cmd_draw_indexed(65, 1, 0, 0, 0) }), past);
+        }
+        // A pipeline whose vertex shader reads set 0, with no set bound: every draw
+        // is refused.
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &set_pipeline)
+            .expect("bind");
+        for (no_pipeline, draw) in &draws {
+            let expected = no_pipeline.replace("02700", "02697");
+            if unchecked {
+                draw(&mut rec, true).expect("recorded");
+                assert_layer_reports(&s, &expected);
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), expected);
+            }
         }
         // A pipeline whose vertex shader reads binding 0, with no vertex buffer
         // bound: every draw is refused, and accepted once one is.

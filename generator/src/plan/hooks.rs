@@ -241,7 +241,6 @@ const IMAGE_LIMITS: &str = "checks the create info against its Image Creation Li
 const LAYOUT_LIMITS: &str = "checks the set layouts' recorded bindings, counted per kind in each stage and across all stages, against the device's limits (the update-after-bind ones from its Vulkan 1.2 properties), the set count against maxBoundDescriptorSets, and the push-constant ranges for a stage named twice";
 const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
-const SETS_UNPROVEN: &str = "checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it";
 const VERTEX_BOUND: &str = "checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound)";
 const BUFFER_IMAGE_RANGE: &str = "checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size";
 const INDEX_BOUND: &str = "checks an index buffer is bound, which the recorder tracks";
@@ -878,8 +877,8 @@ pub const SPECIALS: &[Special] = &[
         ),
         after: call("hooks::instance_ended", &["&mut self"]),
         settles: &[
-            ("VUID-vkCmdEndRenderPass2-None-03103", How::User(UNPROVEN_QUERIES)),
-            ("VUID-vkCmdEndRenderPass2-None-07005", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndRenderPass2-None-03103", How::Dynamic(SUBPASSES)),
+            ("VUID-vkCmdEndRenderPass2-None-07005", How::Dynamic(ACTIVE_QUERIES_ALONE)),
             ("VUID-vkCmdEndRenderPass2-None-06171", How::Static(IN_RENDER_PASS)),
         ],
         ..NONE
@@ -889,7 +888,7 @@ pub const SPECIALS: &[Special] = &[
         check: call("hooks::end_rendering_checks", &["&mut self"]),
         after: call("hooks::instance_ended", &["&mut self"]),
         settles: &[
-            ("VUID-vkCmdEndRendering-None-06999", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndRendering-None-06999", How::Dynamic(ACTIVE_QUERIES_ALONE)),
             ("VUID-vkCmdEndRendering-None-06161", How::Static(IN_RENDERING)),
             ("VUID-vkCmdEndRendering-commandBuffer-06162", How::Static(IN_RENDERING)),
         ],
@@ -917,7 +916,7 @@ pub const SPECIALS: &[Special] = &[
         settles: &[
             ("VUID-vkCmdEndQuery-query-00810", How::Dynamic(QUERY_POOL)),
             ("VUID-vkCmdEndQuery-None-01923", How::Dynamic(ACTIVE_QUERIES)),
-            ("VUID-vkCmdEndQuery-None-07007", How::User(UNPROVEN_QUERIES)),
+            ("VUID-vkCmdEndQuery-None-07007", How::Dynamic(ACTIVE_QUERIES_ALONE)),
             ("VUID-vkCmdEndQuery-None-07008", How::Dynamic(ACTIVE_QUERIES_ALONE)),
             ("VUID-vkCmdEndQuery-query-00812", How::User(UNPROVEN_QUERIES)),
         ],
@@ -1480,36 +1479,36 @@ pub const SPECIALS: &[Special] = &[
         ),
         ..NONE
     },
-    bound!("vkCmdDraw", GRAPHICS, How::User(SETS_UNPROVEN)),
+    bound!("vkCmdDraw", GRAPHICS, How::Dynamic(SETS_BOUND)),
     indexed!(
         "vkCmdDrawIndexed",
         "Some((index_count, first_index, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\"))",
         &[
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
-            ("VUID-vkCmdDrawIndexed-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexed-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-04007", How::Dynamic(VERTEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
         ]
     ),
-    bound!("vkCmdDrawIndirect", GRAPHICS, How::User(SETS_UNPROVEN)),
+    bound!("vkCmdDrawIndirect", GRAPHICS, How::Dynamic(SETS_BOUND)),
     indexed!(
         "vkCmdDrawIndexedIndirect",
         "None",
         &[
             ("VUID-vkCmdDrawIndexedIndirect-None-02700", How::Dynamic(PIPELINE_BOUND)),
-            ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
-    bound!("vkCmdDrawIndirectCount", GRAPHICS, How::User(SETS_UNPROVEN)),
+    bound!("vkCmdDrawIndirectCount", GRAPHICS, How::Dynamic(SETS_BOUND)),
     indexed!(
         "vkCmdDrawIndexedIndirectCount",
         "None",
         &[
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02700", How::Dynamic(PIPELINE_BOUND)),
-            ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::User(SETS_UNPROVEN)),
+            ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]

@@ -405,6 +405,7 @@ The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org
 
 - `VUID-vkCmdEndQuery-None-01923`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndQuery-query-00810`: dynamic (checks the query against the pool's type and count, kept from its creation)
+- `VUID-vkCmdEndQuery-None-07007`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndQuery-None-07008`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndQuery-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndQuery-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -412,9 +413,9 @@ The rules are on [`vkCmdEndQuery`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdEndQuery-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndQuery-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
-- 2: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
+- 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
 - 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_end_query(
@@ -3292,6 +3293,7 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
 
+- `VUID-vkCmdDraw-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDraw-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDraw-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -3300,10 +3302,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 190.
-
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 189: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 189 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3434,6 +3433,7 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndexed-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexed-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
@@ -3444,10 +3444,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 190.
-
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 189: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 189 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3590,6 +3587,7 @@ The caller upholds these 64 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndexedIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
@@ -3605,9 +3603,8 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 193.
+Left to the caller (listed one by one in the crate's `validation.json`): 192.
 
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 191: explicit rule; the wrappers do not check it*/
     #[inline]
@@ -3731,6 +3728,7 @@ The caller upholds these 63 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
@@ -3745,9 +3743,8 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 192.
+Left to the caller (listed one by one in the crate's `validation.json`): 191.
 
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 190: explicit rule; the wrappers do not check it*/
     #[inline]

@@ -206,6 +206,7 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirectCount.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
@@ -224,10 +225,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 196.
-
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 195: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 195 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -381,6 +379,7 @@ The caller upholds these 67 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirectCount.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndirectCount-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
@@ -398,10 +397,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 195.
-
-- 1: checked by the safe methods in every build, as for dispatches, but no test breaks it for draws yet (the test pipelines' graphics layout has no set), so the report does not count it
-- 194: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -484,6 +480,8 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass2.html). Settled by the wrappers:
 
+- `VUID-vkCmdEndRenderPass2-None-03103`: dynamic (checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer))
+- `VUID-vkCmdEndRenderPass2-None-07005`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRenderPass2-pSubpassEndInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
@@ -493,10 +491,7 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdEndRenderPass2-None-06171`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 2: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,

@@ -1907,16 +1907,14 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 
 - `VUID-vkCmdEndRendering-None-06161`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
 - `VUID-vkCmdEndRendering-commandBuffer-06162`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
+- `VUID-vkCmdEndRendering-None-06999`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
 - `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
