@@ -1282,6 +1282,19 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         )
     };
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
+    // Waits on a timeline semaphore with values of another count.
+    let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
+    let mut two_waits = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1, 2]);
+    let r = unsafe {
+        s.queue.queue_submit(
+            &[tuff::SubmitInfo::new()
+                .wait_semaphores(&timelines, &stages)
+                .expect("one stage per semaphore")
+                .push_next(&mut two_waits)],
+            &done,
+        )
+    };
+    assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03240");
     assert_silent(&s.messages);
 
     let mut one = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);

@@ -1201,3 +1201,98 @@ fn physical_devices_name_themselves_and_find_queue_families() {
     );
     assert_silent(&s.messages);
 }
+
+/// Acquire and present take binary semaphores: a timeline semaphore is refused by
+/// both, and the layer names the same rules for the unchecked calls.
+#[test]
+fn acquire_and_present_take_binary_semaphores() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let swapchain = unsafe {
+        s.device
+            .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+    }
+    .expect("swapchain");
+    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(0);
+    let timeline = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore");
+    let acquire = "VUID-vkAcquireNextImageKHR-semaphore-03265";
+    let r = unsafe {
+        s.device
+            .acquire_next_image_khr(&swapchain, u64::MAX, Some(&timeline), None)
+    };
+    assert_eq!(refused(r), acquire);
+    layer_names(&s, acquire, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe {
+            s.device
+                .acquire_next_image_khr_unchecked(&swapchain, u64::MAX, Some(&timeline), None)
+        };
+    });
+    // An image acquired with a fence, presented after a wait on the timeline
+    // semaphore.
+    let fence = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let (index, _) = unsafe {
+        s.device
+            .acquire_next_image_khr(&swapchain, u64::MAX, None, Some(&fence))
+    }
+    .expect("acquire");
+    assert_eq!(
+        s.device
+            .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .expect("acquired"),
+        vk::Result::SUCCESS
+    );
+    let waits = tuff::HandleSlice::new(&[&timeline]);
+    let swapchains = tuff::HandleSlice::new(&[&swapchain]);
+    let indices = [index];
+    let present = tuff::PresentInfoKHR::new()
+        .wait_semaphores(&waits)
+        .swapchains(&swapchains, &indices)
+        .expect("one index per swapchain");
+    let binary = "VUID-vkQueuePresentKHR-pWaitSemaphores-03267";
+    assert_eq!(
+        refused(unsafe { s.queue.queue_present_khr(&present) }),
+        binary
+    );
+    layer_names(&s, binary, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+    });
+    s.queue.queue_wait_idle().expect("idle");
+    drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// The VUID of a refused call.
+fn refused<T: std::fmt::Debug>(r: tuff::Result<T>) -> &'static str {
+    match r {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid,
+        other => panic!("expected a refusal, got {other:?}"),
+    }
+}
+
+/// Runs `unchecked` with the layer told to skip erroring calls, and fails unless it
+/// named `expected`.
+fn layer_names(s: &Setup, expected: &str, unchecked: impl FnOnce()) {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    let said = s.messages.take();
+    assert!(
+        said.iter().any(|m| m.contains(expected)),
+        "the validation layer did not report {expected}; it said:\n{}",
+        said.join("\n")
+    );
+}

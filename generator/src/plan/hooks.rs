@@ -374,7 +374,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkQueueSubmit-pCommandBuffers-00072", How::Dynamic(CBS)),
             ("VUID-vkQueueSubmit-pCommandBuffers-00073", How::User(SECONDARY)),
             ("VUID-VkSubmitInfo-pWaitSemaphores-03239", How::Dynamic(TIMELINE_VALUES)),
-            ("VUID-VkSubmitInfo-pNext-03240", How::User(UNPROVEN)),
+            ("VUID-VkSubmitInfo-pNext-03240", How::Dynamic(TIMELINE_VALUES)),
             ("VUID-VkSubmitInfo-pNext-03241", How::Dynamic(TIMELINE_VALUES)),
             ("VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082", How::Dynamic(CHAINED_COUNT)),
             ("VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083", How::Dynamic(CHAINED_COUNT)),
@@ -465,7 +465,7 @@ pub const SPECIALS: &[Special] = &[
         check: call("hooks::acquire_next_image_khr_checks", &["self", "semaphore"]),
         settles: &[(
             "VUID-vkAcquireNextImageKHR-semaphore-03265",
-            How::User(UNPROVEN),
+            How::Dynamic(SEMAPHORE_TYPE),
         )],
         ..NONE
     },
@@ -484,7 +484,7 @@ pub const SPECIALS: &[Special] = &[
         before: call("hooks::queue_present_khr_before", &["self", "present_info"]),
         settles: &[(
             "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
-            How::User(UNPROVEN),
+            How::Dynamic(SEMAPHORE_TYPE),
         )],
         ..NONE
     },

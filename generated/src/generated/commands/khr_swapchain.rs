@@ -29,11 +29,9 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
 - `VUID-vkAcquireNextImageKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+- `VUID-vkAcquireNextImageKHR-semaphore-03265`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn acquire_next_image_khr(
         &self,
@@ -318,11 +316,9 @@ The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos
 
 - `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 5: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn queue_present_khr<'a>(
         &self,

@@ -3432,12 +3432,10 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 - `VUID-VkSubmitInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkSubmitInfo-pWaitSemaphores-03239`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
+- `VUID-VkSubmitInfo-pNext-03240`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 - `VUID-VkSubmitInfo-pNext-03241`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 24.
-
-- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 23: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 23 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {
