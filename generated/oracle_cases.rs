@@ -1220,11 +1220,33 @@ oracle_cases! {
         "VUID-vkCmdCopyImage-srcOffset-00145" => |v, l, o| {
             o.image_copy.src_offset.y = ((o.src_image.extent.height >> o.image_copy.src_subresource.mip_level).max(1) as i64 - o.image_copy.extent.height as i64 + 1) as _;
         },
+        "VUID-vkCmdCopyImage-srcOffset-00147" => |v, l, o| {
+            o.src_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy.src_offset.z = ((o.src_image.extent.depth >> o.image_copy.src_subresource.mip_level).max(1) as i64 - o.image_copy.extent.depth as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-srcImage-01787" => |v, l, o| {
+            o.image_copy.src_offset.z = 1;
+        },
+        "VUID-vkCmdCopyImage-dstImage-01788" => |v, l, o| {
+            o.image_copy.dst_offset.z = 1;
+        },
         "VUID-vkCmdCopyImage-dstOffset-00150" => |v, l, o| {
             o.image_copy.dst_offset.x = ((o.dst_image.extent.width >> o.image_copy.dst_subresource.mip_level).max(1) as i64 - o.image_copy.extent.width as i64 + 1) as _;
         },
         "VUID-vkCmdCopyImage-dstOffset-00151" => |v, l, o| {
             o.image_copy.dst_offset.y = ((o.dst_image.extent.height >> o.image_copy.dst_subresource.mip_level).max(1) as i64 - o.image_copy.extent.height as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-dstOffset-00153" => |v, l, o| {
+            o.dst_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy.dst_offset.z = ((o.dst_image.extent.depth >> o.image_copy.dst_subresource.mip_level).max(1) as i64 - o.image_copy.extent.depth as i64 + 1) as _;
+        },
+        "VUID-vkCmdCopyImage-srcImage-01791" => |v, l, o| {
+            o.dst_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy.extent.depth = o.image_copy.src_subresource.layer_count + 1;
+        },
+        "VUID-vkCmdCopyImage-dstImage-01792" => |v, l, o| {
+            o.src_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy.extent.depth = o.image_copy.dst_subresource.layer_count + 1;
         },
         "VUID-vkCmdCopyImage-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);
@@ -1274,11 +1296,33 @@ oracle_cases! {
         "VUID-VkCopyImageInfo2-srcOffset-00145" => |v, l, o| {
             o.image_copy2.src_offset.y = ((o.src_image.extent.height >> o.image_copy2.src_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.height as i64 + 1) as _;
         },
+        "VUID-VkCopyImageInfo2-srcOffset-00147" => |v, l, o| {
+            o.src_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy2.src_offset.z = ((o.src_image.extent.depth >> o.image_copy2.src_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.depth as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-srcImage-01787" => |v, l, o| {
+            o.image_copy2.src_offset.z = 1;
+        },
+        "VUID-VkCopyImageInfo2-dstImage-01788" => |v, l, o| {
+            o.image_copy2.dst_offset.z = 1;
+        },
         "VUID-VkCopyImageInfo2-dstOffset-00150" => |v, l, o| {
             o.image_copy2.dst_offset.x = ((o.dst_image.extent.width >> o.image_copy2.dst_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.width as i64 + 1) as _;
         },
         "VUID-VkCopyImageInfo2-dstOffset-00151" => |v, l, o| {
             o.image_copy2.dst_offset.y = ((o.dst_image.extent.height >> o.image_copy2.dst_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.height as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-dstOffset-00153" => |v, l, o| {
+            o.dst_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy2.dst_offset.z = ((o.dst_image.extent.depth >> o.image_copy2.dst_subresource.mip_level).max(1) as i64 - o.image_copy2.extent.depth as i64 + 1) as _;
+        },
+        "VUID-VkCopyImageInfo2-srcImage-01791" => |v, l, o| {
+            o.dst_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy2.extent.depth = o.image_copy2.src_subresource.layer_count + 1;
+        },
+        "VUID-VkCopyImageInfo2-dstImage-01792" => |v, l, o| {
+            o.src_image.set_type(vk::ImageType::from_raw(2));
+            o.image_copy2.extent.depth = o.image_copy2.dst_subresource.layer_count + 1;
         },
         "VUID-VkCopyImageInfo2-srcImageLayout-00129" => |v, l, o| {
             v.src_image_layout = vk::ImageLayout::from_raw(0);

@@ -45,6 +45,7 @@ struct BufferSpec {
 /// How a fixture makes an image a rule names.
 #[derive(Clone, Copy)]
 struct ImageSpec {
+    image_type: vk::ImageType,
     format: vk::Format,
     extent: vk::Extent3D,
     usage: vk::ImageUsageFlags,
@@ -52,6 +53,17 @@ struct ImageSpec {
     mip_levels: u32,
     array_layers: u32,
     bind: bool,
+}
+
+impl ImageSpec {
+    /// An image of another type: a 3D image is a cube of four texels a side, so
+    /// that a region can be deeper than one texel.
+    fn set_type(&mut self, image_type: vk::ImageType) {
+        self.image_type = image_type;
+        if image_type == vk::ImageType::TYPE_3D {
+            self.extent.depth = 4;
+        }
+    }
 }
 
 /// The objects a fixture makes, by the name its struct or command gives the handle,
@@ -92,6 +104,7 @@ impl Default for Objects {
             bind: true,
         };
         let image = ImageSpec {
+            image_type: vk::ImageType::TYPE_2D,
             format: vk::Format::R8G8B8A8_UNORM,
             extent: EXTENT,
             usage: vk::ImageUsageFlags::TRANSFER_SRC
@@ -187,13 +200,13 @@ fn make_buffer(s: &Setup, spec: &BufferSpec) -> (tuff::Buffer, Option<tuff::Devi
     }
 }
 
-/// A 2D image as `spec` says, with device memory bound unless it says not.
+/// An image as `spec` says, with device memory bound unless it says not.
 fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceMemory>) {
     let d = &s.device;
     let image = unsafe {
         d.create_image(
             &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
+                .image_type(spec.image_type)
                 .format(spec.format)
                 .extent(spec.extent)
                 .mip_levels(spec.mip_levels)
@@ -1419,6 +1432,26 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "srcImage-01791",
+        &["srcImage-07744", "srcOffset-00147"],
+        "a depth other than the 2D source's layer count copies another number of slices than layers, which the 1.3.239 layer also reports under 07744 (a later registry's VUID of the same rule), and a depth above 1 passes the 2D image's depth",
+    ),
+    (
+        "dstImage-01792",
+        &["srcImage-07744", "dstOffset-00153"],
+        "as for `srcImage-01791`, with the 2D image the destination",
+    ),
+    (
+        "srcImage-01787",
+        &["srcOffset-00147"],
+        "a z offset of 1 on a 2D image puts the region past its depth of 1, which the 1.3.239 layer reports under the z range rule of 3D images",
+    ),
+    (
+        "dstImage-01788",
+        &["dstOffset-00153"],
+        "a z offset of 1 on a 2D image puts the region past its depth of 1, which the 1.3.239 layer reports under the z range rule of 3D images",
+    ),
     (
         "aspectMask-01964",
         &["VUID-VkRenderPassCreateInfo-pNext-01963"],

@@ -580,6 +580,12 @@ pub fn oracle_file(cases: &[crate::plan::oracle::Case]) -> String {
                     Assign::Unbound { handle } => {
                         format!("o.{}.bind = false;", crate::names::param(handle))
                     }
+                    // The test makes an image of another type whole (a 3D image
+                    // has depth).
+                    Assign::ImageType { handle, value } => format!(
+                        "o.{}.set_type(vk::ImageType::from_raw({value}));",
+                        crate::names::param(handle)
+                    ),
                 };
                 let _ = writeln!(s, "            {line}");
             }

@@ -323,6 +323,13 @@ pub enum Assign {
         /// The bits.
         bits: u64,
     },
+    /// Create the image a handle names with this `VkImageType`.
+    ImageType {
+        /// The handle's path.
+        handle: String,
+        /// The type's value.
+        value: i64,
+    },
     /// Create the object a handle names without binding memory to it.
     Unbound {
         /// The handle's path.
@@ -348,7 +355,9 @@ impl Assign {
             | Assign::Enum { member, .. }
             | Assign::Number { member, .. }
             | Assign::Increment { member } => member,
-            Assign::ClearUsage { handle, .. } | Assign::Unbound { handle } => handle,
+            Assign::ClearUsage { handle, .. }
+            | Assign::ImageType { handle, .. }
+            | Assign::Unbound { handle } => handle,
         }
     }
 }
@@ -544,6 +553,9 @@ pub const FIXTURE_FEATURES: &[&str] = &[
     "dynamicRendering",
 ];
 
+/// `VK_IMAGE_TYPE_2D`, the type of the fixtures' images.
+const IMAGE_2D: i64 = 1;
+
 /// Changes that make a condition hold: a feature is on or off as the fixtures'
 /// device has it, or the case is not made.
 fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
@@ -573,6 +585,12 @@ fn make_true(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
             ty: at.ty(member)?,
             member: member.clone(),
             bits: mask(bits),
+        }),
+        // The fixtures' images are 2D; another type is the image made so.
+        Pred::ImageType { values, .. } if values.iter().any(|v| v.number == IMAGE_2D) => {}
+        Pred::ImageType { handle, values } => out.push(Assign::ImageType {
+            handle: handle.clone(),
+            value: values.first()?.number,
         }),
         Pred::OneOf { member, values } => out.push(value_of(at, member, values.first()?)?),
         Pred::Compare {
@@ -780,7 +798,7 @@ fn make_false(at: &At, p: &Pred, out: &mut Vec<Assign>) -> Option<()> {
                 (Rhs::Limit(l), Op::Ge) => format!("({} as i64 - 1) as _", limit(l)),
                 (Rhs::Member(m), Op::Gt | Op::Lt) => at.path(m),
                 (Rhs::Member(m), Op::Ge) => format!("{} - {one}", at.path(m)),
-                (Rhs::Member(m), Op::Le) => format!("{} + {one}", at.path(m)),
+                (Rhs::Member(m), Op::Le | Op::Eq) => format!("{} + {one}", at.path(m)),
                 _ => return None,
             };
             out.push(Assign::Number {

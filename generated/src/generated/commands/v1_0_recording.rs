@@ -2193,8 +2193,12 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-aspectMask-00143`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-vkCmdCopyImage-srcOffset-00144`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-srcOffset-00145`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-srcOffset-00147`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-srcImage-01787`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-vkCmdCopyImage-dstImage-01788`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdCopyImage-dstOffset-00150`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-dstOffset-00151`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-vkCmdCopyImage-dstOffset-00153`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-vkCmdCopyImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdCopyImage-srcImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdCopyImage-srcImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2207,13 +2211,12 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdCopyImage-regionCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdCopyImage-srcImage-01791`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-vkCmdCopyImage-dstImage-01792`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-vkCmdCopyImage-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 64.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 58: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 58 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_image(
         &mut self,

@@ -589,8 +589,12 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-aspectMask-00143`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
 - `VUID-VkCopyImageInfo2-srcOffset-00144`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyImageInfo2-srcOffset-00145`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-VkCopyImageInfo2-srcOffset-00147`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-VkCopyImageInfo2-srcImage-01787`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkCopyImageInfo2-dstImage-01788`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCopyImageInfo2-dstOffset-00150`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyImageInfo2-dstOffset-00151`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-VkCopyImageInfo2-dstOffset-00153`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -600,13 +604,12 @@ The rules are on [`VkCopyImageInfo2`'s reference page](https://registry.khronos.
 - `VUID-VkCopyImageInfo2-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkCopyImageInfo2-regionCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkCopyImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkCopyImageInfo2-srcImage-01791`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
+- `VUID-VkCopyImageInfo2-dstImage-01792`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkCopyImageInfo2-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCopyImageInfo2-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 61.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 55: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 55 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageInfo2<'a> {
