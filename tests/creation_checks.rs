@@ -353,7 +353,7 @@ fn create_set_layout(
     if after_bind {
         info = info.flags(vk::DescriptorSetLayoutCreateFlags::UPDATE_AFTER_BIND_POOL);
     }
-    let safe = unsafe { s.device.create_descriptor_set_layout(&info) }.map(drop);
+    let safe = s.device.create_descriptor_set_layout(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_descriptor_set_layout_unchecked(&info) };
     });
@@ -393,6 +393,12 @@ fn set_layout_rules_are_refused_and_the_layer_agrees() {
         let (safe, layer) = create_set_layout(s, bindings, count);
         v.judge(vuid, &[], safe, layer);
     };
+    run(
+        &s,
+        "VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283",
+        &[(0, ty, 1, vk::ShaderStageFlags::from_raw(0x4000_0000), no)],
+        None,
+    );
     run(
         &s,
         "VUID-VkDescriptorSetLayoutCreateInfo-binding-00279",

@@ -183,12 +183,12 @@ fn common(s: &Setup) -> Common {
         .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    let set_layout = unsafe {
-        s.device.create_descriptor_set_layout(
+    let set_layout = s
+        .device
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let push = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::TESSELLATION_CONTROL
             | vk::ShaderStageFlags::TESSELLATION_EVALUATION
@@ -906,12 +906,12 @@ fn create_compute(
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::COMPUTE | vk::ShaderStageFlags::VERTEX),
     ];
-    let set_layout = unsafe {
-        s.device.create_descriptor_set_layout(
+    let set_layout = s
+        .device
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
     let layout = s
         .device

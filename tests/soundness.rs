@@ -908,12 +908,12 @@ fn a_set_layout_keeps_its_immutable_samplers() {
         .descriptor_type(vk::DescriptorType::SAMPLER)
         .immutable_samplers(&samplers)
         .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
-    let layout = unsafe {
-        s.device.create_descriptor_set_layout(
+    let layout = s
+        .device
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let with_both = s.device.live_object_count();
     drop(samplers);
     drop(sampler);
@@ -2105,12 +2105,11 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    let set_layout = unsafe {
-        d.create_descriptor_set_layout(
+    let set_layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
     let layout = d
         .create_pipeline_layout(
@@ -2354,12 +2353,11 @@ fn descriptor_updates_stay_inside_their_sets() {
         binding(2, uniform, 1),
         binding(3, storage, 2),
     ];
-    let set_layout = unsafe {
-        d.create_descriptor_set_layout(
+    let set_layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let sizes = [
         vk::DescriptorPoolSize {
             ty: uniform,
@@ -2948,9 +2946,9 @@ fn indices_and_chained_counts_match_what_they_index() {
         vuid(unsafe { s.queue.queue_submit(&batch, &done) }),
         "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
     );
-    let set_layout =
-        unsafe { d.create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new()) }
-            .expect("set layout");
+    let set_layout = d
+        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
+        .expect("set layout");
     let pool = d
         .create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1))
         .expect("pool");
@@ -3242,13 +3240,12 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    // SAFETY: see the module docs.
-    let set_layout = unsafe {
-        s.device.create_descriptor_set_layout(
+    let set_layout = s
+        .device
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&set_binding),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
     let push = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::FRAGMENT,
@@ -3432,12 +3429,11 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
                 .descriptor_count(1)
                 .stage_flags(stages)
         });
-        let set_layout = unsafe {
-            d.create_descriptor_set_layout(
+        let set_layout = d
+            .create_descriptor_set_layout(
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
-        }
-        .expect("set layout");
+            .expect("set layout");
         d.create_pipeline_layout(
             &tuff::PipelineLayoutCreateInfo::new()
                 .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
@@ -4097,12 +4093,11 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
             .descriptor_type(ty)
             .descriptor_count(count)
             .stage_flags(stage)];
-        let set_layout = unsafe {
-            d.create_descriptor_set_layout(
+        let set_layout = d
+            .create_descriptor_set_layout(
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
-        }
-        .expect("set layout");
+            .expect("set layout");
         let layouts = tuff::HandleSlice::new(&[&set_layout]);
         let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
         assert_eq!(vuid(d.create_pipeline_layout(&info)), rule, "{rule}");
@@ -4113,9 +4108,9 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
         });
     }
     // More set layouts than can be bound at once.
-    let empty =
-        unsafe { d.create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new()) }
-            .expect("set layout");
+    let empty = d
+        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
+        .expect("set layout");
     let many: Vec<&tuff::DescriptorSetLayout> =
         (0..=l.max_bound_descriptor_sets).map(|_| &empty).collect();
     let layouts = tuff::HandleSlice::new(&many);
@@ -4152,12 +4147,11 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
         .descriptor_type(T::UNIFORM_BUFFER)
         .descriptor_count(l.max_per_stage_descriptor_uniform_buffers)
         .stage_flags(compute)];
-    let set_layout = unsafe {
-        d.create_descriptor_set_layout(
+    let set_layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let layouts = tuff::HandleSlice::new(&[&set_layout]);
     d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
         .expect("a layout at the per-stage limit");

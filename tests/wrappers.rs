@@ -72,12 +72,11 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::VERTEX)];
-    let set_layout = unsafe {
-        d.create_descriptor_set_layout(
+    let set_layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings[..]),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 4,

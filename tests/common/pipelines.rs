@@ -188,12 +188,11 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::COMPUTE),
     ];
-    let compute_set_layout = unsafe {
-        d.create_descriptor_set_layout(
+    let compute_set_layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("compute set layout");
+        .expect("compute set layout");
     let set_layouts = tuff::HandleSlice::new(&[&compute_set_layout]);
     let compute_layout = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
@@ -435,12 +434,11 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::COMPUTE)];
-    let layout = unsafe {
-        d.create_descriptor_set_layout(
+    let layout = d
+        .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
-    }
-    .expect("set layout");
+        .expect("set layout");
     let sizes = [vk::DescriptorPoolSize {
         ty: vk::DescriptorType::UNIFORM_BUFFER,
         descriptor_count: 1,

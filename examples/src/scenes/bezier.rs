@@ -40,13 +40,9 @@ impl Bezier {
             .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX)];
-        // SAFETY: a few bindings of distinct numbers, of basic types, in the stages that use
-        // them, within every device's minimum limits.
-        let set_layout = unsafe {
-            d.create_descriptor_set_layout(
-                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-            )
-        }?;
+        let set_layout = d.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )?;
         let layout = pipeline::layout(
             gpu,
             &[&set_layout],

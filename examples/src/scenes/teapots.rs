@@ -37,13 +37,9 @@ impl Teapots {
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)];
-        // SAFETY: a few bindings of distinct numbers, of basic types, in the stages that use
-        // them, within every device's minimum limits.
-        let set_layout = unsafe {
-            d.create_descriptor_set_layout(
-                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-            )
-        }?;
+        let set_layout = d.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )?;
         let pipeline_layout = pipeline::layout(
             gpu,
             &[&set_layout],

@@ -331,7 +331,18 @@ pub(crate) fn descriptor_set_layout_checks(
     let info = create_info.as_raw();
     // SAFETY: the safe setter stores the bindings with their count.
     let bindings = unsafe { crate::retention::raw_slice(info.p_bindings, info.binding_count) };
+    // The stages of the emitted API: the graphics stages and compute.
+    let stages = vk::ShaderStageFlags::ALL_GRAPHICS | vk::ShaderStageFlags::COMPUTE;
     for (i, b) in bindings.iter().enumerate() {
+        if b.descriptor_count != 0
+            && b.stage_flags != vk::ShaderStageFlags::ALL
+            && !stages.contains(b.stage_flags)
+        {
+            refuse(
+                "VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283",
+                format!("pBindings[{i}].stageFlags ({:?}) names stages no emitted version or extension has", b.stage_flags),
+            )?;
+        }
         if bindings[..i].iter().any(|o| o.binding == b.binding) {
             refuse(
                 "VUID-VkDescriptorSetLayoutCreateInfo-binding-00279",
@@ -370,6 +381,55 @@ pub(crate) fn descriptor_set_layout_checks(
     let Some(binding_flags) = binding_flags else {
         return Ok(());
     };
+    // SAFETY: the safe setter stores the flags with their count.
+    let all_flags = unsafe {
+        crate::retention::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
+    };
+    let dynamic = [
+        vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
+        vk::DescriptorType::STORAGE_BUFFER_DYNAMIC,
+    ];
+    let after_bind = all_flags
+        .iter()
+        .any(|f| f.contains(vk::DescriptorBindingFlags::UPDATE_AFTER_BIND));
+    if after_bind
+        && !info
+            .flags
+            .contains(vk::DescriptorSetLayoutCreateFlags::UPDATE_AFTER_BIND_POOL)
+    {
+        refuse(
+            "VUID-VkDescriptorSetLayoutCreateInfo-flags-03000",
+            "a binding is updated after bind, so the layout's flags must include UPDATE_AFTER_BIND_POOL".into(),
+        )?;
+    }
+    if after_bind
+        && bindings
+            .iter()
+            .any(|b| dynamic.contains(&b.descriptor_type))
+    {
+        refuse(
+            "VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001",
+            "a binding is updated after bind, so no binding may be a dynamic buffer".into(),
+        )?;
+    }
+    let highest = bindings.iter().map(|b| b.binding).max();
+    for (i, (f, b)) in all_flags.iter().zip(bindings).enumerate() {
+        if !f.contains(vk::DescriptorBindingFlags::VARIABLE_DESCRIPTOR_COUNT) {
+            continue;
+        }
+        if bindings.iter().any(|o| o.binding > b.binding) || Some(b.binding) != highest {
+            refuse(
+                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004",
+                format!("pBindingFlags[{i}] makes binding {} variable-sized, which only the highest binding may be", b.binding),
+            )?;
+        }
+        if dynamic.contains(&b.descriptor_type) {
+            refuse(
+                "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015",
+                format!("pBindingFlags[{i}] makes a dynamic buffer binding variable-sized"),
+            )?;
+        }
+    }
     if binding_flags.binding_count != 0 && binding_flags.binding_count != info.binding_count {
         return refuse(
             "VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002",

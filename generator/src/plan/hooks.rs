@@ -225,6 +225,10 @@ const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build,
 const UNPROVEN_PROTECTED_QUEUES: &str = "checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first";
 const UNPROVEN_INLINE_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: the tests' only device with inlineUniformBlock enables every feature lavapipe has, update-after-bind of inline uniform blocks included";
 const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image)";
+const STAGE_BITS: &str = "checks the stages are of the emitted API (the graphics stages and compute) or VK_SHADER_STAGE_ALL (the 1.3.239 layer does not check bits no extension defines: proven by the error alone)";
+const IMMUTABLE_SAMPLERS: &str = "the safe binding's `immutable_samplers` setter stores the sampler wrappers with their count as descriptorCount, and `descriptor_count` clears them when it sets another count";
+const UNPROVEN_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors, so a binding updated after bind is refused for the missing feature first";
+const UNPROVEN_VARIABLE_COUNT: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no variable descriptor counts, so a variable-sized binding is refused for the missing feature first";
 const DEVICE_QUEUES: &str = "checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures";
 const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
 const LAYOUT_BINDINGS: &str = "checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features";
@@ -1127,6 +1131,12 @@ pub const SPECIALS: &[Special] = &[
             &["self", "created", "create_info"],
         ),
         settles: &[
+            ("VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283", How::Dynamic(STAGE_BITS)),
+            ("VUID-VkDescriptorSetLayoutBinding-descriptorType-00282", How::Static(IMMUTABLE_SAMPLERS)),
+            ("VUID-VkDescriptorSetLayoutCreateInfo-flags-03000", How::User(UNPROVEN_AFTER_BIND)),
+            ("VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001", How::User(UNPROVEN_AFTER_BIND)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004", How::User(UNPROVEN_VARIABLE_COUNT)),
+            ("VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015", How::User(UNPROVEN_VARIABLE_COUNT)),
             ("VUID-VkDescriptorSetLayoutCreateInfo-binding-00279", How::Dynamic(LAYOUT_BINDINGS)),
             ("VUID-VkDescriptorSetLayoutBinding-descriptorType-01510", How::Dynamic(LAYOUT_BINDINGS)),
             ("VUID-VkDescriptorSetLayoutBinding-descriptorType-02210", How::Dynamic(LAYOUT_BINDINGS)),

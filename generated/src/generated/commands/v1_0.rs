@@ -781,17 +781,6 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
     }
     /**`vkCreateDescriptorSetLayout`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
-- `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, `flags` must include `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`
-- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, then all bindings must not have `descriptorType` of `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
-
 # Valid usage
 
 The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
@@ -801,7 +790,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
 - `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_descriptor_set_layout<'a>(
+    pub fn create_descriptor_set_layout<'a>(
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<DescriptorSetLayout> {
@@ -818,7 +807,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
 
 # Safety
 
-The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time: `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks at run time: `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`, `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`, `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`, `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510`, `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`, `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_descriptor_set_layout_unchecked<'a>(
         &self,

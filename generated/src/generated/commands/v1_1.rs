@@ -346,17 +346,6 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
     }
     /**`vkGetDescriptorSetLayoutSupport`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must be a valid pointer to an array of `descriptorCount` valid `VkSampler` handles
-- `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283`: If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of `binding`
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015`: If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
-- `VUID-VkDescriptorSetLayoutCreateInfo-flags-03000`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, `flags` must include `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`
-- `VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001`: If any binding has the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` bit set, then all bindings must not have `descriptorType` of `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
-
 # Valid usage
 
 The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
@@ -365,7 +354,7 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
 - `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub unsafe fn get_descriptor_set_layout_support<'a>(
+    pub fn get_descriptor_set_layout_support<'a>(
         &self,
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
         support: &mut DescriptorSetLayoutSupport<'a>,
