@@ -103,6 +103,17 @@ struct DeviceParts {
     enabled_features: bool,
     /// Chain a core version's features struct and one of the structs it took over.
     both: Option<u32>,
+    /// Device extensions to enable.
+    extensions: Vec<&'static core::ffi::CStr>,
+    /// Chain a multiview features struct: multiview, its geometry and tessellation
+    /// shader features.
+    multiview: Option<[bool; 3]>,
+    /// Chain a variable pointers features struct: variablePointersStorageBuffer and
+    /// variablePointers.
+    pointers: Option<[bool; 2]>,
+    /// Chain a device group create info that names the physical device this many
+    /// times.
+    group: usize,
 }
 
 impl Default for DeviceParts {
@@ -112,6 +123,10 @@ impl Default for DeviceParts {
             features2: false,
             enabled_features: false,
             both: None,
+            extensions: Vec::new(),
+            multiview: None,
+            pointers: None,
+            group: 0,
         }
     }
 }
@@ -135,7 +150,36 @@ fn create_device(s: &Setup, p: &DeviceParts) -> (tuff::Result<()>, Vec<String>) 
     let mut timeline = tuff::PhysicalDeviceTimelineSemaphoreFeatures::new();
     let mut v13 = tuff::PhysicalDeviceVulkan13Features::new();
     let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new();
-    let mut info = tuff::DeviceCreateInfo::new().queue_create_infos(&queues);
+    let on = |b: bool| if b { vk::TRUE } else { vk::FALSE };
+    let [view, geometry, tessellation] = p.multiview.unwrap_or_default();
+    let mut views = tuff::PhysicalDeviceMultiviewFeatures::new()
+        .multiview(on(view))
+        .multiview_geometry_shader(on(geometry))
+        .multiview_tessellation_shader(on(tessellation));
+    let [storage, variable] = p.pointers.unwrap_or_default();
+    let mut pointers = tuff::PhysicalDeviceVariablePointersFeatures::new()
+        .variable_pointers_storage_buffer(on(storage))
+        .variable_pointers(on(variable));
+    let members = vec![&s.physical; p.group];
+    let members = tuff::HandleSlice::new(&members);
+    let mut group = tuff::DeviceGroupDeviceCreateInfo::new().physical_devices(&members);
+    let extensions: Vec<tuff::CStrPtr<'_>> = p
+        .extensions
+        .iter()
+        .map(|e| tuff::CStrPtr::from(*e))
+        .collect();
+    let mut info = tuff::DeviceCreateInfo::new()
+        .queue_create_infos(&queues)
+        .enabled_extension_names(&extensions);
+    if p.multiview.is_some() {
+        info = info.push_next(&mut views);
+    }
+    if p.pointers.is_some() {
+        info = info.push_next(&mut pointers);
+    }
+    if p.group > 0 {
+        info = info.push_next(&mut group);
+    }
     if p.enabled_features {
         info = info.enabled_features(Some(&features));
     }
@@ -148,7 +192,7 @@ fn create_device(s: &Setup, p: &DeviceParts) -> (tuff::Result<()>, Vec<String>) 
         Some(3) => info = info.push_next(&mut v13).push_next(&mut sync2),
         _ => {}
     }
-    let safe = unsafe { s.physical.create_device(&info) }.map(drop);
+    let safe = s.physical.create_device(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.physical.create_device_unchecked(&info) };
     });
@@ -171,7 +215,48 @@ fn device_creation_rules_are_refused_and_the_layer_agrees() {
         "the valid device: {safe:?} {layer:?}"
     );
     let none = vk::DeviceQueueCreateFlags::empty();
-    let cases: [(&str, &[&str], DeviceParts); 9] = [
+    let cases: [(&str, &[&str], DeviceParts); 14] = [
+        (
+            // The test's instance has no VK_KHR_surface.
+            "VUID-vkCreateDevice-ppEnabledExtensionNames-01387",
+            &[],
+            DeviceParts {
+                extensions: vec![c"VK_KHR_swapchain"],
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580",
+            &[],
+            DeviceParts {
+                multiview: Some([false, true, false]),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581",
+            &[],
+            DeviceParts {
+                multiview: Some([false, false, true]),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431",
+            &[],
+            DeviceParts {
+                pointers: Some([false, true]),
+                ..Default::default()
+            },
+        ),
+        (
+            "VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375",
+            &[],
+            DeviceParts {
+                group: 2,
+                ..Default::default()
+            },
+        ),
         (
             "VUID-VkDeviceCreateInfo-pNext-00373",
             &[],

@@ -74,11 +74,10 @@ fn objects_of_another_device_are_refused() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let other = unsafe {
-        d.parent()
-            .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
-    }
-    .expect("second device");
+    let other = d
+        .parent()
+        .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
+        .expect("second device");
     let buffer = d
         .create_buffer(
             &tuff::BufferCreateInfo::new()
@@ -133,7 +132,7 @@ fn counts_and_chains_are_checked() {
         .push_next(&mut a)
         .push_next(&mut b);
     assert_eq!(
-        vuid(unsafe { d.parent().create_device(&twice) }),
+        vuid(d.parent().create_device(&twice)),
         "VUID-VkDeviceCreateInfo-sType-unique"
     );
     assert_silent(&s.messages);

@@ -835,11 +835,10 @@ fn an_allocator_of_another_device_is_refused() {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
-    let other = unsafe {
-        s.physical
-            .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
-    }
-    .expect("second device");
+    let other = s
+        .physical
+        .create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
+        .expect("second device");
     let foreign = other.naive_allocator();
     let info = tuff::BufferCreateInfo::new()
         .size(64)
@@ -926,15 +925,14 @@ fn missing_layers_extensions_and_features_are_named() {
                 == s.physical.get_physical_device_properties().device_name
         })
         .expect("the same device on the second instance");
-    let e = unsafe {
-        physical.create_device(
+    let e = physical
+        .create_device(
             &tuff::DeviceCreateInfo::new()
                 .queue_create_infos(&queues)
                 .enabled_features(Some(&probe)),
         )
-    }
-    .err()
-    .expect("a device with a missing feature");
+        .err()
+        .expect("a device with a missing feature");
     assert_eq!(
         not_present(e),
         ("device feature", vec!["sparseBinding".to_owned()])
@@ -985,15 +983,15 @@ fn extensions_outside_the_emitted_api_are_refused() {
         .queue_family_index(s.family)
         .queue_priorities(&priorities)];
     for name in [c"VK_KHR_maintenance4", c"VK_TUFF_absent"] {
-        let e = unsafe {
-            s.physical.create_device(
+        let e = s
+            .physical
+            .create_device(
                 &tuff::DeviceCreateInfo::new()
                     .queue_create_infos(&queues)
                     .enabled_extension_names(&[c"VK_KHR_swapchain".into(), name.into()]),
             )
-        }
-        .err()
-        .expect("a device with an unemitted extension");
+            .err()
+            .expect("a device with an unemitted extension");
         assert_eq!(refused(e), name.to_str().expect("ASCII"));
     }
     assert_silent(&s.messages);

@@ -134,22 +134,19 @@ impl Gpu {
         let queues = [tuff::DeviceQueueCreateInfo::new()
             .queue_family_index(family)
             .queue_priorities(&[1.0])];
-        // SAFETY: one queue of a family the instance reported, with no flags, and only
-        // features and extensions the scene checked the device has.
-        let device = unsafe {
-            physical.create_device(
+        let device = physical
+            .create_device(
                 &tuff::DeviceCreateInfo::new()
                     .queue_create_infos(&queues)
                     .enabled_extension_names(device_exts)
                     .enabled_features(Some(&features)),
             )
-        }
-        .with_context(|| {
-            format!(
-                "cannot create a device on \"{name}\" for the {} scene",
-                req.scene
-            )
-        })?;
+            .with_context(|| {
+                format!(
+                    "cannot create a device on \"{name}\" for the {} scene",
+                    req.scene
+                )
+            })?;
         Ok(Gpu {
             allocator: device.gpu_allocator()?,
             queue: device.get_device_queue(family, 0)?,

@@ -250,7 +250,7 @@ fn setup_full(
             .push_next(&mut all12)
             .push_next(&mut all11),
     };
-    let device = unsafe { physical.create_device(&info) }.expect("create device");
+    let device = physical.create_device(&info).expect("create device");
     let queue = device.get_device_queue(family, 0).expect("queue");
     let memory_types = physical.get_physical_device_memory_properties();
     Setup {

@@ -127,6 +127,9 @@ pub(crate) fn create_device_checks(
             )?;
         }
     }
+    device_extension_requirements(physical, create_info)?;
+    device_feature_pairs(info.p_next)?;
+    device_group_members(physical, info.p_next)?;
     let families = physical.get_physical_device_queue_family_properties()?;
     let protected_memory = enabled_features(create_info).v11.protected_memory == vk::TRUE;
     // SAFETY: the safe setter stores the queue create infos with their count.
@@ -206,6 +209,124 @@ pub(crate) fn create_device_checks(
                 ),
             )?;
         }
+    }
+    Ok(())
+}
+
+/// Every extension a device enables comes with what vk.xml says it depends on:
+/// another extension of the device or of its instance, or a core version both
+/// reach (`VUID-vkCreateDevice-ppEnabledExtensionNames-01387`).
+fn device_extension_requirements(
+    physical: &PhysicalDevice,
+    create_info: &DeviceCreateInfo<'_>,
+) -> Result<()> {
+    let enabled = crate::hooks::create_device_scope(physical, create_info).exts;
+    for ext in create_info.enabled_extensions() {
+        let Some((name, alternatives)) = crate::api_info::EXTENSION_REQUIRES
+            .iter()
+            .find(|(n, _)| n.as_bytes() == ext.to_bytes())
+        else {
+            continue;
+        };
+        if !alternatives
+            .iter()
+            .any(|all| all.iter().all(|dep| enabled.named(dep)))
+        {
+            refuse(
+                "VUID-vkCreateDevice-ppEnabledExtensionNames-01387",
+                format!("`{name}` needs one of {alternatives:?} enabled on the device, its instance or by the API version"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The feature structs whose features come in pairs: enabling the first of a pair
+/// without the second is refused by the struct's own rule.
+fn device_feature_pairs(next: *const core::ffi::c_void) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (multiview, pointers) = unsafe {
+        (
+            chained::<vk::PhysicalDeviceMultiviewFeatures<'_>>(
+                next,
+                vk::StructureType::PHYSICAL_DEVICE_MULTIVIEW_FEATURES,
+            ),
+            chained::<vk::PhysicalDeviceVariablePointersFeatures<'_>>(
+                next,
+                vk::StructureType::PHYSICAL_DEVICE_VARIABLE_POINTERS_FEATURES,
+            ),
+        )
+    };
+    let on = |b: vk::Bool32| b != vk::FALSE;
+    if let Some(m) = multiview.filter(|m| !on(m.multiview)) {
+        if on(m.multiview_geometry_shader) {
+            refuse(
+                "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580",
+                "VkPhysicalDeviceMultiviewFeatures enables multiviewGeometryShader without multiview".into(),
+            )?;
+        }
+        if on(m.multiview_tessellation_shader) {
+            refuse(
+                "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581",
+                "VkPhysicalDeviceMultiviewFeatures enables multiviewTessellationShader without multiview".into(),
+            )?;
+        }
+    }
+    if let Some(p) = pointers {
+        if on(p.variable_pointers) && !on(p.variable_pointers_storage_buffer) {
+            refuse(
+                "VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431",
+                "VkPhysicalDeviceVariablePointersFeatures enables variablePointers without variablePointersStorageBuffer".into(),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A chained `VkDeviceGroupDeviceCreateInfo` names one device group the physical
+/// device belongs to, each member once.
+fn device_group_members(physical: &PhysicalDevice, next: *const core::ffi::c_void) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+    let Some(group) = (unsafe {
+        chained::<vk::DeviceGroupDeviceCreateInfo<'_>>(
+            next,
+            vk::StructureType::DEVICE_GROUP_DEVICE_CREATE_INFO,
+        )
+    }) else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stores the wrappers' handles with their count.
+    let members = unsafe {
+        crate::retention::raw_slice(group.p_physical_devices, group.physical_device_count)
+    };
+    if let Some(i) = (1..members.len()).find(|&i| members[..i].contains(&members[i])) {
+        refuse(
+            "VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375",
+            format!("pPhysicalDevices[{i}] names a physical device an earlier element names"),
+        )?;
+    }
+    if members.is_empty() {
+        return Ok(());
+    }
+    if !members.contains(&physical.raw()) {
+        refuse(
+            "VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377",
+            "pPhysicalDevices does not hold the physical device the device is created from".into(),
+        )?;
+    }
+    let groups = physical.parent().enumerate_physical_device_groups()?;
+    let in_one = groups.iter().any(|g| {
+        let of = g
+            .physical_devices
+            .get(..g.physical_device_count as usize)
+            .unwrap_or(&g.physical_devices);
+        members.iter().all(|m| of.contains(m))
+    });
+    if !in_one {
+        refuse(
+            "VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376",
+            "the elements of pPhysicalDevices are not all in one device group".into(),
+        )?;
     }
     Ok(())
 }

@@ -275,6 +275,14 @@ impl Origins {
                         .position(|m| *m == minor)
                         .is_some_and(|i| self.has(i as u16))
                 }
+                /// Whether the version or extension `name` (as vk.xml spells it) is
+                /// enabled; a name outside the emitted API never is.
+                pub(crate) fn named(&self, name: &str) -> bool {
+                    ORIGINS
+                        .iter()
+                        .position(|o| *o == name)
+                        .is_some_and(|i| self.has(i as u16))
+                }
                 /// Both sets.
                 pub(crate) fn with(mut self, other: Exts) -> Exts {
                     for (a, b) in self.0.iter_mut().zip(other.0) {

@@ -229,7 +229,10 @@ const STAGE_BITS: &str = "checks the stages are of the emitted API (the graphics
 const IMMUTABLE_SAMPLERS: &str = "the safe binding's `immutable_samplers` setter stores the sampler wrappers with their count as descriptorCount, and `descriptor_count` clears them when it sets another count";
 const UNPROVEN_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors, so a binding updated after bind is refused for the missing feature first";
 const UNPROVEN_VARIABLE_COUNT: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no variable descriptor counts, so a variable-sized binding is refused for the missing feature first";
-const DEVICE_QUEUES: &str = "checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures";
+const DEVICE_QUEUES: &str = "checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures";
+const DEVICE_EXTENSIONS: &str = "checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version";
+const DEVICE_GROUP: &str = "checks a chained device group create info names each physical device once, the one the device is created from among them, all in one group that the instance enumerates";
+const UNPROVEN_DEVICE_GROUP: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has one physical device, the only member of its only device group";
 const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
 const LAYOUT_BINDINGS: &str = "checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features";
 const SAMPLER_MODES: &str = "checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features";
@@ -1674,6 +1677,13 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkDeviceCreateInfo-queueFamilyIndex-02802", How::Dynamic(DEVICE_QUEUES)),
             ("VUID-VkDeviceQueueCreateInfo-flags-06449", How::User(UNPROVEN_PROTECTED_QUEUES)),
             ("VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755", How::User(UNPROVEN_PROTECTED_QUEUES)),
+            ("VUID-vkCreateDevice-ppEnabledExtensionNames-01387", How::Dynamic(DEVICE_EXTENSIONS)),
+            ("VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431", How::Dynamic(DEVICE_QUEUES)),
+            ("VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375", How::Dynamic(DEVICE_GROUP)),
+            ("VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376", How::User(UNPROVEN_DEVICE_GROUP)),
+            ("VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377", How::User(UNPROVEN_DEVICE_GROUP)),
         ],
         ..NONE
     },

@@ -6,7 +6,7 @@ use super::commands::{handled_elsewhere, Param, Plan};
 use super::hooks::How;
 use super::shape::{struct_members, Member};
 use super::{Context, Record, Settlement};
-use crate::model::Kind;
+use crate::model::{Kind, LenEntry};
 use crate::validity::{Category, ImplicitKind};
 use std::collections::BTreeMap;
 
@@ -266,10 +266,17 @@ fn implicit(
         };
     }
     let members = struct_members(model, &cx.facts, &d.item);
-    let member = members
+    let field = members
         .iter()
-        .find(|(m, _)| Some(&m.name) == d.field.as_ref())
-        .map(|(_, s)| s.clone());
+        .find(|(m, _)| Some(&m.name) == d.field.as_ref());
+    let member = field.map(|(_, s)| s.clone());
+    if let (K::Parameter, Some((f, Member::Unsupported(_)))) = (d.kind, field) {
+        if stays_empty(f, &members) {
+            return Settlement::Static(
+                "never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows".into(),
+            );
+        }
+    }
     match (d.kind, member) {
         (K::SType, _) => Settlement::Static("the safe struct's constructor sets `sType`".into()),
         (K::PNext, Some(Member::PNext)) => Settlement::Static(
@@ -282,6 +289,18 @@ fn implicit(
         (K::ArrayLength, _) => Settlement::User("a slice may be empty; not checked".into()),
         (kind, _) => Settlement::User(format!("`{}` rules are not checked yet", kind.tag())),
     }
+}
+
+/// Whether a member without a setter keeps a value its `-parameter` rule allows:
+/// an optional pointer stays NULL, and an array whose count only its (missing)
+/// setter fills in stays empty.
+fn stays_empty(f: &crate::model::Field, members: &[(crate::model::Field, Member)]) -> bool {
+    if f.pointers == 0 {
+        return false;
+    }
+    f.is_optional()
+        || matches!(f.parsed.len.first(), Some(LenEntry::Reference(parts)) if parts.len() == 1
+            && members.iter().any(|(m, s)| m.name == parts[0] && matches!(s, Member::Count)))
 }
 
 fn member_settlement(shape: &Member) -> Settlement {

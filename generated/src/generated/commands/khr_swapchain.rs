@@ -294,7 +294,7 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueuePresentKHR-pSwapchains-01292`: Each element of `pSwapchains` member of `pPresentInfo` must be a swapchain that is created for a surface for which presentation is supported from `queue` as determined using a call to `vkGetPhysicalDeviceSurfaceSupportKHR`
 - `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: When a semaphore wait operation referring to a binary semaphore defined by the elements of the `pWaitSemaphores` member of `pPresentInfo` executes on `queue`, there must be no other queues waiting on the same semaphore
@@ -308,7 +308,6 @@ The caller upholds these 13 rules that no check of this method enforces (its com
 - `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`: The value of each element of `pDeviceMasks` must be equal to the device mask passed in VkAcquireNextImageInfoKHR::`deviceMask` when the image index was last acquired
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`: `mode` must have exactly one bit set, and that bit must have been included in VkDeviceGroupSwapchainCreateInfoKHR::`modes`
 - `VUID-VkPresentInfoKHR-pImageIndices-01296`: Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by the corresponding element of the `pSwapchains` array, and the presented image subresource must be in the `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` layout at the time the operation is executed on a `VkDevice`
-- `VUID-VkPresentInfoKHR-pResults-parameter`: If `pResults` is not `NULL`, `pResults` must be a valid pointer to an array of `swapchainCount` VkResult values
 
 # Valid usage
 

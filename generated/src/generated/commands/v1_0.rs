@@ -588,7 +588,7 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateComputePipelines-flags-00695`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateComputePipelines-flags-00696`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -599,7 +599,6 @@ The caller upholds these 45 rules that no check of this method enforces (its com
 - `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be `1`
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
 - `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: If `pipelineStageCreationFeedbackCount` is not `0`, `pPipelineStageCreationFeedbacks` must be a valid pointer to an array of `pipelineStageCreationFeedbackCount` VkPipelineCreationFeedback structures
 - `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
 - `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
 - `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`
@@ -1066,7 +1065,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 100 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 98 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1122,12 +1121,10 @@ The caller upholds these 100 rules that no check of this method enforces (its co
 - `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: If `logicOpEnable` is `VK_TRUE`, `logicOp` must be a valid VkLogicOp value
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`: If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkPipelineColorBlendAttachmentState structures
 - `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: If `pipelineStageCreationFeedbackCount` is not `0`, `pPipelineStageCreationFeedbacks` must be a valid pointer to an array of `pipelineStageCreationFeedbackCount` VkPipelineCreationFeedback structures
 - `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`: Each element of `pDynamicStates` must be unique
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`: If `topology` is `VK_PRIMITIVE_TOPOLOGY_POINT_LIST`, `VK_PRIMITIVE_TOPOLOGY_LINE_LIST`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST`, `VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY` or `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST`, `primitiveRestartEnable` must be `VK_FALSE`
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`: If the `geometryShader` feature is not enabled, `topology` must not be any of `VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_LINE_STRIP_WITH_ADJACENCY`, `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY` or `VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP_WITH_ADJACENCY`
 - `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`: `minSampleShading` must be in the range [0,1]
-- `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: If `pSampleMask` is not `NULL`, `pSampleMask` must be a valid pointer to an array of \(\lceil{\mathit{rasterizationSamples} \over 32}\rceil\) VkSampleMask values
 - `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
 - `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
 - `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`
@@ -3149,31 +3146,17 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
 impl PhysicalDevice {
     /**`vkCreateDevice`
 
-# Safety
-
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: All required device extensions for each extension in the VkDeviceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
-- `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: If `enabledLayerCount` is not `0`, `ppEnabledLayerNames` must be a valid pointer to an array of `enabledLayerCount` null-terminated UTF-8 strings
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`: Each element of `pPhysicalDevices` must be unique
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376`: All elements of `pPhysicalDevices` must be in the same device group as enumerated by vkEnumeratePhysicalDeviceGroups
-- `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377`: If `physicalDeviceCount` is not `0`, the `physicalDevice` parameter of vkCreateDevice must be an element of `pPhysicalDevices`
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
-
 # Valid usage
 
 The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html). Settled by the wrappers:
 
+- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: dynamic (checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version)
 - `VUID-vkCreateDevice-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_device<'a>(
+    pub fn create_device<'a>(
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
@@ -3191,7 +3174,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_device`] checks at run time: `VUID-VkDeviceCreateInfo-pNext-00373`, `VUID-VkDeviceCreateInfo-pNext-02829`, `VUID-VkDeviceCreateInfo-pNext-02830`, `VUID-VkDeviceCreateInfo-pNext-06532`, `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`, `VUID-VkDeviceQueueCreateInfo-queueCount-00382`, `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`, `VUID-VkDeviceQueueCreateInfo-flags-02861`, `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`, `VUID-VkDeviceQueueCreateInfo-flags-06449`, `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_device`] checks at run time: `VUID-VkDeviceCreateInfo-pNext-00373`, `VUID-VkDeviceCreateInfo-pNext-02829`, `VUID-VkDeviceCreateInfo-pNext-02830`, `VUID-VkDeviceCreateInfo-pNext-06532`, `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`, `VUID-VkDeviceQueueCreateInfo-queueCount-00382`, `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`, `VUID-VkDeviceQueueCreateInfo-flags-02861`, `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`, `VUID-VkDeviceQueueCreateInfo-flags-06449`, `VUID-VkDeviceCreateInfo-pQueueCreateInfos-06755`, `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`, `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`, `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`, `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`, `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`, `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376`, `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_device_unchecked<'a>(
         &self,

@@ -907,14 +907,6 @@ The caller upholds the rules that [`Self::get_physical_device_external_semaphore
     }
     /**`vkGetPhysicalDeviceFeatures2`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
-
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
@@ -922,7 +914,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
 - `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[inline]
-    pub unsafe fn get_physical_device_features2<'a>(
+    pub fn get_physical_device_features2<'a>(
         &self,
         features: &mut PhysicalDeviceFeatures2<'a>,
     ) {

@@ -14,13 +14,11 @@ The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.
 - `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pSwapchains-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pImageIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkPresentInfoKHR-pResults-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: not settable safely (a pointer Vulkan writes through)*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -1072,25 +1072,25 @@ impl<'a> DescriptorSetLayoutCreateInfo<'a> {
 
 The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceCreateInfo.html). Settled by the wrappers:
 
-- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceCreateInfo-pNext-00373`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceCreateInfo-pNext-02829`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceCreateInfo-pNext-02830`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceCreateInfo-pNext-06532`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-queueFamilyIndex-02802`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-00373`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-02829`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-02830`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceCreateInfo-pNext-06532`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
 - `VUID-VkDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDeviceCreateInfo-pQueueCreateInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkDeviceCreateInfo-ppEnabledLayerNames-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
 - `VUID-VkDeviceCreateInfo-ppEnabledExtensionNames-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-pEnabledFeatures-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 26.
+Left to the caller (listed one by one in the crate's `validation.json`): 25.
 
 - 1: checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first
-- 24: explicit rule; the wrappers do not check it
-- 1: not settable safely (deprecated by the specification)*/
+- 24: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceCreateInfo<'a> {
@@ -1139,16 +1139,16 @@ impl<'a> DeviceCreateInfo<'a> {
 
 The rules are on [`VkDeviceQueueCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueCreateInfo.html). Settled by the wrappers:
 
-- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
-- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-queueFamilyIndex-00381`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-queueCount-00382`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
 - `VUID-VkDeviceQueueCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceQueueCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkDeviceQueueCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceQueueCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDeviceQueueCreateInfo-pQueuePriorities-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceQueueCreateInfo-queueCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkDeviceQueueCreateInfo-flags-02861`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other and against pEnabledFeatures)
+- `VUID-VkDeviceQueueCreateInfo-flags-02861`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first).*/
 #[repr(transparent)]
@@ -2391,11 +2391,9 @@ The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 2: explicit rule; the wrappers do not check it
-- 1: not settable safely (a pointer whose length the registry gives as an expression)*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineMultisampleStateCreateInfo<'a> {
