@@ -345,59 +345,217 @@ fn allocation_rules_are_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = tuff_setup::setup(true);
     let memory = s.physical.get_physical_device_memory_properties();
-    let allocate = |size: u64, index: u32, flags: vk::MemoryAllocateFlags, capture: u64| {
-        let mut flags = tuff::MemoryAllocateFlagsInfo::new().flags(flags);
+    let buffer = s
+        .device
+        .create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(1024)
+                .usage(vk::BufferUsageFlags::TRANSFER_SRC),
+        )
+        .expect("buffer");
+    let image = unsafe {
+        s.device.create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 16,
+                    height: 16,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::TRANSFER_SRC),
+        )
+    }
+    .expect("image");
+    let buffer_size = s
+        .device
+        .get_buffer_memory_requirements(&buffer)
+        .expect("requirements")
+        .size;
+    let allocate = |p: Alloc<'_>| {
+        let mut flags = tuff::MemoryAllocateFlagsInfo::new()
+            .flags(p.flags)
+            .device_mask(p.mask);
         let mut address =
-            tuff::MemoryOpaqueCaptureAddressAllocateInfo::new().opaque_capture_address(capture);
-        let info = tuff::MemoryAllocateInfo::new()
-            .allocation_size(size)
-            .memory_type_index(index)
+            tuff::MemoryOpaqueCaptureAddressAllocateInfo::new().opaque_capture_address(p.capture);
+        let mut dedicated = tuff::MemoryDedicatedAllocateInfo::new()
+            .image(p.image)
+            .buffer(p.buffer);
+        let mut export = tuff::ExportMemoryAllocateInfo::new().handle_types(p.export);
+        let mut info = tuff::MemoryAllocateInfo::new()
+            .allocation_size(p.size)
+            .memory_type_index(p.index)
             .push_next(&mut flags)
             .push_next(&mut address);
-        let safe = unsafe { s.device.allocate_memory(&info) }.map(drop);
+        if p.image.is_some() || p.buffer.is_some() {
+            info = info.push_next(&mut dedicated);
+        }
+        if !p.export.is_empty() {
+            info = info.push_next(&mut export);
+        }
+        let safe = s.device.allocate_memory(&info).map(drop);
         let layer = under_layer(&s, || {
             let _ = unsafe { s.device.allocate_memory_unchecked(&info) };
         });
         (safe, layer)
     };
-    let none = vk::MemoryAllocateFlags::empty();
-    let (safe, layer) = allocate(64, 0, none, 0);
+    let (safe, layer) = allocate(Alloc::default());
     assert!(
         safe.is_ok() && layer.is_empty(),
         "the valid allocation: {safe:?} {layer:?}"
     );
+    let (safe, layer) = allocate(Alloc {
+        size: buffer_size,
+        buffer: Some(&buffer),
+        ..Alloc::default()
+    });
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid dedicated allocation: {safe:?} {layer:?}"
+    );
     let heap = memory.memory_heaps[memory.memory_types[0].heap_index as usize].size;
     let mut v = Verdicts::default();
-    for (vuid, (safe, layer)) in [
+    let masked = vk::MemoryAllocateFlags::DEVICE_MASK;
+    for (vuid, also, p) in [
         (
             "VUID-vkAllocateMemory-pAllocateInfo-01714",
-            allocate(64, memory.memory_type_count, none, 0),
+            &[][..],
+            Alloc {
+                index: memory.memory_type_count,
+                ..Alloc::default()
+            },
         ),
         (
             "VUID-vkAllocateMemory-pAllocateInfo-01713",
-            allocate(heap + 1, 0, none, 0),
+            &[],
+            Alloc {
+                size: heap + 1,
+                ..Alloc::default()
+            },
         ),
         (
             "VUID-VkMemoryAllocateInfo-flags-03330",
-            allocate(
-                64,
-                0,
-                vk::MemoryAllocateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY,
-                0,
-            ),
+            &[],
+            Alloc {
+                flags: vk::MemoryAllocateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY,
+                ..Alloc::default()
+            },
         ),
         (
             "VUID-VkMemoryAllocateInfo-flags-03331",
-            allocate(64, 0, vk::MemoryAllocateFlags::DEVICE_ADDRESS, 0),
+            &[],
+            Alloc {
+                flags: vk::MemoryAllocateFlags::DEVICE_ADDRESS,
+                ..Alloc::default()
+            },
         ),
         (
             "VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329",
-            allocate(64, 0, none, 0x1000),
+            &[],
+            Alloc {
+                capture: 0x1000,
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676",
+            &[],
+            Alloc {
+                flags: masked,
+                mask: 0,
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675",
+            &[],
+            Alloc {
+                flags: masked,
+                mask: 0b10,
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkMemoryDedicatedAllocateInfo-image-01432",
+            &[],
+            Alloc {
+                image: Some(&image),
+                buffer: Some(&buffer),
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkMemoryDedicatedAllocateInfo-image-01433",
+            &[],
+            Alloc {
+                size: 1 << 20,
+                image: Some(&image),
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkMemoryDedicatedAllocateInfo-buffer-01435",
+            &[],
+            Alloc {
+                size: buffer_size + 64,
+                buffer: Some(&buffer),
+                ..Alloc::default()
+            },
+        ),
+        (
+            "VUID-VkExportMemoryAllocateInfo-handleTypes-00656",
+            &[],
+            Alloc {
+                size: buffer_size,
+                buffer: Some(&buffer),
+                export: vk::ExternalMemoryHandleTypeFlags::D3D11_TEXTURE,
+                ..Alloc::default()
+            },
         ),
     ] {
-        v.judge(vuid, &[], safe, layer);
+        let (safe, layer) = allocate(p);
+        v.judge(vuid, also, safe, layer);
     }
     v.finish("allocation");
+    // An export without a dedicated object has no properties to check it against.
+    let (safe, _) = allocate(Alloc {
+        export: vk::ExternalMemoryHandleTypeFlags::OPAQUE_FD,
+        ..Alloc::default()
+    });
+    assert!(
+        matches!(safe, Err(tuff::Error::Misuse(_))),
+        "an export without a dedicated object: {safe:?}"
+    );
+}
+
+/// An allocate info's parts a case can change.
+struct Alloc<'a> {
+    size: u64,
+    index: u32,
+    flags: vk::MemoryAllocateFlags,
+    mask: u32,
+    capture: u64,
+    image: Option<&'a tuff::Image>,
+    buffer: Option<&'a tuff::Buffer>,
+    export: vk::ExternalMemoryHandleTypeFlags,
+}
+
+impl Default for Alloc<'_> {
+    fn default() -> Self {
+        Alloc {
+            size: 64,
+            index: 0,
+            flags: vk::MemoryAllocateFlags::empty(),
+            mask: 0,
+            capture: 0,
+            image: None,
+            buffer: None,
+            export: vk::ExternalMemoryHandleTypeFlags::empty(),
+        }
+    }
 }
 
 /// One binding of a descriptor set layout: binding number, type, count, stages and

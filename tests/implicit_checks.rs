@@ -85,14 +85,13 @@ fn objects_of_another_device_are_refused() {
                 .usage(vk::BufferUsageFlags::UNIFORM_BUFFER),
         )
         .expect("buffer");
-    let foreign_memory = unsafe {
-        other.allocate_memory(
+    let foreign_memory = other
+        .allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(256)
                 .memory_type_index(0),
         )
-    }
-    .expect("memory of the other device");
+        .expect("memory of the other device");
     assert_eq!(
         vuid(d.bind_buffer_memory(&buffer, &foreign_memory, 0)),
         "VUID-vkBindBufferMemory-memory-parent"

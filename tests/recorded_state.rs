@@ -1213,18 +1213,19 @@ fn memory_is_bound_only_to_what_it_was_allocated_for_and_the_layer_agrees() {
     // Memory dedicated to `a`, bound to `b`.
     let dedicated = memory_for(&s, &a, |info| {
         let mut only_a = tuff::MemoryDedicatedAllocateInfo::new().buffer(Some(&a));
-        // SAFETY: the size and type are `a`'s requirements; one dedicated buffer.
-        unsafe { d.allocate_memory(&info.push_next(&mut only_a)) }.expect("dedicated memory")
+        d.allocate_memory(&info.push_next(&mut only_a))
+            .expect("dedicated memory")
     });
     let to_other = "VUID-vkBindBufferMemory-memory-01508";
     assert_eq!(vuid(d.bind_buffer_memory(&b, &dedicated, 0)), to_other);
-    // Memory exportable as an opaque fd, bound to a buffer with no external handle
-    // type.
+    // Memory exportable as an opaque fd (the safe method exports only for a
+    // dedicated object), bound to a buffer with no external handle type.
     let exportable = memory_for(&s, &b, |info| {
         let mut export = tuff::ExportMemoryAllocateInfo::new()
             .handle_types(vk::ExternalMemoryHandleTypeFlags::OPAQUE_FD);
-        // SAFETY: lavapipe exports opaque fds of every memory type.
-        unsafe { d.allocate_memory(&info.push_next(&mut export)) }.expect("exportable memory")
+        let mut only_b = tuff::MemoryDedicatedAllocateInfo::new().buffer(Some(&b));
+        d.allocate_memory(&info.push_next(&mut export).push_next(&mut only_b))
+            .expect("exportable memory")
     });
     let not_external = "VUID-vkBindBufferMemory-memory-02726";
     assert_eq!(vuid(d.bind_buffer_memory(&b, &exportable, 0)), not_external);
@@ -1255,16 +1256,15 @@ fn a_buffer_with_a_device_address_needs_such_memory_and_the_layer_agrees() {
         )
         .expect("buffer");
     let plain = memory_for(&s, &buffer, |info| {
-        // SAFETY: the size and type are the buffer's requirements, nothing chained.
-        unsafe { d.allocate_memory(&info) }.expect("memory")
+        d.allocate_memory(&info).expect("memory")
     });
     let expected = "VUID-vkBindBufferMemory-bufferDeviceAddress-03339";
     assert_eq!(vuid(d.bind_buffer_memory(&buffer, &plain, 0)), expected);
     let addressable = memory_for(&s, &buffer, |info| {
         let mut flags =
             tuff::MemoryAllocateFlagsInfo::new().flags(vk::MemoryAllocateFlags::DEVICE_ADDRESS);
-        // SAFETY: as above, on a device with bufferDeviceAddress.
-        unsafe { d.allocate_memory(&info.push_next(&mut flags)) }.expect("memory")
+        d.allocate_memory(&info.push_next(&mut flags))
+            .expect("memory")
     });
     d.bind_buffer_memory(&buffer, &addressable, 0)
         .expect("memory with a device address");

@@ -1697,16 +1697,15 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     let reqs = d
         .get_buffer_memory_requirements(&buffer)
         .expect("requirements");
-    let memory = unsafe {
-        d.allocate_memory(
+    let memory = d
+        .allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(reqs.size)
                 .memory_type_index(
                     s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::HOST_VISIBLE),
                 ),
         )
-    }
-    .expect("memory");
+        .expect("memory");
     unsafe { d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)]) }
         .expect("bind");
     drop(memory);
@@ -3506,16 +3505,15 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
 
 /// Memory for `reqs` of `size` bytes, of the first type the object allows.
 fn memory_for(s: &Setup, reqs: &vk::MemoryRequirements, size: u64) -> tuff::DeviceMemory {
-    unsafe {
-        s.device.allocate_memory(
+    s.device
+        .allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(size)
                 .memory_type_index(
                     s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
                 ),
         )
-    }
-    .expect("memory")
+        .expect("memory")
 }
 
 /// Runs `unchecked` with the layer told to skip the erroring call, so the driver

@@ -26,7 +26,8 @@ mod pipeline;
 mod render_pass;
 use creation::image_create_rules;
 pub(crate) use creation::{
-    allocate_memory_checks, create_device_checks, descriptor_set_layout_checks, sampler_checks,
+    allocate_memory_checks, allocate_memory_gate, create_device_checks,
+    descriptor_set_layout_checks, sampler_checks,
 };
 pub(crate) use pipeline::{compute_pipeline_state_checks, graphics_pipeline_state_checks};
 pub(crate) use render_pass::{
@@ -697,6 +698,7 @@ pub(crate) fn image_created(
             mip_levels: create_info.mip_levels,
             array_layers: create_info.array_layers,
             usage: create_info.usage,
+            tiling: create_info.tiling,
             bound: false,
             external: external_handle_types(create_info.as_raw().p_next),
         },
@@ -750,6 +752,7 @@ pub(crate) fn swapchain_created(
             mip_levels: 1,
             array_layers: create_info.image_array_layers,
             usage: create_info.image_usage,
+            tiling: vk::ImageTiling::OPTIMAL,
             bound: true,
             external: vk::ExternalMemoryHandleTypeFlags::empty(),
         },
@@ -1278,6 +1281,16 @@ pub(crate) fn device_created(
             )
         }
     };
+    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+    let group: Option<&vk::DeviceGroupDeviceCreateInfo<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::DEVICE_GROUP_DEVICE_CREATE_INFO,
+        )
+    };
+    device
+        .live()
+        .set_physical_count(group.map_or(1, |g| g.physical_device_count).max(1));
     device.live().set_queue_infos(
         queues
             .iter()

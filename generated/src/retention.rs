@@ -56,6 +56,10 @@ pub(crate) struct Live {
     sets: Vutex<HashMap<u64, HashMap<Slot, Retained>>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
+    /// Held by a safe allocation from its count check until its memory is listed,
+    /// so two threads cannot both take the last allocation `maxMemoryAllocationCount`
+    /// allows.
+    allocating: Vutex<()>,
     /// The device's queue operations that may still be executing.
     ledger: crate::submission::Ledger,
     /// The host synchronization of each queue of the device.
@@ -99,6 +103,9 @@ pub(crate) struct Live {
     /// The queue families the device was created with, each with its queue count
     /// and create flags, one per `VkDeviceQueueCreateInfo`.
     queue_infos: std::sync::OnceLock<Vec<(u32, u32, vk::DeviceQueueCreateFlags)>>,
+    /// How many physical devices make up the device (a chained
+    /// `VkDeviceGroupDeviceCreateInfo`'s count, or 1), which bounds device masks.
+    physical_count: std::sync::OnceLock<u32>,
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
@@ -248,6 +255,8 @@ pub(crate) struct ImageRecord {
     pub array_layers: u32,
     /// `VkImageCreateInfo::usage`.
     pub usage: vk::ImageUsageFlags,
+    /// `VkImageCreateInfo::tiling`.
+    pub tiling: vk::ImageTiling,
     /// Whether memory is bound to it.
     pub bound: bool,
     /// `VkExternalMemoryImageCreateInfo::handleTypes`.
@@ -260,6 +269,7 @@ impl Default for Live {
             objects: Vutex::new(HashMap::default()),
             sets: Vutex::new(HashMap::default()),
             memories: Vutex::new(HashMap::default()),
+            allocating: Vutex::new(()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
@@ -280,6 +290,7 @@ impl Default for Live {
             max_buffer_size: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
             queue_infos: std::sync::OnceLock::new(),
+            physical_count: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::default()),
         }
     }
@@ -535,6 +546,16 @@ impl Live {
     }
 
     /// Records the core features the device was created with.
+    pub(crate) fn set_physical_count(&self, count: u32) {
+        let _ = self.physical_count.set(count);
+    }
+
+    /// How many physical devices make up the device; a valid device mask sets no bit
+    /// at or above it.
+    pub(crate) fn physical_count(&self) -> u32 {
+        self.physical_count.get().copied().unwrap_or(1)
+    }
+
     pub(crate) fn set_features(&self, features: crate::validation::Features) {
         let _ = self.features.set(features);
     }
@@ -672,6 +693,14 @@ impl Live {
                 asked,
             },
         );
+    }
+
+    /// Locks out other safe allocations, and says how many device memories made
+    /// through the wrappers are live.
+    pub(crate) fn allocation_gate(&self) -> (tuff_runtime::VutexGuard<'_, ()>, usize) {
+        let gate = self.allocating.lock();
+        let live = self.memories.lock().len();
+        (gate, live)
     }
 
     /// Runs `f` on the record of a device memory, if it was allocated through the

@@ -51,8 +51,8 @@ pub fn host_buffer(
     let reqs = d
         .get_buffer_memory_requirements(&buffer)
         .expect("memory requirements");
-    let memory = unsafe {
-        d.allocate_memory(
+    let memory = d
+        .allocate_memory(
             &tuff::MemoryAllocateInfo::new()
                 .allocation_size(reqs.size)
                 .memory_type_index(s.memory_type(
@@ -60,8 +60,7 @@ pub fn host_buffer(
                     vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
                 )),
         )
-    }
-    .expect("memory");
+        .expect("memory");
     d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
     (buffer, memory)
 }

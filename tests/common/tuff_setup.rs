@@ -326,16 +326,15 @@ impl Setup {
         let reqs = d
             .get_image_memory_requirements(image)
             .expect("memory requirements");
-        let memory = unsafe {
-            d.allocate_memory(
+        let memory = d
+            .allocate_memory(
                 &tuff::MemoryAllocateInfo::new()
                     .allocation_size(reqs.size)
                     .memory_type_index(
                         self.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
                     ),
             )
-        }
-        .expect("image memory");
+            .expect("image memory");
         d.bind_image_memory(image, &memory, 0).expect("bind image");
         memory
     }

@@ -400,7 +400,226 @@ pub(crate) fn allocate_memory_checks(
             )?;
         }
     }
+    let protected_memory = device.live().with_features(|f| f.v11.protected_memory);
+    if ty
+        .property_flags
+        .contains(vk::MemoryPropertyFlags::PROTECTED)
+        && protected_memory == vk::FALSE
+    {
+        refuse(
+            "VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872",
+            format!(
+                "memory type {index} is protected, but the device does not enable protectedMemory"
+            ),
+        )?;
+    }
+    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+    let flags_info: Option<&vk::MemoryAllocateFlagsInfo<'_>> =
+        unsafe { chained(info.p_next, vk::StructureType::MEMORY_ALLOCATE_FLAGS_INFO) };
+    if let Some(f) = flags_info.filter(|f| f.flags.contains(vk::MemoryAllocateFlags::DEVICE_MASK)) {
+        if f.device_mask == 0 {
+            refuse(
+                "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676",
+                "VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT is set and deviceMask is 0".into(),
+            )?;
+        }
+        let count = device.live().physical_count();
+        if count < 32 && f.device_mask >> count != 0 {
+            refuse(
+                "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675",
+                format!("deviceMask ({:#x}) names a physical device the device's {count} do not include", f.device_mask),
+            )?;
+        }
+    }
+    dedicated_allocation_checks(device, info)
+}
+
+/// A chained `VkMemoryDedicatedAllocateInfo` names one image or one buffer, not
+/// sparse, and the allocation has exactly its size; a chained
+/// `VkExportMemoryAllocateInfo` names handle types that object can export.
+fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_>) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (dedicated, export) = unsafe {
+        (
+            chained::<vk::MemoryDedicatedAllocateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::MEMORY_DEDICATED_ALLOCATE_INFO,
+            ),
+            chained::<vk::ExportMemoryAllocateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::EXPORT_MEMORY_ALLOCATE_INFO,
+            ),
+        )
+    };
+    let export = export.map_or(vk::ExternalMemoryHandleTypeFlags::empty(), |e| {
+        e.handle_types
+    });
+    let (image, buffer) = dedicated.map_or((vk::Image::null(), vk::Buffer::null()), |d| {
+        (d.image, d.buffer)
+    });
+    if image != vk::Image::null() && buffer != vk::Buffer::null() {
+        refuse(
+            "VUID-VkMemoryDedicatedAllocateInfo-image-01432",
+            "VkMemoryDedicatedAllocateInfo names both an image and a buffer".into(),
+        )?;
+    }
+    let physical = device.parent();
+    let instance = physical.parent();
+    if let Some(record) = device.live().image(image) {
+        if record.flags.contains(vk::ImageCreateFlags::SPARSE_BINDING) {
+            refuse(
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01434",
+                "the dedicated image was created with VK_IMAGE_CREATE_SPARSE_BINDING_BIT".into(),
+            )?;
+        }
+        if record.flags.contains(vk::ImageCreateFlags::DISJOINT) {
+            // Its planes have requirements of their own, which this query may not
+            // ask for.
+            return refuse(
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01797",
+                "the dedicated image was created with VK_IMAGE_CREATE_DISJOINT_BIT".into(),
+            );
+        }
+        let mut needs = vk::MemoryRequirements::default();
+        // SAFETY: a live image of this device (its record is listed) and an output
+        // this function owns.
+        unsafe {
+            (device.fns().fp_v1_0().get_image_memory_requirements)(device.raw(), image, &mut needs)
+        };
+        if info.allocation_size != needs.size {
+            refuse(
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01433",
+                format!(
+                    "allocationSize ({}) is not the dedicated image's memory requirement ({})",
+                    info.allocation_size, needs.size
+                ),
+            )?;
+        }
+        for handle in each_bit(export) {
+            let mut external =
+                vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(handle);
+            let format_info = vk::PhysicalDeviceImageFormatInfo2::default()
+                .format(record.format)
+                .ty(record.image_type)
+                .tiling(record.tiling)
+                .usage(record.usage)
+                .flags(record.flags)
+                .push_next(&mut external);
+            let mut props = vk::ExternalImageFormatProperties::default();
+            let mut out = vk::ImageFormatProperties2::default().push_next(&mut props);
+            // SAFETY: a live physical device of its instance (the external structs are
+            // core 1.1, which chaining the export struct required); the chains are
+            // local.
+            let r = unsafe {
+                (instance
+                    .fns()
+                    .fp_v1_1()
+                    .get_physical_device_image_format_properties2)(
+                    physical.raw(),
+                    &format_info,
+                    &mut out,
+                )
+            };
+            let p = props.external_memory_properties;
+            if r != vk::Result::SUCCESS || !exports(&p, export) {
+                refuse(
+                    "VUID-VkExportMemoryAllocateInfo-handleTypes-00656",
+                    format!("the dedicated image cannot export {export:?} together: the physical device reports {:?} for {handle:?} ({r:?})", p),
+                )?;
+            }
+        }
+    } else if let Some(record) = device.live().buffer(buffer) {
+        if record.flags.contains(vk::BufferCreateFlags::SPARSE_BINDING) {
+            refuse(
+                "VUID-VkMemoryDedicatedAllocateInfo-buffer-01436",
+                "the dedicated buffer was created with VK_BUFFER_CREATE_SPARSE_BINDING_BIT".into(),
+            )?;
+        }
+        let mut needs = vk::MemoryRequirements::default();
+        // SAFETY: a live buffer of this device (its record is listed) and an output
+        // this function owns.
+        unsafe {
+            (device.fns().fp_v1_0().get_buffer_memory_requirements)(
+                device.raw(),
+                buffer,
+                &mut needs,
+            )
+        };
+        if info.allocation_size != needs.size {
+            refuse(
+                "VUID-VkMemoryDedicatedAllocateInfo-buffer-01435",
+                format!(
+                    "allocationSize ({}) is not the dedicated buffer's memory requirement ({})",
+                    info.allocation_size, needs.size
+                ),
+            )?;
+        }
+        for handle in each_bit(export) {
+            let external = vk::PhysicalDeviceExternalBufferInfo::default()
+                .flags(record.flags)
+                .usage(record.usage)
+                .handle_type(handle);
+            let mut props = vk::ExternalBufferProperties::default();
+            // SAFETY: as for the image above.
+            unsafe {
+                (instance
+                    .fns()
+                    .fp_v1_1()
+                    .get_physical_device_external_buffer_properties)(
+                    physical.raw(),
+                    &external,
+                    &mut props,
+                )
+            };
+            let p = props.external_memory_properties;
+            if !exports(&p, export) {
+                refuse(
+                    "VUID-VkExportMemoryAllocateInfo-handleTypes-00656",
+                    format!("the dedicated buffer cannot export {export:?} together: the physical device reports {:?} for {handle:?}", p),
+                )?;
+            }
+        }
+    } else if !export.is_empty() {
+        // Without an object the reports that the rule names do not apply to one
+        // allocation; binding checks the handle types against each object later, but
+        // the export itself would go unchecked.
+        return Err(Error::Misuse(
+            "the safe allocate_memory exports memory only for a dedicated image or buffer (VkMemoryDedicatedAllocateInfo), whose external memory properties it checks; use allocate_memory_unchecked otherwise",
+        ));
+    }
     Ok(())
+}
+
+/// Each handle type of a set, alone.
+fn each_bit(
+    set: vk::ExternalMemoryHandleTypeFlags,
+) -> impl Iterator<Item = vk::ExternalMemoryHandleTypeFlags> {
+    (0..32)
+        .map(|b| vk::ExternalMemoryHandleTypeFlags::from_raw(1 << b))
+        .filter(move |h| set.contains(*h))
+}
+
+/// Whether memory with these properties for one handle type can be exported, with
+/// every type of `all` beside it.
+fn exports(p: &vk::ExternalMemoryProperties, all: vk::ExternalMemoryHandleTypeFlags) -> bool {
+    p.external_memory_features
+        .contains(vk::ExternalMemoryFeatureFlags::EXPORTABLE)
+        && p.compatible_handle_types.contains(all)
+}
+
+/// Holds other safe allocations off while this one is checked against
+/// `maxMemoryAllocationCount` and made, so that two threads cannot both take the
+/// last one (`VUID-vkAllocateMemory-maxMemoryAllocationCount-04101`).
+pub(crate) fn allocate_memory_gate(device: &Device) -> Result<tuff_runtime::VutexGuard<'_, ()>> {
+    let (gate, live) = device.live().allocation_gate();
+    let max = crate::hooks::limits(device).max_memory_allocation_count;
+    if live as u64 >= u64::from(max) {
+        refuse(
+            "VUID-vkAllocateMemory-maxMemoryAllocationCount-04101",
+            format!("the device has {live} live allocations, the most maxMemoryAllocationCount ({max}) allows"),
+        )?;
+    }
+    Ok(gate)
 }
 
 /// Which descriptor types the update-after-bind feature of each

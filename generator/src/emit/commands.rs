@@ -822,7 +822,13 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let always = special.and_then(|s| s.check);
     let last = special.and_then(|s| s.check_last);
     let mut validator = None;
-    let method = if checks.is_empty() && always.is_none() && last.is_none() && same_len.is_empty() {
+    let held = special.and_then(|s| s.hold);
+    let method = if checks.is_empty()
+        && always.is_none()
+        && last.is_none()
+        && held.is_none()
+        && same_len.is_empty()
+    {
         quote! {
             #[doc = #doc]
             #[inline]
@@ -855,8 +861,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let c = hook(&c, &ret_expr);
             quote!(#c?;)
         });
+        let hold_code = special.and_then(|s| s.hold).map(|c| {
+            let c = hook(&c, &ret_expr);
+            quote!(let _held = #c?;)
+        });
         let always_vuids = special
-            .filter(|s| s.check.is_some() || s.check_last.is_some())
+            .filter(|s| s.check.is_some() || s.check_last.is_some() || s.hold.is_some())
             .map_or(&[][..], |s| s.settles);
         let same_len_vuids: Vec<String> = plan
             .same_len
@@ -1009,6 +1019,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 #implicit_block
                 // Checks that query the driver with the values, once they are valid.
                 #last_code
+                #hold_code
                 __safety!("the rules the checks above settle hold; the others are the caller's (see the docs).");
                 #call
             }

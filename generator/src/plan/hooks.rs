@@ -64,6 +64,11 @@ pub struct Special {
     /// recognised checks have passed: a check that hands the call's values to the
     /// driver (a query), which needs them valid first.
     pub check_last: Option<Call>,
+    /// Run by the safe method in every build after `check_last`: a check whose
+    /// verdict another thread could change before the driver runs (a count of live
+    /// objects). It returns `Result<G>`, and the method holds the guard `G` until
+    /// the call has returned.
+    pub hold: Option<Call>,
     /// Run by the call's body before the call.
     pub before: Option<Call>,
     /// Run by the call's body after a successful call.
@@ -93,6 +98,7 @@ const NONE: Special = Special {
     command: "",
     check: None,
     check_last: None,
+    hold: None,
     before: None,
     after: None,
     created: None,
@@ -233,7 +239,14 @@ const DEVICE_QUEUES: &str = "checks the queue create infos against the physical 
 const DEVICE_EXTENSIONS: &str = "checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version";
 const DEVICE_GROUP: &str = "checks a chained device group create info names each physical device once, the one the device is created from among them, all in one group that the instance enumerates";
 const UNPROVEN_DEVICE_GROUP: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has one physical device, the only member of its only device group";
-const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
+const DEVICE_MASK: &str = "checks the mask is not zero and names only the physical devices the device was created with (a chained device group create info's count, recorded at creation)";
+const UNPROVEN_ALLOCATION_COUNT: &str = "checked by the safe methods in every build (the live allocations the device lists against maxMemoryAllocationCount, under a lock held until the new memory is listed), but no test breaks it: lavapipe allows 4,294,967,295 allocations";
+const UNPROVEN_PROTECTED_TYPE: &str = "checked by the safe methods in every build (the memory type's flags against protectedMemory), but no test breaks it: lavapipe has no protected memory type";
+const UNPROVEN_SPARSE_DEDICATED: &str = "checked by the safe methods in every build (the object's recorded creation flags), but no test breaks it: lavapipe 22.3 has no sparseBinding, so no sparse object can be named";
+const UNPROVEN_DISJOINT_DEDICATED: &str = "checked by the safe methods in every build (the image's recorded creation flags), but no test breaks it: the tests make no disjoint image";
+const DEDICATED: &str = "checks the dedicated image or buffer against its recorded creation flags (not sparse, not disjoint), one of the two named, and the allocation size against its memory requirements";
+const EXPORT: &str = "checks the exported handle types against the external memory properties the physical device reports for the dedicated image or buffer (exportable, compatible with each other); an export without a dedicated object is refused (`Error::Misuse`)";
+const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
 const LAYOUT_BINDINGS: &str = "checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features";
 const SAMPLER_MODES: &str = "checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features";
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
@@ -1705,6 +1718,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkAllocateMemory",
         check_last: call("hooks::allocate_memory_checks", &["self", "allocate_info"]),
+        hold: call("hooks::allocate_memory_gate", &["self"]),
         keeps: Keeps::Nothing,
         created: call("hooks::memory_allocated", &["self", "created", "out", "allocate_info"]),
         settles: &[
@@ -1713,6 +1727,19 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkMemoryAllocateInfo-flags-03330", How::Dynamic(MEMORY_TYPES)),
             ("VUID-VkMemoryAllocateInfo-flags-03331", How::Dynamic(MEMORY_TYPES)),
             ("VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329", How::Dynamic(MEMORY_TYPES)),
+            ("VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872", How::User(UNPROVEN_PROTECTED_TYPE)),
+            ("VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675", How::Dynamic(DEVICE_MASK)),
+            ("VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676", How::Dynamic(DEVICE_MASK)),
+            ("VUID-vkAllocateMemory-maxMemoryAllocationCount-04101", How::User(UNPROVEN_ALLOCATION_COUNT)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-image-01432", How::Dynamic(DEDICATED)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-image-01433", How::Dynamic(DEDICATED)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-buffer-01435", How::Dynamic(DEDICATED)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-image-01434", How::User(UNPROVEN_SPARSE_DEDICATED)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-buffer-01436", How::User(UNPROVEN_SPARSE_DEDICATED)),
+            ("VUID-VkMemoryDedicatedAllocateInfo-image-01797", How::User(UNPROVEN_DISJOINT_DEDICATED)),
+            ("VUID-VkExportMemoryAllocateInfo-handleTypes-00656", How::Dynamic(EXPORT)),
+            ("VUID-VkMemoryAllocateInfo-None-06657", How::Static(NO_IMPORT)),
+            ("VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333", How::Static(NO_IMPORT)),
         ],
         ..NONE
     },

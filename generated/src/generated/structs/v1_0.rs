@@ -1986,15 +1986,20 @@ impl<'a> MappedMemoryRange<'a> {
 
 The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateInfo.html). Settled by the wrappers:
 
+- `VUID-VkMemoryAllocateInfo-None-06657`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
 - `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkMemoryAllocateInfo-allocationSize-00638`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-VkMemoryAllocateInfo-flags-03330`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-VkMemoryAllocateInfo-flags-03331`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-flags-03330`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-flags-03331`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
+- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 36.
+
+- 1: checked by the safe methods in every build (the memory type's flags against protectedMemory), but no test breaks it: lavapipe has no protected memory type
+- 35: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateInfo<'a> {
