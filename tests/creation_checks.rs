@@ -353,8 +353,9 @@ fn allocation_rules_are_refused_and_the_layer_agrees() {
                 .usage(vk::BufferUsageFlags::TRANSFER_SRC),
         )
         .expect("buffer");
-    let image = unsafe {
-        s.device.create_image(
+    let image = s
+        .device
+        .create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::R8G8B8A8_UNORM)
@@ -368,8 +369,7 @@ fn allocation_rules_are_refused_and_the_layer_agrees() {
                 .samples(vk::SampleCountFlags::TYPE_1)
                 .usage(vk::ImageUsageFlags::TRANSFER_SRC),
         )
-    }
-    .expect("image");
+        .expect("image");
     let buffer_size = s
         .device
         .get_buffer_memory_requirements(&buffer)
@@ -824,6 +824,12 @@ struct ImageParts {
     usage: vk::ImageUsageFlags,
     stencil_usage: Option<vk::ImageUsageFlags>,
     view_formats: usize,
+    /// A view format other than the two `view_formats` picks from, listed third.
+    other_view: Option<vk::Format>,
+    /// Queue families of a concurrent image (exclusive when empty).
+    families: &'static [u32],
+    external: vk::ExternalMemoryHandleTypeFlags,
+    initial_layout: vk::ImageLayout,
 }
 
 const IMAGE: ImageParts = ImageParts {
@@ -841,11 +847,17 @@ const IMAGE: ImageParts = ImageParts {
     usage: vk::ImageUsageFlags::SAMPLED,
     stencil_usage: None,
     view_formats: 0,
+    other_view: None,
+    families: &[],
+    external: vk::ExternalMemoryHandleTypeFlags::empty(),
+    initial_layout: vk::ImageLayout::UNDEFINED,
 };
 
 fn create_image(s: &Setup, p: ImageParts) -> (tuff::Result<()>, Vec<String>) {
-    let formats = [p.format, vk::Format::R8G8B8A8_SRGB][..p.view_formats].to_vec();
+    let mut formats = [p.format, vk::Format::R8G8B8A8_SRGB][..p.view_formats].to_vec();
+    formats.extend(p.other_view);
     let mut list = tuff::ImageFormatListCreateInfo::new().view_formats(&formats);
+    let mut external = tuff::ExternalMemoryImageCreateInfo::new().handle_types(p.external);
     let mut stencil =
         tuff::ImageStencilUsageCreateInfo::new().stencil_usage(p.stencil_usage.unwrap_or_default());
     let mut info = tuff::ImageCreateInfo::new()
@@ -856,14 +868,23 @@ fn create_image(s: &Setup, p: ImageParts) -> (tuff::Result<()>, Vec<String>) {
         .mip_levels(p.mip_levels)
         .array_layers(p.layers)
         .samples(p.samples)
-        .usage(p.usage);
-    if p.view_formats > 0 {
+        .usage(p.usage)
+        .initial_layout(p.initial_layout);
+    if !p.families.is_empty() {
+        info = info
+            .sharing_mode(vk::SharingMode::CONCURRENT)
+            .queue_family_indices(p.families);
+    }
+    if !formats.is_empty() {
         info = info.push_next(&mut list);
+    }
+    if !p.external.is_empty() {
+        info = info.push_next(&mut external);
     }
     if p.stencil_usage.is_some() {
         info = info.push_next(&mut stencil);
     }
-    let safe = unsafe { s.device.create_image(&info) }.map(drop);
+    let safe = s.device.create_image(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_image_unchecked(&info) };
     });
@@ -1040,4 +1061,148 @@ fn image_rules_are_refused_and_the_layer_agrees() {
         v.judge(vuid, also, safe, layer);
     }
     v.finish("images");
+}
+
+#[test]
+fn image_rules_of_sharing_external_memory_and_chroma_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let two_planes = vk::Format::G8_B8R8_2PLANE_420_UNORM;
+    let cases: [(&str, &[&str], ImageParts); 13] = [
+        (
+            "VUID-VkImageCreateInfo-format-06411",
+            &["VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251"],
+            ImageParts {
+                format: two_planes,
+                samples: vk::SampleCountFlags::TYPE_4,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260",
+            &["VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251"],
+            ImageParts {
+                format: two_planes,
+                flags: vk::ImageCreateFlags::DISJOINT,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-02538",
+            &[],
+            ImageParts {
+                format: vk::Format::D32_SFLOAT_S8_UINT,
+                samples: vk::SampleCountFlags::TYPE_4,
+                usage: vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+                stencil_usage: Some(
+                    vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT | vk::ImageUsageFlags::STORAGE,
+                ),
+                ..IMAGE
+            },
+        ),
+        (
+            // Lavapipe has one queue family.
+            "VUID-VkImageCreateInfo-sharingMode-01420",
+            &[],
+            ImageParts {
+                families: &[0, 1],
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-pNext-06722",
+            &[],
+            ImageParts {
+                flags: vk::ImageCreateFlags::MUTABLE_FORMAT,
+                other_view: Some(vk::Format::R16G16B16A16_SFLOAT),
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-pNext-01443",
+            &[],
+            ImageParts {
+                external: vk::ExternalMemoryHandleTypeFlags::OPAQUE_FD,
+                initial_layout: vk::ImageLayout::PREINITIALIZED,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-pNext-00990",
+            &[],
+            ImageParts {
+                external: vk::ExternalMemoryHandleTypeFlags::D3D11_TEXTURE,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-physicalDeviceCount-01421",
+            &[],
+            ImageParts {
+                flags: vk::ImageCreateFlags::SPLIT_INSTANCE_BIND_REGIONS,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-flags-02259",
+            &["VUID-VkImageCreateInfo-physicalDeviceCount-01421"],
+            ImageParts {
+                flags: vk::ImageCreateFlags::SPLIT_INSTANCE_BIND_REGIONS,
+                layers: 2,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-06410",
+            // The format's limits allow neither.
+            &["VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251"],
+            ImageParts {
+                format: two_planes,
+                mip_levels: 2,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-06412",
+            // The format's limits allow neither.
+            &["VUID-VkImageCreateInfo-imageCreateMaxMipLevels-02251"],
+            ImageParts {
+                format: two_planes,
+                ty: vk::ImageType::TYPE_3D,
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-04712",
+            &[],
+            ImageParts {
+                format: two_planes,
+                extent: vk::Extent3D {
+                    width: 3,
+                    height: 4,
+                    depth: 1,
+                },
+                ..IMAGE
+            },
+        ),
+        (
+            "VUID-VkImageCreateInfo-format-04713",
+            &[],
+            ImageParts {
+                format: two_planes,
+                extent: vk::Extent3D {
+                    width: 4,
+                    height: 3,
+                    depth: 1,
+                },
+                ..IMAGE
+            },
+        ),
+    ];
+    let mut v = Verdicts::default();
+    for (vuid, also, parts) in cases {
+        let (safe, layer) = create_image(&s, parts);
+        v.judge(vuid, also, safe, layer);
+    }
+    v.finish("images' sharing, external memory and chroma");
 }

@@ -203,8 +203,8 @@ fn make_buffer(s: &Setup, spec: &BufferSpec) -> (tuff::Buffer, Option<tuff::Devi
 /// An image as `spec` says, with device memory bound unless it says not.
 fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceMemory>) {
     let d = &s.device;
-    let image = unsafe {
-        d.create_image(
+    let image = d
+        .create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(spec.image_type)
                 .format(spec.format)
@@ -214,8 +214,7 @@ fn make_image(s: &Setup, spec: &ImageSpec) -> (tuff::Image, Option<tuff::DeviceM
                 .samples(spec.samples)
                 .usage(spec.usage),
         )
-    }
-    .expect("image");
+        .expect("image");
     if !spec.bind {
         return (image, None);
     }
@@ -325,7 +324,7 @@ fn image_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = unsafe { s.device.create_image(&info) }.map(drop);
+    let safe = s.device.create_image(&info).map(drop);
     // SAFETY: as in `buffer_create_info`.
     let layer = under_layer(s, || {
         drop(unsafe { s.device.create_image_unchecked(&info) })

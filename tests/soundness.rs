@@ -3544,22 +3544,20 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
         .expect("buffer")
     };
     let image = || {
-        unsafe {
-            d.create_image(
-                &tuff::ImageCreateInfo::new()
-                    .image_type(vk::ImageType::TYPE_2D)
-                    .format(vk::Format::R8G8B8A8_UNORM)
-                    .extent(vk::Extent3D {
-                        width: 64,
-                        height: 64,
-                        depth: 1,
-                    })
-                    .mip_levels(1)
-                    .array_layers(1)
-                    .samples(vk::SampleCountFlags::TYPE_1)
-                    .usage(vk::ImageUsageFlags::SAMPLED),
-            )
-        }
+        d.create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 64,
+                    height: 64,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::SAMPLED),
+        )
         .expect("image")
     };
     let b = buffer();
@@ -3778,7 +3776,7 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
         "VUID-VkImageCreateInfo-samples-02258",
     ));
     for (info, rule) in &cases {
-        assert_eq!(vuid(unsafe { d.create_image(info) }), *rule, "{rule}");
+        assert_eq!(vuid(d.create_image(info)), *rule, "{rule}");
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports (its messenger says so), so the
         // driver never creates the image.
@@ -3795,7 +3793,8 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
             depth: 1,
         })
         .mip_levels(32 - optimal2d.max_extent.width.leading_zeros());
-    unsafe { d.create_image(&largest) }.expect("the largest image the limits allow");
+    d.create_image(&largest)
+        .expect("the largest image the limits allow");
     assert_silent(&s.messages);
 }
 
@@ -3814,8 +3813,8 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     // 4x4 RGBA8 texels are 64 bytes: exactly the buffer.
     let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
     let (buffer, _memory) = host_buffer(&s, 64, usage);
-    let image = unsafe {
-        d.create_image(
+    let image = d
+        .create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::R8G8B8A8_UNORM)
@@ -3829,8 +3828,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                 .samples(vk::SampleCountFlags::TYPE_1)
                 .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST),
         )
-    }
-    .expect("image");
+        .expect("image");
     let _image_memory = s.bind_image(&image);
     let layer = vk::ImageSubresourceLayers {
         aspect_mask: vk::ImageAspectFlags::COLOR,

@@ -1271,6 +1271,53 @@ fn acquire_and_present_take_binary_semaphores() {
     assert_silent(&s.messages);
 }
 
+/// An image made for a swapchain's memory has the swapchain's implied image
+/// parameters: one of another format is refused.
+#[test]
+fn an_image_for_a_swapchain_has_its_parameters() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let info = swapchain_info(&s, &surface);
+    let (format, extent, usage) = {
+        let raw = info.as_raw();
+        (raw.image_format, raw.image_extent, raw.image_usage)
+    };
+    let swapchain = unsafe { s.device.create_swapchain_khr(&surface, &info) }.expect("swapchain");
+    let other = if format == vk::Format::B8G8R8A8_UNORM {
+        vk::Format::R8G8B8A8_UNORM
+    } else {
+        vk::Format::B8G8R8A8_UNORM
+    };
+    let mut of_swapchain = tuff::ImageSwapchainCreateInfoKHR::new().swapchain(Some(&swapchain));
+    let image = tuff::ImageCreateInfo::new()
+        .image_type(vk::ImageType::TYPE_2D)
+        .format(other)
+        .extent(vk::Extent3D {
+            width: extent.width,
+            height: extent.height,
+            depth: 1,
+        })
+        .mip_levels(1)
+        .array_layers(1)
+        .samples(vk::SampleCountFlags::TYPE_1)
+        .usage(usage)
+        .push_next(&mut of_swapchain);
+    let rule = "VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995";
+    assert_eq!(refused(s.device.create_image(&image).map(drop)), rule);
+    // The 1.3.239 layer does not check the rule: it is proven by the error alone
+    // (lavapipe makes a plain image of the other format).
+    s.messages.take();
+    // SAFETY: lavapipe reads nothing of the swapchain for a plain image.
+    let made = unsafe { s.device.create_image_unchecked(&image) };
+    assert!(made.is_ok() && s.messages.take().is_empty());
+    drop(made);
+    drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
 /// The VUID of a refused call.
 fn refused<T: std::fmt::Debug>(r: tuff::Result<T>) -> &'static str {
     match r {

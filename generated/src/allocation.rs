@@ -269,6 +269,9 @@ impl Device {
             "a protected image needs protected memory, which the allocators do not give",
         )?;
         refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
+        // `create_image` is safe in the pinned configuration and `unsafe` in wider
+        // ones.
+        #[allow(unused_unsafe)]
         // SAFETY: the caller upholds the rules `create_image` lists.
         let image = unsafe { self.create_image(info) }?;
         let requirements = self.get_image_memory_requirements(&image)?;

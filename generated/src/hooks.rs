@@ -688,6 +688,14 @@ pub(crate) fn image_created(
     image: Image,
     create_info: &ImageCreateInfo<'_>,
 ) -> Image {
+    if create_info
+        .flags
+        .contains(vk::ImageCreateFlags::SPARSE_BINDING)
+    {
+        // What the creation's check counted, so the total stays what it checks.
+        let required = sparse_image_requirement(device, create_info.as_raw());
+        device.live().sparse_created(image.raw(), required);
+    }
     device.live().image_created(
         image.raw(),
         ImageRecord {
@@ -699,11 +707,30 @@ pub(crate) fn image_created(
             array_layers: create_info.array_layers,
             usage: create_info.usage,
             tiling: create_info.tiling,
+            sharing: create_info.sharing_mode,
+            families: family_bits(create_info.sharing_mode, create_info.as_raw()),
             bound: false,
             external: external_handle_types(create_info.as_raw().p_next),
         },
     );
     image
+}
+
+/// The queue families of a concurrent resource as bits (see `ImageRecord::families`).
+fn family_bits(sharing: vk::SharingMode, info: &vk::ImageCreateInfo<'_>) -> u64 {
+    if sharing != vk::SharingMode::CONCURRENT {
+        return 0;
+    }
+    // SAFETY: the safe setter stores the indices with their count.
+    let families = unsafe {
+        crate::retention::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
+    };
+    families
+        .iter()
+        .fold(0, |bits, &f| match 1u64.checked_shl(f) {
+            Some(bit) => bits | bit,
+            None => u64::MAX,
+        })
 }
 
 /// The handle types a chained `VkExternalMemoryBufferCreateInfo` or
@@ -729,6 +756,23 @@ fn external_handle_types(next: *const core::ffi::c_void) -> vk::ExternalMemoryHa
         .unwrap_or_default()
 }
 
+/// The image creation flags a swapchain's flags imply for its images (the
+/// specification's implied image creation parameters).
+#[cfg(feature = "khr_swapchain")]
+fn swapchain_image_flags(flags: vk::SwapchainCreateFlagsKHR) -> vk::ImageCreateFlags {
+    let mut image = vk::ImageCreateFlags::empty();
+    if flags.contains(vk::SwapchainCreateFlagsKHR::SPLIT_INSTANCE_BIND_REGIONS) {
+        image |= vk::ImageCreateFlags::SPLIT_INSTANCE_BIND_REGIONS;
+    }
+    if flags.contains(vk::SwapchainCreateFlagsKHR::PROTECTED) {
+        image |= vk::ImageCreateFlags::PROTECTED;
+    }
+    if flags.contains(vk::SwapchainCreateFlagsKHR::MUTABLE_FORMAT) {
+        image |= vk::ImageCreateFlags::MUTABLE_FORMAT | vk::ImageCreateFlags::EXTENDED_USAGE;
+    }
+    image
+}
+
 /// The device remembers what the swapchain's images are, as the images a
 /// `VkImageCreateInfo` of its parameters would make (2D, one level, its extent,
 /// layers and usage, bound), for [`swapchain_images`].
@@ -741,7 +785,7 @@ pub(crate) fn swapchain_created(
     device.live().swapchain_created(
         swapchain.raw(),
         ImageRecord {
-            flags: vk::ImageCreateFlags::empty(),
+            flags: swapchain_image_flags(create_info.flags),
             image_type: vk::ImageType::TYPE_2D,
             format: create_info.image_format,
             extent: vk::Extent3D {
@@ -753,6 +797,19 @@ pub(crate) fn swapchain_created(
             array_layers: create_info.image_array_layers,
             usage: create_info.image_usage,
             tiling: vk::ImageTiling::OPTIMAL,
+            sharing: create_info.image_sharing_mode,
+            families: family_bits(
+                create_info.image_sharing_mode,
+                &vk::ImageCreateInfo::default().queue_family_indices(
+                    // SAFETY: the safe setter stores the indices with their count.
+                    unsafe {
+                        crate::retention::raw_slice(
+                            create_info.p_queue_family_indices,
+                            create_info.queue_family_index_count,
+                        )
+                    },
+                ),
+            ),
             bound: true,
             external: vk::ExternalMemoryHandleTypeFlags::empty(),
         },
@@ -785,7 +842,7 @@ pub(crate) fn buffer_created(
         .contains(vk::BufferCreateFlags::SPARSE_BINDING)
     {
         let required = sparse_requirement(device, create_info);
-        device.live().sparse_buffer_created(buffer.raw(), required);
+        device.live().sparse_created(buffer.raw(), required);
     }
     device.live().buffer_created(
         buffer.raw(),
@@ -5266,6 +5323,64 @@ fn sparse_requirement(device: &Device, create_info: &BufferCreateInfo<'_>) -> u6
             .get_device_buffer_memory_requirements(&info, &mut out)
     };
     out.memory_requirements.size
+}
+
+/// The memory a sparse image of this create info requires, from
+/// `vkGetDeviceImageMemoryRequirements` (without creating it), or, where the device
+/// is older than Vulkan 1.3, a bound above it: every texel of every level, layer and
+/// sample at the bytes of all its aspects' blocks and at least 16, rounded up to
+/// 64 KiB, the largest sparse block size.
+pub(crate) fn sparse_image_requirement(device: &Device, info: &vk::ImageCreateInfo<'_>) -> u64 {
+    let planes = crate::formats::aspects(info.format)
+        .filter(|_| info.flags.contains(vk::ImageCreateFlags::DISJOINT))
+        .map_or(0, |a| (a.as_raw() >> 4).count_ones());
+    if vulkan13_properties(device).is_some() {
+        // A disjoint image's planes are asked for one by one.
+        let aspects: Vec<vk::ImageAspectFlags> = if planes == 0 {
+            vec![vk::ImageAspectFlags::NONE]
+        } else {
+            (0..planes)
+                .map(|p| vk::ImageAspectFlags::from_raw(0x10 << p))
+                .collect()
+        };
+        return aspects
+            .into_iter()
+            .map(|plane| {
+                let asked = vk::DeviceImageMemoryRequirements::default()
+                    .create_info(info)
+                    .plane_aspect(plane);
+                let mut out = vk::MemoryRequirements2::default();
+                // SAFETY: a live Vulkan 1.3 device; the create info passed the
+                // implicit checks, and a disjoint one's plane is named.
+                unsafe {
+                    device
+                        .fns()
+                        .get_device_image_memory_requirements(&asked, &mut out)
+                };
+                out.memory_requirements.size
+            })
+            .fold(0, u64::saturating_add);
+    }
+    let aspects = crate::formats::aspects(info.format).unwrap_or(vk::ImageAspectFlags::COLOR);
+    let bytes = (0..7)
+        .map(|b| vk::ImageAspectFlags::from_raw(1 << b))
+        .filter(|a| aspects.contains(*a))
+        .filter_map(|a| crate::formats::block(info.format, a).map(|b| u64::from(b.0)))
+        .sum::<u64>()
+        .max(16);
+    let e = info.extent;
+    let texels: u64 = (0..info.mip_levels.min(32))
+        .map(|l| {
+            u64::from((e.width >> l).max(1))
+                * u64::from((e.height >> l).max(1))
+                * u64::from((e.depth >> l).max(1))
+        })
+        .sum();
+    let total = texels
+        .saturating_mul(bytes)
+        .saturating_mul(u64::from(info.array_layers))
+        .saturating_mul(u64::from(info.samples.as_raw().max(1)));
+    total.div_ceil(1 << 16).saturating_mul(1 << 16)
 }
 
 /// A buffer's creation: its size within `maxBufferSize`, its queue families, the

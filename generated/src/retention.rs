@@ -69,9 +69,9 @@ pub(crate) struct Live {
     /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
     /// host may not set, reset or read.
     device_only_events: Vutex<std::collections::HashSet<u64>>,
-    /// The memory each live sparse buffer requires, and their sum, which
+    /// The memory each live sparse buffer or image requires, and their sum, which
     /// `sparseAddressSpaceSize` bounds.
-    sparse_buffers: Vutex<HashMap<u64, u64>>,
+    sparse_resources: Vutex<HashMap<(vk::ObjectType, u64), u64>>,
     sparse_total: Vutex<u64>,
     /// What the recorder needs of each live render pass.
     render_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
@@ -257,6 +257,11 @@ pub(crate) struct ImageRecord {
     pub usage: vk::ImageUsageFlags,
     /// `VkImageCreateInfo::tiling`.
     pub tiling: vk::ImageTiling,
+    /// `VkImageCreateInfo::sharingMode`.
+    pub sharing: vk::SharingMode,
+    /// The queue families of a concurrent image, as bits (`u64::MAX` when one is 64
+    /// or more, which matches no other set).
+    pub families: u64,
     /// Whether memory is bound to it.
     pub bound: bool,
     /// `VkExternalMemoryImageCreateInfo::handleTypes`.
@@ -275,7 +280,7 @@ impl Default for Live {
             timelines: Vutex::new(std::collections::HashSet::new()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),
-            sparse_buffers: Vutex::new(HashMap::default()),
+            sparse_resources: Vutex::new(HashMap::default()),
             sparse_total: Vutex::new(0),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
@@ -347,8 +352,10 @@ impl Live {
     }
 
     /// Records a new sparse buffer's required memory.
-    pub(crate) fn sparse_buffer_created(&self, raw: vk::Buffer, size: u64) {
-        self.sparse_buffers.lock().insert(raw.as_raw(), size);
+    pub(crate) fn sparse_created<H: vk::Handle>(&self, raw: H, size: u64) {
+        self.sparse_resources
+            .lock()
+            .insert((H::TYPE, raw.as_raw()), size);
         *self.sparse_total.lock() += size;
     }
 
@@ -429,12 +436,15 @@ impl Live {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
                 self.buffers.lock().remove(&key.1);
-                if let Some(size) = self.sparse_buffers.lock().remove(&key.1) {
+                if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
                 }
             }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);
+                if let Some(size) = self.sparse_resources.lock().remove(&key) {
+                    *self.sparse_total.lock() -= size;
+                }
             }
             vk::ObjectType::SHADER_MODULE => {
                 let record = self.shader_modules.lock().remove(&key.1);
@@ -638,6 +648,12 @@ impl Live {
     #[cfg(feature = "khr_swapchain")]
     pub(crate) fn swapchain_created(&self, raw: vk::SwapchainKHR, images: ImageRecord) {
         self.swapchains.lock().insert(raw.as_raw(), images);
+    }
+
+    /// The image record a swapchain's images get.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn swapchain(&self, raw: vk::SwapchainKHR) -> Option<ImageRecord> {
+        self.swapchains.lock().get(&raw.as_raw()).copied()
     }
 
     /// Records a swapchain's images, as it was created, once they are wrapped.

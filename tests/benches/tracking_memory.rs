@@ -95,22 +95,20 @@ fn main() {
     rows.push((
         "image",
         per_object(|| {
-            unsafe {
-                d.create_image(
-                    &tuff::ImageCreateInfo::new()
-                        .image_type(vk::ImageType::TYPE_2D)
-                        .format(vk::Format::R8G8B8A8_UNORM)
-                        .extent(vk::Extent3D {
-                            width: 4,
-                            height: 4,
-                            depth: 1,
-                        })
-                        .mip_levels(1)
-                        .array_layers(1)
-                        .samples(vk::SampleCountFlags::TYPE_1)
-                        .usage(vk::ImageUsageFlags::SAMPLED),
-                )
-            }
+            d.create_image(
+                &tuff::ImageCreateInfo::new()
+                    .image_type(vk::ImageType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .extent(vk::Extent3D {
+                        width: 4,
+                        height: 4,
+                        depth: 1,
+                    })
+                    .mip_levels(1)
+                    .array_layers(1)
+                    .samples(vk::SampleCountFlags::TYPE_1)
+                    .usage(vk::ImageUsageFlags::SAMPLED),
+            )
             .expect("image")
         }),
     ));

@@ -342,8 +342,8 @@ impl Setup {
     /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
     pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
         let d = &self.device;
-        let image = unsafe {
-            d.create_image(
+        let image = d
+            .create_image(
                 &tuff::ImageCreateInfo::new()
                     .image_type(vk::ImageType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -357,8 +357,7 @@ impl Setup {
                     .samples(vk::SampleCountFlags::TYPE_1)
                     .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
             )
-        }
-        .expect("image");
+            .expect("image");
         let memory = self.bind_image(&image);
         let view = unsafe {
             d.create_image_view(

@@ -1079,6 +1079,277 @@ pub(crate) fn image_create_rules(device: &Device, create_info: &ImageCreateInfo<
                 ),
             )?;
         }
+        // SAFETY: the safe setter stores the formats with their count.
+        let views =
+            unsafe { crate::retention::raw_slice(list.p_view_formats, list.view_format_count) };
+        let class = crate::formats::class(info.format);
+        let block_texel = flags.contains(vk::ImageCreateFlags::BLOCK_TEXEL_VIEW_COMPATIBLE);
+        let size = crate::formats::block(info.format, vk::ImageAspectFlags::COLOR).map(|b| b.0);
+        for (i, v) in views.iter().enumerate() {
+            let same_class = class.is_some() && crate::formats::class(*v) == class;
+            let size_compatible = block_texel
+                && !compressed(*v)
+                && size.is_some()
+                && crate::formats::block(*v, vk::ImageAspectFlags::COLOR).map(|b| b.0) == size;
+            if !same_class && !size_compatible {
+                refuse(
+                    "VUID-VkImageCreateInfo-pNext-06722",
+                    format!("pViewFormats[{i}] ({v:?}) is not compatible with the image's format ({:?})", info.format),
+                )?;
+            }
+        }
+    }
+    sharing_and_group_rules(device, info)?;
+    chroma_rules(device, info, stencil)?;
+    #[cfg(feature = "khr_swapchain")]
+    swapchain_image_rules(device, info)?;
+    Ok(())
+}
+
+/// An image made for a swapchain's memory has the swapchain's implied image
+/// creation parameters (`VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`).
+#[cfg(feature = "khr_swapchain")]
+fn swapchain_image_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+    let chained: Option<&vk::ImageSwapchainCreateInfoKHR<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::IMAGE_SWAPCHAIN_CREATE_INFO_KHR,
+        )
+    };
+    let Some(swapchain) = chained
+        .map(|c| c.swapchain)
+        .filter(|s| *s != vk::SwapchainKHR::null())
+    else {
+        return Ok(());
+    };
+    let Some(implied) = device.live().swapchain(swapchain) else {
+        return Ok(());
+    };
+    let made = crate::retention::ImageRecord {
+        flags: info.flags,
+        image_type: info.image_type,
+        format: info.format,
+        extent: info.extent,
+        mip_levels: info.mip_levels,
+        array_layers: info.array_layers,
+        usage: info.usage,
+        tiling: info.tiling,
+        sharing: info.sharing_mode,
+        families: family_bits(info.sharing_mode, info),
+        bound: implied.bound,
+        external: implied.external,
+    };
+    let matches = made.flags == implied.flags
+        && made.image_type == implied.image_type
+        && made.format == implied.format
+        && made.extent == implied.extent
+        && made.mip_levels == implied.mip_levels
+        && made.array_layers == implied.array_layers
+        && made.usage == implied.usage
+        && made.tiling == implied.tiling
+        && made.sharing == implied.sharing
+        && made.families == implied.families
+        && info.samples == vk::SampleCountFlags::TYPE_1
+        && info.initial_layout == vk::ImageLayout::UNDEFINED;
+    if !matches {
+        refuse(
+            "VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995",
+            format!("the image's parameters ({made:?}, {:?}, {:?}) are not the swapchain's implied ones ({implied:?}, one sample, UNDEFINED)", info.samples, info.initial_layout),
+        )?;
+    }
+    Ok(())
+}
+
+/// An image's sharing, sparse, external and device-group parameters against each
+/// other and the device.
+fn sharing_and_group_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> Result<()> {
+    let flags = info.flags;
+    if info.sharing_mode == vk::SharingMode::CONCURRENT {
+        // SAFETY: the safe setter stores the indices with their count.
+        let families = unsafe {
+            crate::retention::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
+        };
+        concurrent_families(
+            device.parent(),
+            families,
+            "VUID-VkImageCreateInfo-sharingMode-01420",
+        )?;
+    }
+    let sparse = vk::ImageCreateFlags::SPARSE_BINDING
+        | vk::ImageCreateFlags::SPARSE_RESIDENCY
+        | vk::ImageCreateFlags::SPARSE_ALIASED;
+    if flags.contains(vk::ImageCreateFlags::SPARSE_BINDING) {
+        let required = crate::hooks::sparse_image_requirement(device, info);
+        let total = device.live().sparse_total();
+        let limit = limits(device).sparse_address_space_size;
+        if total.saturating_add(required) > limit {
+            refuse(
+                "VUID-vkCreateImage-flags-00939",
+                format!("this sparse image requires {required} bytes, which with the {total} live sparse resources require is more than sparseAddressSpaceSize ({limit})"),
+            )?;
+        }
+    }
+    if flags.intersects(sparse) {
+        if info
+            .usage
+            .contains(vk::ImageUsageFlags::TRANSIENT_ATTACHMENT)
+        {
+            refuse(
+                "VUID-VkImageCreateInfo-None-01925",
+                format!("a sparse image ({flags:?}) is not a transient attachment"),
+            )?;
+        }
+        if flags.contains(vk::ImageCreateFlags::PROTECTED) {
+            refuse(
+                "VUID-VkImageCreateInfo-None-01891",
+                format!("a sparse image ({flags:?}) is not protected"),
+            )?;
+        }
+    }
+    let split = vk::ImageCreateFlags::SPLIT_INSTANCE_BIND_REGIONS;
+    if flags.contains(split) {
+        let maybe_linear = info.tiling == vk::ImageTiling::LINEAR;
+        if info.mip_levels != 1
+            || info.array_layers != 1
+            || info.image_type != vk::ImageType::TYPE_2D
+            || maybe_linear
+        {
+            refuse(
+                "VUID-VkImageCreateInfo-flags-02259",
+                format!("an image with SPLIT_INSTANCE_BIND_REGIONS is an optimal 2D image of one level and one layer (mipLevels = {}, arrayLayers = {}, {:?}, {:?})", info.mip_levels, info.array_layers, info.image_type, info.tiling),
+            )?;
+        }
+        if device.live().physical_count() == 1 {
+            refuse(
+                "VUID-VkImageCreateInfo-physicalDeviceCount-01421",
+                "an image with SPLIT_INSTANCE_BIND_REGIONS needs a device of more than one physical device".into(),
+            )?;
+        }
+    }
+    let external = external_handle_types(info.p_next);
+    if !external.is_empty() && info.initial_layout != vk::ImageLayout::UNDEFINED {
+        refuse(
+            "VUID-VkImageCreateInfo-pNext-01443",
+            format!(
+                "an image with external handle types starts in UNDEFINED, not {:?}",
+                info.initial_layout
+            ),
+        )?;
+    }
+    let physical = device.parent();
+    for handle in each_bit(external) {
+        let mut asked = vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(handle);
+        let format_info = vk::PhysicalDeviceImageFormatInfo2::default()
+            .format(info.format)
+            .ty(info.image_type)
+            .tiling(info.tiling)
+            .usage(info.usage)
+            .flags(info.flags)
+            .push_next(&mut asked);
+        let mut props = vk::ExternalImageFormatProperties::default();
+        let mut out = vk::ImageFormatProperties2::default().push_next(&mut props);
+        // SAFETY: a live physical device of a Vulkan 1.1 instance (the external
+        // struct is core 1.1, which chaining it required); the chains are local.
+        let r = unsafe {
+            (physical
+                .parent()
+                .fns()
+                .fp_v1_1()
+                .get_physical_device_image_format_properties2)(
+                physical.raw(),
+                &format_info,
+                &mut out,
+            )
+        };
+        let compatible = props.external_memory_properties.compatible_handle_types;
+        if r != vk::Result::SUCCESS || !compatible.contains(external) {
+            refuse(
+                "VUID-VkImageCreateInfo-pNext-00990",
+                format!("the external handle types {external:?} are not all compatible with {handle:?} for this image: the physical device reports {compatible:?} ({r:?})"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The rules of formats that need a sampler Y'CbCr conversion and of multi-planar
+/// ones, and of a multisampled depth/stencil image's stencil storage usage.
+fn chroma_rules(
+    device: &Device,
+    info: &vk::ImageCreateInfo<'_>,
+    stencil: Option<&vk::ImageStencilUsageCreateInfo<'_>>,
+) -> Result<()> {
+    let (format, e) = (info.format, info.extent);
+    if let Some(chroma) = crate::formats::chroma(format) {
+        if info.mip_levels != 1 {
+            refuse(
+                "VUID-VkImageCreateInfo-format-06410",
+                format!("an image of {format:?}, which needs a Y'CbCr conversion, has one level, not {}", info.mip_levels),
+            )?;
+        }
+        if info.samples != vk::SampleCountFlags::TYPE_1 {
+            refuse(
+                "VUID-VkImageCreateInfo-format-06411",
+                format!("an image of {format:?}, which needs a Y'CbCr conversion, has one sample, not {:?}", info.samples),
+            )?;
+        }
+        if info.image_type != vk::ImageType::TYPE_2D {
+            refuse(
+                "VUID-VkImageCreateInfo-format-06412",
+                format!(
+                    "an image of {format:?}, which needs a Y'CbCr conversion, is 2D, not {:?}",
+                    info.image_type
+                ),
+            )?;
+        }
+        if matches!(chroma, 420 | 422) && e.width % 2 != 0 {
+            refuse(
+                "VUID-VkImageCreateInfo-format-04712",
+                format!("an image of {format:?} has an even width, not {}", e.width),
+            )?;
+        }
+        if chroma == 420 && e.height % 2 != 0 {
+            refuse(
+                "VUID-VkImageCreateInfo-format-04713",
+                format!(
+                    "an image of {format:?} has an even height, not {}",
+                    e.height
+                ),
+            )?;
+        }
+    }
+    let multi_planar =
+        crate::formats::aspects(format).is_some_and(|a| a.contains(vk::ImageAspectFlags::PLANE_0));
+    if multi_planar && info.flags.contains(vk::ImageCreateFlags::DISJOINT) {
+        let props = device
+            .parent()
+            .get_physical_device_format_properties(format)?;
+        let features = if info.tiling == vk::ImageTiling::LINEAR {
+            props.linear_tiling_features
+        } else {
+            props.optimal_tiling_features
+        };
+        if !features.contains(vk::FormatFeatureFlags::DISJOINT) {
+            refuse(
+                "VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260",
+                format!("a disjoint image of {format:?} needs VK_FORMAT_FEATURE_DISJOINT_BIT, which the format's {:?} features lack", info.tiling),
+            )?;
+        }
+    }
+    let depth_stencil = crate::formats::aspects(format)
+        .is_some_and(|a| a.intersects(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL));
+    let storage_stencil =
+        stencil.is_some_and(|s| s.stencil_usage.contains(vk::ImageUsageFlags::STORAGE));
+    if depth_stencil
+        && storage_stencil
+        && info.samples != vk::SampleCountFlags::TYPE_1
+        && device.live().features().shader_storage_image_multisample == vk::FALSE
+    {
+        refuse(
+            "VUID-VkImageCreateInfo-format-02538",
+            format!("a multisampled ({:?}) depth/stencil image with a storage stencil usage needs shaderStorageImageMultisample", info.samples),
+        )?;
     }
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! Emits `src/generated/formats.rs`: the aspects each `VkFormat` has, from the
 //! registry's `<formats>`, for the checks of rules about a format's kind (a color
-//! format, a depth/stencil one) and about the aspects an image has.
+//! format, a depth/stencil one) and about the aspects an image has, with its
+//! compatibility class and chroma subsampling.
 
 use crate::model::Model;
 use proc_macro2::{Literal, TokenStream};
@@ -90,32 +91,52 @@ fn block_arms(model: &Model) -> Vec<TokenStream> {
         .collect()
 }
 
-pub(super) fn emit(model: &Model) -> TokenStream {
-    // Formats by number, grouped into runs of consecutive numbers with the same
-    // aspects.
+/// Match arms `number => value` over the registry's formats, consecutive numbers
+/// with one value as a range; formats `value` gives `None` for are left out.
+fn value_arms(
+    model: &Model,
+    value: impl Fn(&crate::model::Format) -> Option<u32>,
+) -> Vec<TokenStream> {
     let mut by_number: Vec<(i64, u32)> = model
         .formats
         .iter()
-        .filter_map(|f| Some((*model.enum_numbers.get(&f.name)?, aspect_bits(f))))
+        .filter_map(|f| Some((*model.enum_numbers.get(&f.name)?, value(f)?)))
         .collect();
     by_number.sort_unstable();
     by_number.dedup_by_key(|(n, _)| *n);
     let mut runs: Vec<(i64, i64, u32)> = Vec::new();
-    for (n, bits) in by_number {
+    for (n, v) in by_number {
         match runs.last_mut() {
-            Some((_, end, b)) if *end + 1 == n && *b == bits => *end = n,
-            _ => runs.push((n, n, bits)),
+            Some((_, end, b)) if *end + 1 == n && *b == v => *end = n,
+            _ => runs.push((n, n, v)),
         }
     }
-    let arms = runs.iter().map(|(a, b, bits)| {
-        let (la, lb) = (Literal::i64_unsuffixed(*a), Literal::i64_unsuffixed(*b));
-        let bits = Literal::u32_unsuffixed(*bits);
-        if a == b {
-            quote!(#la => #bits,)
-        } else {
-            quote!(#la..=#lb => #bits,)
-        }
+    runs.iter()
+        .map(|(a, b, v)| {
+            let (la, lb) = (Literal::i64_unsuffixed(*a), Literal::i64_unsuffixed(*b));
+            let v = Literal::u32_unsuffixed(*v);
+            if a == b {
+                quote!(#la => #v,)
+            } else {
+                quote!(#la..=#lb => #v,)
+            }
+        })
+        .collect()
+}
+
+pub(super) fn emit(model: &Model) -> TokenStream {
+    let arms = value_arms(model, |f| Some(aspect_bits(f)));
+    // Classes are numbered in name order, so the numbers are stable for a registry.
+    let mut classes: Vec<&str> = model.formats.iter().map(|f| f.class.as_str()).collect();
+    classes.sort_unstable();
+    classes.dedup();
+    let class_arms = value_arms(model, |f| {
+        classes
+            .binary_search(&f.class.as_str())
+            .ok()
+            .map(|i| i as u32)
     });
+    let chroma_arms = value_arms(model, |f| f.chroma.as_deref()?.parse().ok());
     let blocks = block_arms(model);
     quote! {
         //! The aspects of each format the registry describes, and the texel blocks
@@ -143,6 +164,25 @@ pub(super) fn emit(model: &Model) -> TokenStream {
                 _ => return None,
             };
             Some(vk::ImageAspectFlags::from_raw(bits))
+        }
+
+        /// The number of `format`'s compatibility class (vk.xml's `class`): formats
+        /// with the same number are compatible. `None` for a format the registry does
+        /// not describe.
+        pub(crate) fn class(format: vk::Format) -> Option<u32> {
+            Some(match format.as_raw() {
+                #(#class_arms)*
+                _ => return None,
+            })
+        }
+
+        /// For a format that needs a sampler Y'CbCr conversion, its chroma
+        /// subsampling (420, 422 or 444, vk.xml's `chroma`); `None` for any other.
+        pub(crate) fn chroma(format: vk::Format) -> Option<u32> {
+            Some(match format.as_raw() {
+                #(#chroma_arms)*
+                _ => return None,
+            })
         }
     }
 }

@@ -230,7 +230,11 @@ const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build,
 const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
 const UNPROVEN_PROTECTED_QUEUES: &str = "checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first";
 const UNPROVEN_INLINE_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: the tests' only device with inlineUniformBlock enables every feature lavapipe has, update-after-bind of inline uniform blocks included";
-const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format against each other, the attachment limits, and a chained stencil usage or format list (before the checks that ask the physical device about the image)";
+const IMAGE_EXTERNAL: &str = "checks each external handle type against the external memory properties the physical device reports for the image's parameters and that type (the 1.3.239 layer does not check it: proven by the error alone)";
+const IMAGE_CHROMA: &str = "checks a format that needs a sampler Y'CbCr conversion (vk.xml's `chroma`) against the image's levels, samples, type and extent, and a disjoint multi-planar image against the format's features";
+const IMAGE_OF_SWAPCHAIN: &str = "checks the image's parameters against the implied image creation parameters of the swapchain, recorded at its creation (the 1.3.239 layer does not check it: proven by the error alone)";
+const UNPROVEN_SPARSE_IMAGES: &str = "checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first";
+const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format against each other, the attachment limits, the queue families, the device's physical devices, and a chained stencil usage, format list or external memory struct (before the checks that ask the physical device about the image)";
 const STAGE_BITS: &str = "checks the stages are of the emitted API (the graphics stages and compute) or VK_SHADER_STAGE_ALL (the 1.3.239 layer does not check bits no extension defines: proven by the error alone)";
 const IMMUTABLE_SAMPLERS: &str = "the safe binding's `immutable_samplers` setter stores the sampler wrappers with their count as descriptorCount, and `descriptor_count` clears them when it sets another count";
 const UNPROVEN_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors, so a binding updated after bind is refused for the missing feature first";
@@ -687,6 +691,23 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkImageCreateInfo-mipLevels-02255", How::User(UNPROVEN)),
             ("VUID-VkImageCreateInfo-arrayLayers-02256", How::Dynamic(IMAGE_LIMITS)),
             ("VUID-VkImageCreateInfo-samples-02258", How::Dynamic(IMAGE_LIMITS)),
+            ("VUID-VkImageCreateInfo-pNext-06722", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-sharingMode-01420", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-pNext-01443", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-pNext-00990", How::Dynamic(IMAGE_EXTERNAL)),
+            ("VUID-VkImageCreateInfo-physicalDeviceCount-01421", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-flags-02259", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageCreateInfo-format-06410", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-format-06411", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-format-06412", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-format-04712", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-format-04713", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-imageCreateFormatFeatures-02260", How::Dynamic(IMAGE_CHROMA)),
+            ("VUID-VkImageCreateInfo-format-02538", How::Dynamic(IMAGE_RULES)),
+            ("VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995", How::Dynamic(IMAGE_OF_SWAPCHAIN)),
+            ("VUID-vkCreateImage-flags-00939", How::User(UNPROVEN_SPARSE_IMAGES)),
+            ("VUID-VkImageCreateInfo-None-01925", How::User(UNPROVEN_SPARSE_IMAGES)),
+            ("VUID-VkImageCreateInfo-None-01891", How::User(UNPROVEN_SPARSE_IMAGES)),
         ],
         ..NONE
     },

@@ -365,6 +365,8 @@ fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
         planes: plane_formats.len() as u8,
         plane_formats,
         bits,
+        class: f.class,
+        chroma: f.chroma,
     }
 }
 

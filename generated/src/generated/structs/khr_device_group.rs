@@ -221,10 +221,9 @@ for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 
 The rules are on [`VkImageSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSwapchainCreateInfoKHR.html). Settled by the wrappers:
 
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: dynamic (checks the image's parameters against the implied image creation parameters of the swapchain, recorded at its creation (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-VkImageSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
