@@ -545,11 +545,10 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
             .device
             .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
             .expect("pool");
-        let first = unsafe {
-            s.device
-                .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
-        }
-        .expect("swapchain");
+        let first = s
+            .device
+            .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+            .expect("swapchain");
         assert!(first.presents_to(&surface));
         let mut bag = present_one_frame(&s, &first, &pool);
         // The recreate path after a resize: the new swapchain retires the old one, and
@@ -593,8 +592,10 @@ fn recreate_refuses_another_surface() {
     let s = setup_with(true, Wsi::Xlib);
     // Both windows outlive every object made from their surfaces.
     let (a, b) = (xlib_surface(&s, &window_a), xlib_surface(&s, &window_b));
-    let swapchain =
-        unsafe { s.device.create_swapchain_khr(&a, &swapchain_info(&s, &a)) }.expect("swapchain");
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&a, &swapchain_info(&s, &a))
+        .expect("swapchain");
     assert!(!swapchain.presents_to(&b));
     match unsafe { swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) } {
         Err(tuff::Error::Validation { vuid, .. }) => {
@@ -1207,11 +1208,10 @@ fn acquire_and_present_take_binary_semaphores() {
     let s = setup_with(true, Wsi::Xlib);
     let window = x11_window::X11Window::open(32, 32);
     let surface = xlib_surface(&s, &window);
-    let swapchain = unsafe {
-        s.device
-            .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
-    }
-    .expect("swapchain");
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        .expect("swapchain");
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
         .initial_value(0);
@@ -1284,7 +1284,10 @@ fn an_image_for_a_swapchain_has_its_parameters() {
         let raw = info.as_raw();
         (raw.image_format, raw.image_extent, raw.image_usage)
     };
-    let swapchain = unsafe { s.device.create_swapchain_khr(&surface, &info) }.expect("swapchain");
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&surface, &info)
+        .expect("swapchain");
     let other = if format == vk::Format::B8G8R8A8_UNORM {
         vk::Format::R8G8B8A8_UNORM
     } else {
@@ -1314,6 +1317,178 @@ fn an_image_for_a_swapchain_has_its_parameters() {
     assert!(made.is_ok() && s.messages.take().is_empty());
     drop(made);
     drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// A swapchain's create info is checked against what the surface reports, and an
+/// old swapchain against its surface and whether it was retired; the layer names
+/// each rule the test's window can break (or says nothing: proven by the error).
+#[test]
+fn swapchain_creation_is_checked_against_the_surface_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let p = &s.physical;
+    let caps = p
+        .get_physical_device_surface_capabilities_khr(&surface)
+        .expect("capabilities");
+    let formats = p
+        .get_physical_device_surface_formats_khr(Some(&surface))
+        .expect("formats");
+    let modes = p
+        .get_physical_device_surface_present_modes_khr(Some(&surface))
+        .expect("present modes");
+    let valid = swapchain_info(&s, &surface);
+    let unoffered_format = [vk::Format::R16G16B16A16_SFLOAT, vk::Format::R8G8B8A8_SNORM]
+        .into_iter()
+        .find(|f| formats.iter().all(|o| o.format != *f))
+        .expect("a format the surface does not offer");
+    let bit_outside = |set: u32| {
+        (0..32)
+            .map(|b| 1u32 << b)
+            .find(|b| set & b == 0)
+            .unwrap_or(0)
+    };
+    let big = vk::Extent2D {
+        width: caps.max_image_extent.width + 1,
+        height: caps.max_image_extent.height,
+    };
+    let mut cases: Vec<(&str, &[&str], tuff::SwapchainCreateInfoKHR<'_>)> = vec![
+        (
+            "VUID-VkSwapchainCreateInfoKHR-minImageCount-01271",
+            &[],
+            valid.min_image_count(caps.min_image_count - 1),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-imageFormat-01273",
+            &[],
+            valid.image_format(unoffered_format),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-imageExtent-01689",
+            &["VUID-VkSwapchainCreateInfoKHR-imageExtent-01274"],
+            valid.image_extent(vk::Extent2D::default()),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-imageExtent-01274",
+            &[],
+            valid.image_extent(big),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275",
+            &[],
+            valid.image_array_layers(caps.max_image_array_layers + 1),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-presentMode-01427",
+            &[],
+            valid.image_usage(vk::ImageUsageFlags::from_raw(bit_outside(
+                caps.supported_usage_flags.as_raw() & 0xff,
+            ))),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-preTransform-01279",
+            // A performance warning that names no rule comes with it.
+            &["UNASSIGNED-CoreValidation-SwapchainPreTransform"],
+            valid.pre_transform(vk::SurfaceTransformFlagsKHR::from_raw(bit_outside(
+                caps.supported_transforms.as_raw() & 0x1ff,
+            ))),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280",
+            &[],
+            valid.composite_alpha(vk::CompositeAlphaFlagsKHR::from_raw(bit_outside(
+                caps.supported_composite_alpha.as_raw() & 0xf,
+            ))),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428",
+            &[],
+            valid
+                .image_sharing_mode(vk::SharingMode::CONCURRENT)
+                .queue_family_indices(&[0, 64]),
+        ),
+        (
+            "VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429",
+            &[],
+            valid.flags(vk::SwapchainCreateFlagsKHR::SPLIT_INSTANCE_BIND_REGIONS),
+        ),
+    ];
+    if caps.max_image_count != 0 {
+        cases.push((
+            "VUID-VkSwapchainCreateInfoKHR-minImageCount-01272",
+            &[],
+            valid.min_image_count(caps.max_image_count + 1),
+        ));
+    }
+    if let Some(mode) = [
+        vk::PresentModeKHR::MAILBOX,
+        vk::PresentModeKHR::FIFO_RELAXED,
+    ]
+    .into_iter()
+    .find(|m| !modes.contains(m))
+    {
+        cases.push((
+            "VUID-VkSwapchainCreateInfoKHR-presentMode-01281",
+            &[],
+            valid.present_mode(mode),
+        ));
+    }
+    let mut alone = Vec::new();
+    for (rule, also, info) in &cases {
+        let safe = s.device.create_swapchain_khr(&surface, info);
+        assert_eq!(refused(safe.map(drop)), *rule, "the safe call");
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the layer skips a call it reports (its messenger says so).
+        let made = unsafe { s.device.create_swapchain_khr_unchecked(&surface, info) };
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        if said.is_empty() {
+            alone.push(*rule);
+            drop(made);
+            continue;
+        }
+        let names = |m: &String, v: &str| m.contains(&format!("[ {v} ]"));
+        assert!(
+            said.iter().any(|m| names(m, rule))
+                && said
+                    .iter()
+                    .all(|m| names(m, rule) || also.iter().any(|a| names(m, a))),
+            "{rule}: the layer said:\n{}",
+            said.join("\n")
+        );
+        drop(made);
+    }
+    // A swapchain retired by a creation that named it as the old one cannot be
+    // named again.
+    let first = s
+        .device
+        .create_swapchain_khr(&surface, &valid)
+        .expect("swapchain");
+    let second = s
+        .device
+        .create_swapchain_khr(&surface, &valid.old_swapchain(Some(&first)))
+        .expect("its replacement");
+    let again = valid.old_swapchain(Some(&first));
+    let retired = "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933";
+    assert_eq!(
+        refused(s.device.create_swapchain_khr(&surface, &again).map(drop)),
+        retired
+    );
+    layer_names(&s, retired, || {
+        // SAFETY: the layer names the rule and skips the call.
+        drop(unsafe { s.device.create_swapchain_khr_unchecked(&surface, &again) });
+    });
+    println!(
+        "swapchain creation: the layer named {}, the error alone proves {} ({})",
+        cases.len() + 1 - alone.len(),
+        alone.len(),
+        alone.join(", ")
+    );
+    drop((second, first));
     drop(surface);
     assert_silent(&s.messages);
 }

@@ -281,9 +281,7 @@ impl<S: Scene> Live<S> {
                 self.recreations += 1;
                 new
             }
-            // SAFETY: the info comes from the surface's current capabilities and formats, and
-            // the surface supports presenting from the chosen queue family.
-            None => unsafe { gpu.device.create_swapchain_khr(&self.surface, &info) }?,
+            None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
         };
         self.framebuffers = None;
         self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;

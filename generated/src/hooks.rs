@@ -24,6 +24,8 @@ use tuff_runtime::Vrc;
 mod creation;
 mod pipeline;
 mod render_pass;
+#[cfg(feature = "khr_swapchain")]
+mod swapchain;
 use creation::image_create_rules;
 pub(crate) use creation::{
     allocate_memory_checks, allocate_memory_gate, create_device_checks,
@@ -33,6 +35,8 @@ pub(crate) use pipeline::{compute_pipeline_state_checks, graphics_pipeline_state
 pub(crate) use render_pass::{
     create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
 };
+#[cfg(feature = "khr_swapchain")]
+pub(crate) use swapchain::{create_swapchain_checks, swapchain_retires};
 
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
@@ -780,10 +784,12 @@ fn swapchain_image_flags(flags: vk::SwapchainCreateFlagsKHR) -> vk::ImageCreateF
 pub(crate) fn swapchain_created(
     device: &Device,
     swapchain: SwapchainKHR,
+    surface: &SurfaceKHR,
     create_info: &SwapchainCreateInfoKHR<'_>,
 ) -> SwapchainKHR {
     device.live().swapchain_created(
         swapchain.raw(),
+        surface.raw(),
         ImageRecord {
             flags: swapchain_image_flags(create_info.flags),
             image_type: vk::ImageType::TYPE_2D,

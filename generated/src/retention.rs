@@ -84,6 +84,8 @@ pub(crate) struct Live {
     /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
     /// records for every image it returns.
     swapchains: Vutex<HashMap<u64, ImageRecord>>,
+    /// Each live swapchain's surface, and whether a later creation retired it.
+    swapchain_states: Vutex<HashMap<u64, (u64, bool)>>,
     /// Each query pool's type, query count and statistics.
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
@@ -285,6 +287,7 @@ impl Default for Live {
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
+            swapchain_states: Vutex::new(HashMap::default()),
             shader_modules: Vutex::new(HashMap::default()),
             query_pools: Vutex::new(HashMap::default()),
             pipeline_layouts: Vutex::new(HashMap::default()),
@@ -455,6 +458,7 @@ impl Live {
             }
             vk::ObjectType::SWAPCHAIN_KHR => {
                 self.swapchains.lock().remove(&key.1);
+                self.swapchain_states.lock().remove(&key.1);
             }
             vk::ObjectType::PIPELINE => {
                 let record = self.pipelines.lock().remove(&key.1);
@@ -646,8 +650,42 @@ impl Live {
 
     /// Records what a swapchain's images are.
     #[cfg(feature = "khr_swapchain")]
-    pub(crate) fn swapchain_created(&self, raw: vk::SwapchainKHR, images: ImageRecord) {
+    pub(crate) fn swapchain_created(
+        &self,
+        raw: vk::SwapchainKHR,
+        surface: vk::SurfaceKHR,
+        images: ImageRecord,
+    ) {
         self.swapchains.lock().insert(raw.as_raw(), images);
+        self.swapchain_states
+            .lock()
+            .insert(raw.as_raw(), (surface.as_raw(), false));
+    }
+
+    /// The surface a live swapchain presents to.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn swapchain_surface(&self, raw: vk::SwapchainKHR) -> Option<vk::SurfaceKHR> {
+        self.swapchain_states
+            .lock()
+            .get(&raw.as_raw())
+            .map(|s| vk::SurfaceKHR::from_raw(s.0))
+    }
+
+    /// Marks a swapchain retired: a creation named it as `oldSwapchain`.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn retire(&self, raw: vk::SwapchainKHR) {
+        if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
+            s.1 = true;
+        }
+    }
+
+    /// Whether a creation retired the swapchain.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn is_retired(&self, raw: vk::SwapchainKHR) -> bool {
+        self.swapchain_states
+            .lock()
+            .get(&raw.as_raw())
+            .is_some_and(|s| s.1)
     }
 
     /// The image record a swapchain's images get.

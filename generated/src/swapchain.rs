@@ -53,8 +53,13 @@ impl SwapchainKHR {
             });
         }
         let info = (*create_info).old_swapchain(Some(self));
+        // `create_swapchain_khr` is safe in the pinned configuration and may be
+        // `unsafe` in wider ones.
+        #[allow(unused_unsafe)]
         // SAFETY: the caller upholds the rules of `create_info`; `oldSwapchain` is this
         // live swapchain of the same device and surface (checked above).
-        unsafe { device.create_swapchain_khr(surface, &info) }
+        unsafe {
+            device.create_swapchain_khr(surface, &info)
+        }
     }
 }

@@ -240,6 +240,9 @@ const IMMUTABLE_SAMPLERS: &str = "the safe binding's `immutable_samplers` setter
 const UNPROVEN_AFTER_BIND: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no update-after-bind descriptors, so a binding updated after bind is refused for the missing feature first";
 const UNPROVEN_VARIABLE_COUNT: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no variable descriptor counts, so a variable-sized binding is refused for the missing feature first";
 const DEVICE_QUEUES: &str = "checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures";
+const SURFACE_REPORTS: &str = "checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count";
+const UNPROVEN_SWAPCHAIN_SURFACE: &str = "checked by the safe methods in every build (against what the physical device reports for the surface and the swapchain's images), but no test breaks it: lavapipe's X11 surface is supported by its only queue family, has no maximum image count, offers every present mode the emitted API defines, and supports the images of every create info the other checks let through";
+const RETIRED_SWAPCHAIN: &str = "checks oldSwapchain presents to the same surface and was not retired: the device records each swapchain's surface, and a creation retires its oldSwapchain before the call, whether or not it succeeds";
 const DEVICE_EXTENSIONS: &str = "checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version";
 const DEVICE_GROUP: &str = "checks a chained device group create info names each physical device once, the one the device is created from among them, all in one group that the instance enumerates";
 const UNPROVEN_DEVICE_GROUP: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has one physical device, the only member of its only device group";
@@ -1841,16 +1844,38 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateSwapchainKHR",
+        check_last: call(
+            "hooks::create_swapchain_checks",
+            &["self", "surface", "create_info"],
+        ),
+        before: call("hooks::swapchain_retires", &["self", "create_info"]),
         created: call(
             "hooks::swapchain_created",
-            &["self", "created", "create_info"],
+            &["self", "created", "surface", "create_info"],
         ),
         // VUID-vkDestroySurfaceKHR-surface-01266: swapchains go before their surface.
         keeps: Keeps::Member("surface", "VkSurfaceKHR"),
-        settles: &[(
-            "VUID-vkDestroySurfaceKHR-surface-01266",
-            How::Static("a swapchain wrapper keeps its surface alive"),
-        )],
+        settles: &[
+            (
+                "VUID-vkDestroySurfaceKHR-surface-01266",
+                How::Static("a swapchain wrapper keeps its surface alive"),
+            ),
+            ("VUID-VkSwapchainCreateInfoKHR-surface-01270", How::User(UNPROVEN_SWAPCHAIN_SURFACE)),
+            ("VUID-VkSwapchainCreateInfoKHR-minImageCount-01271", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-minImageCount-01272", How::User(UNPROVEN_SWAPCHAIN_SURFACE)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageFormat-01273", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageExtent-01689", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageExtent-01274", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-presentMode-01281", How::User(UNPROVEN_SWAPCHAIN_SURFACE)),
+            ("VUID-VkSwapchainCreateInfoKHR-presentMode-01427", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-preTransform-01279", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429", How::Dynamic(SURFACE_REPORTS)),
+            ("VUID-VkSwapchainCreateInfoKHR-imageFormat-01778", How::User(UNPROVEN_SWAPCHAIN_SURFACE)),
+            ("VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933", How::Dynamic(RETIRED_SWAPCHAIN)),
+        ],
         ..NONE
     },
     Special {

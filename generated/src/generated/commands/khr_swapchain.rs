@@ -113,26 +113,6 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
     }
     /**`vkCreateSwapchainKHR`
 
-# Safety
-
-The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkSwapchainCreateInfoKHR-surface-01270`: `surface` must be a surface that is supported by the device as determined using vkGetPhysicalDeviceSurfaceSupportKHR
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272`: `minImageCount` must be less than or equal to the value returned in the `maxImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface if the returned `maxImageCount` is not zero
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`: `imageFormat` and `imageColorSpace` must match the `format` and `colorSpace` members, respectively, of one of the `VkSurfaceFormatKHR` structures returned by `vkGetPhysicalDeviceSurfaceFormatsKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: `imageExtent` members `width` and `height` must both be non-zero
-- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: `imageArrayLayers` must be greater than `0` and less than or equal to the `maxImageArrayLayers` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: If `presentMode` is `VK_PRESENT_MODE_IMMEDIATE_KHR`, `VK_PRESENT_MODE_MAILBOX_KHR`, `VK_PRESENT_MODE_FIFO_KHR` or `VK_PRESENT_MODE_FIFO_RELAXED_KHR`, `imageUsage` must be a subset of the supported usage flags present in the `supportedUsageFlags` member of the VkSurfaceCapabilitiesKHR structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for `surface`
-- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: `preTransform` must be one of the bits present in the `supportedTransforms` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: `compositeAlpha` must be one of the bits present in the `supportedCompositeAlpha` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-01281`: `presentMode` must be one of the VkPresentModeKHR values returned by `vkGetPhysicalDeviceSurfacePresentModesKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a non-retired swapchain associated with native window referred to by `surface`
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778`: The implied image creation parameters of the swapchain must be supported as reported by vkGetPhysicalDeviceImageFormatProperties
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: `minImageCount` must be greater than or equal to the value returned in the `minImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for the surface
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`: `imageExtent` must be between `minImageExtent` and `maxImageExtent`, inclusive, where `minImageExtent` and `maxImageExtent` are members of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`: If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either vkGetPhysicalDeviceQueueFamilyProperties or vkGetPhysicalDeviceQueueFamilyProperties2 for the `physicalDevice` that was used to create `device`
-- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`: If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_SWAPCHAIN_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT_KHR`
-
 # Valid usage
 
 The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
@@ -142,7 +122,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
 - `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_swapchain_khr<'a>(
+    pub fn create_swapchain_khr<'a>(
         &self,
         surface: &SurfaceKHR,
         create_info: &SwapchainCreateInfoKHR<'a>,
@@ -166,6 +146,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
             let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
+        crate::hooks::create_swapchain_checks(self, surface, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
@@ -174,7 +155,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
 
 # Safety
 
-The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run time: `VUID-vkDestroySurfaceKHR-surface-01266`, `VUID-VkSwapchainCreateInfoKHR-surface-01270`, `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`, `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272`, `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`, `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`, `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`, `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`, `VUID-VkSwapchainCreateInfoKHR-presentMode-01281`, `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`, `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`, `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`, `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`, `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`, `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778`, `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_swapchain_khr_unchecked<'a>(
         &self,
@@ -206,6 +187,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         create_info.as_raw_mut().surface = surface.raw();
         let create_info = &create_info;
         let mut out = vk::SwapchainKHR::null();
+        crate::hooks::swapchain_retires(self, create_info);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), create_info.as_raw(), core::ptr::null(), &mut out)
@@ -217,6 +199,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
             crate::hooks::swapchain_created(
                 self,
                 SwapchainKHR::from_raw(out, self, Some(surface.retained()), true),
+                surface,
                 create_info,
             ),
         )

@@ -69,7 +69,14 @@ impl<'a> PresentInfoKHR<'a> {
 
 The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCreateInfoKHR.html). Settled by the wrappers:
 
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
 - `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: static (the setter takes a slice and stores its length in the count member)
+- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: dynamic (checks oldSwapchain presents to the same surface and was not retired: the device records each swapchain's surface, and a creation retires its oldSwapchain before the call, whether or not it succeeds)
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -85,11 +92,16 @@ The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
+- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 29.
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
+- 4: checked by the safe methods in every build (against what the physical device reports for the surface and the swapchain's images), but no test breaks it: lavapipe's X11 surface is supported by its only queue family, has no maximum image count, offers every present mode the emitted API defines, and supports the images of every create info the other checks let through
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 28: explicit rule; the wrappers do not check it*/
+- 13: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
