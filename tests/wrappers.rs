@@ -344,9 +344,9 @@ fn present_one_frame(
     let rendered = d
         .create_semaphore(&tuff::SemaphoreCreateInfo::new())
         .expect("semaphore");
-    let (index, r) =
-        unsafe { d.acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None) }
-            .expect("acquire");
+    let (index, r) = d
+        .acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None)
+        .expect("acquire");
     assert!(
         r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
         "{r:?}"
@@ -1220,10 +1220,9 @@ fn acquire_and_present_take_binary_semaphores() {
         .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
         .expect("timeline semaphore");
     let acquire = "VUID-vkAcquireNextImageKHR-semaphore-03265";
-    let r = unsafe {
-        s.device
-            .acquire_next_image_khr(&swapchain, u64::MAX, Some(&timeline), None)
-    };
+    let r = s
+        .device
+        .acquire_next_image_khr(&swapchain, u64::MAX, Some(&timeline), None);
     assert_eq!(refused(r), acquire);
     layer_names(&s, acquire, || {
         // SAFETY: the layer names the rule and skips the call.
@@ -1238,11 +1237,10 @@ fn acquire_and_present_take_binary_semaphores() {
         .device
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let (index, _) = unsafe {
-        s.device
-            .acquire_next_image_khr(&swapchain, u64::MAX, None, Some(&fence))
-    }
-    .expect("acquire");
+    let (index, _) = s
+        .device
+        .acquire_next_image_khr(&swapchain, u64::MAX, None, Some(&fence))
+        .expect("acquire");
     assert_eq!(
         s.device
             .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
@@ -1266,6 +1264,250 @@ fn acquire_and_present_take_binary_semaphores() {
         let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
     });
     s.queue.queue_wait_idle().expect("idle");
+    drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// Acquires and queue operations follow each binary semaphore's state, and an
+/// acquire its swapchain's and fence's: each rule broken is refused by the safe
+/// method, and the layer names it for the unchecked one.
+#[test]
+fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let d = &s.device;
+    let swapchain = d
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        .expect("swapchain");
+    let semaphore = || {
+        d.create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            .expect("semaphore")
+    };
+    let fence = |flags| {
+        d.create_fence(&tuff::FenceCreateInfo::new().flags(flags))
+            .expect("fence")
+    };
+    let unsignaled = vk::FenceCreateFlags::empty();
+    // Nothing to signal.
+    let neither = "VUID-vkAcquireNextImageKHR-semaphore-01780";
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, 0, None, None)),
+        neither
+    );
+    layer_names(&s, neither, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, None, None) };
+    });
+    // A signaled fence.
+    let signaled = fence(vk::FenceCreateFlags::SIGNALED);
+    let fence_rule = "VUID-vkAcquireNextImageKHR-fence-01287";
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, 0, None, Some(&signaled))),
+        fence_rule
+    );
+    layer_names(&s, fence_rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, None, Some(&signaled)) };
+    });
+    // A semaphore an acquire signaled, not waited on since.
+    let acquired = semaphore();
+    let done = fence(unsignaled);
+    let (index, _) = d
+        .acquire_next_image_khr(&swapchain, u64::MAX, Some(&acquired), Some(&done))
+        .expect("acquire");
+    let again = "VUID-vkAcquireNextImageKHR-semaphore-01286";
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, 0, Some(&acquired), None)),
+        again
+    );
+    layer_names(&s, again, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, Some(&acquired), None) };
+    });
+    // The acquire's fence belongs to it until it is seen signaled.
+    assert_eq!(
+        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+            .expect("acquired"),
+        vk::Result::SUCCESS
+    );
+    d.reset_fences(&[&done]).expect("reset");
+    // A wait on it is pending while a timeline wait holds its batch back.
+    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(0);
+    let gate = d
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline");
+    let waits = tuff::HandleSlice::new(&[&acquired, &gate]);
+    let stages = [vk::PipelineStageFlags::ALL_COMMANDS; 2];
+    let mut values = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[0, 1]);
+    let gated = [tuff::SubmitInfo::new()
+        .wait_semaphores(&waits, &stages)
+        .expect("one stage per wait")
+        .push_next(&mut values)];
+    // SAFETY: the batch waits on a signaled binary semaphore and a timeline value
+    // the host signals below, and executes nothing.
+    unsafe { s.queue.queue_submit(&gated, &done) }.expect("gated submit");
+    // A second wait on it, with no signal between, is refused too.
+    let unsignaled_wait = "VUID-vkQueueSubmit-pWaitSemaphores-03238";
+    let one_wait = tuff::HandleSlice::new(&[&acquired]);
+    let one_stage = [vk::PipelineStageFlags::ALL_COMMANDS];
+    let second = [tuff::SubmitInfo::new()
+        .wait_semaphores(&one_wait, &one_stage)
+        .expect("one stage per wait")];
+    let other = fence(unsignaled);
+    // SAFETY: the call is refused.
+    assert_eq!(
+        refused(unsafe { s.queue.queue_submit(&second, &other) }),
+        unsignaled_wait
+    );
+    layer_names(&s, unsignaled_wait, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_submit_unchecked(&second, &other) };
+    });
+    let pending = "VUID-vkAcquireNextImageKHR-semaphore-01779";
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, 0, Some(&acquired), None)),
+        pending
+    );
+    // The 1.3.239 layer does not check it: proven by the error alone (lavapipe's
+    // acquire signals at once, so the unchecked call does no harm here).
+    s.messages.take();
+    // SAFETY: see above.
+    let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, Some(&acquired), None) };
+    let said = s.messages.take();
+    assert!(said.is_empty(), "the layer said: {said:?}");
+    // SAFETY: a timeline semaphore, signaled to a value above its current one.
+    unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
+        .expect("open the gate");
+    assert_eq!(
+        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+            .expect("the gated batch"),
+        vk::Result::SUCCESS
+    );
+    // A signal of a semaphore already signaled.
+    let twice = semaphore();
+    let signals = tuff::HandleSlice::new(&[&twice]);
+    let signal = [tuff::SubmitInfo::new().signal_semaphores(&signals)];
+    // SAFETY: an empty batch that signals an unsignaled binary semaphore.
+    unsafe { s.queue.queue_submit(&signal, &other) }.expect("signal");
+    let signaled_again = "VUID-vkQueueSubmit-pSignalSemaphores-00067";
+    let third = fence(unsignaled);
+    // SAFETY: the call is refused.
+    assert_eq!(
+        refused(unsafe { s.queue.queue_submit(&signal, &third) }),
+        signaled_again
+    );
+    // The 1.3.239 layer reports this rule under an unassigned name ("... was
+    // previously signaled ... but has not since been waited on").
+    layer_names(
+        &s,
+        "UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress",
+        || {
+            // SAFETY: the layer reports the rule and skips the call.
+            let _ = unsafe { s.queue.queue_submit_unchecked(&signal, &third) };
+        },
+    );
+    // A presentation that waits on a semaphore nothing signals.
+    let nothing = semaphore();
+    let present_waits = tuff::HandleSlice::new(&[&nothing]);
+    let swapchains = tuff::HandleSlice::new(&[&swapchain]);
+    let indices = [index];
+    let present = tuff::PresentInfoKHR::new()
+        .wait_semaphores(&present_waits)
+        .swapchains(&swapchains, &indices)
+        .expect("one index per swapchain");
+    let present_rule = "VUID-vkQueuePresentKHR-pWaitSemaphores-03268";
+    // SAFETY: the call is refused.
+    assert_eq!(
+        refused(unsafe { s.queue.queue_present_khr(&present) }),
+        present_rule
+    );
+    layer_names(&s, present_rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+    });
+    // A swapchain a later creation retired.
+    let successor = d
+        .create_swapchain_khr(
+            &surface,
+            &swapchain_info(&s, &surface).old_swapchain(Some(&swapchain)),
+        )
+        .expect("successor");
+    let retired = "VUID-vkAcquireNextImageKHR-swapchain-01285";
+    let spare = semaphore();
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, 0, Some(&spare), None)),
+        retired
+    );
+    layer_names(&s, retired, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, Some(&spare), None) };
+    });
+    s.queue.queue_wait_idle().expect("idle");
+    d.device_wait_idle().expect("idle");
+    drop((successor, swapchain));
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// An infinite acquire where the swapchain cannot give another image without a
+/// present is refused, and the layer names the rule.
+#[test]
+fn an_acquire_that_cannot_progress_may_not_wait_forever() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let d = &s.device;
+    let swapchain = d
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        .expect("swapchain");
+    let images = d
+        .get_swapchain_images_khr(&swapchain)
+        .expect("images")
+        .len();
+    let min = s
+        .physical
+        .get_physical_device_surface_capabilities_khr(&surface)
+        .expect("capabilities")
+        .min_image_count as usize;
+    let mut fences = Vec::new();
+    // As many images as may be acquired at once without a present.
+    for _ in 0..=images.saturating_sub(min) {
+        let f = d
+            .create_fence(&tuff::FenceCreateInfo::new())
+            .expect("fence");
+        let (_, r) = d
+            .acquire_next_image_khr(&swapchain, 1_000_000_000, None, Some(&f))
+            .expect("acquire");
+        assert!(
+            r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+            "an image within the count is acquired ({r:?})"
+        );
+        fences.push(f);
+    }
+    let f = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let rule = "VUID-vkAcquireNextImageKHR-surface-07783";
+    assert_eq!(
+        refused(d.acquire_next_image_khr(&swapchain, u64::MAX, None, Some(&f))),
+        rule
+    );
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, u64::MAX, None, Some(&f)) };
+    });
+    let all: Vec<&tuff::Fence> = fences.iter().collect();
+    assert_eq!(
+        d.wait_for_fences(&all, vk::TRUE, u64::MAX)
+            .expect("acquired"),
+        vk::Result::SUCCESS
+    );
     drop(swapchain);
     drop(surface);
     assert_silent(&s.messages);

@@ -321,20 +321,21 @@ impl<S: Scene> Live<S> {
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
         // SAFETY: the semaphore is unsignalled with no pending wait, and the swapchain is not
         // retired.
-        let index = match unsafe {
-            gpu.device
+        let index =
+            match gpu
+                .device
                 .acquire_next_image_khr(swapchain, u64::MAX, Some(acquired), None)
-        } {
-            Ok((index, r)) => {
-                self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
-                index as usize
-            }
-            Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
-                self.stale = true;
-                return Ok(false);
-            }
-            Err(e) => return Err(e.into()),
-        };
+            {
+                Ok((index, r)) => {
+                    self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
+                    index as usize
+                }
+                Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
+                    self.stale = true;
+                    return Ok(false);
+                }
+                Err(e) => return Err(e.into()),
+            };
         let view = View {
             extent,
             time: self.start.elapsed().as_secs_f32(),

@@ -36,7 +36,10 @@ pub(crate) use render_pass::{
     create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
 };
 #[cfg(feature = "khr_swapchain")]
-pub(crate) use swapchain::{create_swapchain_checks, swapchain_retires};
+pub(crate) use swapchain::{
+    acquire_next_image2_khr_checks, acquire_next_image2_khr_done, acquire_next_image_khr_checks,
+    acquire_next_image_khr_done, create_swapchain_checks, swapchain_retires,
+};
 
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
@@ -105,6 +108,12 @@ pub(crate) fn queue_submit_checks(
     for (i, b) in submits.iter().enumerate() {
         check_device_group_submit(i, b)?;
     }
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &submit_semaphore_ops(submits),
+        &submission::SUBMIT_BINARY,
+    )?;
     for b in submits {
         // SAFETY: `b` is a safe struct.
         unsafe {
@@ -133,7 +142,63 @@ pub(crate) fn queue_submit2_checks(
         fence,
         &submit2_command_buffers(submits),
         &submission::SUBMIT2,
+    )?;
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &submit2_semaphore_ops(submits),
+        &submission::SUBMIT2_BINARY,
     )
+}
+
+/// The semaphore operations of `vkQueueSubmit`'s batches, in order.
+fn submit_semaphore_ops(submits: &[SubmitInfo<'_>]) -> Vec<submission::SemOp> {
+    submission::batch_ops(submits.iter().map(|b| {
+        // SAFETY: the safe struct stores each array with its length.
+        unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+            )
+        }
+    }))
+}
+
+/// The semaphore operations of `vkQueueSubmit2`'s batches, in order.
+fn submit2_semaphore_ops(submits: &[SubmitInfo2<'_>]) -> Vec<submission::SemOp> {
+    let mut ops = Vec::new();
+    for b in submits {
+        // SAFETY: the safe struct stores each array with its length.
+        let (waits, signals) = unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::retention::raw_slice(
+                    b.p_signal_semaphore_infos,
+                    b.signal_semaphore_info_count,
+                ),
+            )
+        };
+        ops.extend(waits.iter().map(|w| submission::SemOp::Wait(w.semaphore)));
+        ops.extend(
+            signals
+                .iter()
+                .map(|s| submission::SemOp::Signal(s.semaphore)),
+        );
+    }
+    ops
+}
+
+/// The semaphore operations of `vkQueueBindSparse`'s batches, in order.
+fn bind_sparse_semaphore_ops(bind_info: &[BindSparseInfo<'_>]) -> Vec<submission::SemOp> {
+    submission::batch_ops(bind_info.iter().map(|b| {
+        // SAFETY: the safe struct stores each array with its length.
+        unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+            )
+        }
+    }))
 }
 
 /// The checks of `vkQueueBindSparse`: the fence and the batches' timeline values.
@@ -143,6 +208,12 @@ pub(crate) fn queue_bind_sparse_checks(
     fence: &Fence,
 ) -> Result<()> {
     submission::check_fence(fence, &submission::BIND_SPARSE)?;
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &bind_sparse_semaphore_ops(bind_info),
+        &submission::BIND_SPARSE_BINARY,
+    )?;
     for b in bind_info {
         // SAFETY: `b` is a safe struct.
         unsafe {
@@ -182,7 +253,9 @@ pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence
     }
     let batches = submission::submit_timeline_batches(device.live(), submits);
     let cbs = submit_command_buffers(submits);
-    submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let ops = submit_semaphore_ops(submits);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
 }
 
 /// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
@@ -195,7 +268,9 @@ pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fen
     }
     let batches = submission::submit2_timeline_batches(device.live(), submits);
     let cbs = submit2_command_buffers(submits);
-    submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let ops = submit2_semaphore_ops(submits);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
 }
 
 /// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal
@@ -211,7 +286,9 @@ pub(crate) fn queue_bind_sparse_done(
         // SAFETY: the safe structs store every array with its length.
         unsafe { crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept) };
     }
-    submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
+    let sub = submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
+    let ops = bind_sparse_semaphore_ops(bind_info);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
 }
 
 /// Refuses a fence whose queue operation may still be executing.
@@ -320,37 +397,6 @@ pub(crate) fn signal_semaphore_checks(
     )
 }
 
-/// Refuses a timeline semaphore.
-#[cfg(feature = "khr_swapchain")]
-pub(crate) fn acquire_next_image_khr_checks(
-    device: &Device,
-    semaphore: Option<&Semaphore>,
-) -> Result<()> {
-    match semaphore {
-        Some(semaphore) => submission::check_semaphore_type(
-            device.live(),
-            &[semaphore.raw()],
-            false,
-            "VUID-vkAcquireNextImageKHR-semaphore-03265",
-        ),
-        None => Ok(()),
-    }
-}
-
-/// Refuses a timeline semaphore.
-#[cfg(feature = "khr_swapchain")]
-pub(crate) fn acquire_next_image2_khr_checks(
-    device: &Device,
-    acquire_info: &AcquireNextImageInfoKHR<'_>,
-) -> Result<()> {
-    submission::check_semaphore_type(
-        device.live(),
-        &[acquire_info.semaphore],
-        false,
-        "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
-    )
-}
-
 /// Refuses timeline semaphores.
 #[cfg(feature = "khr_swapchain")]
 pub(crate) fn queue_present_khr_checks(
@@ -369,6 +415,13 @@ pub(crate) fn queue_present_khr_checks(
         waits,
         false,
         "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
+    )?;
+    let ops: Vec<submission::SemOp> = waits.iter().map(|s| submission::SemOp::Wait(*s)).collect();
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &ops,
+        &submission::PRESENT_BINARY,
     )
 }
 
@@ -380,14 +433,28 @@ pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfo
     let mut kept = Vec::new();
     // SAFETY: the safe struct stores every array with its length.
     unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
-    queue.hold(submission::submitted(
-        device,
-        queue.raw(),
-        None,
-        &[],
-        kept,
-        Vec::new(),
-    ));
+    let sub = submission::submitted(device, queue.raw(), None, &[], kept, Vec::new());
+    // SAFETY: the safe struct stores the array with its length.
+    let waits = unsafe {
+        crate::retention::raw_slice(
+            present_info.p_wait_semaphores,
+            present_info.wait_semaphore_count,
+        )
+    };
+    let ops: Vec<submission::SemOp> = waits.iter().map(|s| submission::SemOp::Wait(*s)).collect();
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    queue.hold(sub);
+    let info = present_info.as_raw();
+    // SAFETY: the safe setter stores both arrays with the one count.
+    let (swapchains, indices) = unsafe {
+        (
+            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+        )
+    };
+    for (swapchain, index) in swapchains.iter().zip(indices) {
+        device.live().image_presented(*swapchain, *index);
+    }
 }
 
 /// Refuses a buffer that may still be executing, or whose pool does not reset buffers.

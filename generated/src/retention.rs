@@ -66,6 +66,9 @@ pub(crate) struct Live {
     queues: Vutex<HashMap<u64, HostSync>>,
     /// The device's timeline semaphores (the others are binary).
     timelines: Vutex<std::collections::HashSet<u64>>,
+    /// The binary semaphores with a signal or wait submitted that may matter still
+    /// (an unlisted one is unsignaled with nothing pending).
+    binaries: Vutex<HashMap<u64, crate::submission::Binary>>,
     /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
     /// host may not set, reset or read.
     device_only_events: Vutex<std::collections::HashSet<u64>>,
@@ -84,8 +87,9 @@ pub(crate) struct Live {
     /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
     /// records for every image it returns.
     swapchains: Vutex<HashMap<u64, ImageRecord>>,
-    /// Each live swapchain's surface, and whether a later creation retired it.
-    swapchain_states: Vutex<HashMap<u64, (u64, bool)>>,
+    /// Each live swapchain's surface, whether a later creation retired it, and the
+    /// indices of the images acquired and not presented since.
+    swapchain_states: Vutex<HashMap<u64, SwapchainState>>,
     /// Each query pool's type, query count and statistics.
     query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
     /// Each pipeline layout's push-constant ranges and sets.
@@ -240,6 +244,16 @@ pub(crate) struct MemoryAsked {
     pub device_address: bool,
 }
 
+/// What the device knows of a live swapchain beyond its images' parameters.
+pub(crate) struct SwapchainState {
+    /// The surface it presents to.
+    surface: u64,
+    /// A later creation named it as `oldSwapchain`.
+    retired: bool,
+    /// The indices of its images acquired and not presented since.
+    acquired: Vec<u32>,
+}
+
 /// An image's creation parameters, as its checks read them.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ImageRecord {
@@ -280,6 +294,7 @@ impl Default for Live {
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
+            binaries: Vutex::new(HashMap::default()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),
             sparse_resources: Vutex::new(HashMap::default()),
@@ -379,6 +394,13 @@ impl Live {
         self.timelines.lock().insert(raw.as_raw());
     }
 
+    /// The state of binary semaphores, for a submission command to read and update.
+    pub(crate) fn binaries(
+        &self,
+    ) -> tuff_runtime::VutexGuard<'_, HashMap<u64, crate::submission::Binary>> {
+        self.binaries.lock()
+    }
+
     /// Whether a live semaphore is a timeline semaphore.
     pub(crate) fn is_timeline(&self, raw: vk::Semaphore) -> bool {
         self.timelines.lock().contains(&raw.as_raw())
@@ -427,6 +449,8 @@ impl Live {
         }
         if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
             self.timelines.lock().remove(&key.1);
+            let state = self.binaries.lock().remove(&key.1);
+            drop(state);
         }
         if unlisted && H::TYPE == vk::ObjectType::EVENT {
             self.device_only_events.lock().remove(&key.1);
@@ -657,9 +681,14 @@ impl Live {
         images: ImageRecord,
     ) {
         self.swapchains.lock().insert(raw.as_raw(), images);
-        self.swapchain_states
-            .lock()
-            .insert(raw.as_raw(), (surface.as_raw(), false));
+        self.swapchain_states.lock().insert(
+            raw.as_raw(),
+            SwapchainState {
+                surface: surface.as_raw(),
+                retired: false,
+                acquired: Vec::new(),
+            },
+        );
     }
 
     /// The surface a live swapchain presents to.
@@ -668,14 +697,14 @@ impl Live {
         self.swapchain_states
             .lock()
             .get(&raw.as_raw())
-            .map(|s| vk::SurfaceKHR::from_raw(s.0))
+            .map(|s| vk::SurfaceKHR::from_raw(s.surface))
     }
 
     /// Marks a swapchain retired: a creation named it as `oldSwapchain`.
     #[cfg(feature = "khr_swapchain")]
     pub(crate) fn retire(&self, raw: vk::SwapchainKHR) {
         if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
-            s.1 = true;
+            s.retired = true;
         }
     }
 
@@ -685,7 +714,34 @@ impl Live {
         self.swapchain_states
             .lock()
             .get(&raw.as_raw())
-            .is_some_and(|s| s.1)
+            .is_some_and(|s| s.retired)
+    }
+
+    /// How many images of the swapchain are acquired and not presented.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn acquired_count(&self, raw: vk::SwapchainKHR) -> usize {
+        self.swapchain_states
+            .lock()
+            .get(&raw.as_raw())
+            .map_or(0, |s| s.acquired.len())
+    }
+
+    /// Image `index` of the swapchain was acquired.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn image_acquired(&self, raw: vk::SwapchainKHR, index: u32) {
+        if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
+            if !s.acquired.contains(&index) {
+                s.acquired.push(index);
+            }
+        }
+    }
+
+    /// Image `index` of the swapchain was handed to a presentation.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn image_presented(&self, raw: vk::SwapchainKHR, index: u32) {
+        if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
+            s.acquired.retain(|i| *i != index);
+        }
     }
 
     /// The image record a swapchain's images get.

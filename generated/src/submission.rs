@@ -12,6 +12,7 @@
 use crate::handles::Device;
 use crate::{Error, Handle, Result};
 use ash::vk;
+use ash::vk::Handle as _;
 use tuff_runtime::{Retained, Vrc, Vutex, Vweak};
 
 /// One queue operation and everything it uses.
@@ -160,7 +161,10 @@ impl Ledger {
     /// signal covers every command submitted before it to that queue.
     pub(crate) fn retire(&self, done: &Submission) {
         let (queue, seq) = (done.queue, done.seq);
-        self.retire_where(|s| s.queue == queue && s.seq <= seq);
+        // An acquire's fence (no queue) tells nothing of other acquires.
+        if queue != vk::Queue::null() {
+            self.retire_where(|s| s.queue == queue && s.seq <= seq);
+        }
         done.complete();
     }
 
@@ -184,9 +188,10 @@ impl Ledger {
         self.retire_where(|s| s.queue == queue);
     }
 
-    /// Every submission is complete (`vkDeviceWaitIdle` returned).
+    /// Every submission is complete (`vkDeviceWaitIdle` returned), but for acquires,
+    /// which the presentation engine, not a queue, completes.
     pub(crate) fn retire_all(&self) {
-        self.retire_where(|_| true);
+        self.retire_where(|s| s.queue != vk::Queue::null());
     }
 
     fn retire_where(&self, done: impl Fn(&Submission) -> bool) {
@@ -453,6 +458,17 @@ pub(crate) const SUBMIT2: SubmitRules = SubmitRules {
     simultaneous: "VUID-vkQueueSubmit2-commandBuffer-03875",
     secondary_executable: "VUID-vkQueueSubmit2-commandBuffer-03876",
     secondary_simultaneous: "VUID-vkQueueSubmit2-commandBuffer-03877",
+};
+
+/// The rules of `vkAcquireNextImageKHR` for its fence (it has no command buffers).
+pub(crate) const ACQUIRE: SubmitRules = SubmitRules {
+    fence_signalled: "VUID-vkAcquireNextImageKHR-fence-01287",
+    fence_pending: "VUID-vkAcquireNextImageKHR-fence-01287",
+    secondary: "",
+    executable: "",
+    simultaneous: "",
+    secondary_executable: "",
+    secondary_simultaneous: "",
 };
 
 /// The rules of `vkQueueBindSparse` (it has no command buffers).
@@ -843,4 +859,211 @@ pub(crate) fn submit2_timeline_batches(
             .collect()
         })
         .collect()
+}
+
+/// What a binary semaphore has had submitted that still matters. A semaphore the
+/// device does not list is unsignaled, with no signal or wait pending.
+pub(crate) enum Binary {
+    /// A signal operation was submitted (by a queue batch or an acquire), and no
+    /// wait since: the semaphore is signaled, or will be.
+    Signaled,
+    /// A wait was submitted to `queue` by `by`; once that operation completes the
+    /// semaphore is unsignaled (a submission no longer held is complete: an
+    /// incomplete one is held by its fence or its queue).
+    Waited {
+        queue: vk::Queue,
+        by: Vweak<Submission>,
+    },
+}
+
+/// A binary semaphore's state, as a check reads it.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Seen {
+    Unsignaled,
+    Signaled,
+    /// A wait submitted to this queue may still be pending.
+    Waiting(vk::Queue),
+}
+
+/// One semaphore operation of a submission command, in the order it defines them
+/// (each batch's waits, then its signals).
+#[derive(Clone, Copy)]
+pub(crate) enum SemOp {
+    Wait(vk::Semaphore),
+    Signal(vk::Semaphore),
+}
+
+/// The rules a command's semaphore operations break: a wait on a semaphore with no
+/// signal submitted, and a signal of one that is signaled (or whose wait on another
+/// queue, or on no queue for an acquire, may still be pending).
+pub(crate) struct BinaryRules {
+    pub wait_unsignaled: &'static str,
+    pub signal_signaled: &'static str,
+    /// Where a pending wait is a rule of its own (an acquire's).
+    pub signal_pending: &'static str,
+}
+
+/// The rules of `vkQueueSubmit`.
+pub(crate) const SUBMIT_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "VUID-vkQueueSubmit-pWaitSemaphores-03238",
+    signal_signaled: "VUID-vkQueueSubmit-pSignalSemaphores-00067",
+    signal_pending: "VUID-vkQueueSubmit-pSignalSemaphores-00067",
+};
+
+/// The rules of `vkQueueSubmit2`.
+pub(crate) const SUBMIT2_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "VUID-vkQueueSubmit2-semaphore-03873",
+    signal_signaled: "VUID-vkQueueSubmit2-semaphore-03868",
+    signal_pending: "VUID-vkQueueSubmit2-semaphore-03868",
+};
+
+/// The rules of `vkQueueBindSparse`.
+pub(crate) const BIND_SPARSE_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "VUID-vkQueueBindSparse-pWaitSemaphores-03245",
+    signal_signaled: "VUID-vkQueueBindSparse-pSignalSemaphores-01115",
+    signal_pending: "VUID-vkQueueBindSparse-pSignalSemaphores-01115",
+};
+
+/// The rules of `vkQueuePresentKHR` (it only waits).
+pub(crate) const PRESENT_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "VUID-vkQueuePresentKHR-pWaitSemaphores-03268",
+    signal_signaled: "",
+    signal_pending: "",
+};
+
+/// The rules of `vkAcquireNextImageKHR` (it only signals, on no queue).
+pub(crate) const ACQUIRE_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "",
+    signal_signaled: "VUID-vkAcquireNextImageKHR-semaphore-01286",
+    signal_pending: "VUID-vkAcquireNextImageKHR-semaphore-01779",
+};
+
+/// The rules of `vkAcquireNextImage2KHR`.
+pub(crate) const ACQUIRE2_BINARY: BinaryRules = BinaryRules {
+    wait_unsignaled: "",
+    signal_signaled: "VUID-VkAcquireNextImageInfoKHR-semaphore-01288",
+    signal_pending: "VUID-VkAcquireNextImageInfoKHR-semaphore-01781",
+};
+
+fn seen(device: &Device, state: Option<&Binary>) -> Seen {
+    match state {
+        None => Seen::Unsignaled,
+        Some(Binary::Signaled) => Seen::Signaled,
+        Some(Binary::Waited { queue, by }) => match by.upgrade() {
+            Some(sub) if !sub.poll(device) => Seen::Waiting(*queue),
+            _ => Seen::Unsignaled,
+        },
+    }
+}
+
+/// Checks a command's binary semaphore operations, in order, against what was
+/// submitted before: a wait needs a signal submitted and not waited on since, and a
+/// signal needs the semaphore unsignaled, or waited on earlier on the same queue
+/// (`queue` null for an acquire, which no queue orders).
+pub(crate) fn check_binary_ops(
+    device: &Device,
+    queue: vk::Queue,
+    ops: &[SemOp],
+    rules: &BinaryRules,
+) -> Result<()> {
+    let live = device.live();
+    let ops: Vec<SemOp> = ops
+        .iter()
+        .copied()
+        .filter(|op| match op {
+            SemOp::Wait(s) | SemOp::Signal(s) => !live.is_timeline(*s),
+        })
+        .collect();
+    if ops.is_empty() {
+        return Ok(());
+    }
+    // What this command's earlier operations did, over what was submitted before.
+    let mut now: Vec<(vk::Semaphore, Seen)> = Vec::new();
+    for op in ops {
+        let (SemOp::Wait(s) | SemOp::Signal(s)) = op;
+        let state = match now.iter().find(|(n, _)| *n == s) {
+            Some((_, seen)) => *seen,
+            None => {
+                // Polled outside the lock: a signalled fence retires submissions.
+                let state = live.binaries().get(&s.as_raw()).map(|b| match b {
+                    Binary::Signaled => Binary::Signaled,
+                    Binary::Waited { queue, by } => Binary::Waited {
+                        queue: *queue,
+                        by: by.clone(),
+                    },
+                });
+                seen(device, state.as_ref())
+            }
+        };
+        let next = match op {
+            SemOp::Wait(_) => {
+                if state != Seen::Signaled {
+                    return Err(refuse(
+                        rules.wait_unsignaled,
+                        format!("the binary semaphore {s:?} is waited on, but no signal operation was submitted for it since its last wait"),
+                    ));
+                }
+                Seen::Waiting(queue)
+            }
+            SemOp::Signal(_) => {
+                match state {
+                    Seen::Signaled => {
+                        return Err(refuse(
+                            rules.signal_signaled,
+                            format!("the binary semaphore {s:?} is signaled, or a signal operation for it was submitted and not waited on"),
+                        ))
+                    }
+                    Seen::Waiting(q) if q != queue || queue == vk::Queue::null() => {
+                        return Err(refuse(
+                            rules.signal_pending,
+                            format!("a wait on the binary semaphore {s:?} may still be pending{}", if queue == vk::Queue::null() { "" } else { " on another queue" }),
+                        ))
+                    }
+                    _ => {}
+                }
+                Seen::Signaled
+            }
+        };
+        match now.iter_mut().find(|(n, _)| *n == s) {
+            Some(entry) => entry.1 = next,
+            None => now.push((s, next)),
+        }
+    }
+    Ok(())
+}
+
+/// Records a command's binary semaphore operations, in order: a signal leaves the
+/// semaphore signaled, a wait leaves it waited on by `by` on `queue`.
+pub(crate) fn record_binary_ops(
+    device: &Device,
+    queue: vk::Queue,
+    ops: &[SemOp],
+    by: Option<&Vrc<Submission>>,
+) {
+    let live = device.live();
+    let mut binaries = live.binaries();
+    for op in ops {
+        match *op {
+            SemOp::Wait(s) if !live.is_timeline(s) => {
+                let by = by.map_or_else(Vweak::new, Vrc::downgrade);
+                binaries.insert(s.as_raw(), Binary::Waited { queue, by });
+            }
+            SemOp::Signal(s) if !live.is_timeline(s) => {
+                binaries.insert(s.as_raw(), Binary::Signaled);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The semaphore operations of batches given as (waits, signals), in order.
+pub(crate) fn batch_ops<'a>(
+    batches: impl IntoIterator<Item = (&'a [vk::Semaphore], &'a [vk::Semaphore])>,
+) -> Vec<SemOp> {
+    let mut ops = Vec::new();
+    for (waits, signals) in batches {
+        ops.extend(waits.iter().map(|s| SemOp::Wait(*s)));
+        ops.extend(signals.iter().map(|s| SemOp::Signal(*s)));
+    }
+    ops
 }

@@ -209,3 +209,211 @@ pub(crate) fn swapchain_retires(device: &Device, create_info: &SwapchainCreateIn
         device.live().retire(old);
     }
 }
+
+/// The rules an acquire checks, by command.
+struct AcquireRules {
+    timeline: &'static str,
+    retired: &'static str,
+    neither: &'static str,
+    binary: &'static submission::BinaryRules,
+}
+
+const ACQUIRE: AcquireRules = AcquireRules {
+    timeline: "VUID-vkAcquireNextImageKHR-semaphore-03265",
+    retired: "VUID-vkAcquireNextImageKHR-swapchain-01285",
+    neither: "VUID-vkAcquireNextImageKHR-semaphore-01780",
+    binary: &submission::ACQUIRE_BINARY,
+};
+
+const ACQUIRE2: AcquireRules = AcquireRules {
+    timeline: "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
+    retired: "VUID-VkAcquireNextImageInfoKHR-swapchain-01675",
+    neither: "VUID-VkAcquireNextImageInfoKHR-semaphore-01782",
+    binary: &submission::ACQUIRE2_BINARY,
+};
+
+/// The checks of an acquire that do not need its fence's wrapper: something to
+/// signal, a swapchain that is not retired, and a binary semaphore with nothing
+/// signaled or pending.
+fn acquire_checks(
+    device: &Device,
+    swapchain: vk::SwapchainKHR,
+    semaphore: vk::Semaphore,
+    fence: vk::Fence,
+    rules: &AcquireRules,
+) -> Result<()> {
+    if semaphore == vk::Semaphore::null() && fence == vk::Fence::null() {
+        refuse(
+            rules.neither,
+            "an acquire needs a semaphore or a fence to signal".into(),
+        )?;
+    }
+    if semaphore != vk::Semaphore::null() {
+        submission::check_semaphore_type(device.live(), &[semaphore], false, rules.timeline)?;
+        submission::check_binary_ops(
+            device,
+            vk::Queue::null(),
+            &[submission::SemOp::Signal(semaphore)],
+            rules.binary,
+        )?;
+    }
+    if device.live().is_retired(swapchain) {
+        refuse(
+            rules.retired,
+            "the swapchain was retired by a later swapchain creation".into(),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkAcquireNextImageKHR`: those of [`acquire_checks`], an
+/// unsignaled fence no other operation will signal, and no infinite wait where the
+/// swapchain cannot give another image (more images acquired than its count less
+/// the surface's minimum: the presentation engine may hold the rest until a
+/// present).
+pub(crate) fn acquire_next_image_khr_checks(
+    device: &Device,
+    swapchain: &SwapchainKHR,
+    timeout: u64,
+    semaphore: Option<&Semaphore>,
+    fence: Option<&Fence>,
+) -> Result<()> {
+    acquire_checks(
+        device,
+        swapchain.raw(),
+        semaphore.map_or(vk::Semaphore::null(), |s| s.raw()),
+        fence.map_or(vk::Fence::null(), |f| f.raw()),
+        &ACQUIRE,
+    )?;
+    if let Some(f) = fence {
+        submission::check_fence(f, &submission::ACQUIRE)?;
+    }
+    let acquired = device.live().acquired_count(swapchain.raw());
+    if timeout == u64::MAX && acquired > 0 {
+        let swapchain_fns = device
+            .ext()
+            .khr_swapchain
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?;
+        let mut count = 0u32;
+        // SAFETY: a live swapchain of this device; a count query writes only `count`.
+        let r = unsafe {
+            (swapchain_fns.get_swapchain_images_khr)(
+                device.raw(),
+                swapchain.raw(),
+                &mut count,
+                core::ptr::null_mut(),
+            )
+        };
+        if r != vk::Result::SUCCESS {
+            return Err(Error::Vk(r));
+        }
+        let images = count as usize;
+        let surface = device.live().swapchain_surface(swapchain.raw());
+        let min = match surface {
+            Some(surface) => {
+                let mut caps = vk::SurfaceCapabilitiesKHR::default();
+                let physical = device.parent();
+                let fns = physical
+                    .parent()
+                    .ext()
+                    .khr_surface
+                    .as_ref()
+                    .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?;
+                // SAFETY: the surface lives as long as the swapchain, which the
+                // caller holds; the output is local.
+                let r = unsafe {
+                    (fns.get_physical_device_surface_capabilities_khr)(
+                        physical.raw(),
+                        surface,
+                        &mut caps,
+                    )
+                };
+                if r != vk::Result::SUCCESS {
+                    return Err(Error::Vk(r));
+                }
+                caps.min_image_count as usize
+            }
+            None => images,
+        };
+        if acquired > images.saturating_sub(min) {
+            refuse(
+                "VUID-vkAcquireNextImageKHR-surface-07783",
+                format!("{acquired} of the swapchain's {images} images are acquired, more than its count less the surface's minImageCount ({min}): forward progress is not guaranteed, so the timeout must not be UINT64_MAX"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// After `vkAcquireNextImageKHR` returned: when it acquired an image, the semaphore
+/// is signaled, the fence belongs to the acquire until it is seen signaled, and the
+/// image is acquired until a presentation takes it.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn acquire_next_image_khr_done(
+    device: &Device,
+    swapchain: &SwapchainKHR,
+    semaphore: Option<&Semaphore>,
+    fence: Option<&Fence>,
+    index: u32,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS && r != vk::Result::SUBOPTIMAL_KHR {
+        return;
+    }
+    if let Some(s) = semaphore {
+        submission::record_binary_ops(
+            device,
+            vk::Queue::null(),
+            &[submission::SemOp::Signal(s.raw())],
+            None,
+        );
+    }
+    if fence.is_some() {
+        submission::submitted(
+            device,
+            vk::Queue::null(),
+            fence,
+            &[],
+            Vec::new(),
+            Vec::new(),
+        );
+    }
+    device.live().image_acquired(swapchain.raw(), index);
+}
+
+/// The checks of `vkAcquireNextImage2KHR` that [`acquire_checks`] makes.
+pub(crate) fn acquire_next_image2_khr_checks(
+    device: &Device,
+    acquire_info: &AcquireNextImageInfoKHR<'_>,
+) -> Result<()> {
+    acquire_checks(
+        device,
+        acquire_info.swapchain,
+        acquire_info.semaphore,
+        acquire_info.fence,
+        &ACQUIRE2,
+    )
+}
+
+/// After `vkAcquireNextImage2KHR`, as after `vkAcquireNextImageKHR` (its fence is a
+/// raw handle here, so it is not tracked: the method stays `unsafe` for it).
+pub(crate) fn acquire_next_image2_khr_done(
+    device: &Device,
+    acquire_info: &AcquireNextImageInfoKHR<'_>,
+    index: u32,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS && r != vk::Result::SUBOPTIMAL_KHR {
+        return;
+    }
+    if acquire_info.semaphore != vk::Semaphore::null() {
+        submission::record_binary_ops(
+            device,
+            vk::Queue::null(),
+            &[submission::SemOp::Signal(acquire_info.semaphore)],
+            None,
+        );
+    }
+    device.live().image_acquired(acquire_info.swapchain, index);
+}

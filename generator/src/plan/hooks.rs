@@ -243,6 +243,15 @@ const DEVICE_QUEUES: &str = "checks the queue create infos against the physical 
 const SURFACE_REPORTS: &str = "checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count";
 const UNPROVEN_SWAPCHAIN_SURFACE: &str = "checked by the safe methods in every build (against what the physical device reports for the surface and the swapchain's images), but no test breaks it: lavapipe's X11 surface is supported by its only queue family, has no maximum image count, offers every present mode the emitted API defines, and supports the images of every create info the other checks let through";
 const RETIRED_SWAPCHAIN: &str = "checks oldSwapchain presents to the same surface and was not retired: the device records each swapchain's surface, and a creation retires its oldSwapchain before the call, whether or not it succeeds";
+const BINARY_SIGNALED: &str = "checks the binary semaphore's state, as for a wait: a signal needs it unsignaled, or waited on earlier on the same queue (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress, \"signaled ... but has not since been waited on\")";
+const SAME_AS_03238: &str = "checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names (a timeline semaphore may be waited on before its signal is submitted, as the timeline rules allow)";
+const SAME_AS_03268: &str = "checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names (a presentation waits only on binary semaphores: 03267)";
+const ONE_WAITER: &str = "checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names";
+const UNPROVEN_BINARY: &str = "checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command";
+const ACQUIRE_SIGNALS: &str = "checks the acquire has a semaphore or a fence to signal";
+const RETIRED_ACQUIRE: &str = "checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain";
+const BINARY_STATE: &str = "checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete";
+const FORWARD_PROGRESS: &str = "checks an infinite timeout against the swapchain's acquired images (the device records each acquire and presentation), its image count and the surface's minImageCount";
 const DEVICE_EXTENSIONS: &str = "checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version";
 const DEVICE_GROUP: &str = "checks a chained device group create info names each physical device once, the one the device is created from among them, all in one group that the instance enumerates";
 const UNPROVEN_DEVICE_GROUP: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has one physical device, the only member of its only device group";
@@ -406,6 +415,10 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082", How::Dynamic(CHAINED_COUNT)),
             ("VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083", How::Dynamic(CHAINED_COUNT)),
             ("VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084", How::Dynamic(CHAINED_COUNT)),
+            ("VUID-vkQueueSubmit-pWaitSemaphores-03238", How::Dynamic(BINARY_STATE)),
+            ("VUID-vkQueueSubmit-pSignalSemaphores-00067", How::Dynamic(BINARY_SIGNALED)),
+            ("VUID-vkQueueSubmit-pWaitSemaphores-00069", How::User(SAME_AS_03238)),
+            ("VUID-vkQueueSubmit-pWaitSemaphores-00068", How::User(ONE_WAITER)),
         ],
         ..NONE
     },
@@ -422,6 +435,10 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkQueueSubmit2-commandBuffer-03875", How::Dynamic(CBS)),
             ("VUID-vkQueueSubmit2-commandBuffer-03876", How::Dynamic(CBS)),
             ("VUID-vkQueueSubmit2-commandBuffer-03877", How::User(SECONDARY)),
+            ("VUID-vkQueueSubmit2-semaphore-03873", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueSubmit2-semaphore-03868", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueSubmit2-semaphore-03872", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueSubmit2-semaphore-03871", How::User(ONE_WAITER)),
         ],
         ..NONE
     },
@@ -436,6 +453,10 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkBindSparseInfo-pWaitSemaphores-03246", How::User(UNPROVEN)),
             ("VUID-VkBindSparseInfo-pNext-03247", How::User(UNPROVEN)),
             ("VUID-VkBindSparseInfo-pNext-03248", How::User(UNPROVEN)),
+            ("VUID-vkQueueBindSparse-pWaitSemaphores-03245", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueBindSparse-pWaitSemaphores-01117", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueBindSparse-pSignalSemaphores-01115", How::User(UNPROVEN_BINARY)),
+            ("VUID-vkQueueBindSparse-pWaitSemaphores-01116", How::User(ONE_WAITER)),
         ],
         ..NONE
     },
@@ -489,30 +510,51 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkAcquireNextImageKHR",
-        check: call("hooks::acquire_next_image_khr_checks", &["self", "semaphore"]),
-        settles: &[(
-            "VUID-vkAcquireNextImageKHR-semaphore-03265",
-            How::Dynamic(SEMAPHORE_TYPE),
-        )],
+        check: call(
+            "hooks::acquire_next_image_khr_checks",
+            &["self", "swapchain", "timeout", "semaphore", "fence"],
+        ),
+        after: call(
+            "hooks::acquire_next_image_khr_done",
+            &["self", "swapchain", "semaphore", "fence", "out", "r"],
+        ),
+        settles: &[
+            ("VUID-vkAcquireNextImageKHR-semaphore-03265", How::Dynamic(SEMAPHORE_TYPE)),
+            ("VUID-vkAcquireNextImageKHR-semaphore-01780", How::Dynamic(ACQUIRE_SIGNALS)),
+            ("VUID-vkAcquireNextImageKHR-swapchain-01285", How::Dynamic(RETIRED_ACQUIRE)),
+            ("VUID-vkAcquireNextImageKHR-semaphore-01286", How::Dynamic(BINARY_STATE)),
+            ("VUID-vkAcquireNextImageKHR-semaphore-01779", How::Dynamic(BINARY_STATE)),
+            ("VUID-vkAcquireNextImageKHR-fence-01287", How::Dynamic(FENCE)),
+            ("VUID-vkAcquireNextImageKHR-surface-07783", How::Dynamic(FORWARD_PROGRESS)),
+        ],
         ..NONE
     },
     Special {
         command: "vkAcquireNextImage2KHR",
         check: call("hooks::acquire_next_image2_khr_checks", &["self", "acquire_info"]),
-        settles: &[(
-            "VUID-VkAcquireNextImageInfoKHR-semaphore-03266",
-            How::User(UNPROVEN),
-        )],
+        after: call(
+            "hooks::acquire_next_image2_khr_done",
+            &["self", "acquire_info", "out", "r"],
+        ),
+        settles: &[
+            ("VUID-VkAcquireNextImageInfoKHR-semaphore-03266", How::User(UNPROVEN)),
+            ("VUID-VkAcquireNextImageInfoKHR-semaphore-01782", How::User(UNPROVEN)),
+            ("VUID-VkAcquireNextImageInfoKHR-swapchain-01675", How::User(UNPROVEN)),
+            ("VUID-VkAcquireNextImageInfoKHR-semaphore-01288", How::User(UNPROVEN)),
+            ("VUID-VkAcquireNextImageInfoKHR-semaphore-01781", How::User(UNPROVEN)),
+        ],
         ..NONE
     },
     Special {
         command: "vkQueuePresentKHR",
         check: call("hooks::queue_present_khr_checks", &["self", "present_info"]),
         before: call("hooks::queue_present_khr_before", &["self", "present_info"]),
-        settles: &[(
-            "VUID-vkQueuePresentKHR-pWaitSemaphores-03267",
-            How::Dynamic(SEMAPHORE_TYPE),
-        )],
+        settles: &[
+            ("VUID-vkQueuePresentKHR-pWaitSemaphores-03267", How::Dynamic(SEMAPHORE_TYPE)),
+            ("VUID-vkQueuePresentKHR-pWaitSemaphores-03268", How::Dynamic(BINARY_STATE)),
+            ("VUID-vkQueuePresentKHR-pWaitSemaphores-01295", How::User(SAME_AS_03268)),
+            ("VUID-vkQueuePresentKHR-pWaitSemaphores-01294", How::User(ONE_WAITER)),
+        ],
         ..NONE
     },
     Special {

@@ -8,14 +8,10 @@ impl Device {
 
 # Safety
 
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkAcquireNextImage2KHR-surface-07784`: If forward progress cannot be guaranteed for the `surface` used to create `swapchain`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
-- `VUID-VkAcquireNextImageInfoKHR-swapchain-01675`: `swapchain` must not be in the retired state
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01288`: If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01781`: If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
 - `VUID-VkAcquireNextImageInfoKHR-fence-01289`: If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-01782`: `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
 - `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290`: `deviceMask` must be a valid device mask
 
 # Valid usage
@@ -45,7 +41,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time: `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at run time: `VUID-VkAcquireNextImageInfoKHR-semaphore-03266`, `VUID-VkAcquireNextImageInfoKHR-semaphore-01782`, `VUID-VkAcquireNextImageInfoKHR-swapchain-01675`, `VUID-VkAcquireNextImageInfoKHR-semaphore-01288`, `VUID-VkAcquireNextImageInfoKHR-semaphore-01781`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn acquire_next_image2_khr_unchecked<'a>(
         &self,
@@ -69,6 +65,7 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::hooks::acquire_next_image2_khr_done(self, acquire_info, out, r);
         Ok((out, r))
     }
     /**`vkGetDeviceGroupPresentCapabilitiesKHR`

@@ -6,21 +6,16 @@ use super::*;
 impl Device {
     /**`vkAcquireNextImageKHR`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkAcquireNextImageKHR-swapchain-01285`: `swapchain` must not be in the retired state
-- `VUID-vkAcquireNextImageKHR-semaphore-01286`: If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
-- `VUID-vkAcquireNextImageKHR-semaphore-01779`: If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
-- `VUID-vkAcquireNextImageKHR-fence-01287`: If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
-- `VUID-vkAcquireNextImageKHR-semaphore-01780`: `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
-- `VUID-vkAcquireNextImageKHR-surface-07783`: If forward progress cannot be guaranteed for the `surface` used to create the `swapchain` member of `pAcquireInfo`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
-
 # Valid usage
 
 The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html). Settled by the wrappers:
 
+- `VUID-vkAcquireNextImageKHR-swapchain-01285`: dynamic (checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain)
+- `VUID-vkAcquireNextImageKHR-semaphore-01286`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
+- `VUID-vkAcquireNextImageKHR-semaphore-01779`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
+- `VUID-vkAcquireNextImageKHR-fence-01287`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkAcquireNextImageKHR-semaphore-01780`: dynamic (checks the acquire has a semaphore or a fence to signal)
+- `VUID-vkAcquireNextImageKHR-surface-07783`: dynamic (checks an infinite timeout against the swapchain's acquired images (the device records each acquire and presentation), its image count and the surface's minImageCount)
 - `VUID-vkAcquireNextImageKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAcquireNextImageKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -29,11 +24,9 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
 - `VUID-vkAcquireNextImageKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkAcquireNextImageKHR-semaphore-03265`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkAcquireNextImageKHR-semaphore-03265`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)*/
     #[inline]
-    pub unsafe fn acquire_next_image_khr(
+    pub fn acquire_next_image_khr(
         &self,
         swapchain: &SwapchainKHR,
         timeout: u64,
@@ -52,7 +45,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::acquire_next_image_khr_checks(self, semaphore)?;
+        crate::hooks::acquire_next_image_khr_checks(
+            self,
+            swapchain,
+            timeout,
+            semaphore,
+            fence,
+        )?;
         {
             let r = self.validate_acquire_next_image_khr(swapchain, semaphore, fence);
             r?;
@@ -67,7 +66,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, `VUID-vkAcquireNextImageKHR-semaphore-03265`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run time: `VUID-vkAcquireNextImageKHR-swapchain-parent`, `VUID-vkAcquireNextImageKHR-semaphore-parent`, `VUID-vkAcquireNextImageKHR-fence-parent`, `VUID-vkAcquireNextImageKHR-semaphore-03265`, `VUID-vkAcquireNextImageKHR-semaphore-01780`, `VUID-vkAcquireNextImageKHR-swapchain-01285`, `VUID-vkAcquireNextImageKHR-semaphore-01286`, `VUID-vkAcquireNextImageKHR-semaphore-01779`, `VUID-vkAcquireNextImageKHR-fence-01287`, `VUID-vkAcquireNextImageKHR-surface-07783`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn acquire_next_image_khr_unchecked(
         &self,
@@ -109,6 +108,14 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::hooks::acquire_next_image_khr_done(
+            self,
+            swapchain,
+            semaphore,
+            fence,
+            out,
+            r,
+        );
         Ok((out, r))
     }
     /**`vkCreateSwapchainKHR`
@@ -277,12 +284,9 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueuePresentKHR-pSwapchains-01292`: Each element of `pSwapchains` member of `pPresentInfo` must be a swapchain that is created for a surface for which presentation is supported from `queue` as determined using a call to `vkGetPhysicalDeviceSurfaceSupportKHR`
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`: When a semaphore wait operation referring to a binary semaphore defined by the elements of the `pWaitSemaphores` member of `pPresentInfo` executes on `queue`, there must be no other queues waiting on the same semaphore
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`: All elements of the `pWaitSemaphores` member of `pPresentInfo` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: All elements of the `pWaitSemaphores` member of `pPresentInfo` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
 - `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`: `swapchainCount` must equal `0` or VkPresentInfoKHR::`swapchainCount`
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_LOCAL_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and the corresponding element of VkDeviceGroupPresentCapabilitiesKHR::`presentMask` must be non-zero
 - `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`: If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_REMOTE_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and some physical device in the logical device must include that bit in its VkDeviceGroupPresentCapabilitiesKHR::`presentMask`
@@ -299,8 +303,13 @@ The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos
 - `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names (a presentation waits only on binary semaphores: 03267)
+- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn queue_present_khr<'a>(
         &self,
@@ -358,7 +367,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_present_khr_unchecked<'a>(
         &self,

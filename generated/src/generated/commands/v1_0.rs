@@ -3635,12 +3635,8 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 30 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 26 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkQueueBindSparse-pSignalSemaphores-01115`: Each element of the `pSignalSemaphores` member of each element of `pBindInfo` must be unsignaled when the semaphore signal operation it defines is executed on the device
-- `VUID-vkQueueBindSparse-pWaitSemaphores-01116`: When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pBindInfo` executes on `queue`, there must be no other queues waiting on the same semaphore
-- `VUID-vkQueueBindSparse-pWaitSemaphores-01117`: All elements of the `pWaitSemaphores` member of all elements of the `pBindInfo` parameter referring to a binary semaphore must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
-- `VUID-vkQueueBindSparse-pWaitSemaphores-03245`: All elements of the `pWaitSemaphores` member of all elements of `pBindInfo` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
 - `VUID-VkBindSparseInfo-pSignalSemaphores-03249`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
 - `VUID-VkBindSparseInfo-pWaitSemaphores-03250`: For each element of `pWaitSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pWaitSemaphoreValues` must have a value which does not differ from the current value of the semaphore or from the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
 - `VUID-VkBindSparseInfo-pSignalSemaphores-03251`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value which does not differ from the current value of the semaphore or from the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
@@ -3680,7 +3676,10 @@ The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos
 - `VUID-vkQueueBindSparse-queuetype`: dynamic (checks the queue flags of the queue's family, recorded when the queue was retrieved)
 - `VUID-vkQueueBindSparse-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
+- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names*/
     #[inline]
     pub unsafe fn queue_bind_sparse<'a>(
         &self,
@@ -3707,7 +3706,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, `VUID-vkQueueBindSparse-pWaitSemaphores-03245`, `VUID-vkQueueBindSparse-pWaitSemaphores-01117`, `VUID-vkQueueBindSparse-pSignalSemaphores-01115`, `VUID-vkQueueBindSparse-pWaitSemaphores-01116`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_bind_sparse_unchecked<'a>(
         &self,
@@ -3741,19 +3740,15 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
 
 # Safety
 
-The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 23 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueueSubmit-pCommandBuffers-00065`: Any calls to vkCmdSetEvent, vkCmdResetEvent or vkCmdWaitEvents that have been recorded into any of the command buffer elements of the `pCommandBuffers` member of any element of `pSubmits`, must not reference any VkEvent that is referenced by any of those commands in a command buffer that has been submitted to another queue and is still in the pending state
 - `VUID-vkQueueSubmit-pWaitDstStageMask-00066`: Any stage flag included in any element of the `pWaitDstStageMask` member of any element of `pSubmits` must be a pipeline stage supported by one of the capabilities of `queue`, as specified in the table of supported pipeline stages
-- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: Each binary semaphore element of the `pSignalSemaphores` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
-- `VUID-vkQueueSubmit-pWaitSemaphores-00068`: When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pSubmits` executes on `queue`, there must be no other queues waiting on the same semaphore
 - `VUID-vkQueueSubmit-pCommandBuffers-00073`: If any secondary command buffers recorded into any element of the `pCommandBuffers` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
 - `VUID-vkQueueSubmit-pCommandBuffers-00074`: Each element of the `pCommandBuffers` member of each element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
 - `VUID-vkQueueSubmit-pSubmits-02207`: If any element of `pSubmits->pCommandBuffers` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens-before the acquire operation
 - `VUID-vkQueueSubmit-pSubmits-02808`: Any resource created with `VK_SHARING_MODE_EXCLUSIVE` that is read by an operation specified by `pSubmits` must not be owned by any queue family other than the one which `queue` belongs to, at the time it is executed
 - `VUID-vkQueueSubmit-pSubmits-04626`: Any resource created with `VK_SHARING_MODE_CONCURRENT` that is accessed by an operation specified by `pSubmits` must have included the queue family of `queue` at resource creation time
-- `VUID-vkQueueSubmit-pWaitSemaphores-00069`: All elements of the `pWaitSemaphores` member of all elements of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
-- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: All elements of the `pWaitSemaphores` member of all elements of `pSubmits` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends (if any) must have also been submitted for execution
 - `VUID-vkQueueSubmit-queue-06448`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, there must be no element of `pSubmits` that includes an VkProtectedSubmitInfo structure in its `pNext` chain with `protectedSubmit` equal to `VK_TRUE`
 - `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`: All elements of `pWaitSemaphoreDeviceIndices` and `pSignalSemaphoreDeviceIndices` must be valid device indices
 - `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`: All elements of `pCommandBufferDeviceMasks` must be valid device masks
@@ -3777,6 +3772,7 @@ The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org
 
 - `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
 - `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
+- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: dynamic (checks the binary semaphore's state, as for a wait: a signal needs it unsignaled, or waited on earlier on the same queue (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress, "signaled ... but has not since been waited on"))
 - `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
@@ -3784,11 +3780,14 @@ The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org
 - `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
+Left to the caller (listed one by one in the crate's `validation.json`): 11.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 12: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names (a timeline semaphore may be waited on before its signal is submitted, as the timeline rules allow)
+- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
+- 8: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn queue_submit<'a>(
         &self,
@@ -3815,7 +3814,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, `VUID-vkQueueSubmit-pWaitSemaphores-03238`, `VUID-vkQueueSubmit-pSignalSemaphores-00067`, `VUID-vkQueueSubmit-pWaitSemaphores-00069`, `VUID-vkQueueSubmit-pWaitSemaphores-00068`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,

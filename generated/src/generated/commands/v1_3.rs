@@ -372,14 +372,11 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 16 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
-- `VUID-vkQueueSubmit2-semaphore-03868`: The `semaphore` member of any binary semaphore element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
 - `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
 - `VUID-vkQueueSubmit2-stageMask-03870`: The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
-- `VUID-vkQueueSubmit2-semaphore-03871`: When a semaphore wait operation for a binary semaphore is executed, as defined by the `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits`, there must be no other queues waiting on the same semaphore
-- `VUID-vkQueueSubmit2-semaphore-03872`: The `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
 - `VUID-vkQueueSubmit2-commandBuffer-03877`: If any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
 - `VUID-vkQueueSubmit2-commandBuffer-03878`: The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
 - `VUID-vkQueueSubmit2-commandBuffer-03879`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens before the acquire operation
@@ -412,7 +409,9 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
 - 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
-- 11: explicit rule; the wrappers do not check it*/
+- 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
+- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
+- 7: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn queue_submit2<'a>(
         &self,
@@ -439,7 +438,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, `VUID-vkQueueSubmit2-semaphore-03873`, `VUID-vkQueueSubmit2-semaphore-03868`, `VUID-vkQueueSubmit2-semaphore-03872`, `VUID-vkQueueSubmit2-semaphore-03871`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit2_unchecked<'a>(
         &self,

@@ -18,8 +18,8 @@ The rules are on [`VkAcquireNextImageInfoKHR`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 8.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 6: explicit rule; the wrappers do not check it*/
+- 5: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
+- 2: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
