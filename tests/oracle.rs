@@ -1938,15 +1938,13 @@ fn cmd_dispatch_indirect(
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
-        unsafe {
-            r.cmd_bind_descriptor_sets(
-                vk::PipelineBindPoint::COMPUTE,
-                &p.compute_layout,
-                0,
-                &[&p.set],
-                &[],
-            )
-        }
+        r.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &p.compute_layout,
+            0,
+            &[&p.set],
+            &[],
+        )
         .expect("sets");
     };
     let mut result = Ok(());
@@ -2571,15 +2569,13 @@ fn cmd_dispatch(
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
-        unsafe {
-            r.cmd_bind_descriptor_sets(
-                vk::PipelineBindPoint::COMPUTE,
-                &p.compute_layout,
-                0,
-                &[&p.set],
-                &[],
-            )
-        }
+        r.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &p.compute_layout,
+            0,
+            &[&p.set],
+            &[],
+        )
         .expect("sets");
     };
     let (x, y, z) = (a.group_count_x, a.group_count_y, a.group_count_z);

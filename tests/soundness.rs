@@ -2177,11 +2177,11 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     }
     let graphics = vk::PipelineBindPoint::GRAPHICS;
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0]) }),
+        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
         "VUID-vkCmdBindDescriptorSets-firstSet-00360"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[]) }),
+        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
         "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359"
     );
     // The recorder goes on with correct calls.
@@ -2189,7 +2189,8 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .expect("push");
     rec.cmd_push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
         .expect("push");
-    unsafe { rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0]) }.expect("bind");
+    rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
+        .expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
 
@@ -2213,6 +2214,166 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, &layout, 0, &[&set], &[]) }
         .expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359");
+    s.messages.abort_on_error(false);
+    rec.end().expect("end");
+}
+
+/// A set bound for a layout's set number has that set layout, and each dynamic
+/// offset is aligned and keeps its descriptor's range inside the buffer: tuff
+/// refuses each break, and the layer names the same rule for the unchecked call.
+#[test]
+fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let set_layout = |ty| {
+        let bindings = [tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(ty)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::VERTEX)];
+        d.create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout")
+    };
+    let uniform = vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC;
+    let storage = vk::DescriptorType::STORAGE_BUFFER_DYNAMIC;
+    let (uniform_layout, storage_layout) = (set_layout(uniform), set_layout(storage));
+    let pipeline_layout = |set_layout: &tuff::DescriptorSetLayout| {
+        let set_layouts = tuff::HandleSlice::new(&[set_layout]);
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+            .expect("layout")
+    };
+    let (uniform_pipeline, storage_pipeline) = (
+        pipeline_layout(&uniform_layout),
+        pipeline_layout(&storage_layout),
+    );
+    let sizes = [
+        vk::DescriptorPoolSize {
+            ty: uniform,
+            descriptor_count: 2,
+        },
+        vk::DescriptorPoolSize {
+            ty: storage,
+            descriptor_count: 1,
+        },
+    ];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(3)
+                .pool_sizes(&sizes),
+        )
+        .expect("descriptor pool");
+    let allocate = |layout: &tuff::DescriptorSetLayout| {
+        let layouts = tuff::HandleSlice::new(&[layout]);
+        d.allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("set")
+        .pop()
+        .expect("one set")
+    };
+    let (ranged, whole, stored) = (
+        allocate(&uniform_layout),
+        allocate(&uniform_layout),
+        allocate(&storage_layout),
+    );
+    let usage = vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::STORAGE_BUFFER;
+    let (buffer, _memory) = host_buffer(&s, 1024, usage);
+    let write = |set: &tuff::DescriptorSet, ty, range| {
+        let info = [tuff::DescriptorBufferInfo::new()
+            .buffer(Some(&buffer))
+            .range(range)];
+        unsafe {
+            d.update_descriptor_sets(
+                &[tuff::WriteDescriptorSet::new(set)
+                    .descriptor_type(ty)
+                    .buffer_info(&info)],
+                &[],
+            )
+        }
+        .expect("write");
+    };
+    write(&ranged, uniform, 64);
+    write(&whole, uniform, vk::WHOLE_SIZE);
+    write(&stored, storage, 64);
+    let limits = s.physical.get_physical_device_properties().limits;
+    let (ua, sa) = (
+        limits.min_uniform_buffer_offset_alignment as u32,
+        limits.min_storage_buffer_offset_alignment as u32,
+    );
+    assert!(ua > 1 && sa > 1, "lavapipe aligns dynamic offsets");
+    let graphics = vk::PipelineBindPoint::GRAPHICS;
+    type Case<'a> = (
+        &'static str,
+        &'a tuff::PipelineLayout,
+        &'a tuff::DescriptorSet,
+        u32,
+    );
+    let cases: [Case<'_>; 5] = [
+        (
+            "VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358",
+            &storage_pipeline,
+            &ranged,
+            0,
+        ),
+        (
+            "VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971",
+            &uniform_pipeline,
+            &ranged,
+            ua / 2,
+        ),
+        (
+            "VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972",
+            &storage_pipeline,
+            &stored,
+            sa / 2,
+        ),
+        (
+            "VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979",
+            &uniform_pipeline,
+            &ranged,
+            1024 / ua * ua,
+        ),
+        (
+            "VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715",
+            &uniform_pipeline,
+            &whole,
+            ua,
+        ),
+    ];
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, layout, set, offset) in cases {
+        assert_eq!(
+            vuid(rec.cmd_bind_descriptor_sets(graphics, layout, 0, &[set], &[offset])),
+            expected
+        );
+    }
+    // The recorder goes on with correct binds.
+    rec.cmd_bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&ranged], &[ua])
+        .expect("bind");
+    rec.cmd_bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&whole], &[0])
+        .expect("bind");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, layout, set, offset) in cases {
+        // SAFETY: the layer skips the call, which breaks only the rule under test; the
+        // command buffer is never submitted.
+        unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, layout, 0, &[set], &[offset]) }
+            .expect("recorded");
+        assert_layer_reports(&s, expected);
+    }
     s.messages.abort_on_error(false);
     rec.end().expect("end");
 }
@@ -3011,7 +3172,7 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
         vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
         "VUID-vkCmdDispatch-None-02697"
     );
-    unsafe { rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[]) }
+    rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
         .expect("sets");
     unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("a dispatch with its pipeline and set");
     rec.end().expect("end");

@@ -1626,17 +1626,34 @@ pub(crate) fn descriptor_set_layout_created(
         .zip(flags)
         .find(|(_, f)| f.contains(vk::DescriptorBindingFlags::VARIABLE_DESCRIPTOR_COUNT))
         .map(|(b, _)| b.binding);
-    let mut bindings: Vec<BindingRecord> = bindings
+    let mut ordered: Vec<(BindingRecord, &[vk::Sampler])> = bindings
         .iter()
-        .map(|b| BindingRecord {
-            binding: b.binding,
-            ty: b.descriptor_type,
-            count: b.descriptor_count,
-            stages: b.stage_flags,
-            immutable: !b.p_immutable_samplers.is_null(),
+        .enumerate()
+        .map(|(i, b)| {
+            let samplers = if b.p_immutable_samplers.is_null() {
+                &[][..]
+            } else {
+                // SAFETY: the safe setter stores the samplers with the binding's
+                // count.
+                unsafe { crate::retention::raw_slice(b.p_immutable_samplers, b.descriptor_count) }
+            };
+            let record = BindingRecord {
+                binding: b.binding,
+                ty: b.descriptor_type,
+                count: b.descriptor_count,
+                stages: b.stage_flags,
+                immutable: !b.p_immutable_samplers.is_null(),
+                flags: flags.get(i).copied().unwrap_or_default(),
+            };
+            (record, samplers)
         })
         .collect();
-    bindings.sort_by_key(|b| b.binding);
+    ordered.sort_by_key(|(b, _)| b.binding);
+    let immutable_samplers = ordered
+        .iter()
+        .flat_map(|(_, s)| s.iter().copied())
+        .collect();
+    let bindings: Vec<BindingRecord> = ordered.into_iter().map(|(b, _)| b).collect();
     device.live().set_layout_created(
         layout.raw(),
         SetLayoutRecord {
@@ -1645,6 +1662,8 @@ pub(crate) fn descriptor_set_layout_created(
                 .flags
                 .contains(vk::DescriptorSetLayoutCreateFlags::UPDATE_AFTER_BIND_POOL),
             variable,
+            flags: raw.flags,
+            immutable_samplers,
         },
     );
     layout
@@ -1867,6 +1886,7 @@ fn check_push_ranges(
 /// sets and the dynamic offsets.
 pub(crate) fn cmd_bind_descriptor_sets_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
+    bind_point: vk::PipelineBindPoint,
     layout: &PipelineLayout,
     first_set: u32,
     descriptor_sets: &[&DescriptorSet],
@@ -1880,16 +1900,111 @@ pub(crate) fn cmd_bind_descriptor_sets_checks<S: State>(
             format!("firstSet plus descriptorSetCount must be at most the layout's setLayoutCount (firstSet = {first_set}, descriptorSetCount = {}, setLayoutCount = {sets})", descriptor_sets.len()),
         )?;
     }
-    let live = recorder.device().live();
-    let mut dynamics: u64 = 0;
-    for s in descriptor_sets {
-        dynamics += u64::from(live.set_layout_of(s.raw()).map_or(0, |l| l.dynamics()));
+    let needs = if bind_point == vk::PipelineBindPoint::COMPUTE {
+        vk::QueueFlags::COMPUTE
+    } else {
+        vk::QueueFlags::GRAPHICS
+    };
+    if !recorder.pool_queue_flags().contains(needs) {
+        refuse(
+            "VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361",
+            format!("the command buffer's pool is of a queue family without {needs:?}, which {bind_point:?} needs"),
+        )?;
     }
+    let live = recorder.device().live();
+    let layouts: SmallVec<[Option<Vrc<SetLayoutRecord>>; 4]> = descriptor_sets
+        .iter()
+        .map(|s| live.set_layout_of(s.raw()))
+        .collect();
+    for (i, got) in layouts.iter().enumerate() {
+        let wanted = record.sets.get(first_set as usize + i);
+        let matches = match (got, wanted) {
+            (Some(got), Some(wanted)) => SetLayoutRecord::matches(got, wanted),
+            _ => false,
+        };
+        if !matches {
+            refuse(
+                "VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358",
+                format!("pDescriptorSets[{i}] was allocated with a set layout that is not the layout's set {} (nor identically defined)", first_set as usize + i),
+            )?;
+        }
+    }
+    let dynamics: u64 = layouts
+        .iter()
+        .map(|l| u64::from(l.as_ref().map_or(0, |l| l.dynamics())))
+        .sum();
     if dynamics != dynamic_offsets.len() as u64 {
         refuse(
             "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359",
             format!("dynamicOffsetCount must equal the number of dynamic descriptors in the sets (dynamicOffsetCount = {}, dynamic descriptors = {dynamics})", dynamic_offsets.len()),
         )?;
+    }
+    if !dynamic_offsets.is_empty() {
+        dynamic_offset_checks(
+            recorder.device(),
+            descriptor_sets,
+            &layouts,
+            dynamic_offsets,
+        )?;
+    }
+    Ok(())
+}
+
+/// Each dynamic offset, in the order of the sets, their bindings and array elements:
+/// aligned for its descriptor's type, 0 for a descriptor written with
+/// `VK_WHOLE_SIZE`, and keeping the written range inside its buffer.
+fn dynamic_offset_checks(
+    device: &Device,
+    sets: &[&DescriptorSet],
+    layouts: &[Option<Vrc<SetLayoutRecord>>],
+    offsets: &[u32],
+) -> Result<()> {
+    let limits = limits(device);
+    let live = device.live();
+    let mut next = offsets.iter().copied().enumerate();
+    for (set, layout) in sets.iter().zip(layouts) {
+        let Some(layout) = layout else { continue };
+        for b in &layout.bindings {
+            let (alignment, vuid) = match b.ty {
+                vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC => (
+                    limits.min_uniform_buffer_offset_alignment,
+                    "VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971",
+                ),
+                vk::DescriptorType::STORAGE_BUFFER_DYNAMIC => (
+                    limits.min_storage_buffer_offset_alignment,
+                    "VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972",
+                ),
+                _ => continue,
+            };
+            for element in 0..b.count {
+                let Some((i, offset)) = next.next() else {
+                    return Ok(());
+                };
+                if alignment != 0 && u64::from(offset) % alignment != 0 {
+                    refuse(
+                        vuid,
+                        format!("pDynamicOffsets[{i}] ({offset}) is not a multiple of {alignment}, the alignment of a {:?} descriptor", b.ty),
+                    )?;
+                }
+                let Some((at, range, size)) = live.dynamic_range(set.raw(), (b.binding, element))
+                else {
+                    continue;
+                };
+                if range == vk::WHOLE_SIZE {
+                    if offset != 0 {
+                        refuse(
+                            "VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715",
+                            format!("pDynamicOffsets[{i}] ({offset}) is for binding {} element {element}, written with VK_WHOLE_SIZE, so it must be 0", b.binding),
+                        )?;
+                    }
+                } else if at.saturating_add(u64::from(offset)).saturating_add(range) > size {
+                    refuse(
+                        "VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979",
+                        format!("binding {} element {element}: offset {at} plus pDynamicOffsets[{i}] ({offset}) plus range {range} is past the buffer's {size} bytes", b.binding),
+                    )?;
+                }
+            }
+        }
     }
     Ok(())
 }
@@ -2985,7 +3100,7 @@ pub(crate) fn bound_pipeline_checks<S: State>(
             .sets
             .get(n)
             .and_then(Option::as_ref)
-            .is_some_and(|got| Vrc::ptr_eq(got, wanted) || **got == **wanted);
+            .is_some_and(|got| SetLayoutRecord::matches(got, wanted));
         if !ok {
             refuse(
                 sets_vuid,

@@ -41,9 +41,24 @@ unsafe fn read<T: Copy + Default>(ptr: *const T, i: usize) -> T {
     }
 }
 
+/// Whether a descriptor type takes a dynamic offset at binding.
+fn is_dynamic(ty: vk::DescriptorType) -> bool {
+    matches!(
+        ty,
+        vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC | vk::DescriptorType::STORAGE_BUFFER_DYNAMIC
+    )
+}
+
 /// An element of a descriptor set: binding, array element, and which of the
 /// descriptor's handles (an image descriptor has a view and a sampler).
 type Slot = (u32, u32, u8);
+
+/// A dynamic buffer descriptor as written: `offset`, `range` (maybe
+/// `VK_WHOLE_SIZE`) and the size of the buffer.
+pub(crate) type DynamicRange = (u64, u64, u64);
+
+/// The dynamic buffer descriptors of one set, by binding and array element.
+type SetRanges = HashMap<(u32, u32), DynamicRange>;
 
 /// A live object, weakly, and its host synchronization.
 type LiveEntry = (Vweak<dyn tuff_runtime::Retain>, HostSync);
@@ -54,6 +69,10 @@ pub(crate) struct Live {
     /// its handle shares.
     objects: Vutex<HashMap<(vk::ObjectType, u64), LiveEntry>>,
     sets: Vutex<HashMap<u64, HashMap<Slot, Retained>>>,
+    /// For each dynamic buffer descriptor written (set, then binding and array
+    /// element): the offset and range written, and the buffer's size, which a
+    /// binding's dynamic offset is checked against.
+    dynamic_ranges: Vutex<HashMap<u64, SetRanges>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
     /// Held by a safe allocation from its count check until its memory is listed,
@@ -183,6 +202,8 @@ pub(crate) struct BindingRecord {
     pub stages: vk::ShaderStageFlags,
     /// Whether it has immutable samplers.
     pub immutable: bool,
+    /// Its `VkDescriptorBindingFlags`.
+    pub flags: vk::DescriptorBindingFlags,
 }
 
 /// A live descriptor set layout's bindings, in binding order, which descriptor
@@ -197,6 +218,20 @@ pub(crate) struct SetLayoutRecord {
     /// whose count each set picks at its allocation (its record here is the
     /// largest a set may pick).
     pub variable: Option<u32>,
+    /// `VkDescriptorSetLayoutCreateInfo::flags`.
+    pub flags: vk::DescriptorSetLayoutCreateFlags,
+    /// The immutable samplers of every binding, in binding order: with the rest,
+    /// what makes two layouts identically defined (samplers compared by handle, so
+    /// two identically defined samplers make the layouts differ here).
+    pub immutable_samplers: Vec<vk::Sampler>,
+}
+
+impl SetLayoutRecord {
+    /// Whether two set layouts are the same object or identically defined: what a
+    /// set bound for a pipeline layout's set number must have been allocated with.
+    pub fn matches(a: &Vrc<SetLayoutRecord>, b: &Vrc<SetLayoutRecord>) -> bool {
+        Vrc::ptr_eq(a, b) || **a == **b
+    }
 }
 
 impl SetLayoutRecord {
@@ -288,6 +323,7 @@ impl Default for Live {
     fn default() -> Self {
         Self {
             objects: Vutex::new(HashMap::default()),
+            dynamic_ranges: Vutex::new(HashMap::default()),
             sets: Vutex::new(HashMap::default()),
             memories: Vutex::new(HashMap::default()),
             allocating: Vutex::new(()),
@@ -426,6 +462,7 @@ impl Live {
             // freed while that set's wrapper lived on; released outside the lock.
             let stale = self.sets.lock().remove(&raw);
             drop(stale);
+            self.dynamic_ranges.lock().remove(&raw);
         }
     }
 
@@ -513,6 +550,7 @@ impl Live {
             // buffer runs its Drop, which unlists it.
             let written = self.sets.lock().remove(&key.1);
             drop(written);
+            self.dynamic_ranges.lock().remove(&key.1);
         }
     }
 
@@ -963,11 +1001,33 @@ impl Live {
                 for (k, o) in objects.into_iter().enumerate() {
                     slots.push(((w.dst_binding, w.dst_array_element + i as u32, k as u8), o));
                 }
+                if is_dynamic(w.descriptor_type) {
+                    // SAFETY: as for the reader above.
+                    let b = unsafe { read(w.p_buffer_info, i) };
+                    self.dynamic_written(
+                        w.dst_set,
+                        (w.dst_binding, w.dst_array_element + i as u32),
+                        b,
+                    );
+                }
             }
             self.write(w.dst_set, slots);
         }
         for c in copies {
             let mut slots = Vec::with_capacity(2 * c.descriptor_count as usize);
+            {
+                let mut ranges = self.dynamic_ranges.lock();
+                let copied: Vec<((u32, u32), DynamicRange)> = (0..c.descriptor_count)
+                    .filter_map(|i| {
+                        let from = (c.src_binding, c.src_array_element + i);
+                        let r = ranges.get(&c.src_set.as_raw())?.get(&from)?;
+                        Some(((c.dst_binding, c.dst_array_element + i), *r))
+                    })
+                    .collect();
+                if !copied.is_empty() {
+                    ranges.entry(c.dst_set.as_raw()).or_default().extend(copied);
+                }
+            }
             {
                 let sets = self.sets.lock();
                 let src = sets.get(&c.src_set.as_raw());
@@ -1014,8 +1074,48 @@ impl Live {
                 for (k, o) in objects.into_iter().enumerate() {
                     slots.push(((e.dst_binding, e.dst_array_element + i as u32, k as u8), o));
                 }
+                if is_dynamic(e.descriptor_type) {
+                    // SAFETY: as for the readers above.
+                    let b = unsafe { at.cast::<vk::DescriptorBufferInfo>().read_unaligned() };
+                    self.dynamic_written(set, (e.dst_binding, e.dst_array_element + i as u32), b);
+                }
             }
         }
         self.write(set, slots);
+    }
+
+    /// Records a dynamic buffer descriptor's offset and range, with its buffer's size
+    /// (a buffer without a wrapper's record is not recorded, and its binding not
+    /// checked).
+    fn dynamic_written(
+        &self,
+        set: vk::DescriptorSet,
+        slot: (u32, u32),
+        b: vk::DescriptorBufferInfo,
+    ) {
+        let size = self.buffer(b.buffer).map(|r| r.size);
+        let mut ranges = self.dynamic_ranges.lock();
+        let of_set = ranges.entry(set.as_raw()).or_default();
+        match size {
+            Some(size) => {
+                of_set.insert(slot, (b.offset, b.range, size));
+            }
+            None => {
+                of_set.remove(&slot);
+            }
+        }
+    }
+
+    /// What the dynamic buffer descriptor at `slot` of `set` was written with.
+    pub(crate) fn dynamic_range(
+        &self,
+        set: vk::DescriptorSet,
+        slot: (u32, u32),
+    ) -> Option<DynamicRange> {
+        self.dynamic_ranges
+            .lock()
+            .get(&set.as_raw())
+            .and_then(|s| s.get(&slot))
+            .copied()
     }
 }

@@ -404,15 +404,13 @@ impl Pipelines {
         }
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
             .expect("recorded");
-        unsafe {
-            rec.cmd_bind_descriptor_sets(
-                vk::PipelineBindPoint::COMPUTE,
-                &self.compute_layout,
-                0,
-                &[&self.set],
-                &[],
-            )
-        }
+        rec.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &self.compute_layout,
+            0,
+            &[&self.set],
+            &[],
+        )
         .expect("recorded");
         unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("recorded");
         rec

@@ -140,17 +140,13 @@ impl Scene for Bezier {
             view.extent,
         );
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        // SAFETY: the sets were allocated with the layout's set layouts and written before
-        // recording, and the pipeline's bind point and layout match them.
-        unsafe {
-            rec.cmd_bind_descriptor_sets(
-                vk::PipelineBindPoint::GRAPHICS,
-                &self.layout,
-                0,
-                &[&self.set],
-                &[],
-            )
-        }?;
+        rec.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::GRAPHICS,
+            &self.layout,
+            0,
+            &[&self.set],
+            &[],
+        )?;
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single

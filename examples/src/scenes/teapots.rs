@@ -133,17 +133,13 @@ impl Scene for Teapots {
         view: &View,
     ) -> tuff::Result<()> {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        // SAFETY: the sets were allocated with the layout's set layouts and written before
-        // recording, and the pipeline's bind point and layout match them.
-        unsafe {
-            rec.cmd_bind_descriptor_sets(
-                vk::PipelineBindPoint::GRAPHICS,
-                &self.pipeline_layout,
-                0,
-                &[&self.sets[view.slot]],
-                &[],
-            )
-        }?;
+        rec.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::GRAPHICS,
+            &self.pipeline_layout,
+            0,
+            &[&self.sets[view.slot]],
+            &[],
+        )?;
         rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
         rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {

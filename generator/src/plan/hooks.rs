@@ -248,6 +248,10 @@ const SAME_AS_03238: &str = "checked by the safe methods in every build, by the 
 const SAME_AS_03268: &str = "checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names (a presentation waits only on binary semaphores: 03267)";
 const ONE_WAITER: &str = "checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names";
 const UNPROVEN_BINARY: &str = "checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command";
+const SET_LAYOUTS_MATCH: &str = "checks each set's layout, recorded at its allocation, is the pipeline layout's layout at that set number or identically defined (bindings, their types, counts, stages, flags and immutable samplers, and the layout's flags, all recorded at creation)";
+const BIND_POINT_FAMILY: &str = "checked by the safe methods in every build (the bind point against the queue flags of the pool's family, recorded when the pool was created), but no test breaks it: lavapipe's only queue family has graphics and compute";
+const DYNAMIC_OFFSETS: &str = "checks each dynamic offset, in the order of sets, bindings and elements, against the alignment limit of its descriptor's type";
+const DYNAMIC_RANGES: &str = "checks each dynamic offset against the offset and range its descriptor was written with and its buffer's size (the device records them from every write, copy and template update of a dynamic buffer descriptor)";
 const ACQUIRE_SIGNALS: &str = "checks the acquire has a semaphore or a fence to signal";
 const RETIRED_ACQUIRE: &str = "checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain";
 const BINARY_STATE: &str = "checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete";
@@ -1306,9 +1310,26 @@ pub const SPECIALS: &[Special] = &[
         ),
         check: call(
             "hooks::cmd_bind_descriptor_sets_checks",
-            &["self", "layout", "first_set", "descriptor_sets", "dynamic_offsets"],
+            &[
+                "self",
+                "pipeline_bind_point",
+                "layout",
+                "first_set",
+                "descriptor_sets",
+                "dynamic_offsets",
+            ],
         ),
         settles: &[
+            ("VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358", How::Dynamic(SET_LAYOUTS_MATCH)),
+            ("VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361", How::User(BIND_POINT_FAMILY)),
+            ("VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971", How::Dynamic(DYNAMIC_OFFSETS)),
+            ("VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972", How::Dynamic(DYNAMIC_OFFSETS)),
+            ("VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979", How::Dynamic(DYNAMIC_RANGES)),
+            ("VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715", How::Dynamic(DYNAMIC_RANGES)),
+            (
+                "VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563",
+                How::Static("taken as wrappers, which always hold valid descriptor sets"),
+            ),
             (
                 "VUID-vkCmdBindDescriptorSets-firstSet-00360",
                 How::Dynamic("checks the sets against the layout's set count, kept from its creation"),

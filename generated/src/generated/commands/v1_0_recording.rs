@@ -71,24 +71,17 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
     }
     /**`vkCmdBindDescriptorSets`
 
-# Safety
-
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`: Each element of `pDescriptorSets` must have been allocated with a `VkDescriptorSetLayout` that matches (is the same as, or identically defined as) the `VkDescriptorSetLayout` at set n in `layout`, where n is the sum of `firstSet` and the index into `pDescriptorSets`
-- `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`: `pipelineBindPoint` must be supported by the `commandBuffer`&#8217;s parent `VkCommandPool`&#8217;s queue family
-- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`: Each element of `pDynamicOffsets` which corresponds to a descriptor binding with type `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` must be a multiple of `VkPhysicalDeviceLimits::minUniformBufferOffsetAlignment`
-- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`: Each element of `pDynamicOffsets` which corresponds to a descriptor binding with type `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC` must be a multiple of `VkPhysicalDeviceLimits::minStorageBufferOffsetAlignment`
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: For each dynamic uniform or storage buffer binding in `pDescriptorSets`, the sum of the effective offset and the range of the binding must be less than or equal to the size of the buffer
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: For each dynamic uniform or storage buffer binding in `pDescriptorSets`, if the range was set with `VK_WHOLE_SIZE` then `pDynamicOffsets` which corresponds to the descriptor binding must be 0
-- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: Each element of `pDescriptorSets` must be a valid VkDescriptorSet
-
 # Valid usage
 
 The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorSets.html). Settled by the wrappers:
 
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`: dynamic (checks each set's layout, recorded at its allocation, is the pipeline layout's layout at that set number or identically defined (bindings, their types, counts, stages, flags and immutable samplers, and the layout's flags, all recorded at creation))
 - `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`: dynamic (checks one dynamic offset per dynamic descriptor of the sets, counted from their layouts at creation)
 - `VUID-vkCmdBindDescriptorSets-firstSet-00360`: dynamic (checks the sets against the layout's set count, kept from its creation)
+- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`: dynamic (checks each dynamic offset, in the order of sets, bindings and elements, against the alignment limit of its descriptor's type)
+- `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`: dynamic (checks each dynamic offset, in the order of sets, bindings and elements, against the alignment limit of its descriptor's type)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`: dynamic (checks each dynamic offset against the offset and range its descriptor was written with and its buffer's size (the device records them from every write, copy and template update of a dynamic buffer descriptor))
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`: dynamic (checks each dynamic offset against the offset and range its descriptor was written with and its buffer's size (the device records them from every write, copy and template update of a dynamic buffer descriptor))
 - `VUID-vkCmdBindDescriptorSets-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindDescriptorSets-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
@@ -99,10 +92,14 @@ The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.k
 - `VUID-vkCmdBindDescriptorSets-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindDescriptorSets-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`: static (taken as wrappers, which always hold valid descriptor sets)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: checked by the safe methods in every build (the bind point against the queue flags of the pool's family, recorded when the pool was created), but no test breaks it: lavapipe's only queue family has graphics and compute
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_bind_descriptor_sets(
+    pub fn cmd_bind_descriptor_sets(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -112,6 +109,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
     ) -> Result<()> {
         crate::hooks::cmd_bind_descriptor_sets_checks(
             self,
+            pipeline_bind_point,
             layout,
             first_set,
             descriptor_sets,
@@ -142,7 +140,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_bind_descriptor_sets_unchecked(
         &mut self,
