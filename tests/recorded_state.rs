@@ -635,17 +635,15 @@ fn two_subpasses(
         dst_access_mask: access,
         dependency_flags: vk::DependencyFlags::BY_REGION,
     }];
-    // SAFETY: the attachment, subpasses and dependency are consistent, and the layouts
-    // those of a color attachment.
-    let render_pass = unsafe {
-        s.device.create_render_pass(
+    let render_pass = s
+        .device
+        .create_render_pass(
             &tuff::RenderPassCreateInfo::new()
                 .attachments(&attachments)
                 .subpasses(&subpasses)
                 .dependencies(&dependencies),
         )
-    }
-    .expect("render pass");
+        .expect("render pass");
     // SAFETY: the view is of the target's image, of the attachment's format, one
     // level and layer, and its extent.
     let framebuffer = unsafe {
@@ -1054,10 +1052,9 @@ fn a_subpass_without_attachments_keeps_its_first_sample_count() {
     );
     let subpasses =
         [tuff::SubpassDescription::new().pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)];
-    // SAFETY: one subpass without attachments, no dependency.
-    let render_pass =
-        unsafe { d.create_render_pass(&tuff::RenderPassCreateInfo::new().subpasses(&subpasses)) }
-            .expect("render pass");
+    let render_pass = d
+        .create_render_pass(&tuff::RenderPassCreateInfo::new().subpasses(&subpasses))
+        .expect("render pass");
     // SAFETY: no attachments, a size within the device's limits.
     let framebuffer = unsafe {
         d.create_framebuffer(

@@ -148,7 +148,7 @@ fn create1(s: &Setup, spec: &Spec) -> (tuff::Result<()>, Vec<String>) {
     if !spec.view_masks.is_empty() {
         info = info.push_next(&mut multiview);
     }
-    let safe = unsafe { s.device.create_render_pass(&info) }.map(drop);
+    let safe = s.device.create_render_pass(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_render_pass_unchecked(&info) };
     });
@@ -527,6 +527,440 @@ fn each_broken_reference_rule_is_refused_and_the_layer_agrees() {
     }
     println!(
         "render pass references: the layer named {by_layer}, the error alone proves {} ({})",
+        alone.len(),
+        alone.join(", ")
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A `vkCreateRenderPass` create info a description case changes: attachments,
+/// subpasses that all reference the same attachments, dependencies, and chained
+/// multiview and input-aspect structs.
+#[derive(Clone)]
+struct Described {
+    attachments: Vec<vk::AttachmentDescription>,
+    subpasses: usize,
+    inputs: Vec<vk::AttachmentReference>,
+    colors: Vec<vk::AttachmentReference>,
+    depth: Option<vk::AttachmentReference>,
+    dependencies: Vec<vk::SubpassDependency>,
+    view_masks: Vec<u32>,
+    view_offsets: Vec<i32>,
+    correlations: Vec<u32>,
+    aspects: Vec<vk::InputAttachmentAspectReference>,
+}
+
+impl Default for Described {
+    fn default() -> Self {
+        let attachment = |format| vk::AttachmentDescription {
+            format,
+            samples: ONE,
+            load_op: vk::AttachmentLoadOp::DONT_CARE,
+            store_op: vk::AttachmentStoreOp::DONT_CARE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: GENERAL,
+            ..Default::default()
+        };
+        Described {
+            attachments: vec![
+                attachment(vk::Format::R8G8B8A8_UNORM),
+                attachment(vk::Format::D32_SFLOAT_S8_UINT),
+            ],
+            subpasses: 1,
+            inputs: vec![],
+            colors: vec![vk::AttachmentReference {
+                attachment: 0,
+                layout: COLOR,
+            }],
+            depth: None,
+            dependencies: vec![],
+            view_masks: vec![],
+            view_offsets: vec![],
+            correlations: vec![],
+            aspects: vec![],
+        }
+    }
+}
+
+fn create_described(s: &Setup, d: &Described) -> (tuff::Result<()>, Vec<String>) {
+    let subpass = tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .input_attachments(&d.inputs)
+        .color_attachments(&d.colors)
+        .depth_stencil_attachment(d.depth.as_ref());
+    let subpasses = vec![subpass; d.subpasses];
+    let mut multiview = tuff::RenderPassMultiviewCreateInfo::new()
+        .view_masks(&d.view_masks)
+        .view_offsets(&d.view_offsets)
+        .correlation_masks(&d.correlations);
+    let mut aspects =
+        tuff::RenderPassInputAttachmentAspectCreateInfo::new().aspect_references(&d.aspects);
+    let mut info = tuff::RenderPassCreateInfo::new()
+        .attachments(&d.attachments)
+        .subpasses(&subpasses)
+        .dependencies(&d.dependencies);
+    if !d.view_masks.is_empty() {
+        info = info.push_next(&mut multiview);
+    }
+    if !d.aspects.is_empty() {
+        info = info.push_next(&mut aspects);
+    }
+    let safe = s.device.create_render_pass(&info).map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_render_pass_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+/// A dependency between two subpasses (or a subpass and itself).
+fn between(
+    src: u32,
+    dst: u32,
+    stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    access: (vk::AccessFlags, vk::AccessFlags),
+    flags: vk::DependencyFlags,
+) -> vk::SubpassDependency {
+    vk::SubpassDependency {
+        src_subpass: src,
+        dst_subpass: dst,
+        src_stage_mask: stages.0,
+        dst_stage_mask: stages.1,
+        src_access_mask: access.0,
+        dst_access_mask: access.1,
+        dependency_flags: flags,
+    }
+}
+
+type Described1 = (&'static str, &'static [&'static str], fn(&mut Described));
+
+/// The description cases on a device with every feature (multiview,
+/// separateDepthStencilLayouts, synchronization2).
+const DESCRIBED: &[Described1] = &[
+    ("VUID-VkAttachmentDescription-format-06698", &[], |d| {
+        d.attachments.push(vk::AttachmentDescription {
+            format: vk::Format::UNDEFINED,
+            ..d.attachments[0]
+        })
+    }),
+    ("VUID-VkAttachmentDescription-format-06242", &[], |d| {
+        d.attachments[1].initial_layout = vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL
+    }),
+    ("VUID-VkAttachmentDescription-format-06243", &[], |d| {
+        d.attachments[1].final_layout = vk::ImageLayout::DEPTH_READ_ONLY_OPTIMAL
+    }),
+    ("VUID-VkAttachmentDescription-format-06906", &[], |d| {
+        d.attachments[1].initial_layout = vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL
+    }),
+    ("VUID-VkAttachmentDescription-format-06907", &[], |d| {
+        d.attachments[1].final_layout = vk::ImageLayout::STENCIL_READ_ONLY_OPTIMAL
+    }),
+    ("VUID-VkRenderPassCreateInfo-pAttachments-00836", &[], |d| {
+        d.attachments[1].load_op = vk::AttachmentLoadOp::CLEAR;
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+        });
+    }),
+    ("VUID-VkRenderPassCreateInfo-pAttachments-02511", &[], |d| {
+        d.attachments[1].stencil_load_op = vk::AttachmentLoadOp::CLEAR;
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+        });
+    }),
+    ("VUID-VkRenderPassCreateInfo-pAttachments-01566", &[], |d| {
+        d.attachments[1].load_op = vk::AttachmentLoadOp::CLEAR;
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL,
+        });
+    }),
+    ("VUID-VkRenderPassCreateInfo-pAttachments-01567", &[], |d| {
+        d.attachments[1].stencil_load_op = vk::AttachmentLoadOp::CLEAR;
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL,
+        });
+    }),
+    ("VUID-VkSubpassDescription-loadOp-00846", &[], |d| {
+        d.attachments.push(vk::AttachmentDescription {
+            load_op: vk::AttachmentLoadOp::CLEAR,
+            ..d.attachments[0]
+        });
+        d.inputs = vec![vk::AttachmentReference {
+            attachment: 2,
+            layout: GENERAL,
+        }];
+    }),
+    ("VUID-VkSubpassDescription-attachment-06915", &[], |d| {
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: COLOR,
+        });
+    }),
+    (
+        "VUID-VkRenderPassCreateInfo-pDependencies-00837",
+        &[],
+        |d| {
+            d.dependencies = vec![between(
+                0,
+                vk::SUBPASS_EXTERNAL,
+                (
+                    vk::PipelineStageFlags::TRANSFER,
+                    vk::PipelineStageFlags::TRANSFER,
+                ),
+                (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+                vk::DependencyFlags::empty(),
+            )];
+        },
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pDependencies-00838",
+        &[],
+        |d| {
+            d.dependencies = vec![between(
+                vk::SUBPASS_EXTERNAL,
+                0,
+                (
+                    vk::PipelineStageFlags::TRANSFER,
+                    vk::PipelineStageFlags::COMPUTE_SHADER,
+                ),
+                (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+                vk::DependencyFlags::empty(),
+            )];
+        },
+    ),
+    ("VUID-VkSubpassDependency-srcSubpass-00864", &[], |d| {
+        d.subpasses = 2;
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            1,
+            0,
+            (color, color),
+            (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-srcSubpass-00865", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            vk::SUBPASS_EXTERNAL,
+            vk::SUBPASS_EXTERNAL,
+            (color, color),
+            (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-srcSubpass-06809", &[], |d| {
+        d.dependencies = vec![between(
+            0,
+            0,
+            (
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+                vk::PipelineStageFlags::VERTEX_SHADER,
+            ),
+            (
+                vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+                vk::AccessFlags::SHADER_READ,
+            ),
+            vk::DependencyFlags::BY_REGION,
+        )];
+    }),
+    ("VUID-VkSubpassDependency-srcSubpass-02243", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+        d.dependencies = vec![between(
+            0,
+            0,
+            (color, color),
+            (write, write),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-srcAccessMask-00868", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            vk::SUBPASS_EXTERNAL,
+            0,
+            (color, color),
+            (vk::AccessFlags::TRANSFER_WRITE, vk::AccessFlags::empty()),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-dstAccessMask-00869", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            vk::SUBPASS_EXTERNAL,
+            0,
+            (color, color),
+            (vk::AccessFlags::empty(), vk::AccessFlags::INDEX_READ),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-srcSubpass-00872", &[], |d| {
+        d.view_masks = vec![0b11];
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+        d.dependencies = vec![between(
+            0,
+            0,
+            (color, color),
+            (write, write),
+            vk::DependencyFlags::BY_REGION,
+        )];
+    }),
+    ("VUID-VkRenderPassCreateInfo-pNext-01930", &[], |d| {
+        d.view_masks = vec![0b1];
+        d.view_offsets = vec![1];
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+        d.dependencies = vec![between(
+            0,
+            0,
+            (color, color),
+            (write, write),
+            vk::DependencyFlags::BY_REGION | vk::DependencyFlags::VIEW_LOCAL,
+        )];
+    }),
+    ("VUID-VkRenderPassCreateInfo-pNext-02512", &[], |d| {
+        d.subpasses = 2;
+        d.view_masks = vec![0b1, 0b1];
+        d.view_offsets = vec![1];
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+        d.dependencies = vec![between(
+            0,
+            1,
+            (color, color),
+            (write, write),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    (
+        "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
+        &[],
+        |d| {
+            d.view_masks = vec![0b11];
+            d.correlations = vec![0b11, 0b01];
+        },
+    ),
+    (
+        "VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697",
+        &[],
+        |d| {
+            d.view_masks = vec![1 << 31];
+        },
+    ),
+    ("VUID-VkRenderPassCreateInfo-pNext-01963", &[], |d| {
+        d.inputs = vec![vk::AttachmentReference {
+            attachment: 0,
+            layout: GENERAL,
+        }];
+        d.colors = vec![vk::AttachmentReference {
+            attachment: 0,
+            layout: GENERAL,
+        }];
+        d.aspects = vec![vk::InputAttachmentAspectReference {
+            subpass: 0,
+            input_attachment_index: 0,
+            aspect_mask: vk::ImageAspectFlags::DEPTH,
+        }];
+    }),
+];
+
+/// The description cases that need a feature off: synchronization2 (a stage mask of
+/// 0) and multiview (a view mask).
+const DESCRIBED_BARE: &[Described1] = &[
+    ("VUID-VkSubpassDependency-srcStageMask-03937", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            vk::SUBPASS_EXTERNAL,
+            0,
+            (vk::PipelineStageFlags::empty(), color),
+            (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkSubpassDependency-dstStageMask-03937", &[], |d| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            0,
+            vk::SUBPASS_EXTERNAL,
+            (color, vk::PipelineStageFlags::empty()),
+            (vk::AccessFlags::empty(), vk::AccessFlags::empty()),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    (
+        "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
+        &[],
+        |d| {
+            d.view_masks = vec![0b1];
+        },
+    ),
+];
+
+/// Rules the 1.3.239 layer reports, for `vkCreateRenderPass`, under the VUID of the
+/// same rule of `vkCreateRenderPass2` (it checks the first through the second); its
+/// message states the rule.
+const DESCRIBED_RENAMED: &[(&str, &str)] = &[(
+    "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
+    "VUID-VkSubpassDescription2-multiview-06558",
+)];
+
+/// Each description case is refused with its rule's VUID, and the layer names the
+/// same rule or nothing.
+#[test]
+fn each_broken_description_rule_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let mut failures = Vec::new();
+    let (mut by_layer, mut alone) = (0, Vec::new());
+    for (setup, cases) in [
+        (tuff_setup::setup_full_features(true), DESCRIBED),
+        (tuff_setup::setup_bare(true), DESCRIBED_BARE),
+    ] {
+        let (safe, layer) = create_described(&setup, &Described::default());
+        assert!(
+            safe.is_ok() && layer.is_empty(),
+            "the valid render pass: {safe:?} {layer:?}"
+        );
+        for (vuid, also, change) in cases {
+            let mut d = Described::default();
+            change(&mut d);
+            let (safe, layer) = create_described(&setup, &d);
+            match &safe {
+                Err(tuff::Error::Validation { vuid: got, .. }) if got == vuid => {}
+                other => {
+                    failures.push(format!("{vuid}: the safe method returned {other:?}"));
+                    continue;
+                }
+            }
+            let names = |m: &String, v: &str| {
+                m.contains(&format!("[ {v} ]"))
+                    || DESCRIBED_RENAMED
+                        .iter()
+                        .any(|(rule, name)| *rule == v && m.contains(&format!("[ {name} ]")))
+            };
+            if layer.is_empty() {
+                alone.push(*vuid);
+            } else if layer.iter().any(|m| names(m, vuid))
+                && layer
+                    .iter()
+                    .all(|m| names(m, vuid) || also.iter().any(|a| names(m, a)))
+            {
+                by_layer += 1;
+            } else {
+                failures.push(format!(
+                    "{vuid}: the layer said something else:\n  {}",
+                    layer.join("\n  ")
+                ));
+            }
+        }
+    }
+    println!(
+        "render pass descriptions: the layer named {by_layer}, the error alone proves {} ({})",
         alone.len(),
         alone.join(", ")
     );

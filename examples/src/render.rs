@@ -128,16 +128,12 @@ pub fn render_pass(
             dependency_flags: vk::DependencyFlags::empty(),
         },
     ];
-    // SAFETY: one subpass whose attachments are described with formats the device supports for
-    // that use, with valid layouts and no dependency beyond what the subpass needs.
-    Ok(unsafe {
-        gpu.device.create_render_pass(
-            &tuff::RenderPassCreateInfo::new()
-                .attachments(&attachments)
-                .subpasses(&subpasses)
-                .dependencies(&dependencies),
-        )
-    }?)
+    Ok(gpu.device.create_render_pass(
+        &tuff::RenderPassCreateInfo::new()
+            .attachments(&attachments)
+            .subpasses(&subpasses)
+            .dependencies(&dependencies),
+    )?)
 }
 
 /// Framebuffers over a set of color images (offscreen targets or swapchain images)

@@ -24,6 +24,7 @@ use tuff_runtime::Vrc;
 mod creation;
 mod pipeline;
 mod render_pass;
+mod stages;
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
 use creation::image_create_rules;

@@ -280,6 +280,7 @@ pub(crate) struct MemoryAsked {
 }
 
 /// What the device knows of a live swapchain beyond its images' parameters.
+#[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
 pub(crate) struct SwapchainState {
     /// The surface it presents to.
     surface: u64,

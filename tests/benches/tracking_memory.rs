@@ -239,13 +239,11 @@ fn main() {
             let subpasses = [tuff::SubpassDescription::new()
                 .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
                 .color_attachments(&colors)];
-            unsafe {
-                d.create_render_pass(
-                    &tuff::RenderPassCreateInfo::new()
-                        .attachments(&attachments)
-                        .subpasses(&subpasses),
-                )
-            }
+            d.create_render_pass(
+                &tuff::RenderPassCreateInfo::new()
+                    .attachments(&attachments)
+                    .subpasses(&subpasses),
+            )
             .expect("render pass")
         }),
     ));

@@ -392,14 +392,13 @@ impl Setup {
         let subpasses = [tuff::SubpassDescription::new()
             .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
             .color_attachments(&color)];
-        let render_pass = unsafe {
-            d.create_render_pass(
+        let render_pass = d
+            .create_render_pass(
                 &tuff::RenderPassCreateInfo::new()
                     .attachments(&attachments)
                     .subpasses(&subpasses),
             )
-        }
-        .expect("render pass");
+            .expect("render pass");
         let views = tuff::HandleSlice::new(&[&view]);
         let framebuffer = unsafe {
             d.create_framebuffer(

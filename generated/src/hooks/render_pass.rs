@@ -520,6 +520,7 @@ pub(crate) fn render_pass_reference_checks(
     create_info: &RenderPassCreateInfo<'_>,
 ) -> Result<()> {
     Pass::of(create_info).check_references(device)?;
+    render_pass_description_checks(device, create_info)?;
     let raw = create_info.as_raw();
     // SAFETY: `raw` is a safe struct's.
     let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
@@ -586,4 +587,397 @@ pub(crate) fn subpass_formats2(
     create_info: &RenderPassCreateInfo2<'_>,
 ) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
     Pass::of2(create_info).formats()
+}
+
+/// A depth/stencil format's layouts that name one aspect only, refused for a format
+/// with both (`VkAttachmentDescription-format-06242`, `06243`, `06906`, `06907`).
+const ONE_ASPECT_LAYOUTS: [(vk::ImageLayout, bool); 4] = [
+    (vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL, true),
+    (vk::ImageLayout::DEPTH_READ_ONLY_OPTIMAL, true),
+    (vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL, false),
+    (vk::ImageLayout::STENCIL_READ_ONLY_OPTIMAL, false),
+];
+
+/// The checks of `vkCreateRenderPass` that read its create info alone, with the
+/// device's features and limits: attachment formats and layouts, the layout of
+/// each attachment's first use against its load operations, dependencies against
+/// the stages a graphics pipeline has and the accesses each stage supports, and a
+/// chained multiview or input-attachment-aspect struct.
+fn render_pass_description_checks(
+    device: &Device,
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Result<()> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setters store each array with its count.
+    let (attachments, subpasses, dependencies) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_attachments, raw.attachment_count),
+            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+        )
+    };
+    for (i, a) in attachments.iter().enumerate() {
+        if a.format == vk::Format::UNDEFINED {
+            refuse(
+                "VUID-VkAttachmentDescription-format-06698",
+                format!("pAttachments[{i}].format is VK_FORMAT_UNDEFINED"),
+            )?;
+        }
+        let both = crate::formats::aspects(a.format).is_some_and(|x| {
+            x.contains(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL)
+        });
+        if !both {
+            continue;
+        }
+        for (layout, depth) in ONE_ASPECT_LAYOUTS {
+            let (initial, last) = if depth {
+                (
+                    "VUID-VkAttachmentDescription-format-06242",
+                    "VUID-VkAttachmentDescription-format-06243",
+                )
+            } else {
+                (
+                    "VUID-VkAttachmentDescription-format-06906",
+                    "VUID-VkAttachmentDescription-format-06907",
+                )
+            };
+            if a.initial_layout == layout {
+                refuse(initial, format!("pAttachments[{i}] ({:?}, with depth and stencil) starts in {layout:?}, which names one aspect", a.format))?;
+            }
+            if a.final_layout == layout {
+                refuse(last, format!("pAttachments[{i}] ({:?}, with depth and stencil) ends in {layout:?}, which names one aspect", a.format))?;
+            }
+        }
+    }
+    // Each subpass's references, as (attachment, layout, is an input attachment).
+    let uses: Vec<Vec<(u32, vk::ImageLayout, bool)>> = subpasses
+        .iter()
+        .map(|s| {
+            let mut refs = Vec::new();
+            // SAFETY: the safe setters store each array with its count (the resolve
+            // array with the color count).
+            unsafe {
+                for r in
+                    crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count)
+                {
+                    refs.push((r.attachment, r.layout, true));
+                }
+                for r in
+                    crate::retention::raw_slice(s.p_color_attachments, s.color_attachment_count)
+                {
+                    refs.push((r.attachment, r.layout, false));
+                }
+                if !s.p_resolve_attachments.is_null() {
+                    for r in crate::retention::raw_slice(
+                        s.p_resolve_attachments,
+                        s.color_attachment_count,
+                    ) {
+                        refs.push((r.attachment, r.layout, false));
+                    }
+                }
+                if let Some(d) = s.p_depth_stencil_attachment.as_ref() {
+                    refs.push((d.attachment, d.layout, false));
+                }
+            }
+            refs.retain(|r| r.0 != vk::ATTACHMENT_UNUSED);
+            refs
+        })
+        .collect();
+    for (i, s) in subpasses.iter().enumerate() {
+        // SAFETY: as above.
+        if let Some(d) = unsafe { s.p_depth_stencil_attachment.as_ref() } {
+            if d.attachment != vk::ATTACHMENT_UNUSED
+                && matches!(
+                    d.layout,
+                    vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL
+                        | vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
+                )
+            {
+                refuse(
+                    "VUID-VkSubpassDescription-attachment-06915",
+                    format!(
+                        "pSubpasses[{i}]'s depth/stencil attachment is in {:?}",
+                        d.layout
+                    ),
+                )?;
+            }
+        }
+    }
+    for (n, a) in attachments.iter().enumerate() {
+        let n = n as u32;
+        let Some((i, first)) = uses
+            .iter()
+            .enumerate()
+            .find(|(_, refs)| refs.iter().any(|r| r.0 == n))
+        else {
+            continue;
+        };
+        let refs: Vec<_> = first.iter().filter(|r| r.0 == n).collect();
+        let clear = vk::AttachmentLoadOp::CLEAR;
+        for r in &refs {
+            let read_only = matches!(
+                r.1,
+                vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
+                    | vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+            );
+            if a.load_op == clear && read_only {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pAttachments-00836",
+                    format!(
+                        "pAttachments[{n}] is cleared, but its first use (subpass {i}) is in {:?}",
+                        r.1
+                    ),
+                )?;
+            }
+            if a.stencil_load_op == clear && read_only {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pAttachments-02511",
+                    format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) is in {:?}", r.1),
+                )?;
+            }
+            if a.load_op == clear
+                && r.1 == vk::ImageLayout::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
+            {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pAttachments-01566",
+                    format!("pAttachments[{n}] is cleared, but its first use (subpass {i}) reads its depth only"),
+                )?;
+            }
+            if a.stencil_load_op == clear
+                && r.1 == vk::ImageLayout::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL
+            {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pAttachments-01567",
+                    format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) reads its stencil only"),
+                )?;
+            }
+        }
+        let only_input = refs.iter().all(|r| r.2);
+        if only_input && a.load_op == clear {
+            refuse(
+                "VUID-VkSubpassDescription-loadOp-00846",
+                format!("pAttachments[{n}] is first used as an input attachment only (subpass {i}), so it must not be cleared"),
+            )?;
+        }
+    }
+    dependency_checks(device, raw, dependencies)?;
+    input_aspect_checks(raw, attachments, subpasses)
+}
+
+/// The dependencies of `vkCreateRenderPass`, and a chained
+/// `VkRenderPassMultiviewCreateInfo`'s masks and offsets.
+fn dependency_checks(
+    device: &Device,
+    raw: &vk::RenderPassCreateInfo<'_>,
+    dependencies: &[vk::SubpassDependency],
+) -> Result<()> {
+    let external = vk::SUBPASS_EXTERNAL;
+    let sync2 = device.live().with_features(|f| f.v13.synchronization2) != vk::FALSE;
+    // SAFETY: `raw` is a safe struct's.
+    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+        )
+    };
+    // SAFETY: the safe setters store each array with its count.
+    let (masks, offsets, correlations) =
+        multiview.map_or((&[][..], &[][..], &[][..]), |m| unsafe {
+            (
+                crate::retention::raw_slice(m.p_view_masks, m.subpass_count),
+                crate::retention::raw_slice(m.p_view_offsets, m.dependency_count),
+                crate::retention::raw_slice(m.p_correlation_masks, m.correlation_mask_count),
+            )
+        });
+    let graphics = super::stages::GRAPHICS
+        | vk::PipelineStageFlags::ALL_GRAPHICS
+        | vk::PipelineStageFlags::ALL_COMMANDS;
+    let fb = super::stages::FRAMEBUFFER_SPACE;
+    for (i, d) in dependencies.iter().enumerate() {
+        let at = format!("pDependencies[{i}]");
+        if d.src_subpass == external && d.dst_subpass == external {
+            refuse(
+                "VUID-VkSubpassDependency-srcSubpass-00865",
+                format!("{at} has VK_SUBPASS_EXTERNAL at both ends"),
+            )?;
+        }
+        if d.src_subpass != external && d.dst_subpass != external && d.src_subpass > d.dst_subpass {
+            refuse(
+                "VUID-VkSubpassDependency-srcSubpass-00864",
+                format!(
+                    "{at}'s srcSubpass ({}) is after its dstSubpass ({})",
+                    d.src_subpass, d.dst_subpass
+                ),
+            )?;
+        }
+        if !sync2 && d.src_stage_mask.is_empty() {
+            refuse(
+                "VUID-VkSubpassDependency-srcStageMask-03937",
+                format!("{at}'s srcStageMask is 0, and synchronization2 is not enabled"),
+            )?;
+        }
+        if !sync2 && d.dst_stage_mask.is_empty() {
+            refuse(
+                "VUID-VkSubpassDependency-dstStageMask-03937",
+                format!("{at}'s dstStageMask is 0, and synchronization2 is not enabled"),
+            )?;
+        }
+        if d.src_subpass != external && !graphics.contains(d.src_stage_mask) {
+            refuse(
+                "VUID-VkRenderPassCreateInfo-pDependencies-00837",
+                format!(
+                    "{at}'s srcStageMask ({:?}) names a stage a graphics pipeline has not",
+                    d.src_stage_mask
+                ),
+            )?;
+        }
+        if d.dst_subpass != external && !graphics.contains(d.dst_stage_mask) {
+            refuse(
+                "VUID-VkRenderPassCreateInfo-pDependencies-00838",
+                format!(
+                    "{at}'s dstStageMask ({:?}) names a stage a graphics pipeline has not",
+                    d.dst_stage_mask
+                ),
+            )?;
+        }
+        if let Some(a) = super::stages::unsupported_access(d.src_access_mask, d.src_stage_mask) {
+            refuse(
+                "VUID-VkSubpassDependency-srcAccessMask-00868",
+                format!("{at}'s srcAccessMask has {a:?}, which no stage of its srcStageMask ({:?}) supports", d.src_stage_mask),
+            )?;
+        }
+        if let Some(a) = super::stages::unsupported_access(d.dst_access_mask, d.dst_stage_mask) {
+            refuse(
+                "VUID-VkSubpassDependency-dstAccessMask-00869",
+                format!("{at}'s dstAccessMask has {a:?}, which no stage of its dstStageMask ({:?}) supports", d.dst_stage_mask),
+            )?;
+        }
+        if d.src_subpass == d.dst_subpass && d.src_subpass != external {
+            let (src, dst) = (
+                super::stages::expand(d.src_stage_mask),
+                super::stages::expand(d.dst_stage_mask),
+            );
+            let logical =
+                vk::PipelineStageFlags::TOP_OF_PIPE | vk::PipelineStageFlags::BOTTOM_OF_PIPE;
+            if src.intersects(fb) && !fb.contains(dst & !logical) {
+                refuse(
+                    "VUID-VkSubpassDependency-srcSubpass-06809",
+                    format!("{at} is a self-dependency whose srcStageMask has a framebuffer-space stage, but its dstStageMask ({:?}) has others", d.dst_stage_mask),
+                )?;
+            }
+            if src.intersects(fb)
+                && dst.intersects(fb)
+                && !d.dependency_flags.contains(vk::DependencyFlags::BY_REGION)
+            {
+                refuse(
+                    "VUID-VkSubpassDependency-srcSubpass-02243",
+                    format!("{at} is a self-dependency between framebuffer-space stages without VK_DEPENDENCY_BY_REGION_BIT"),
+                )?;
+            }
+            let views = masks
+                .get(d.src_subpass as usize)
+                .map_or(0, |m| m.count_ones());
+            if views > 1 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
+                refuse(
+                    "VUID-VkSubpassDependency-srcSubpass-00872",
+                    format!("{at} is a self-dependency of a subpass of {views} views without VK_DEPENDENCY_VIEW_LOCAL_BIT"),
+                )?;
+            }
+        }
+        if let Some(&offset) = offsets.get(i) {
+            if offset != 0 && d.src_subpass == d.dst_subpass {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01930",
+                    format!("{at} has view offset {offset} but the same subpass at both ends"),
+                )?;
+            }
+            if offset != 0 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-02512",
+                    format!("{at} has view offset {offset} but is not view-local"),
+                )?;
+            }
+        }
+    }
+    let multiview_on = device.live().with_features(|f| f.v11.multiview) != vk::FALSE;
+    let max = if masks.iter().any(|m| *m != 0) {
+        multiview_view_count(device)
+    } else {
+        None
+    };
+    for (i, m) in masks.iter().enumerate() {
+        if *m != 0 && !multiview_on {
+            refuse(
+                "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
+                format!("pViewMasks[{i}] is {m:#x}, but the multiview feature is not enabled"),
+            )?;
+        }
+        let highest = 32 - m.leading_zeros();
+        if let Some(max) = max.filter(|max| *m != 0 && highest > *max) {
+            refuse(
+                "VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697",
+                format!(
+                    "pViewMasks[{i}] ({m:#x}) names view {}, past maxMultiviewViewCount ({max})",
+                    highest - 1
+                ),
+            )?;
+        }
+    }
+    let mut seen = 0u32;
+    for (i, c) in correlations.iter().enumerate() {
+        if seen & c != 0 {
+            refuse(
+                "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
+                format!("pCorrelationMasks[{i}] ({c:#x}) shares a view with an earlier mask"),
+            )?;
+        }
+        seen |= c;
+    }
+    Ok(())
+}
+
+/// A chained `VkRenderPassInputAttachmentAspectCreateInfo` names only aspects the
+/// referenced attachment's format has.
+fn input_aspect_checks(
+    raw: &vk::RenderPassCreateInfo<'_>,
+    attachments: &[vk::AttachmentDescription],
+    subpasses: &[vk::SubpassDescription<'_>],
+) -> Result<()> {
+    // SAFETY: `raw` is a safe struct's.
+    let aspects: Option<&vk::RenderPassInputAttachmentAspectCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
+        )
+    };
+    let Some(aspects) = aspects else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stores the array with its count.
+    let references = unsafe {
+        crate::retention::raw_slice(aspects.p_aspect_references, aspects.aspect_reference_count)
+    };
+    for (k, r) in references.iter().enumerate() {
+        let Some(s) = subpasses.get(r.subpass as usize) else {
+            continue;
+        };
+        // SAFETY: the safe setter stores the array with its count.
+        let inputs =
+            unsafe { crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count) };
+        let Some(input) = inputs.get(r.input_attachment_index as usize) else {
+            continue;
+        };
+        let Some(a) = attachments.get(input.attachment as usize) else {
+            continue;
+        };
+        if let Some(present) = crate::formats::aspects(a.format) {
+            if !present.contains(r.aspect_mask) {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01963",
+                    format!("pAspectReferences[{k}].aspectMask ({:?}) names aspects attachment {} ({:?}) has not", r.aspect_mask, input.attachment, a.format),
+                )?;
+            }
+        }
+    }
+    Ok(())
 }

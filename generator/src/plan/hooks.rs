@@ -252,6 +252,10 @@ const SET_LAYOUTS_MATCH: &str = "checks each set's layout, recorded at its alloc
 const BIND_POINT_FAMILY: &str = "checked by the safe methods in every build (the bind point against the queue flags of the pool's family, recorded when the pool was created), but no test breaks it: lavapipe's only queue family has graphics and compute";
 const DYNAMIC_OFFSETS: &str = "checks each dynamic offset, in the order of sets, bindings and elements, against the alignment limit of its descriptor's type";
 const DYNAMIC_RANGES: &str = "checks each dynamic offset against the offset and range its descriptor was written with and its buffer's size (the device records them from every write, copy and template update of a dynamic buffer descriptor)";
+const ATTACHMENT_DESCRIPTIONS: &str = "checks each attachment's format and layouts, a depth/stencil reference's layout, and a chained input-attachment-aspect struct's aspects against the attachments' formats";
+const FIRST_USE: &str = "checks the layout of each attachment's first use (the first subpass that references it) against its load operations";
+const DEPENDENCIES: &str = "checks each dependency's subpasses, its stage masks against the stages of a graphics pipeline and the synchronization2 feature, its access masks against the accesses each stage supports (the specification's table, checked in as hooks/stages.rs: the pinned registry has no <sync> block), and a self-dependency's framebuffer-space stages against BY_REGION";
+const MULTIVIEW_MASKS: &str = "checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL";
 const ACQUIRE_SIGNALS: &str = "checks the acquire has a semaphore or a fence to signal";
 const RETIRED_ACQUIRE: &str = "checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain";
 const BINARY_STATE: &str = "checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete";
@@ -1534,6 +1538,34 @@ pub const SPECIALS: &[Special] = &[
         ),
         created: call("hooks::render_pass_created", &["self", "created", "create_info"]),
         settles: &[
+            ("VUID-VkAttachmentDescription-format-06698", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkAttachmentDescription-format-06242", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkAttachmentDescription-format-06243", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkAttachmentDescription-format-06906", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkAttachmentDescription-format-06907", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkRenderPassCreateInfo-pAttachments-00836", How::Dynamic(FIRST_USE)),
+            ("VUID-VkRenderPassCreateInfo-pAttachments-02511", How::Dynamic(FIRST_USE)),
+            ("VUID-VkRenderPassCreateInfo-pAttachments-01566", How::Dynamic(FIRST_USE)),
+            ("VUID-VkRenderPassCreateInfo-pAttachments-01567", How::Dynamic(FIRST_USE)),
+            ("VUID-VkSubpassDescription-loadOp-00846", How::Dynamic(FIRST_USE)),
+            ("VUID-VkSubpassDescription-attachment-06915", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
+            ("VUID-VkRenderPassCreateInfo-pDependencies-00837", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkRenderPassCreateInfo-pDependencies-00838", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcSubpass-00864", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcSubpass-00865", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcSubpass-06809", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcSubpass-02243", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcAccessMask-00868", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-dstAccessMask-00869", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcStageMask-03937", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-dstStageMask-03937", How::Dynamic(DEPENDENCIES)),
+            ("VUID-VkSubpassDependency-srcSubpass-00872", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01930", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassCreateInfo-pNext-02512", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassMultiviewCreateInfo-multiview-06555", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697", How::Dynamic(MULTIVIEW_MASKS)),
+            ("VUID-VkRenderPassCreateInfo-pNext-01963", How::Dynamic(ATTACHMENT_DESCRIPTIONS)),
             ("VUID-VkSubpassDescription-attachment-00853", How::Dynamic(SUBPASS_REFERENCES)),
             ("VUID-VkSubpassDescription-pPreserveAttachments-00854", How::Dynamic(SUBPASS_REFERENCES)),
             ("VUID-VkSubpassDescription-pResolveAttachments-00847", How::Dynamic(SUBPASS_REFERENCES)),

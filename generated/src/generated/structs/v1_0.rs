@@ -2907,6 +2907,10 @@ impl<'a> RenderPassBeginInfo<'a> {
 The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkRenderPassCreateInfo-attachment-00834`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pAttachments-00836`: dynamic (checks the layout of each attachment's first use (the first subpass that references it) against its load operations)
+- `VUID-VkRenderPassCreateInfo-pAttachments-02511`: dynamic (checks the layout of each attachment's first use (the first subpass that references it) against its load operations)
+- `VUID-VkRenderPassCreateInfo-pDependencies-00837`: dynamic (checks each dependency's subpasses, its stage masks against the stages of a graphics pipeline and the synchronization2 feature, its access masks against the accesses each stage supports (the specification's table, checked in as hooks/stages.rs: the pinned registry has no <sync> block), and a self-dependency's framebuffer-space stages against BY_REGION)
+- `VUID-VkRenderPassCreateInfo-pDependencies-00838`: dynamic (checks each dependency's subpasses, its stage masks against the stages of a graphics pipeline and the synchronization2 feature, its access masks against the accesses each stage supports (the specification's table, checked in as hooks/stages.rs: the pinned registry has no <sync> block), and a self-dependency's framebuffer-space stages against BY_REGION)
 - `VUID-VkRenderPassCreateInfo-pDependencies-06866`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-pDependencies-06867`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
@@ -2917,15 +2921,20 @@ The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkRenderPassCreateInfo-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassCreateInfo-subpassCount-arraylength`: dynamic (checks the count is not 0)
+- `VUID-VkRenderPassCreateInfo-pAttachments-01566`: dynamic (checks the layout of each attachment's first use (the first subpass that references it) against its load operations)
+- `VUID-VkRenderPassCreateInfo-pAttachments-01567`: dynamic (checks the layout of each attachment's first use (the first subpass that references it) against its load operations)
 - `VUID-VkRenderPassCreateInfo-pNext-01926`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-pNext-01927`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
+- `VUID-VkRenderPassCreateInfo-pNext-01963`: dynamic (checks each attachment's format and layouts, a depth/stencil reference's layout, and a chained input-attachment-aspect struct's aspects against the attachments' formats)
 - `VUID-VkRenderPassCreateInfo-pNext-01928`: dynamic (checks the chained struct's count against the count of the struct it extends)
 - `VUID-VkRenderPassCreateInfo-pNext-01929`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
+- `VUID-VkRenderPassCreateInfo-pNext-01930`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
+- `VUID-VkRenderPassCreateInfo-pNext-02512`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
 - `VUID-VkRenderPassCreateInfo-pNext-02513`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkRenderPassCreateInfo-pNext-02514`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkRenderPassCreateInfo-pNext-02515`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo<'a> {
@@ -3514,6 +3523,8 @@ impl<'a> SubmitInfo<'a> {
 The rules are on [`VkSubpassDescription`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription.html). Settled by the wrappers:
 
 - `VUID-VkSubpassDescription-attachment-06913`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription-attachment-06915`: dynamic (checks each attachment's format and layouts, a depth/stencil reference's layout, and a chained input-attachment-aspect struct's aspects against the attachments' formats)
+- `VUID-VkSubpassDescription-loadOp-00846`: dynamic (checks the layout of each attachment's first use (the first subpass that references it) against its load operations)
 - `VUID-VkSubpassDescription-pResolveAttachments-00847`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkSubpassDescription-pResolveAttachments-00848`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkSubpassDescription-pResolveAttachments-00849`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
@@ -3538,11 +3549,11 @@ The rules are on [`VkSubpassDescription`'s reference page](https://registry.khro
 - `VUID-VkSubpassDescription-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription-pipelineBindPoint-00844`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 21.
+Left to the caller (listed one by one in the crate's `validation.json`): 19.
 
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first
-- 14: explicit rule; the wrappers do not check it*/
+- 12: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription<'a> {

@@ -1697,12 +1697,13 @@ for RenderPassInputAttachmentAspectCreateInfo<'a> {}
 
 The rules are on [`VkRenderPassMultiviewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassMultiviewCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
+- `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
+- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
 - `VUID-VkRenderPassMultiviewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkRenderPassMultiviewCreateInfo-pViewOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassMultiviewCreateInfo<'a> {

@@ -1,0 +1,92 @@
+//! Which pipeline stages support which access types, and which stages are
+//! framebuffer-space: the specification's table of supported access types for the
+//! stages and accesses of Vulkan 1.0 to 1.3. The pinned registry (1.3.239) has no
+//! `<sync>` block to read it from; newer registries do, and the generator can take
+//! this table from there once it reads them.
+
+use ash::vk;
+
+type S = vk::PipelineStageFlags;
+type A = vk::AccessFlags;
+
+/// The shader stages of a graphics or compute pipeline.
+const SHADERS: S = S::from_raw(
+    S::VERTEX_SHADER.as_raw()
+        | S::TESSELLATION_CONTROL_SHADER.as_raw()
+        | S::TESSELLATION_EVALUATION_SHADER.as_raw()
+        | S::GEOMETRY_SHADER.as_raw()
+        | S::FRAGMENT_SHADER.as_raw()
+        | S::COMPUTE_SHADER.as_raw(),
+);
+
+/// The stages of a graphics pipeline, which `ALL_GRAPHICS` stands for.
+pub(crate) const GRAPHICS: S = S::from_raw(
+    S::TOP_OF_PIPE.as_raw()
+        | S::DRAW_INDIRECT.as_raw()
+        | S::VERTEX_INPUT.as_raw()
+        | S::VERTEX_SHADER.as_raw()
+        | S::TESSELLATION_CONTROL_SHADER.as_raw()
+        | S::TESSELLATION_EVALUATION_SHADER.as_raw()
+        | S::GEOMETRY_SHADER.as_raw()
+        | S::FRAGMENT_SHADER.as_raw()
+        | S::EARLY_FRAGMENT_TESTS.as_raw()
+        | S::LATE_FRAGMENT_TESTS.as_raw()
+        | S::COLOR_ATTACHMENT_OUTPUT.as_raw()
+        | S::BOTTOM_OF_PIPE.as_raw(),
+);
+
+/// The framebuffer-space stages.
+pub(crate) const FRAMEBUFFER_SPACE: S = S::from_raw(
+    S::FRAGMENT_SHADER.as_raw()
+        | S::EARLY_FRAGMENT_TESTS.as_raw()
+        | S::LATE_FRAGMENT_TESTS.as_raw()
+        | S::COLOR_ATTACHMENT_OUTPUT.as_raw(),
+);
+
+/// Each access type and the stages that support it (`MEMORY_READ` and
+/// `MEMORY_WRITE` are supported by every stage).
+const SUPPORTED: [(A, S); 15] = [
+    (A::INDIRECT_COMMAND_READ, S::DRAW_INDIRECT),
+    (A::INDEX_READ, S::VERTEX_INPUT),
+    (A::VERTEX_ATTRIBUTE_READ, S::VERTEX_INPUT),
+    (A::UNIFORM_READ, SHADERS),
+    (A::SHADER_READ, SHADERS),
+    (A::SHADER_WRITE, SHADERS),
+    (A::INPUT_ATTACHMENT_READ, S::FRAGMENT_SHADER),
+    (A::COLOR_ATTACHMENT_READ, S::COLOR_ATTACHMENT_OUTPUT),
+    (A::COLOR_ATTACHMENT_WRITE, S::COLOR_ATTACHMENT_OUTPUT),
+    (
+        A::DEPTH_STENCIL_ATTACHMENT_READ,
+        S::from_raw(S::EARLY_FRAGMENT_TESTS.as_raw() | S::LATE_FRAGMENT_TESTS.as_raw()),
+    ),
+    (
+        A::DEPTH_STENCIL_ATTACHMENT_WRITE,
+        S::from_raw(S::EARLY_FRAGMENT_TESTS.as_raw() | S::LATE_FRAGMENT_TESTS.as_raw()),
+    ),
+    (A::TRANSFER_READ, S::TRANSFER),
+    (A::TRANSFER_WRITE, S::TRANSFER),
+    (A::HOST_READ, S::HOST),
+    (A::HOST_WRITE, S::HOST),
+];
+
+/// The stages a mask names, with `ALL_GRAPHICS` and `ALL_COMMANDS` spelled out
+/// (every stage of the emitted API for the latter).
+pub(crate) fn expand(stages: S) -> S {
+    let mut out = stages;
+    if stages.contains(S::ALL_GRAPHICS) {
+        out |= GRAPHICS;
+    }
+    if stages.contains(S::ALL_COMMANDS) {
+        out |= GRAPHICS | S::COMPUTE_SHADER | S::TRANSFER | S::HOST;
+    }
+    out
+}
+
+/// The first access type of `access` that no stage of `stages` supports.
+pub(crate) fn unsupported_access(access: A, stages: S) -> Option<A> {
+    let stages = expand(stages);
+    SUPPORTED
+        .iter()
+        .find(|(a, supported)| access.contains(*a) && !stages.intersects(*supported))
+        .map(|(a, _)| *a)
+}
