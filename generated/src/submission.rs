@@ -1040,6 +1040,9 @@ pub(crate) fn record_binary_ops(
     ops: &[SemOp],
     by: Option<&Vrc<Submission>>,
 ) {
+    if ops.is_empty() {
+        return;
+    }
     let live = device.live();
     let mut binaries = live.binaries();
     for op in ops {

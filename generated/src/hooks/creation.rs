@@ -496,31 +496,17 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
             )?;
         }
         for handle in each_bit(export) {
-            let mut external =
-                vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(handle);
-            let format_info = vk::PhysicalDeviceImageFormatInfo2::default()
-                .format(record.format)
-                .ty(record.image_type)
-                .tiling(record.tiling)
-                .usage(record.usage)
-                .flags(record.flags)
-                .push_next(&mut external);
-            let mut props = vk::ExternalImageFormatProperties::default();
-            let mut out = vk::ImageFormatProperties2::default().push_next(&mut props);
-            // SAFETY: a live physical device of its instance (the external structs are
-            // core 1.1, which chaining the export struct required); the chains are
-            // local.
-            let r = unsafe {
-                (instance
-                    .fns()
-                    .fp_v1_1()
-                    .get_physical_device_image_format_properties2)(
-                    physical.raw(),
-                    &format_info,
-                    &mut out,
-                )
-            };
-            let p = props.external_memory_properties;
+            let (r, p) = external_image_properties(
+                physical,
+                vk::PhysicalDeviceImageFormatInfo2::default()
+                    .format(record.format)
+                    .ty(record.image_type)
+                    .tiling(record.tiling)
+                    .usage(record.usage)
+                    .flags(record.flags),
+                handle,
+            );
+
             if r != vk::Result::SUCCESS || !exports(&p, export) {
                 refuse(
                     "VUID-VkExportMemoryAllocateInfo-handleTypes-00656",
@@ -588,6 +574,33 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
         ));
     }
     Ok(())
+}
+
+/// What the physical device reports for an image of `format_info`'s parameters with
+/// external memory of `handle`: the query's result and the external memory
+/// properties.
+fn external_image_properties(
+    physical: &PhysicalDevice,
+    format_info: vk::PhysicalDeviceImageFormatInfo2<'_>,
+    handle: vk::ExternalMemoryHandleTypeFlags,
+) -> (vk::Result, vk::ExternalMemoryProperties) {
+    let mut asked = vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(handle);
+    let format_info = format_info.push_next(&mut asked);
+    let mut props = vk::ExternalImageFormatProperties::default();
+    let mut out = vk::ImageFormatProperties2::default().push_next(&mut props);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance (the external structs
+    // are core 1.1, which chaining an external memory struct required); the chains
+    // are local.
+    let r = unsafe {
+        (physical
+            .parent()
+            .fns()
+            .fp_v1_1()
+            .get_physical_device_image_format_properties2)(
+            physical.raw(), &format_info, &mut out
+        )
+    };
+    (r, props.external_memory_properties)
 }
 
 /// Each handle type of a set, alone.
@@ -1239,30 +1252,17 @@ fn sharing_and_group_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> R
     }
     let physical = device.parent();
     for handle in each_bit(external) {
-        let mut asked = vk::PhysicalDeviceExternalImageFormatInfo::default().handle_type(handle);
-        let format_info = vk::PhysicalDeviceImageFormatInfo2::default()
-            .format(info.format)
-            .ty(info.image_type)
-            .tiling(info.tiling)
-            .usage(info.usage)
-            .flags(info.flags)
-            .push_next(&mut asked);
-        let mut props = vk::ExternalImageFormatProperties::default();
-        let mut out = vk::ImageFormatProperties2::default().push_next(&mut props);
-        // SAFETY: a live physical device of a Vulkan 1.1 instance (the external
-        // struct is core 1.1, which chaining it required); the chains are local.
-        let r = unsafe {
-            (physical
-                .parent()
-                .fns()
-                .fp_v1_1()
-                .get_physical_device_image_format_properties2)(
-                physical.raw(),
-                &format_info,
-                &mut out,
-            )
-        };
-        let compatible = props.external_memory_properties.compatible_handle_types;
+        let (r, props) = external_image_properties(
+            physical,
+            vk::PhysicalDeviceImageFormatInfo2::default()
+                .format(info.format)
+                .ty(info.image_type)
+                .tiling(info.tiling)
+                .usage(info.usage)
+                .flags(info.flags),
+            handle,
+        );
+        let compatible = props.compatible_handle_types;
         if r != vk::Result::SUCCESS || !compatible.contains(external) {
             refuse(
                 "VUID-VkImageCreateInfo-pNext-00990",
