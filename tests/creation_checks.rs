@@ -1206,3 +1206,380 @@ fn image_rules_of_sharing_external_memory_and_chroma_are_refused_and_the_layer_a
     }
     v.finish("images' sharing, external memory and chroma");
 }
+
+/// An image for the view cases: format, type, extent, levels, layers, samples,
+/// flags, usage, stencil usage and listed view formats.
+#[derive(Clone, Copy)]
+struct Viewed {
+    format: vk::Format,
+    ty: vk::ImageType,
+    extent: (u32, u32, u32),
+    levels: u32,
+    layers: u32,
+    samples: vk::SampleCountFlags,
+    flags: vk::ImageCreateFlags,
+    usage: vk::ImageUsageFlags,
+    stencil: Option<vk::ImageUsageFlags>,
+    listed: &'static [vk::Format],
+}
+
+const VIEWED: Viewed = Viewed {
+    format: vk::Format::R8G8B8A8_UNORM,
+    ty: vk::ImageType::TYPE_2D,
+    extent: (4, 4, 1),
+    levels: 1,
+    layers: 1,
+    samples: vk::SampleCountFlags::TYPE_1,
+    flags: vk::ImageCreateFlags::empty(),
+    usage: vk::ImageUsageFlags::SAMPLED,
+    stencil: None,
+    listed: &[],
+};
+
+/// A view of an image: type, format, aspect, levels, layers (base and count), and a
+/// chained usage.
+#[derive(Clone, Copy)]
+struct View {
+    ty: vk::ImageViewType,
+    format: Option<vk::Format>,
+    aspect: vk::ImageAspectFlags,
+    levels: u32,
+    base_layer: u32,
+    layers: u32,
+    usage: Option<vk::ImageUsageFlags>,
+}
+
+const VIEW: View = View {
+    ty: vk::ImageViewType::TYPE_2D,
+    format: None,
+    aspect: vk::ImageAspectFlags::COLOR,
+    levels: 1,
+    base_layer: 0,
+    layers: 1,
+    usage: None,
+};
+
+fn create_view(s: &Setup, i: Viewed, v: View) -> (tuff::Result<()>, Vec<String>) {
+    let mut stencil =
+        tuff::ImageStencilUsageCreateInfo::new().stencil_usage(i.stencil.unwrap_or_default());
+    let mut list = tuff::ImageFormatListCreateInfo::new().view_formats(i.listed);
+    let mut info = tuff::ImageCreateInfo::new()
+        .flags(i.flags)
+        .image_type(i.ty)
+        .format(i.format)
+        .extent(vk::Extent3D {
+            width: i.extent.0,
+            height: i.extent.1,
+            depth: i.extent.2,
+        })
+        .mip_levels(i.levels)
+        .array_layers(i.layers)
+        .samples(i.samples)
+        .usage(i.usage);
+    if i.stencil.is_some() {
+        info = info.push_next(&mut stencil);
+    }
+    if !i.listed.is_empty() {
+        info = info.push_next(&mut list);
+    }
+    let allocator = s.device.naive_allocator();
+    // SAFETY: the images of these cases keep every rule of their creation.
+    let image = unsafe {
+        s.device
+            .create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal)
+    }
+    .expect("the viewed image");
+    let mut usage = tuff::ImageViewUsageCreateInfo::new().usage(v.usage.unwrap_or_default());
+    let mut view = tuff::ImageViewCreateInfo::new(&image)
+        .view_type(v.ty)
+        .format(v.format.unwrap_or(i.format))
+        .subresource_range(vk::ImageSubresourceRange {
+            aspect_mask: v.aspect,
+            base_mip_level: 0,
+            level_count: v.levels,
+            base_array_layer: v.base_layer,
+            layer_count: v.layers,
+        });
+    if v.usage.is_some() {
+        view = view.push_next(&mut usage);
+    }
+    let safe = s.device.create_image_view(&view).map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_image_view_unchecked(&view) };
+    });
+    (safe, layer)
+}
+
+#[test]
+fn image_view_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let (safe, layer) = create_view(&s, VIEWED, VIEW);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid view: {safe:?} {layer:?}"
+    );
+    use vk::ImageCreateFlags as C;
+    use vk::ImageUsageFlags as U;
+    use vk::ImageViewType as V;
+    let layers = |n| Viewed {
+        layers: n,
+        ..VIEWED
+    };
+    let cube = |n| Viewed {
+        layers: n,
+        flags: C::CUBE_COMPATIBLE,
+        ..VIEWED
+    };
+    let three_d = |flags| Viewed {
+        ty: vk::ImageType::TYPE_3D,
+        extent: (4, 4, 4),
+        levels: 2,
+        flags,
+        ..VIEWED
+    };
+    let mutable = Viewed {
+        flags: C::MUTABLE_FORMAT,
+        ..VIEWED
+    };
+    let depth = Viewed {
+        format: vk::Format::D32_SFLOAT_S8_UINT,
+        usage: U::DEPTH_STENCIL_ATTACHMENT | U::SAMPLED,
+        stencil: Some(U::DEPTH_STENCIL_ATTACHMENT),
+        ..VIEWED
+    };
+    let block_texel = Viewed {
+        format: vk::Format::BC1_RGBA_UNORM_BLOCK,
+        levels: 2,
+        flags: C::MUTABLE_FORMAT | C::BLOCK_TEXEL_VIEW_COMPATIBLE,
+        ..VIEWED
+    };
+    let remaining = vk::REMAINING_ARRAY_LAYERS;
+    let cases: Vec<(&str, &[&str], Viewed, View)> = vec![
+        (
+            "VUID-VkImageViewCreateInfo-image-01003",
+            &[],
+            layers(6),
+            View {
+                ty: V::CUBE,
+                layers: 6,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-04441",
+            &[],
+            Viewed {
+                usage: U::TRANSFER_SRC,
+                ..VIEWED
+            },
+            VIEW,
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-subResourceRange-01021",
+            &[],
+            VIEWED,
+            View {
+                ty: V::TYPE_1D,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-06723",
+            &[],
+            three_d(C::empty()),
+            View {
+                ty: V::TYPE_2D_ARRAY,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-06727",
+            &[],
+            three_d(C::empty()),
+            VIEW,
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-04970",
+            &[],
+            three_d(C::TYPE_2D_ARRAY_COMPATIBLE),
+            View { levels: 2, ..VIEW },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-02724",
+            &["VUID-VkImageViewCreateInfo-subresourceRange-02725"],
+            three_d(C::TYPE_2D_ARRAY_COMPATIBLE),
+            View {
+                base_layer: 4,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-subresourceRange-02725",
+            &[],
+            three_d(C::TYPE_2D_ARRAY_COMPATIBLE),
+            View {
+                ty: V::TYPE_2D_ARRAY,
+                base_layer: 2,
+                layers: 3,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-04972",
+            &["VUID-VkImageViewCreateInfo-image-01003"],
+            Viewed {
+                samples: vk::SampleCountFlags::TYPE_4,
+                usage: U::COLOR_ATTACHMENT,
+                layers: 6,
+                ..VIEWED
+            },
+            View {
+                ty: V::CUBE,
+                layers: 6,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-01482",
+            &["VUID-VkImageViewCreateInfo-subresourceRange-01483"],
+            layers(2),
+            View {
+                base_layer: 2,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-subresourceRange-01483",
+            &[],
+            layers(2),
+            View {
+                ty: V::TYPE_2D_ARRAY,
+                base_layer: 1,
+                layers: 2,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-imageViewType-04973",
+            &[],
+            layers(2),
+            View { layers: 2, ..VIEW },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-imageViewType-04974",
+            &[],
+            layers(2),
+            View {
+                layers: remaining,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-viewType-02962",
+            &[],
+            cube(12),
+            View {
+                ty: V::CUBE,
+                layers: remaining,
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-01761",
+            &[],
+            mutable,
+            View {
+                format: Some(vk::Format::R16G16B16A16_SFLOAT),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-01762",
+            &[],
+            VIEWED,
+            View {
+                format: Some(vk::Format::R8G8B8A8_SRGB),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-pNext-01585",
+            &[],
+            Viewed {
+                listed: &[vk::Format::R8G8B8A8_UNORM, vk::Format::R8G8B8A8_SRGB],
+                ..mutable
+            },
+            View {
+                format: Some(vk::Format::B8G8R8A8_UNORM),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-pNext-02662",
+            &[],
+            VIEWED,
+            View {
+                usage: Some(U::STORAGE),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-pNext-02663",
+            &[],
+            depth,
+            View {
+                aspect: vk::ImageAspectFlags::STENCIL,
+                usage: Some(U::SAMPLED),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-pNext-02664",
+            &["VUID-VkImageViewCreateInfo-usage-02275"],
+            depth,
+            View {
+                aspect: vk::ImageAspectFlags::DEPTH,
+                usage: Some(U::STORAGE),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-usage-02275",
+            &[],
+            Viewed {
+                usage: U::STORAGE,
+                ..mutable
+            },
+            View {
+                format: Some(vk::Format::R8G8B8A8_SRGB),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-01583",
+            &[],
+            block_texel,
+            View {
+                format: Some(vk::Format::R8G8B8A8_UNORM),
+                ..VIEW
+            },
+        ),
+        (
+            "VUID-VkImageViewCreateInfo-image-07072",
+            &[],
+            block_texel,
+            View {
+                format: Some(vk::Format::R32G32_UINT),
+                levels: 2,
+                ..VIEW
+            },
+        ),
+    ];
+    let mut v = Verdicts::default();
+    for (vuid, also, image, view) in cases {
+        let (safe, layer) = create_view(&s, image, view);
+        v.judge(vuid, also, safe, layer);
+    }
+    v.finish("image views");
+}

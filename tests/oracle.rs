@@ -2313,14 +2313,14 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     );
     // A cube-array view of the frame's image without the imageCubeArray feature.
     assert_eq!(
-        refusal(unsafe {
+        refusal(
             d.create_image_view(
                 &tuff::ImageViewCreateInfo::new(&target.image)
                     .view_type(vk::ImageViewType::CUBE_ARRAY)
                     .format(vk::Format::R8G8B8A8_UNORM)
                     .subresource_range(WHOLE),
             )
-        }),
+        ),
         "VUID-VkImageViewCreateInfo-viewType-01004"
     );
     assert_eq!(

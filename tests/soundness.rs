@@ -816,8 +816,9 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
     let setter;
     {
         // A second view of the target's image, given only at render-pass begin.
-        let view = unsafe {
-            s.device.create_image_view(
+        let view = s
+            .device
+            .create_image_view(
                 &tuff::ImageViewCreateInfo::new(&target.image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -829,8 +830,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                         layer_count: 1,
                     }),
             )
-        }
-        .expect("view");
+            .expect("view");
         let views = tuff::HandleSlice::new(&[&view]);
         // An imageless framebuffer reads no view at creation, only the count: it is
         // given the target's own view, so that only the begin info names `view`.

@@ -216,16 +216,12 @@ impl Gpu {
         format: vk::Format,
         aspect: vk::ImageAspectFlags,
     ) -> Result<tuff::ImageView> {
-        // SAFETY: a view of the whole image, of its own format and type, with the aspect its
-        // format has.
-        Ok(unsafe {
-            self.device.create_image_view(
-                &tuff::ImageViewCreateInfo::new(image)
-                    .view_type(vk::ImageViewType::TYPE_2D)
-                    .format(format)
-                    .subresource_range(whole(aspect)),
-            )
-        }?)
+        Ok(self.device.create_image_view(
+            &tuff::ImageViewCreateInfo::new(image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(format)
+                .subresource_range(whole(aspect)),
+        )?)
     }
 }
 

@@ -27,6 +27,7 @@ mod render_pass;
 mod stages;
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
+mod view;
 use creation::image_create_rules;
 pub(crate) use creation::{
     allocate_memory_checks, allocate_memory_gate, create_device_checks,
@@ -41,6 +42,7 @@ pub(crate) use swapchain::{
     acquire_next_image2_khr_checks, acquire_next_image2_khr_done, acquire_next_image_khr_checks,
     acquire_next_image_khr_done, create_swapchain_checks, swapchain_retires,
 };
+pub(crate) use view::{conversion_created, image_view_checks};
 
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
@@ -768,6 +770,24 @@ pub(crate) fn image_created(
         let required = sparse_image_requirement(device, create_info.as_raw());
         device.live().sparse_created(image.raw(), required);
     }
+    let next = create_info.as_raw().p_next;
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (stencil, list) = unsafe {
+        (
+            chained::<vk::ImageStencilUsageCreateInfo<'_>>(
+                next,
+                vk::StructureType::IMAGE_STENCIL_USAGE_CREATE_INFO,
+            ),
+            chained::<vk::ImageFormatListCreateInfo<'_>>(
+                next,
+                vk::StructureType::IMAGE_FORMAT_LIST_CREATE_INFO,
+            ),
+        )
+    };
+    // SAFETY: the safe setter stores the formats with their count.
+    let views = list.map_or(&[][..], |l| unsafe {
+        crate::retention::raw_slice(l.p_view_formats, l.view_format_count)
+    });
     device.live().image_created(
         image.raw(),
         ImageRecord {
@@ -779,11 +799,14 @@ pub(crate) fn image_created(
             array_layers: create_info.array_layers,
             usage: create_info.usage,
             tiling: create_info.tiling,
+            samples: create_info.samples,
+            stencil_usage: stencil.map(|s| s.stencil_usage),
             sharing: create_info.sharing_mode,
             families: family_bits(create_info.sharing_mode, create_info.as_raw()),
             bound: false,
-            external: external_handle_types(create_info.as_raw().p_next),
+            external: external_handle_types(next),
         },
+        views,
     );
     image
 }
@@ -871,6 +894,8 @@ pub(crate) fn swapchain_created(
             array_layers: create_info.image_array_layers,
             usage: create_info.image_usage,
             tiling: vk::ImageTiling::OPTIMAL,
+            samples: vk::SampleCountFlags::TYPE_1,
+            stencil_usage: None,
             sharing: create_info.image_sharing_mode,
             families: family_bits(
                 create_info.image_sharing_mode,

@@ -75,6 +75,10 @@ pub(crate) struct Live {
     dynamic_ranges: Vutex<HashMap<u64, SetRanges>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
+    /// The view formats each live image's create info listed, where it listed any.
+    view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
+    /// Each live sampler Y'CbCr conversion's format.
+    conversions: Vutex<HashMap<u64, vk::Format>>,
     /// Held by a safe allocation from its count check until its memory is listed,
     /// so two threads cannot both take the last allocation `maxMemoryAllocationCount`
     /// allows.
@@ -309,6 +313,10 @@ pub(crate) struct ImageRecord {
     pub usage: vk::ImageUsageFlags,
     /// `VkImageCreateInfo::tiling`.
     pub tiling: vk::ImageTiling,
+    /// `VkImageCreateInfo::samples`.
+    pub samples: vk::SampleCountFlags,
+    /// A chained `VkImageStencilUsageCreateInfo::stencilUsage`, if one was.
+    pub stencil_usage: Option<vk::ImageUsageFlags>,
     /// `VkImageCreateInfo::sharingMode`.
     pub sharing: vk::SharingMode,
     /// The queue families of a concurrent image, as bits (`u64::MAX` when one is 64
@@ -328,6 +336,8 @@ impl Default for Live {
             sets: Vutex::new(HashMap::default()),
             memories: Vutex::new(HashMap::default()),
             allocating: Vutex::new(()),
+            view_formats: Vutex::new(HashMap::default()),
+            conversions: Vutex::new(HashMap::default()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(std::collections::HashSet::new()),
@@ -505,8 +515,12 @@ impl Live {
                     *self.sparse_total.lock() -= size;
                 }
             }
+            vk::ObjectType::SAMPLER_YCBCR_CONVERSION => {
+                self.conversions.lock().remove(&key.1);
+            }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);
+                self.view_formats.lock().remove(&key.1);
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
                 }
@@ -699,9 +713,33 @@ impl Live {
         self.shader_modules.lock().get(&raw.as_raw()).cloned()
     }
 
-    /// Records a new image's creation parameters.
-    pub(crate) fn image_created(&self, raw: vk::Image, record: ImageRecord) {
+    /// Records a new image's creation parameters, and the view formats it listed.
+    pub(crate) fn image_created(&self, raw: vk::Image, record: ImageRecord, views: &[vk::Format]) {
         self.images.lock().insert(raw.as_raw(), record);
+        if !views.is_empty() {
+            self.view_formats
+                .lock()
+                .insert(raw.as_raw(), views.to_vec());
+        }
+    }
+
+    /// The view formats a live image's create info listed (empty: none listed).
+    pub(crate) fn view_formats(&self, raw: vk::Image) -> Vec<vk::Format> {
+        self.view_formats
+            .lock()
+            .get(&raw.as_raw())
+            .cloned()
+            .unwrap_or_default()
+    }
+
+    /// Records a new sampler Y'CbCr conversion's format.
+    pub(crate) fn conversion_created(&self, raw: vk::SamplerYcbcrConversion, format: vk::Format) {
+        self.conversions.lock().insert(raw.as_raw(), format);
+    }
+
+    /// The format a live sampler Y'CbCr conversion was created with.
+    pub(crate) fn conversion_format(&self, raw: vk::SamplerYcbcrConversion) -> Option<vk::Format> {
+        self.conversions.lock().get(&raw.as_raw()).copied()
     }
 
     /// Records that memory is bound to an image.

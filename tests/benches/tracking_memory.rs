@@ -115,20 +115,18 @@ fn main() {
     rows.push((
         "image view",
         per_object(|| {
-            unsafe {
-                d.create_image_view(
-                    &tuff::ImageViewCreateInfo::new(&target.image)
-                        .view_type(vk::ImageViewType::TYPE_2D)
-                        .format(vk::Format::R8G8B8A8_UNORM)
-                        .subresource_range(vk::ImageSubresourceRange {
-                            aspect_mask: vk::ImageAspectFlags::COLOR,
-                            base_mip_level: 0,
-                            level_count: 1,
-                            base_array_layer: 0,
-                            layer_count: 1,
-                        }),
-                )
-            }
+            d.create_image_view(
+                &tuff::ImageViewCreateInfo::new(&target.image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .subresource_range(vk::ImageSubresourceRange {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        base_mip_level: 0,
+                        level_count: 1,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    }),
+            )
             .expect("view")
         }),
     ));

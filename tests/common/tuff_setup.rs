@@ -359,8 +359,8 @@ impl Setup {
             )
             .expect("image");
         let memory = self.bind_image(&image);
-        let view = unsafe {
-            d.create_image_view(
+        let view = d
+            .create_image_view(
                 &tuff::ImageViewCreateInfo::new(&image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(vk::Format::R8G8B8A8_UNORM)
@@ -372,8 +372,7 @@ impl Setup {
                         layer_count: 1,
                     }),
             )
-        }
-        .expect("image view");
+            .expect("image view");
         let attachments = [vk::AttachmentDescription {
             format: vk::Format::R8G8B8A8_UNORM,
             samples: vk::SampleCountFlags::TYPE_1,

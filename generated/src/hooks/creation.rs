@@ -925,7 +925,7 @@ pub(crate) fn sampler_checks(device: &Device, create_info: &SamplerCreateInfo<'_
 
 /// Whether `format` is a block-compressed format (its texel blocks span more than
 /// one texel, and it is not one of the 4:2:2 formats, whose blocks also do).
-fn compressed(format: vk::Format) -> bool {
+pub(super) fn compressed(format: vk::Format) -> bool {
     let subsampled = (1_000_156_000..1_000_157_000).contains(&format.as_raw());
     crate::formats::block(format, vk::ImageAspectFlags::COLOR)
         .is_some_and(|(_, [w, h, _])| (w > 1 || h > 1) && !subsampled)
@@ -1148,6 +1148,8 @@ fn swapchain_image_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> Res
         array_layers: info.array_layers,
         usage: info.usage,
         tiling: info.tiling,
+        samples: info.samples,
+        stencil_usage: implied.stencil_usage,
         sharing: info.sharing_mode,
         families: family_bits(info.sharing_mode, info),
         bound: implied.bound,

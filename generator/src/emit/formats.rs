@@ -137,6 +137,16 @@ pub(super) fn emit(model: &Model) -> TokenStream {
             .map(|i| i as u32)
     });
     let chroma_arms = value_arms(model, |f| f.chroma.as_deref()?.parse().ok());
+    let number = |name: &str| {
+        model
+            .enum_numbers
+            .get(name)
+            .and_then(|n| u32::try_from(*n).ok())
+    };
+    let plane_arms: Vec<Vec<TokenStream>> = (0..3)
+        .map(|p| value_arms(model, |f| number(f.plane_formats.get(p)?)))
+        .collect();
+    let (plane0, plane1, plane2) = (&plane_arms[0], &plane_arms[1], &plane_arms[2]);
     let blocks = block_arms(model);
     quote! {
         //! The aspects of each format the registry describes, and the texel blocks
@@ -174,6 +184,28 @@ pub(super) fn emit(model: &Model) -> TokenStream {
                 #(#class_arms)*
                 _ => return None,
             })
+        }
+
+        /// The single-plane format compatible with plane `plane` (0 to 2) of a
+        /// multi-planar format (vk.xml's `<plane compatible>`); `None` for a format
+        /// without that plane.
+        pub(crate) fn plane_format(format: vk::Format, plane: usize) -> Option<vk::Format> {
+            let raw: u32 = match plane {
+                0 => match format.as_raw() {
+                    #(#plane0)*
+                    _ => return None,
+                },
+                1 => match format.as_raw() {
+                    #(#plane1)*
+                    _ => return None,
+                },
+                2 => match format.as_raw() {
+                    #(#plane2)*
+                    _ => return None,
+                },
+                _ => return None,
+            };
+            Some(vk::Format::from_raw(raw as i32))
         }
 
         /// For a format that needs a sampler Y'CbCr conversion, its chroma

@@ -1325,49 +1325,6 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
     }
     /**`vkCreateImageView`
 
-# Safety
-
-The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkImageViewCreateInfo-image-01003`: If `image` was not created with `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT` then `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`
-- `VUID-VkImageViewCreateInfo-image-04441`: `image` must have been created with a `usage` value containing at least one of the usages defined in the valid image usage list for image views
-- `VUID-VkImageViewCreateInfo-None-02273`: The format features of the resultant image view must contain at least one bit
-- `VUID-VkImageViewCreateInfo-usage-02274`: If `usage` contains `VK_IMAGE_USAGE_SAMPLED_BIT`, then the format features of the resultant image view must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT`
-- `VUID-VkImageViewCreateInfo-usage-02275`: If `usage` contains `VK_IMAGE_USAGE_STORAGE_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT`
-- `VUID-VkImageViewCreateInfo-usage-02276`: If `usage` contains `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkImageViewCreateInfo-usage-02277`: If `usage` contains `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageViewCreateInfo-usage-02652`: If `usage` contains `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, then the image view&#8217;s format features must contain at least one of `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageViewCreateInfo-subResourceRange-01021`: `viewType` must be compatible with the type of `image` as shown in the view type compatibility table
-- `VUID-VkImageViewCreateInfo-imageViewType-04973`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, then `subresourceRange.layerCount` must be 1
-- `VUID-VkImageViewCreateInfo-imageViewType-04974`: If `viewType` is `VK_IMAGE_VIEW_TYPE_1D`, `VK_IMAGE_VIEW_TYPE_2D`, or `VK_IMAGE_VIEW_TYPE_3D`; and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, then the remaining number of layers must be 1
-- `VUID-VkImageViewCreateInfo-viewType-02962`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be `6`
-- `VUID-VkImageViewCreateInfo-viewType-02963`: If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be a multiple of `6`
-- `VUID-VkImageViewCreateInfo-image-06723`: If `image` was created with `VK_IMAGE_TYPE_3D` but without `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set then `viewType` must not be `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
-- `VUID-VkImageViewCreateInfo-image-04970`: If `image` was created with `VK_IMAGE_TYPE_3D` and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY` then `subresourceRange.levelCount` must be 1
-- `VUID-VkImageViewCreateInfo-image-04971`: If `image` was created with `VK_IMAGE_TYPE_3D` and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY` then VkImageCreateInfo::`flags` must not contain any of `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, and `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`
-- `VUID-VkImageViewCreateInfo-image-04972`: If `image` was created with a `samples` value not equal to `VK_SAMPLE_COUNT_1_BIT` then `viewType` must be either `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
-- `VUID-VkImageViewCreateInfo-image-02724`: If `image` is a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.baseArrayLayer` must be less than the depth computed from `baseMipLevel` and `extent.depth` specified in VkImageCreateInfo when `image` was created, according to the formula defined in Image Miplevel Sizing
-- `VUID-VkImageViewCreateInfo-subresourceRange-02725`: If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `image` is a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, and `viewType` is `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.layerCount` must be non-zero and `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the depth computed from `baseMipLevel` and `extent.depth` specified in VkImageCreateInfo when `image` was created, according to the formula defined in Image Miplevel Sizing
-- `VUID-VkImageViewCreateInfo-image-06727`: If `image` was created with `VK_IMAGE_TYPE_3D` but without `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set then `viewType` must not be `VK_IMAGE_VIEW_TYPE_2D`
-- `VUID-VkImageViewCreateInfo-image-01482`: If `image` is not a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, or `viewType` is not `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-VkImageViewCreateInfo-subresourceRange-01483`: If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `image` is not a 3D image created with `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT` set, or `viewType` is not `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`, `subresourceRange.layerCount` must be non-zero and `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-VkImageViewCreateInfo-image-01761`: If `image` was created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, but without the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag, and if the `format` of the `image` is not a multi-planar format, `format` must be compatible with the `format` used to create `image`, as defined in Format Compatibility Classes
-- `VUID-VkImageViewCreateInfo-image-01583`: If `image` was created with the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag, `format` must be compatible with, or must be an uncompressed format that is size-compatible with, the `format` used to create `image`
-- `VUID-VkImageViewCreateInfo-image-07072`: If `image` was created with the `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT` flag and `format` is a non-compressed format, the `levelCount` and `layerCount` members of `subresourceRange` must both be `1`
-- `VUID-VkImageViewCreateInfo-pNext-01585`: If a VkImageFormatListCreateInfo structure was included in the `pNext` chain of the VkImageCreateInfo structure used when creating `image` and VkImageFormatListCreateInfo::`viewFormatCount` is not zero then `format` must be one of the formats in VkImageFormatListCreateInfo::`pViewFormats`
-- `VUID-VkImageViewCreateInfo-image-01586`: If `image` was created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, if the `format` of the `image` is a multi-planar format, and if `subresourceRange.aspectMask` is one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`, then `format` must be compatible with the VkFormat for the plane of the `image` `format` indicated by `subresourceRange.aspectMask`, as defined in Compatible formats of planes of multi-planar formats
-- `VUID-VkImageViewCreateInfo-subresourceRange-07818`: If `subresourceRange.aspectMask` contains any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`, then it must only have a single bit set
-- `VUID-VkImageViewCreateInfo-image-01762`: If `image` was not created with the `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` flag, or if the `format` of the `image` is a multi-planar format and if `subresourceRange.aspectMask` is `VK_IMAGE_ASPECT_COLOR_BIT`, `format` must be identical to the `format` used to create `image`
-- `VUID-VkImageViewCreateInfo-format-06415`: If the image view requires a sampler {YCbCr} conversion and `usage` contains `VK_IMAGE_USAGE_SAMPLED_BIT`, then the `pNext` chain must include a VkSamplerYcbcrConversionInfo structure with a conversion value other than VK_NULL_HANDLE
-- `VUID-VkImageViewCreateInfo-format-04714`: If `format` has a `_422` or `_420` suffix then `image` must have been created with a width that is a multiple of 2
-- `VUID-VkImageViewCreateInfo-format-04715`: If `format` has a `_420` suffix then `image` must have been created with a height that is a multiple of 2
-- `VUID-VkImageViewCreateInfo-pNext-01970`: If the `pNext` chain includes a VkSamplerYcbcrConversionInfo structure with a `conversion` value other than VK_NULL_HANDLE, all members of `components` must have the identity swizzle
-- `VUID-VkImageViewCreateInfo-pNext-06658`: If the `pNext` chain includes a VkSamplerYcbcrConversionInfo structure with a `conversion` value other than VK_NULL_HANDLE, `format` must be the same used in VkSamplerYcbcrConversionCreateInfo::`format`
-- `VUID-VkImageViewCreateInfo-pNext-02662`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, and `image` was not created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, its `usage` member must not include any bits that were not set in the `usage` member of the VkImageCreateInfo structure used to create `image`
-- `VUID-VkImageViewCreateInfo-pNext-02663`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and `subresourceRange.aspectMask` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, the `usage` member of the VkImageViewUsageCreateInfo structure must not include any bits that were not set in the `usage` member of the VkImageStencilUsageCreateInfo structure used to create `image`
-- `VUID-VkImageViewCreateInfo-pNext-02664`: If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and `subresourceRange.aspectMask` includes bits other than `VK_IMAGE_ASPECT_STENCIL_BIT`, the `usage` member of the VkImageViewUsageCreateInfo structure must not include any bits that were not set in the `usage` member of the VkImageCreateInfo structure used to create `image`
-
 # Valid usage
 
 The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
@@ -1377,7 +1334,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
 - `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_image_view<'a>(
+    pub fn create_image_view<'a>(
         &self,
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<ImageView> {
@@ -1385,6 +1342,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
             let r = self.validate_create_image_view(create_info);
             r?;
         }
+        crate::hooks::image_view_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_image_view_unchecked(create_info) }
@@ -1393,7 +1351,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
 
 # Safety
 
-The caller upholds the rules that [`Self::create_image_view`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_image_view`] checks at run time: `VUID-VkImageSubresourceRange-aspectMask-01670`, `VUID-VkImageViewCreateInfo-subresourceRange-07818`, `VUID-VkImageViewCreateInfo-image-01003`, `VUID-VkImageViewCreateInfo-image-04441`, `VUID-VkImageViewCreateInfo-subResourceRange-01021`, `VUID-VkImageViewCreateInfo-image-06723`, `VUID-VkImageViewCreateInfo-image-06727`, `VUID-VkImageViewCreateInfo-image-04970`, `VUID-VkImageViewCreateInfo-image-04971`, `VUID-VkImageViewCreateInfo-image-04972`, `VUID-VkImageViewCreateInfo-image-02724`, `VUID-VkImageViewCreateInfo-subresourceRange-02725`, `VUID-VkImageViewCreateInfo-image-01482`, `VUID-VkImageViewCreateInfo-subresourceRange-01483`, `VUID-VkImageViewCreateInfo-imageViewType-04973`, `VUID-VkImageViewCreateInfo-imageViewType-04974`, `VUID-VkImageViewCreateInfo-viewType-02962`, `VUID-VkImageViewCreateInfo-viewType-02963`, `VUID-VkImageViewCreateInfo-image-01761`, `VUID-VkImageViewCreateInfo-image-01583`, `VUID-VkImageViewCreateInfo-image-07072`, `VUID-VkImageViewCreateInfo-pNext-01585`, `VUID-VkImageViewCreateInfo-image-01586`, `VUID-VkImageViewCreateInfo-image-01762`, `VUID-VkImageViewCreateInfo-format-04714`, `VUID-VkImageViewCreateInfo-format-04715`, `VUID-VkImageViewCreateInfo-pNext-01970`, `VUID-VkImageViewCreateInfo-pNext-06658`, `VUID-VkImageViewCreateInfo-format-06415`, `VUID-VkImageViewCreateInfo-pNext-02662`, `VUID-VkImageViewCreateInfo-pNext-02663`, `VUID-VkImageViewCreateInfo-pNext-02664`, `VUID-VkImageViewCreateInfo-None-02273`, `VUID-VkImageViewCreateInfo-usage-02274`, `VUID-VkImageViewCreateInfo-usage-02275`, `VUID-VkImageViewCreateInfo-usage-02276`, `VUID-VkImageViewCreateInfo-usage-02277`, `VUID-VkImageViewCreateInfo-usage-02652`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_image_view_unchecked<'a>(
         &self,

@@ -557,7 +557,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
 
 # Safety
 
-The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`: The `srcAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
 - `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`: The `dstAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
@@ -605,7 +605,6 @@ The caller upholds these 47 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageMemoryBarrier-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-VkImageMemoryBarrier-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1223,7 +1222,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
 
 # Safety
 
-The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdWaitEvents-srcAccessMask-02815`: The `srcAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
 - `VUID-vkCmdWaitEvents-dstAccessMask-02816`: The `dstAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
@@ -1269,7 +1268,6 @@ The caller upholds these 45 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageMemoryBarrier-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-VkImageMemoryBarrier-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1724,7 +1722,7 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
 
 # Safety
 
-The caller upholds these 11 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdClearColorImage-image-01993`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdClearColorImage-imageLayout-00004`: `imageLayout` must specify the layout of the image subresource ranges of `image` specified in `pRanges` at the time this command is executed on a `VkDevice`
@@ -1736,7 +1734,6 @@ The caller upholds these 11 rules that no check of this method enforces (its com
 - `VUID-vkCmdClearColorImage-image-01545`: `image` must not use any of the formats that require a sampler {YCbCr} conversion
 - `VUID-vkCmdClearColorImage-commandBuffer-01805`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
 - `VUID-vkCmdClearColorImage-commandBuffer-01806`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, must not be an unprotected image
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1811,7 +1808,7 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
 
 # Safety
 
-The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdClearDepthStencilImage-image-01994`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `image`
@@ -1827,7 +1824,6 @@ The caller upholds these 15 rules that no check of this method enforces (its com
 - `VUID-vkCmdClearDepthStencilImage-image-00014`: `image` must have a depth/stencil format
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `image` must not be an unprotected image
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 

@@ -295,7 +295,13 @@ The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] chec
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(SamplerYcbcrConversion::from_raw(out, self, None, true))
+        Ok(
+            crate::hooks::conversion_created(
+                self,
+                SamplerYcbcrConversion::from_raw(out, self, None, true),
+                create_info,
+            ),
+        )
     }
     /**`vkGetBufferMemoryRequirements2`
 

@@ -753,7 +753,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
 - `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
@@ -789,7 +789,6 @@ The caller upholds these 35 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1005,7 +1004,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
 
 # Safety
 
-The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` that expresses a dependency from the current subpass to itself, with synchronization scopes and access scopes that are all supersets of the scopes defined in this command
 - `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
@@ -1046,7 +1045,6 @@ The caller upholds these 40 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 
@@ -1706,7 +1704,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
 
 # Safety
 
-The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
 - `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
@@ -1747,7 +1745,6 @@ The caller upholds these 40 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageSubresourceRange-aspectMask-01670`: If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, then it must not include any of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
 
 # Valid usage
 

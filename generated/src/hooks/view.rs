@@ -1,0 +1,459 @@
+//! Checks of an image view's creation against the image it views: its type, range
+//! and format against the image's recorded creation parameters, and its usage
+//! against the format features the physical device reports.
+
+use super::*;
+
+/// The usage a view has: a chained `VkImageViewUsageCreateInfo`'s, or the image's
+/// (its stencil usage for a stencil-only view, and both for a view of depth and
+/// stencil), as the specification derives it.
+fn view_usage(
+    record: &crate::retention::ImageRecord,
+    aspect: vk::ImageAspectFlags,
+    chained: Option<vk::ImageUsageFlags>,
+) -> vk::ImageUsageFlags {
+    if let Some(u) = chained {
+        return u;
+    }
+    let Some(stencil) = record.stencil_usage else {
+        return record.usage;
+    };
+    let has_stencil = aspect.contains(vk::ImageAspectFlags::STENCIL);
+    let other = aspect.intersects(!vk::ImageAspectFlags::STENCIL);
+    match (has_stencil, other) {
+        (true, false) => stencil,
+        (true, true) => record.usage & stencil,
+        _ => record.usage,
+    }
+}
+
+/// The checks of `vkCreateImageView` that read the image's creation parameters and
+/// ask the physical device about the view's format.
+pub(crate) fn image_view_checks(
+    device: &Device,
+    create_info: &ImageViewCreateInfo<'_>,
+) -> Result<()> {
+    let info = create_info.as_raw();
+    let Some(image) = device.live().image(info.image) else {
+        return Ok(());
+    };
+    let r = info.subresource_range;
+    let aspect = r.aspect_mask;
+    let planes = vk::ImageAspectFlags::PLANE_0
+        | vk::ImageAspectFlags::PLANE_1
+        | vk::ImageAspectFlags::PLANE_2;
+    if aspect.contains(vk::ImageAspectFlags::COLOR) && aspect.intersects(planes) {
+        refuse(
+            "VUID-VkImageSubresourceRange-aspectMask-01670",
+            format!("aspectMask ({aspect:?}) has COLOR and a plane"),
+        )?;
+    }
+    if aspect.intersects(planes) && aspect.as_raw().count_ones() != 1 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-subresourceRange-07818",
+            format!("aspectMask ({aspect:?}) names a plane and another aspect"),
+        )?;
+    }
+    use vk::ImageViewType as V;
+    let ty = info.view_type;
+    let flags = image.flags;
+    if image.samples != vk::SampleCountFlags::TYPE_1 && !matches!(ty, V::TYPE_2D | V::TYPE_2D_ARRAY)
+    {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-04972",
+            format!("a {ty:?} view of a multisampled image"),
+        )?;
+    }
+    let cube = matches!(ty, V::CUBE | V::CUBE_ARRAY);
+    if cube && !flags.contains(vk::ImageCreateFlags::CUBE_COMPATIBLE) {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-01003",
+            format!("a {ty:?} view of an image created without CUBE_COMPATIBLE"),
+        )?;
+    }
+    let view_usages = vk::ImageUsageFlags::SAMPLED
+        | vk::ImageUsageFlags::STORAGE
+        | vk::ImageUsageFlags::COLOR_ATTACHMENT
+        | vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT
+        | vk::ImageUsageFlags::INPUT_ATTACHMENT
+        | vk::ImageUsageFlags::TRANSIENT_ATTACHMENT;
+    if !image.usage.intersects(view_usages) {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-04441",
+            format!(
+                "the image's usage ({:?}) has none a view can have",
+                image.usage
+            ),
+        )?;
+    }
+    use vk::ImageType as I;
+    let compatible = match image.image_type {
+        I::TYPE_1D => matches!(ty, V::TYPE_1D | V::TYPE_1D_ARRAY),
+        I::TYPE_2D => matches!(ty, V::TYPE_2D | V::TYPE_2D_ARRAY | V::CUBE | V::CUBE_ARRAY),
+        I::TYPE_3D => matches!(ty, V::TYPE_3D | V::TYPE_2D | V::TYPE_2D_ARRAY),
+        _ => true,
+    };
+    if !compatible {
+        refuse(
+            "VUID-VkImageViewCreateInfo-subResourceRange-01021",
+            format!("a {ty:?} view of a {:?} image", image.image_type),
+        )?;
+    }
+    let three_d = image.image_type == I::TYPE_3D;
+    let array_2d = flags.contains(vk::ImageCreateFlags::TYPE_2D_ARRAY_COMPATIBLE);
+    if three_d && !array_2d && ty == V::TYPE_2D_ARRAY {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-06723",
+            "a 2D array view of a 3D image created without 2D_ARRAY_COMPATIBLE".into(),
+        )?;
+    }
+    if three_d && !array_2d && ty == V::TYPE_2D {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-06727",
+            "a 2D view of a 3D image created without 2D_ARRAY_COMPATIBLE".into(),
+        )?;
+    }
+    let slices_of_3d = three_d && matches!(ty, V::TYPE_2D | V::TYPE_2D_ARRAY);
+    if slices_of_3d && r.level_count != 1 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-04970",
+            format!(
+                "a {ty:?} view of a 3D image has one level, not {}",
+                r.level_count
+            ),
+        )?;
+    }
+    let sparse = vk::ImageCreateFlags::SPARSE_BINDING
+        | vk::ImageCreateFlags::SPARSE_RESIDENCY
+        | vk::ImageCreateFlags::SPARSE_ALIASED;
+    if slices_of_3d && flags.intersects(sparse) {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-04971",
+            format!("a {ty:?} view of a sparse 3D image"),
+        )?;
+    }
+    // The layers a view may name: the depth slices of its base level for 2D views of
+    // a 3D image, the array layers otherwise.
+    let remaining = vk::REMAINING_ARRAY_LAYERS;
+    if slices_of_3d && array_2d {
+        let depth = (image.extent.depth >> r.base_mip_level.min(31)).max(1);
+        if r.base_array_layer >= depth {
+            refuse(
+                "VUID-VkImageViewCreateInfo-image-02724",
+                format!(
+                    "baseArrayLayer ({}) is past the {depth} slices of level {}",
+                    r.base_array_layer, r.base_mip_level
+                ),
+            )?;
+        }
+        if r.layer_count != remaining
+            && (r.layer_count == 0
+                || u64::from(r.base_array_layer) + u64::from(r.layer_count) > u64::from(depth))
+        {
+            refuse(
+                "VUID-VkImageViewCreateInfo-subresourceRange-02725",
+                format!(
+                    "layers {} to {} are not within the {depth} slices of level {}",
+                    r.base_array_layer,
+                    u64::from(r.base_array_layer) + u64::from(r.layer_count),
+                    r.base_mip_level
+                ),
+            )?;
+        }
+    } else {
+        if r.base_array_layer >= image.array_layers {
+            refuse(
+                "VUID-VkImageViewCreateInfo-image-01482",
+                format!(
+                    "baseArrayLayer ({}) is past the image's {} layers",
+                    r.base_array_layer, image.array_layers
+                ),
+            )?;
+        }
+        if r.layer_count != remaining
+            && (r.layer_count == 0
+                || u64::from(r.base_array_layer) + u64::from(r.layer_count)
+                    > u64::from(image.array_layers))
+        {
+            refuse(
+                "VUID-VkImageViewCreateInfo-subresourceRange-01483",
+                format!(
+                    "layers {} to {} are not within the image's {}",
+                    r.base_array_layer,
+                    u64::from(r.base_array_layer) + u64::from(r.layer_count),
+                    image.array_layers
+                ),
+            )?;
+        }
+    }
+    let layers_left = if slices_of_3d && array_2d {
+        (image.extent.depth >> r.base_mip_level.min(31)).max(1)
+    } else {
+        image.array_layers
+    }
+    .saturating_sub(r.base_array_layer);
+    let single = matches!(ty, V::TYPE_1D | V::TYPE_2D | V::TYPE_3D);
+    if single && r.layer_count != remaining && r.layer_count != 1 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-imageViewType-04973",
+            format!("a {ty:?} view has one layer, not {}", r.layer_count),
+        )?;
+    }
+    if single && r.layer_count == remaining && layers_left != 1 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-imageViewType-04974",
+            format!("a {ty:?} view has one layer, but {layers_left} remain"),
+        )?;
+    }
+    if ty == V::CUBE && r.layer_count == remaining && layers_left != 6 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-viewType-02962",
+            format!("a cube view has 6 layers, but {layers_left} remain"),
+        )?;
+    }
+    if ty == V::CUBE_ARRAY && r.layer_count == remaining && layers_left % 6 != 0 {
+        refuse(
+            "VUID-VkImageViewCreateInfo-viewType-02963",
+            format!("a cube array view has a multiple of 6 layers, but {layers_left} remain"),
+        )?;
+    }
+    view_format_checks(device, info, &image)
+}
+
+/// The view's format against the image's (mutable, block-texel compatible,
+/// listed, multi-planar and Y'CbCr rules) and its usage against the format features.
+fn view_format_checks(
+    device: &Device,
+    info: &vk::ImageViewCreateInfo<'_>,
+    image: &crate::retention::ImageRecord,
+) -> Result<()> {
+    let (format, r) = (info.format, info.subresource_range);
+    let flags = image.flags;
+    let mutable = flags.contains(vk::ImageCreateFlags::MUTABLE_FORMAT);
+    let block_texel = flags.contains(vk::ImageCreateFlags::BLOCK_TEXEL_VIEW_COMPATIBLE);
+    let planes = crate::formats::aspects(image.format)
+        .is_some_and(|a| a.contains(vk::ImageAspectFlags::PLANE_0));
+    let same_class = |a: vk::Format, b: vk::Format| {
+        crate::formats::class(a).is_some() && crate::formats::class(a) == crate::formats::class(b)
+    };
+    let color = vk::ImageAspectFlags::COLOR;
+    if mutable && !block_texel && !planes && !same_class(format, image.format) {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-01761",
+            format!(
+                "{format:?} is not compatible with the image's {:?}",
+                image.format
+            ),
+        )?;
+    }
+    if block_texel {
+        let size = |f| crate::formats::block(f, color).map(|b| b.0);
+        let size_compatible = !super::creation::compressed(format)
+            && size(format).is_some()
+            && size(format) == size(image.format);
+        if !same_class(format, image.format) && !size_compatible {
+            refuse(
+                "VUID-VkImageViewCreateInfo-image-01583",
+                format!(
+                    "{format:?} is neither compatible nor size-compatible with the image's {:?}",
+                    image.format
+                ),
+            )?;
+        }
+        if !super::creation::compressed(format) && (r.level_count != 1 || r.layer_count != 1) {
+            refuse(
+                "VUID-VkImageViewCreateInfo-image-07072",
+                format!("an uncompressed view of a block-texel-view-compatible image has one level and one layer, not {} and {}", r.level_count, r.layer_count),
+            )?;
+        }
+    }
+    let listed = device.live().view_formats(info.image);
+    if !listed.is_empty() && !listed.contains(&format) {
+        refuse(
+            "VUID-VkImageViewCreateInfo-pNext-01585",
+            format!("{format:?} is not among the view formats the image listed ({listed:?})"),
+        )?;
+    }
+    let plane = [
+        vk::ImageAspectFlags::PLANE_0,
+        vk::ImageAspectFlags::PLANE_1,
+        vk::ImageAspectFlags::PLANE_2,
+    ]
+    .iter()
+    .position(|p| r.aspect_mask == *p);
+    if mutable && planes {
+        if let Some(p) = plane {
+            let plane_format = crate::formats::plane_format(image.format, p);
+            if plane_format.is_some_and(|pf| !same_class(format, pf)) {
+                refuse(
+                    "VUID-VkImageViewCreateInfo-image-01586",
+                    format!("{format:?} is not compatible with plane {p} of the image's {:?} ({plane_format:?})", image.format),
+                )?;
+            }
+        }
+    }
+    if (!mutable || (planes && r.aspect_mask == color)) && format != image.format {
+        refuse(
+            "VUID-VkImageViewCreateInfo-image-01762",
+            format!("{format:?} is not the image's {:?}", image.format),
+        )?;
+    }
+    if let Some(chroma) = crate::formats::chroma(format) {
+        if matches!(chroma, 420 | 422) && image.extent.width % 2 != 0 {
+            refuse(
+                "VUID-VkImageViewCreateInfo-format-04714",
+                format!(
+                    "a view of {format:?} needs an image of even width, not {}",
+                    image.extent.width
+                ),
+            )?;
+        }
+        if chroma == 420 && image.extent.height % 2 != 0 {
+            refuse(
+                "VUID-VkImageViewCreateInfo-format-04715",
+                format!(
+                    "a view of {format:?} needs an image of even height, not {}",
+                    image.extent.height
+                ),
+            )?;
+        }
+    }
+    // SAFETY: the `pNext` of a safe struct, and the types the sTypes name.
+    let (conversion, usage) = unsafe {
+        (
+            chained::<vk::SamplerYcbcrConversionInfo<'_>>(
+                info.p_next,
+                vk::StructureType::SAMPLER_YCBCR_CONVERSION_INFO,
+            ),
+            chained::<vk::ImageViewUsageCreateInfo<'_>>(
+                info.p_next,
+                vk::StructureType::IMAGE_VIEW_USAGE_CREATE_INFO,
+            ),
+        )
+    };
+    let conversion = conversion
+        .map(|c| c.conversion)
+        .filter(|c| *c != vk::SamplerYcbcrConversion::null());
+    if let Some(c) = conversion {
+        let identity = vk::ComponentSwizzle::IDENTITY;
+        let m = info.components;
+        if [m.r, m.g, m.b, m.a].iter().any(|s| *s != identity) {
+            refuse(
+                "VUID-VkImageViewCreateInfo-pNext-01970",
+                format!("a view with a Y'CbCr conversion has the identity swizzle, not {m:?}"),
+            )?;
+        }
+        if let Some(f) = device.live().conversion_format(c).filter(|f| *f != format) {
+            refuse(
+                "VUID-VkImageViewCreateInfo-pNext-06658",
+                format!("the view's format ({format:?}) is not its Y'CbCr conversion's ({f:?})"),
+            )?;
+        }
+    }
+    let chained_usage = usage.map(|u| u.usage);
+    if let Some(u) = chained_usage {
+        let has_stencil = r.aspect_mask.contains(vk::ImageAspectFlags::STENCIL);
+        let other = r.aspect_mask.intersects(!vk::ImageAspectFlags::STENCIL);
+        match image.stencil_usage {
+            None if !image.usage.contains(u) => refuse(
+                "VUID-VkImageViewCreateInfo-pNext-02662",
+                format!(
+                    "the view's usage ({u:?}) has bits the image's ({:?}) has not",
+                    image.usage
+                ),
+            )?,
+            Some(s) if has_stencil && !s.contains(u) => refuse(
+                "VUID-VkImageViewCreateInfo-pNext-02663",
+                format!(
+                    "the view's usage ({u:?}) has bits the image's stencil usage ({s:?}) has not"
+                ),
+            )?,
+            Some(_) if other && !image.usage.contains(u) => refuse(
+                "VUID-VkImageViewCreateInfo-pNext-02664",
+                format!(
+                    "the view's usage ({u:?}) has bits the image's ({:?}) has not",
+                    image.usage
+                ),
+            )?,
+            _ => {}
+        }
+    }
+    let usage = view_usage(image, r.aspect_mask, chained_usage);
+    let sampled = usage.contains(vk::ImageUsageFlags::SAMPLED);
+    if crate::formats::chroma(format).is_some() && sampled && conversion.is_none() {
+        refuse(
+            "VUID-VkImageViewCreateInfo-format-06415",
+            format!("a sampled view of {format:?} needs a Y'CbCr conversion chained"),
+        )?;
+    }
+    let props = device
+        .parent()
+        .get_physical_device_format_properties(format)?;
+    let features = if image.tiling == vk::ImageTiling::LINEAR {
+        props.linear_tiling_features
+    } else {
+        props.optimal_tiling_features
+    };
+    use vk::FormatFeatureFlags as F;
+    use vk::ImageUsageFlags as U;
+    if features.is_empty() {
+        refuse(
+            "VUID-VkImageViewCreateInfo-None-02273",
+            format!(
+                "{format:?} has no format features with {:?} tiling",
+                image.tiling
+            ),
+        )?;
+    }
+    for (bit, needs, vuid) in [
+        (
+            U::SAMPLED,
+            F::SAMPLED_IMAGE,
+            "VUID-VkImageViewCreateInfo-usage-02274",
+        ),
+        (
+            U::STORAGE,
+            F::STORAGE_IMAGE,
+            "VUID-VkImageViewCreateInfo-usage-02275",
+        ),
+        (
+            U::COLOR_ATTACHMENT,
+            F::COLOR_ATTACHMENT,
+            "VUID-VkImageViewCreateInfo-usage-02276",
+        ),
+        (
+            U::DEPTH_STENCIL_ATTACHMENT,
+            F::DEPTH_STENCIL_ATTACHMENT,
+            "VUID-VkImageViewCreateInfo-usage-02277",
+        ),
+    ] {
+        if usage.contains(bit) && !features.contains(needs) {
+            refuse(
+                vuid,
+                format!("the view's usage has {bit:?}, but {format:?}'s {:?} features ({features:?}) lack {needs:?}", image.tiling),
+            )?;
+        }
+    }
+    if usage.contains(U::INPUT_ATTACHMENT)
+        && !features.intersects(F::COLOR_ATTACHMENT | F::DEPTH_STENCIL_ATTACHMENT)
+    {
+        refuse(
+            "VUID-VkImageViewCreateInfo-usage-02652",
+            format!("the view's usage has INPUT_ATTACHMENT, but {format:?}'s features ({features:?}) have neither attachment feature"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The device remembers a sampler Y'CbCr conversion's format, which views that use
+/// it must have.
+pub(crate) fn conversion_created(
+    device: &Device,
+    conversion: SamplerYcbcrConversion,
+    create_info: &SamplerYcbcrConversionCreateInfo<'_>,
+) -> SamplerYcbcrConversion {
+    device
+        .live()
+        .conversion_created(conversion.raw(), create_info.as_raw().format);
+    conversion
+}
