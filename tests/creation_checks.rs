@@ -1583,3 +1583,342 @@ fn image_view_rules_are_refused_and_the_layer_agrees() {
     }
     v.finish("image views");
 }
+
+/// The safe call's result and what the layer said of the unchecked one.
+type Outcome = (tuff::Result<()>, Vec<String>);
+
+#[test]
+fn framebuffer_rules_are_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let d = &s.device;
+    use vk::ImageUsageFlags as U;
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let depth_format = vk::Format::D32_SFLOAT_S8_UINT;
+    let attachment = |format| vk::AttachmentDescription {
+        format,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::DONT_CARE,
+        store_op: vk::AttachmentStoreOp::DONT_CARE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: vk::ImageLayout::UNDEFINED,
+        final_layout: vk::ImageLayout::GENERAL,
+        ..Default::default()
+    };
+    let attachments = [attachment(rgba), attachment(depth_format)];
+    let color_ref = [vk::AttachmentReference {
+        attachment: 0,
+        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let depth_ref = vk::AttachmentReference {
+        attachment: 1,
+        layout: vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+    };
+    let subpasses = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color_ref)
+        .depth_stencil_attachment(Some(&depth_ref))];
+    let render_pass = d
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses),
+        )
+        .expect("render pass");
+    let allocator = d.naive_allocator();
+    // A view of a new bound image: format, type, levels, samples, usage, flags, the
+    // view's type and swizzle.
+    let view = |format, ty, levels, samples, usage, flags, view_ty, swizzle| {
+        let info = tuff::ImageCreateInfo::new()
+            .flags(flags)
+            .image_type(ty)
+            .format(format)
+            .extent(vk::Extent3D {
+                width: 16,
+                height: 16,
+                depth: 1,
+            })
+            .mip_levels(levels)
+            .array_layers(1)
+            .samples(samples)
+            .usage(usage);
+        // SAFETY: the images keep every rule of their creation.
+        let image =
+            unsafe { d.create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal) }
+                .expect("image");
+        let aspect = if format == depth_format {
+            vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
+        } else {
+            vk::ImageAspectFlags::COLOR
+        };
+        let view = d
+            .create_image_view(
+                &tuff::ImageViewCreateInfo::new(&image)
+                    .view_type(view_ty)
+                    .format(format)
+                    .components(vk::ComponentMapping {
+                        r: swizzle,
+                        ..Default::default()
+                    })
+                    .subresource_range(vk::ImageSubresourceRange {
+                        aspect_mask: aspect,
+                        base_mip_level: 0,
+                        level_count: levels,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    }),
+            )
+            .expect("view");
+        (image, view)
+    };
+    let one = vk::SampleCountFlags::TYPE_1;
+    let flat = vk::ImageType::TYPE_2D;
+    let v2 = vk::ImageViewType::TYPE_2D;
+    let id = vk::ComponentSwizzle::IDENTITY;
+    let none = vk::ImageCreateFlags::empty();
+    let color = view(
+        rgba,
+        flat,
+        1,
+        one,
+        U::COLOR_ATTACHMENT | U::SAMPLED,
+        none,
+        v2,
+        id,
+    );
+    let depth = view(
+        depth_format,
+        flat,
+        1,
+        one,
+        U::DEPTH_STENCIL_ATTACHMENT | U::SAMPLED,
+        none,
+        v2,
+        id,
+    );
+    let sampled = view(rgba, flat, 1, one, U::SAMPLED, none, v2, id);
+    let sampled_depth = view(depth_format, flat, 1, one, U::SAMPLED, none, v2, id);
+    let srgb = view(
+        vk::Format::R8G8B8A8_SRGB,
+        flat,
+        1,
+        one,
+        U::COLOR_ATTACHMENT,
+        none,
+        v2,
+        id,
+    );
+    let four = view(
+        rgba,
+        flat,
+        1,
+        vk::SampleCountFlags::TYPE_4,
+        U::COLOR_ATTACHMENT,
+        none,
+        v2,
+        id,
+    );
+    let levels = view(rgba, flat, 2, one, U::COLOR_ATTACHMENT, none, v2, id);
+    let swizzled = view(
+        rgba,
+        flat,
+        1,
+        one,
+        U::COLOR_ATTACHMENT,
+        none,
+        v2,
+        vk::ComponentSwizzle::G,
+    );
+    let solid = view(
+        rgba,
+        vk::ImageType::TYPE_3D,
+        1,
+        one,
+        U::COLOR_ATTACHMENT,
+        none,
+        vk::ImageViewType::TYPE_3D,
+        id,
+    );
+    let create = |views: &[&tuff::ImageView],
+                  size: (u32, u32, u32),
+                  imageless: Option<&[tuff::FramebufferAttachmentImageInfo<'_>]>| {
+        let views = tuff::HandleSlice::new(views);
+        let mut infos = tuff::FramebufferAttachmentsCreateInfo::new();
+        let mut info = tuff::FramebufferCreateInfo::new(&render_pass)
+            .attachments(&views)
+            .width(size.0)
+            .height(size.1)
+            .layers(size.2);
+        if let Some(images) = imageless {
+            info = info.flags(vk::FramebufferCreateFlags::IMAGELESS);
+            if !images.is_empty() {
+                infos = infos.attachment_image_infos(images);
+                info = info.push_next(&mut infos);
+            }
+        }
+        let safe = d.create_framebuffer(&info).map(drop);
+        let layer = under_layer(&s, || {
+            let _ = unsafe { d.create_framebuffer_unchecked(&info) };
+        });
+        (safe, layer)
+    };
+    let size = (16, 16, 1);
+    let (safe, layer) = create(&[&color.1, &depth.1], size, None);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid framebuffer: {safe:?} {layer:?}"
+    );
+    let image_info = |usage, width, layers, format: &'static [vk::Format]| {
+        tuff::FramebufferAttachmentImageInfo::new()
+            .usage(usage)
+            .width(width)
+            .height(16)
+            .layer_count(layers)
+            .view_formats(format)
+    };
+    let good = [
+        image_info(U::COLOR_ATTACHMENT, 16, 1, &[vk::Format::R8G8B8A8_UNORM]),
+        image_info(
+            U::DEPTH_STENCIL_ATTACHMENT,
+            16,
+            1,
+            &[vk::Format::D32_SFLOAT_S8_UINT],
+        ),
+    ];
+    let (safe, layer) = create(&[&color.1, &depth.1], size, Some(&good));
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "the valid imageless framebuffer: {safe:?} {layer:?}"
+    );
+    let mut v = Verdicts::default();
+    let cases: Vec<(&str, &[&str], Outcome)> = vec![
+        (
+            "VUID-VkFramebufferCreateInfo-attachmentCount-00876",
+            &[],
+            create(&[&color.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-00877",
+            &[],
+            create(&[&sampled.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-02633",
+            &[],
+            create(&[&color.1, &sampled_depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-00880",
+            &[],
+            create(&[&srgb.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-00881",
+            &[],
+            create(&[&four.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04533",
+            &[],
+            create(&[&color.1, &depth.1], (32, 16, 1), None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04534",
+            &[],
+            create(&[&color.1, &depth.1], (16, 32, 1), None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04535",
+            &[],
+            create(&[&color.1, &depth.1], (16, 16, 2), None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-00883",
+            &[],
+            create(&[&levels.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-pAttachments-00884",
+            &[],
+            create(&[&swizzled.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04113",
+            &[],
+            create(&[&solid.1, &depth.1], size, None),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-03190",
+            &[],
+            create(&[&color.1, &depth.1], size, Some(&[])),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-03191",
+            &[],
+            create(&[&color.1, &depth.1], size, Some(&good[..1])),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-03201",
+            &[],
+            create(
+                &[&color.1, &depth.1],
+                size,
+                Some(&[
+                    image_info(U::SAMPLED, 16, 1, &[vk::Format::R8G8B8A8_UNORM]),
+                    good[1],
+                ]),
+            ),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-03202",
+            &[],
+            create(
+                &[&color.1, &depth.1],
+                size,
+                Some(&[
+                    good[0],
+                    image_info(U::SAMPLED, 16, 1, &[vk::Format::D32_SFLOAT_S8_UINT]),
+                ]),
+            ),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-03205",
+            &[],
+            create(
+                &[&color.1, &depth.1],
+                size,
+                Some(&[
+                    image_info(U::COLOR_ATTACHMENT, 16, 1, &[vk::Format::R8G8B8A8_SRGB]),
+                    good[1],
+                ]),
+            ),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04541",
+            &[],
+            create(
+                &[&color.1, &depth.1],
+                size,
+                Some(&[
+                    image_info(U::COLOR_ATTACHMENT, 8, 1, &[vk::Format::R8G8B8A8_UNORM]),
+                    good[1],
+                ]),
+            ),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-flags-04542",
+            &[],
+            create(&[&color.1, &depth.1], (16, 32, 1), Some(&good)),
+        ),
+        (
+            "VUID-VkFramebufferCreateInfo-renderPass-04546",
+            &[],
+            create(&[&color.1, &depth.1], (16, 16, 2), Some(&good)),
+        ),
+    ];
+    for (vuid, also, (safe, layer)) in cases {
+        v.judge(vuid, also, safe, layer);
+    }
+    v.finish("framebuffers");
+}

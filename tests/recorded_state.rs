@@ -644,18 +644,16 @@ fn two_subpasses(
                 .dependencies(&dependencies),
         )
         .expect("render pass");
-    // SAFETY: the view is of the target's image, of the attachment's format, one
-    // level and layer, and its extent.
-    let framebuffer = unsafe {
-        s.device.create_framebuffer(
+    let framebuffer = s
+        .device
+        .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&render_pass)
                 .attachments(&tuff::HandleSlice::new(&[&target.view]))
                 .width(4)
                 .height(4)
                 .layers(1),
         )
-    }
-    .expect("framebuffer");
+        .expect("framebuffer");
     (render_pass, framebuffer)
 }
 
@@ -1055,16 +1053,14 @@ fn a_subpass_without_attachments_keeps_its_first_sample_count() {
     let render_pass = d
         .create_render_pass(&tuff::RenderPassCreateInfo::new().subpasses(&subpasses))
         .expect("render pass");
-    // SAFETY: no attachments, a size within the device's limits.
-    let framebuffer = unsafe {
-        d.create_framebuffer(
+    let framebuffer = d
+        .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&render_pass)
                 .width(4)
                 .height(4)
                 .layers(1),
         )
-    }
-    .expect("framebuffer");
+        .expect("framebuffer");
     let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/test.vert.spv"));
     let layout = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())

@@ -835,8 +835,9 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
         // An imageless framebuffer reads no view at creation, only the count: it is
         // given the target's own view, so that only the begin info names `view`.
         let creation_views = tuff::HandleSlice::new(&[&target.view]);
-        let framebuffer = unsafe {
-            s.device.create_framebuffer(
+        let framebuffer = s
+            .device
+            .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&target.render_pass)
                     .flags(vk::FramebufferCreateFlags::IMAGELESS)
                     .attachments(&creation_views)
@@ -845,8 +846,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                     .layers(1)
                     .push_next(&mut attachments_info),
             )
-        }
-        .expect("imageless framebuffer");
+            .expect("imageless framebuffer");
         live_with_view = s.device.live_object_count();
         let mut at_begin = tuff::RenderPassAttachmentBeginInfo::new().attachments(&views);
         let clear = [vk::ClearValue::default()];

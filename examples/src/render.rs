@@ -172,17 +172,13 @@ impl Framebuffers {
                     .flatten()
                     .collect();
                 let attachments = tuff::HandleSlice::new(&attachments);
-                // SAFETY: the attachments are live views of the render pass's formats and
-                // sample counts, one layer, at the framebuffer's size.
-                Ok(unsafe {
-                    gpu.device.create_framebuffer(
-                        &tuff::FramebufferCreateInfo::new(render_pass)
-                            .attachments(&attachments)
-                            .width(extent.width)
-                            .height(extent.height)
-                            .layers(1),
-                    )
-                }?)
+                Ok(gpu.device.create_framebuffer(
+                    &tuff::FramebufferCreateInfo::new(render_pass)
+                        .attachments(&attachments)
+                        .width(extent.width)
+                        .height(extent.height)
+                        .layers(1),
+                )?)
             })
             .collect::<Result<Vec<_>>>()?;
         Ok(Framebuffers {

@@ -42,7 +42,9 @@ pub(crate) use swapchain::{
     acquire_next_image2_khr_checks, acquire_next_image2_khr_done, acquire_next_image_khr_checks,
     acquire_next_image_khr_done, create_swapchain_checks, swapchain_retires,
 };
-pub(crate) use view::{conversion_created, image_view_checks};
+pub(crate) use view::{
+    conversion_created, create_framebuffer_checks, image_view_checks, image_view_created,
+};
 
 /// The raw command buffers of `vkQueueSubmit` batches.
 fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
@@ -5104,6 +5106,7 @@ pub(crate) fn render_pass_created(
     device.live().render_pass_created(
         render_pass.raw(),
         RenderPassRecord {
+            attachments: render_pass::attachment_uses(create_info),
             view_masks,
             no_attachments,
             color_formats,
@@ -5129,6 +5132,7 @@ pub(crate) fn render_pass2_created(
     device.live().render_pass_created(
         render_pass.raw(),
         RenderPassRecord {
+            attachments: render_pass::attachment_uses2(create_info),
             view_masks,
             no_attachments,
             color_formats,

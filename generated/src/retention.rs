@@ -75,6 +75,8 @@ pub(crate) struct Live {
     dynamic_ranges: Vutex<HashMap<u64, SetRanges>>,
     /// Each device memory's size, type and whether it is mapped now.
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
+    /// Each live image view's parameters.
+    views: Vutex<HashMap<u64, ViewRecord>>,
     /// The view formats each live image's create info listed, where it listed any.
     view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
     /// Each live sampler Y'CbCr conversion's format.
@@ -156,6 +158,9 @@ pub(crate) struct QueryPoolRecord {
 /// through.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub(crate) struct RenderPassRecord {
+    /// Each attachment's format, sample count and the roles the subpasses give it
+    /// (`USED_*` bits).
+    pub attachments: Vec<(vk::Format, vk::SampleCountFlags, u8)>,
     /// Each subpass's view mask (0 without multiview), in order.
     pub view_masks: Vec<u32>,
     /// Whether each subpass uses no attachment (every reference unused, or none).
@@ -164,6 +169,37 @@ pub(crate) struct RenderPassRecord {
     pub color_formats: Vec<Vec<vk::Format>>,
     /// Each subpass's depth/stencil attachment's format, if it uses one.
     pub depth_formats: Vec<Option<vk::Format>>,
+}
+
+/// An attachment's role in some subpass: color, resolve, depth/stencil, input, or
+/// depth/stencil resolve.
+pub(crate) const USED_COLOR: u8 = 1;
+/// See [`USED_COLOR`].
+pub(crate) const USED_RESOLVE: u8 = 2;
+/// See [`USED_COLOR`].
+pub(crate) const USED_DEPTH: u8 = 4;
+/// See [`USED_COLOR`].
+pub(crate) const USED_INPUT: u8 = 8;
+/// See [`USED_COLOR`].
+pub(crate) const USED_DEPTH_RESOLVE: u8 = 16;
+
+/// A live image view's parameters, as a framebuffer's checks read them.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ViewRecord {
+    /// The image it views.
+    pub image: vk::Image,
+    /// `VkImageViewCreateInfo::format`.
+    pub format: vk::Format,
+    /// `VkImageViewCreateInfo::viewType`.
+    pub view_type: vk::ImageViewType,
+    /// Its level count, `VK_REMAINING_MIP_LEVELS` resolved.
+    pub levels: u32,
+    /// Its layer count, `VK_REMAINING_ARRAY_LAYERS` resolved.
+    pub layers: u32,
+    /// Every component has the identity swizzle.
+    pub identity: bool,
+    /// Its usage, as the specification derives it.
+    pub usage: vk::ImageUsageFlags,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
@@ -337,6 +373,7 @@ impl Default for Live {
             memories: Vutex::new(HashMap::default()),
             allocating: Vutex::new(()),
             view_formats: Vutex::new(HashMap::default()),
+            views: Vutex::new(HashMap::default()),
             conversions: Vutex::new(HashMap::default()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
@@ -514,6 +551,9 @@ impl Live {
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
                 }
+            }
+            vk::ObjectType::IMAGE_VIEW => {
+                self.views.lock().remove(&key.1);
             }
             vk::ObjectType::SAMPLER_YCBCR_CONVERSION => {
                 self.conversions.lock().remove(&key.1);
@@ -730,6 +770,16 @@ impl Live {
             .get(&raw.as_raw())
             .cloned()
             .unwrap_or_default()
+    }
+
+    /// Records a new image view's parameters.
+    pub(crate) fn view_created(&self, raw: vk::ImageView, record: ViewRecord) {
+        self.views.lock().insert(raw.as_raw(), record);
+    }
+
+    /// The parameters of a live image view of this device.
+    pub(crate) fn view(&self, raw: vk::ImageView) -> Option<ViewRecord> {
+        self.views.lock().get(&raw.as_raw()).copied()
     }
 
     /// Records a new sampler Y'CbCr conversion's format.

@@ -399,16 +399,15 @@ impl Setup {
             )
             .expect("render pass");
         let views = tuff::HandleSlice::new(&[&view]);
-        let framebuffer = unsafe {
-            d.create_framebuffer(
+        let framebuffer = d
+            .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&render_pass)
                     .attachments(&views)
                     .width(size)
                     .height(size)
                     .layers(1),
             )
-        }
-        .expect("framebuffer");
+            .expect("framebuffer");
         ColorTarget {
             image,
             memory,

@@ -208,6 +208,41 @@ impl Pass {
         }
     }
 
+    /// Each attachment's format, sample count and roles, for the render pass's
+    /// record (`depth_resolves`: the attachments subpasses resolve depth/stencil to).
+    fn attachment_uses(
+        &self,
+        depth_resolves: &[u32],
+    ) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
+        use crate::retention::{
+            USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
+        };
+        let mut out: Vec<_> = self.attachments.iter().map(|&(f, s)| (f, s, 0u8)).collect();
+        let mut mark = |a: u32, bit: u8| {
+            if let Some(e) = out.get_mut(a as usize) {
+                e.2 |= bit;
+            }
+        };
+        for s in &self.subpasses {
+            for r in s.inputs.iter().filter(|r| r.used()) {
+                mark(r.attachment, USED_INPUT);
+            }
+            for r in s.colors.iter().filter(|r| r.used()) {
+                mark(r.attachment, USED_COLOR);
+            }
+            for r in s.resolves.iter().flatten().filter(|r| r.used()) {
+                mark(r.attachment, USED_RESOLVE);
+            }
+            for r in s.depth.iter().filter(|r| r.used()) {
+                mark(r.attachment, USED_DEPTH);
+            }
+        }
+        for a in depth_resolves {
+            mark(*a, USED_DEPTH_RESOLVE);
+        }
+        out
+    }
+
     /// Each subpass's color attachments' formats and depth/stencil attachment's
     /// format, for the render pass's record. An index past the attachments (which
     /// only the unchecked path lets through) reads as `UNDEFINED`.
@@ -580,6 +615,40 @@ pub(crate) fn subpass_formats(
     create_info: &RenderPassCreateInfo<'_>,
 ) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
     Pass::of(create_info).formats()
+}
+
+/// Each attachment's format, samples and roles, for `vkCreateRenderPass`'s record.
+pub(crate) fn attachment_uses(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
+    Pass::of(create_info).attachment_uses(&[])
+}
+
+/// [`attachment_uses`] for `vkCreateRenderPass2`, whose subpasses may chain a
+/// depth/stencil resolve.
+pub(crate) fn attachment_uses2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the subpasses with their count.
+    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let resolves: Vec<u32> = subpasses
+        .iter()
+        .filter_map(|s| {
+            // SAFETY: the `pNext` of a safe struct, and the type the sType names; its
+            // reference outlives the create info.
+            let r: Option<&vk::SubpassDescriptionDepthStencilResolve<'_>> = unsafe {
+                chained(
+                    s.p_next,
+                    vk::StructureType::SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE,
+                )
+            };
+            // SAFETY: as above.
+            unsafe { r?.p_depth_stencil_resolve_attachment.as_ref() }.map(|a| a.attachment)
+        })
+        .filter(|a| *a != vk::ATTACHMENT_UNUSED)
+        .collect();
+    Pass::of2(create_info).attachment_uses(&resolves)
 }
 
 /// [`subpass_formats`] for `vkCreateRenderPass2`.

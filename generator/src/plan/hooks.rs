@@ -260,6 +260,11 @@ const UNPROVEN_VIEW_PLANES: &str = "checked by the safe methods in every build (
 const UNPROVEN_SPARSE_VIEW: &str = "checked by the safe methods in every build (the image's recorded flags), but no test breaks it: lavapipe 22.3 has no sparseBinding";
 const UNPROVEN_CUBE_ARRAY: &str = "checked by the safe methods in every build (the layers left from the base layer), but no test breaks it: the tests' device does not enable imageCubeArray, so a cube array view is refused for the feature first";
 const UNPROVEN_VIEW_FEATURES: &str = "checked by the safe methods in every build (the view's usage against the format features the physical device reports for the image's tiling), but no test breaks it: no compatible view format the tests found lacks the feature its usage needs on lavapipe where the image's own format has it";
+const UNPROVEN_OTHER_DEVICE_VIEW: &str = "checked by the safe methods in every build (each view must be one the device recorded), but no test breaks it: a view of another device is refused by the common-parent check first";
+const UNPROVEN_FRAMEBUFFER_ROLES: &str = "checked by the safe methods in every build (the roles the render pass's subpasses give each attachment, recorded at its creation), but no test breaks it: the framebuffer test's render pass has no input or depth/stencil resolve attachment";
+const UNPROVEN_FRAMEBUFFER_MULTIVIEW: &str = "checked by the safe methods in every build (against the render pass's recorded view masks), but no test breaks it: the framebuffer test's device does not enable multiview";
+const UNPROVEN_DEPTH_3D: &str = "checked by the safe methods in every build (the view's format and its image's recorded type), but no test breaks it: no depth/stencil format can make a 3D image";
+const FRAMEBUFFER_ATTACHMENTS: &str = "checks each attachment (the view's recorded format, range, swizzle, derived usage and its image's samples and extent, or an imageless framebuffer's chained attachment info) against the roles the render pass's subpasses give it, its format and samples, the framebuffer's size and layers, and the view masks, all recorded at creation";
 const VIEW_RANGE: &str = "checks the subresource range's aspects, levels and layers against the image's type, flags, extent and layer count, recorded at its creation";
 const VIEW_TYPE: &str = "checks the view type against the image's type, flags, usage and sample count, recorded at its creation";
 const VIEW_FORMAT: &str = "checks the view's format against the image's (its compatibility class, block size, plane formats and listed view formats, recorded at its creation, from vk.xml's <formats>), its chroma against the image's extent, and a chained Y'CbCr conversion's format and the swizzle";
@@ -1538,8 +1543,44 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCreateFramebuffer",
+        check_last: call("hooks::create_framebuffer_checks", &["self", "create_info"]),
+        settles: &[
+            ("VUID-vkCreateFramebuffer-pCreateInfo-02777", How::User(UNPROVEN_OTHER_DEVICE_VIEW)),
+            ("VUID-VkFramebufferCreateInfo-attachmentCount-00876", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00877", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-02633", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00879", How::User(UNPROVEN_FRAMEBUFFER_ROLES)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00880", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00881", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04533", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04534", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04535", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00883", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00884", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04113", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-02634", How::User(UNPROVEN_FRAMEBUFFER_ROLES)),
+            ("VUID-VkFramebufferCreateInfo-renderPass-04536", How::User(UNPROVEN_FRAMEBUFFER_MULTIVIEW)),
+            ("VUID-VkFramebufferCreateInfo-renderPass-02531", How::User(UNPROVEN_FRAMEBUFFER_MULTIVIEW)),
+            ("VUID-VkFramebufferCreateInfo-pAttachments-00891", How::User(UNPROVEN_DEPTH_3D)),
+            ("VUID-VkFramebufferCreateInfo-flags-03190", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-03191", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04541", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-04542", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-03201", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-03202", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-03204", How::User(UNPROVEN_FRAMEBUFFER_ROLES)),
+            ("VUID-VkFramebufferCreateInfo-flags-03205", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-renderPass-03198", How::User(UNPROVEN_FRAMEBUFFER_MULTIVIEW)),
+            ("VUID-VkFramebufferCreateInfo-renderPass-04546", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
+            ("VUID-VkFramebufferCreateInfo-flags-02778", How::Static("set from wrappers, which always hold valid image views")),
+        ],
+        ..NONE
+    },
+    Special {
         command: "vkCreateImageView",
         check_last: call("hooks::image_view_checks", &["self", "create_info"]),
+        created: call("hooks::image_view_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-VkImageSubresourceRange-aspectMask-01670", How::User(UNPROVEN_VIEW_PLANES)),
             ("VUID-VkImageViewCreateInfo-subresourceRange-07818", How::User(UNPROVEN_VIEW_PLANES)),

@@ -945,39 +945,6 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time: `VU
     }
     /**`vkCreateFramebuffer`
 
-# Safety
-
-The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCreateFramebuffer-pCreateInfo-02777`: If `pCreateInfo->flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, and `attachmentCount` is not `0`, each element of `pCreateInfo->pAttachments` must have been created on `device`
-- `VUID-VkFramebufferCreateInfo-attachmentCount-00876`: `attachmentCount` must be equal to the attachment count specified in `renderPass`
-- `VUID-VkFramebufferCreateInfo-flags-02778`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` and `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles
-- `VUID-VkFramebufferCreateInfo-pAttachments-00877`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a color attachment or resolve attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-pAttachments-02633`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a depth/stencil attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-pAttachments-00879`: If `renderpass` is not VK_NULL_HANDLE, `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-pAttachments-00880`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with a VkFormat value that matches the VkFormat specified by the corresponding `VkAttachmentDescription` in `renderPass`
-- `VUID-VkFramebufferCreateInfo-pAttachments-00881`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with a `samples` value that matches the `samples` value specified by the corresponding `VkAttachmentDescription` in `renderPass`
-- `VUID-VkFramebufferCreateInfo-flags-04533`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageCreateInfo::`extent.width` greater than or equal to `width`
-- `VUID-VkFramebufferCreateInfo-flags-04534`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageCreateInfo::`extent.height` greater than or equal to `height`
-- `VUID-VkFramebufferCreateInfo-flags-04535`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have been created with a VkImageViewCreateInfo::`subresourceRange.layerCount` greater than or equal to `layers`
-- `VUID-VkFramebufferCreateInfo-pAttachments-00883`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must only specify a single mip level
-- `VUID-VkFramebufferCreateInfo-pAttachments-00884`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with the identity swizzle
-- `VUID-VkFramebufferCreateInfo-flags-04113`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with VkImageViewCreateInfo::`viewType` not equal to `VK_IMAGE_VIEW_TYPE_3D`
-- `VUID-VkFramebufferCreateInfo-pAttachments-02634`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is used as a depth/stencil resolve attachment by `renderPass` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-renderPass-04536`: If `renderPass` was specified with non-zero view masks, each element of `pAttachments` that is used as an input, color, resolve, or depth/stencil attachment by `renderPass` must have a `layerCount` greater than the index of the most significant bit set in any of those view masks
-- `VUID-VkFramebufferCreateInfo-renderPass-02531`: If `renderPass` was specified with non-zero view masks, `layers` must be `1`
-- `VUID-VkFramebufferCreateInfo-pAttachments-00891`: If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` that is a 2D or 2D array image view taken from a 3D image must not be a depth/stencil format
-- `VUID-VkFramebufferCreateInfo-flags-03190`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `pNext` chain must include a VkFramebufferAttachmentsCreateInfo structure
-- `VUID-VkFramebufferCreateInfo-flags-03191`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `attachmentImageInfoCount` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain must be equal to either zero or `attachmentCount`
-- `VUID-VkFramebufferCreateInfo-flags-04541`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `width` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain that is used as an input, color, resolve or depth/stencil attachment in `renderPass` must be greater than or equal to `width`
-- `VUID-VkFramebufferCreateInfo-flags-04542`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `height` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure in the `pNext` chain that is used as an input, color, resolve or depth/stencil attachment in `renderPass` must be greater than or equal to `height`
-- `VUID-VkFramebufferCreateInfo-flags-03201`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as a color attachment or resolve attachment by `renderPass` must include `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-flags-03202`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as a depth/stencil attachment by `renderPass` must include `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-flags-03204`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `usage` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain that refers to an attachment used as an input attachment by `renderPass` must include `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkFramebufferCreateInfo-flags-03205`: If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, at least one element of the `pViewFormats` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain must be equal to the corresponding value of VkAttachmentDescription::`format` used to create `renderPass`
-- `VUID-VkFramebufferCreateInfo-renderPass-03198`: If multiview is enabled for `renderPass` and `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `layerCount` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain used as an input, color, resolve, or depth/stencil attachment in `renderPass` must be greater than the maximum bit index set in the view mask in the subpasses in which it is used in `renderPass`
-- `VUID-VkFramebufferCreateInfo-renderPass-04546`: If multiview is not enabled for `renderPass` and `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `layerCount` member of any element of the `pAttachmentImageInfos` member of a VkFramebufferAttachmentsCreateInfo structure included in the `pNext` chain used as an input, color, resolve, or depth/stencil attachment in `renderPass` must be greater than or equal to `layers`
-
 # Valid usage
 
 The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
@@ -987,9 +954,9 @@ The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khron
 - `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (each view must be one the device recorded), but no test breaks it: a view of another device is refused by the common-parent check first).*/
     #[inline]
-    pub unsafe fn create_framebuffer<'a>(
+    pub fn create_framebuffer<'a>(
         &self,
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<Framebuffer> {
@@ -997,6 +964,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_framebuffer(create_info);
             r?;
         }
+        crate::hooks::create_framebuffer_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_framebuffer_unchecked(create_info) }
@@ -1005,7 +973,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_framebuffer`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_framebuffer`] checks at run time: `VUID-vkCreateFramebuffer-pCreateInfo-02777`, `VUID-VkFramebufferCreateInfo-attachmentCount-00876`, `VUID-VkFramebufferCreateInfo-pAttachments-00877`, `VUID-VkFramebufferCreateInfo-pAttachments-02633`, `VUID-VkFramebufferCreateInfo-pAttachments-00879`, `VUID-VkFramebufferCreateInfo-pAttachments-00880`, `VUID-VkFramebufferCreateInfo-pAttachments-00881`, `VUID-VkFramebufferCreateInfo-flags-04533`, `VUID-VkFramebufferCreateInfo-flags-04534`, `VUID-VkFramebufferCreateInfo-flags-04535`, `VUID-VkFramebufferCreateInfo-pAttachments-00883`, `VUID-VkFramebufferCreateInfo-pAttachments-00884`, `VUID-VkFramebufferCreateInfo-flags-04113`, `VUID-VkFramebufferCreateInfo-pAttachments-02634`, `VUID-VkFramebufferCreateInfo-renderPass-04536`, `VUID-VkFramebufferCreateInfo-renderPass-02531`, `VUID-VkFramebufferCreateInfo-pAttachments-00891`, `VUID-VkFramebufferCreateInfo-flags-03190`, `VUID-VkFramebufferCreateInfo-flags-03191`, `VUID-VkFramebufferCreateInfo-flags-04541`, `VUID-VkFramebufferCreateInfo-flags-04542`, `VUID-VkFramebufferCreateInfo-flags-03201`, `VUID-VkFramebufferCreateInfo-flags-03202`, `VUID-VkFramebufferCreateInfo-flags-03204`, `VUID-VkFramebufferCreateInfo-flags-03205`, `VUID-VkFramebufferCreateInfo-renderPass-03198`, `VUID-VkFramebufferCreateInfo-renderPass-04546`, `VUID-VkFramebufferCreateInfo-flags-02778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_framebuffer_unchecked<'a>(
         &self,
@@ -1372,25 +1340,31 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
             return Err(Error::Vk(r));
         }
         Ok(
-            ImageView::from_raw(
-                out,
+            crate::hooks::image_view_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::image_view_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                ImageView::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::image_view_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }
