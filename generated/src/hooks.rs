@@ -5543,12 +5543,67 @@ fn sparse_requirement(device: &Device, create_info: &BufferCreateInfo<'_>) -> u6
     out.memory_requirements.size
 }
 
+/// Holds other safe sparse creations off while a sparse buffer is checked against
+/// `sparseAddressSpaceSize` and made, so that two threads cannot both take the last
+/// of it (`VUID-vkCreateBuffer-flags-00911`); a buffer that is not sparse takes no
+/// lock.
+pub(crate) fn sparse_buffer_gate<'d>(
+    device: &'d Device,
+    create_info: &BufferCreateInfo<'_>,
+) -> Result<Option<tuff_runtime::VutexGuard<'d, ()>>> {
+    if !create_info
+        .flags
+        .contains(vk::BufferCreateFlags::SPARSE_BINDING)
+    {
+        return Ok(None);
+    }
+    let gate = device.live().sparse_gate();
+    let required = sparse_requirement(device, create_info);
+    let total = device.live().sparse_total();
+    let limit = limits(device).sparse_address_space_size;
+    if total.saturating_add(required) > limit {
+        refuse(
+            "VUID-vkCreateBuffer-flags-00911",
+            format!(
+                "creating this sparse buffer, which requires {required} bytes, must not \
+                 cause the total required sparse memory ({total} bytes now) to exceed \
+                 sparseAddressSpaceSize ({limit})"
+            ),
+        )?;
+    }
+    Ok(Some(gate))
+}
+
+/// As [`sparse_buffer_gate`], for a sparse image (`VUID-vkCreateImage-flags-00939`).
+pub(crate) fn sparse_image_gate<'d>(
+    device: &'d Device,
+    create_info: &ImageCreateInfo<'_>,
+) -> Result<Option<tuff_runtime::VutexGuard<'d, ()>>> {
+    if !create_info
+        .flags
+        .contains(vk::ImageCreateFlags::SPARSE_BINDING)
+    {
+        return Ok(None);
+    }
+    let gate = device.live().sparse_gate();
+    let required = sparse_image_requirement(device, create_info.as_raw());
+    let total = device.live().sparse_total();
+    let limit = limits(device).sparse_address_space_size;
+    if total.saturating_add(required) > limit {
+        refuse(
+            "VUID-vkCreateImage-flags-00939",
+            format!("this sparse image requires {required} bytes, which with the {total} live sparse resources require is more than sparseAddressSpaceSize ({limit})"),
+        )?;
+    }
+    Ok(Some(gate))
+}
+
 /// The memory a sparse image of this create info requires, from
 /// `vkGetDeviceImageMemoryRequirements` (without creating it), or, where the device
 /// is older than Vulkan 1.3, a bound above it: every texel of every level, layer and
 /// sample at the bytes of all its aspects' blocks and at least 16, rounded up to
 /// 64 KiB, the largest sparse block size.
-pub(crate) fn sparse_image_requirement(device: &Device, info: &vk::ImageCreateInfo<'_>) -> u64 {
+fn sparse_image_requirement(device: &Device, info: &vk::ImageCreateInfo<'_>) -> u64 {
     let planes = crate::formats::aspects(info.format)
         .filter(|_| info.flags.contains(vk::ImageCreateFlags::DISJOINT))
         .map_or(0, |a| (a.as_raw() >> 4).count_ones());
@@ -5622,21 +5677,6 @@ pub(crate) fn create_buffer_checks(
                 raw.flags
             ),
         )?;
-    }
-    if raw.flags.contains(vk::BufferCreateFlags::SPARSE_BINDING) {
-        let required = sparse_requirement(device, create_info);
-        let total = device.live().sparse_total();
-        let limit = limits(device).sparse_address_space_size;
-        if total.saturating_add(required) > limit {
-            refuse(
-                "VUID-vkCreateBuffer-flags-00911",
-                format!(
-                    "creating this sparse buffer, which requires {required} bytes, must not \
-                     cause the total required sparse memory ({total} bytes now) to exceed \
-                     sparseAddressSpaceSize ({limit})"
-                ),
-            )?;
-        }
     }
     let max = device
         .live()

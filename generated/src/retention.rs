@@ -101,6 +101,9 @@ pub(crate) struct Live {
     /// `sparseAddressSpaceSize` bounds.
     sparse_resources: Vutex<HashMap<(vk::ObjectType, u64), u64>>,
     sparse_total: Vutex<u64>,
+    /// Held by a safe sparse creation from its check against
+    /// `sparseAddressSpaceSize` until its resource is listed.
+    sparse_gate: Vutex<()>,
     /// What the recorder needs of each live render pass.
     render_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
     /// What the checks of commands that use a buffer need to know of it.
@@ -383,6 +386,7 @@ impl Default for Live {
             render_passes: Vutex::new(HashMap::default()),
             sparse_resources: Vutex::new(HashMap::default()),
             sparse_total: Vutex::new(0),
+            sparse_gate: Vutex::new(()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
@@ -446,6 +450,11 @@ impl Live {
     /// Whether a live event was created device-only.
     pub(crate) fn is_device_only(&self, raw: vk::Event) -> bool {
         self.device_only_events.lock().contains(&raw.as_raw())
+    }
+
+    /// Locks out other safe sparse creations.
+    pub(crate) fn sparse_gate(&self) -> tuff_runtime::VutexGuard<'_, ()> {
+        self.sparse_gate.lock()
     }
 
     /// The memory all live sparse buffers require.

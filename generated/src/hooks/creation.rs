@@ -1194,17 +1194,6 @@ fn sharing_and_group_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> R
     let sparse = vk::ImageCreateFlags::SPARSE_BINDING
         | vk::ImageCreateFlags::SPARSE_RESIDENCY
         | vk::ImageCreateFlags::SPARSE_ALIASED;
-    if flags.contains(vk::ImageCreateFlags::SPARSE_BINDING) {
-        let required = crate::hooks::sparse_image_requirement(device, info);
-        let total = device.live().sparse_total();
-        let limit = limits(device).sparse_address_space_size;
-        if total.saturating_add(required) > limit {
-            refuse(
-                "VUID-vkCreateImage-flags-00939",
-                format!("this sparse image requires {required} bytes, which with the {total} live sparse resources require is more than sparseAddressSpaceSize ({limit})"),
-            )?;
-        }
-    }
     if flags.intersects(sparse) {
         if info
             .usage

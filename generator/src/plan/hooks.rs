@@ -147,6 +147,7 @@ const INSTANCE_ALONE: &str = "checks the application's API version, and a chaine
 const SUBPASS_SAMPLES: &str = "checks the pipeline's sample count, kept from its creation, against the first one bound in a subpass without attachments (kept from the render pass's creation), where the physical device lacks variableMultisampleRate (the 1.3.239 layer does not check it at the bind: proven by the error alone)";
 const UNPROVEN_BLOCKS: &str = "checked by the safe methods in every build (the set layouts' inline uniform block bindings, per stage and in all, against the device's Vulkan 1.3 limits), but no test breaks it yet: the tests' device does not enable inlineUniformBlock";
 const UNPROVEN_SPARSE: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first";
+const UNPROVEN_SPARSE_SPACE: &str = "checked by the safe methods in every build (the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new buffer is listed), but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first";
 const BUFFER_INFO: &str = "checks the concurrent queue families against the physical device's family count, and a capture address against the flags";
 const BUFFER_ALONE: &str = "checks the size against the device's maxBufferSize, and the external handle types against what the physical device reports it can export for the buffer (the 1.3.239 layer checks neither: proven by the error alone)";
 const MEMORY_KIND: &str = "checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to";
@@ -233,7 +234,7 @@ const UNPROVEN_INLINE_AFTER_BIND: &str = "checked by the safe methods in every b
 const IMAGE_EXTERNAL: &str = "checks each external handle type against the external memory properties the physical device reports for the image's parameters and that type (the 1.3.239 layer does not check it: proven by the error alone)";
 const IMAGE_CHROMA: &str = "checks a format that needs a sampler Y'CbCr conversion (vk.xml's `chroma`) against the image's levels, samples, type and extent, and a disjoint multi-planar image against the format's features";
 const IMAGE_OF_SWAPCHAIN: &str = "checks the image's parameters against the implied image creation parameters of the swapchain, recorded at its creation (the 1.3.239 layer does not check it: proven by the error alone)";
-const UNPROVEN_SPARSE_IMAGES: &str = "checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first";
+const UNPROVEN_SPARSE_IMAGES: &str = "checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new image is listed), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first";
 const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format against each other, the attachment limits, the queue families, the device's physical devices, and a chained stencil usage, format list or external memory struct (before the checks that ask the physical device about the image)";
 const STAGE_BITS: &str = "checks the stages are of the emitted API (the graphics stages and compute) or VK_SHADER_STAGE_ALL (the 1.3.239 layer does not check bits no extension defines: proven by the error alone)";
 const IMMUTABLE_SAMPLERS: &str = "the safe binding's `immutable_samplers` setter stores the sampler wrappers with their count as descriptorCount, and `descriptor_count` clears them when it sets another count";
@@ -710,10 +711,11 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateBuffer",
         check_last: call("hooks::create_buffer_checks", &["self", "create_info"]),
+        hold: call("hooks::sparse_buffer_gate", &["self", "create_info"]),
         created: call("hooks::buffer_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-VkBufferCreateInfo-None-01888", How::User(UNPROVEN_SPARSE)),
-            ("VUID-vkCreateBuffer-flags-00911", How::User(UNPROVEN_SPARSE)),
+            ("VUID-vkCreateBuffer-flags-00911", How::User(UNPROVEN_SPARSE_SPACE)),
             ("VUID-VkBufferCreateInfo-size-06409", How::Dynamic(BUFFER_ALONE)),
             ("VUID-VkBufferCreateInfo-sharingMode-01419", How::Dynamic(BUFFER_INFO)),
             ("VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337", How::Dynamic(BUFFER_INFO)),
@@ -730,6 +732,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateImage",
         check_last: call("hooks::create_image_checks", &["self", "create_info"]),
+        hold: call("hooks::sparse_image_gate", &["self", "create_info"]),
         created: call("hooks::image_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-VkImageCreateInfo-imageType-00956", How::Dynamic(IMAGE_RULES)),

@@ -382,7 +382,7 @@ The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
-- 1: checked by the safe methods in every build, but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first
+- 1: checked by the safe methods in every build (the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new buffer is listed), but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first
 - 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn create_buffer<'a>(
@@ -394,6 +394,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             r?;
         }
         crate::hooks::create_buffer_checks(self, create_info)?;
+        let _held = crate::hooks::sparse_buffer_gate(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_buffer_unchecked(create_info) }
@@ -1225,7 +1226,7 @@ The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
-- 1: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
+- 1: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new image is listed), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
 - 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
@@ -1234,6 +1235,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             r?;
         }
         crate::hooks::create_image_checks(self, create_info)?;
+        let _held = crate::hooks::sparse_image_gate(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_image_unchecked(create_info) }

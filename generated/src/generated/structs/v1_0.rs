@@ -1654,7 +1654,7 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 69.
 
-- 2: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
+- 2: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new image is listed), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
 - 15: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 51: explicit rule; the wrappers do not check it*/
