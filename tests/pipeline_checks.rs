@@ -72,6 +72,17 @@ struct Parts {
     dynamic: Vec<vk::DynamicState>,
     layout: bool,
     target: Target,
+    /// The input assembly's primitive restart.
+    restart: bool,
+    patch_points: u32,
+    min_sample_shading: f32,
+    /// Vertex binding numbers and attribute (location, binding) pairs.
+    bindings: Vec<u32>,
+    attributes: Vec<(u32, u32)>,
+    /// A logic operation, enabled, for the blend state.
+    logic_op: Option<vk::LogicOp>,
+    /// Specialization constant IDs of the first stage.
+    constants: Vec<u32>,
 }
 
 impl Default for Parts {
@@ -107,6 +118,13 @@ impl Default for Parts {
                 depth: None,
                 subpass: 0,
             },
+            restart: false,
+            patch_points: 16,
+            min_sample_shading: 0.0,
+            bindings: vec![],
+            attributes: vec![],
+            logic_op: None,
+            constants: vec![],
         }
     }
 }
@@ -237,20 +255,63 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
             (false, _) => &c.test[1],
         }
     };
+    let entries: Vec<_> = parts
+        .constants
+        .iter()
+        .map(|&constant_id| vk::SpecializationMapEntry {
+            constant_id,
+            offset: 0,
+            size: 4,
+        })
+        .collect();
+    let spec_data = [0u8; 4];
+    let spec = tuff::SpecializationInfo::new()
+        .map_entries(&entries)
+        .data(&spec_data);
     let stages: Vec<_> = parts
         .stages
         .iter()
-        .map(|&stage| {
-            tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .enumerate()
+        .map(|(k, &stage)| {
+            let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
                 .stage(stage)
-                .module(Some(module(stage)))
+                .module(Some(module(stage)));
+            if k == 0 && !entries.is_empty() {
+                stage.specialization_info(Some(&spec))
+            } else {
+                stage
+            }
         })
         .collect();
-    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new();
-    let assembly = parts
-        .topology
-        .map(|t| tuff::PipelineInputAssemblyStateCreateInfo::new().topology(t));
-    let tessellation = tuff::PipelineTessellationStateCreateInfo::new().patch_control_points(16);
+    let binding_descriptions: Vec<_> = parts
+        .bindings
+        .iter()
+        .map(|&binding| vk::VertexInputBindingDescription {
+            binding,
+            stride: 16,
+            input_rate: vk::VertexInputRate::VERTEX,
+        })
+        .collect();
+    let attribute_descriptions: Vec<_> = parts
+        .attributes
+        .iter()
+        .map(|&(location, binding)| vk::VertexInputAttributeDescription {
+            location,
+            binding,
+            format: vk::Format::R32G32B32A32_SFLOAT,
+            offset: 0,
+        })
+        .collect();
+    let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new()
+        .vertex_binding_descriptions(&binding_descriptions)
+        .vertex_attribute_descriptions(&attribute_descriptions);
+    let assembly = parts.topology.map(|t| {
+        tuff::PipelineInputAssemblyStateCreateInfo::new()
+            .topology(t)
+            .primitive_restart_enable(parts.restart as vk::Bool32)
+    });
+    let tessellation =
+        tuff::PipelineTessellationStateCreateInfo::new().patch_control_points(parts.patch_points);
     // Static viewports and scissors are given; dynamic ones only counted.
     let viewports = vec![
         vk::Viewport {
@@ -282,7 +343,8 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         raster = raster.depth_bias_enable(vk::TRUE).depth_bias_clamp(clamp);
     }
     let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
-        .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        .rasterization_samples(vk::SampleCountFlags::TYPE_1)
+        .min_sample_shading(parts.min_sample_shading);
     let depth_stencil = parts.depth_stencil.map(|(bounds, min, max)| {
         tuff::PipelineDepthStencilStateCreateInfo::new()
             .depth_bounds_test_enable(bounds as vk::Bool32)
@@ -299,10 +361,13 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
             ..Default::default()
         })
         .collect();
-    let blend = parts
-        .blend
-        .as_ref()
-        .map(|_| tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments));
+    let blend = parts.blend.as_ref().map(|_| {
+        let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
+        match parts.logic_op {
+            Some(op) => blend.logic_op_enable(vk::TRUE).logic_op(op),
+            None => blend,
+        }
+    });
     let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&parts.dynamic);
     let pass = match &parts.target {
         Target::Pass { colors, depth, .. } => Some(render_pass(s, colors, *depth)),
@@ -474,6 +539,60 @@ fn rendering(
 }
 
 const CASES: &[Case] = &[
+    case(
+        "VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442",
+        |p| p.dynamic.push(vk::DynamicState::VIEWPORT),
+    ),
+    case(
+        "VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616",
+        |p| p.bindings = vec![0, 0],
+    ),
+    case(
+        "VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617",
+        |p| {
+            p.bindings = vec![0];
+            p.attributes = vec![(0, 0), (0, 0)];
+        },
+    ),
+    case(
+        "VUID-VkPipelineVertexInputStateCreateInfo-binding-00615",
+        |p| {
+            p.bindings = vec![0];
+            p.attributes = vec![(0, 1)];
+        },
+    ),
+    case(
+        "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428",
+        |p| p.restart = true,
+    ),
+    case(
+        "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429",
+        |p| p.topology = Some(vk::PrimitiveTopology::LINE_LIST_WITH_ADJACENCY),
+    ),
+    Case {
+        on: On::Full,
+        ..case(
+            "VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214",
+            |p| {
+                *p = Parts::tessellated();
+                p.patch_points = 0;
+            },
+        )
+    },
+    case(
+        "VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786",
+        |p| p.min_sample_shading = 2.0,
+    ),
+    Case {
+        on: On::Full,
+        ..case(
+            "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607",
+            |p| p.logic_op = Some(vk::LogicOp::from_raw(99)),
+        )
+    },
+    case("VUID-VkSpecializationInfo-constantID-04911", |p| {
+        p.constants = vec![1, 1]
+    }),
     case("VUID-VkGraphicsPipelineCreateInfo-flags-00764", |p| {
         p.flags = vk::PipelineCreateFlags::DISPATCH_BASE
     }),

@@ -114,6 +114,170 @@ pub(crate) fn graphics_pipeline_state_checks(
         }
         check_viewport_state(&states, &at)?;
         check_fixed_function(device, &states, &at)?;
+        check_state_structs(device, &states, &at)?;
+    }
+    Ok(())
+}
+
+/// The rules of the state structs that read one struct at a time: dynamic states
+/// once each, vertex bindings and locations once each and every attribute's binding
+/// described, a list topology without primitive restart, adjacency only with
+/// geometryShader, a patch size within maxTessellationPatchSize, a sample-shading
+/// fraction within [0, 1], a defined logic operation, and each stage's
+/// specialization constants once each.
+fn check_state_structs(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    if let Some(i) =
+        (1..states.dynamic.len()).find(|&i| states.dynamic[..i].contains(&states.dynamic[i]))
+    {
+        refuse(
+            "VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442",
+            format!(
+                "{at}'s pDynamicStates[{i}] ({:?}) is named twice",
+                states.dynamic[i]
+            ),
+        )?;
+    }
+    if let Some(v) = states.vertex_input {
+        // SAFETY: the safe setters store each array with its count.
+        let (bindings, attributes) = unsafe {
+            (
+                crate::retention::raw_slice(
+                    v.p_vertex_binding_descriptions,
+                    v.vertex_binding_description_count,
+                ),
+                crate::retention::raw_slice(
+                    v.p_vertex_attribute_descriptions,
+                    v.vertex_attribute_description_count,
+                ),
+            )
+        };
+        if let Some(i) = (1..bindings.len()).find(|&i| {
+            bindings[..i]
+                .iter()
+                .any(|b| b.binding == bindings[i].binding)
+        }) {
+            refuse(
+                "VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616",
+                format!(
+                    "{at}'s vertex binding {} is described twice",
+                    bindings[i].binding
+                ),
+            )?;
+        }
+        if let Some(i) = (1..attributes.len()).find(|&i| {
+            attributes[..i]
+                .iter()
+                .any(|a| a.location == attributes[i].location)
+        }) {
+            refuse(
+                "VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617",
+                format!(
+                    "{at}'s vertex location {} is described twice",
+                    attributes[i].location
+                ),
+            )?;
+        }
+        if let Some(a) = attributes
+            .iter()
+            .find(|a| !bindings.iter().any(|b| b.binding == a.binding))
+        {
+            refuse(
+                "VUID-VkPipelineVertexInputStateCreateInfo-binding-00615",
+                format!("{at}'s attribute at location {} reads binding {}, which no binding description describes", a.location, a.binding),
+            )?;
+        }
+    }
+    if let Some(a) = states.assembly {
+        use vk::PrimitiveTopology as T;
+        let t = a.topology;
+        let list = matches!(
+            t,
+            T::POINT_LIST
+                | T::LINE_LIST
+                | T::TRIANGLE_LIST
+                | T::LINE_LIST_WITH_ADJACENCY
+                | T::TRIANGLE_LIST_WITH_ADJACENCY
+                | T::PATCH_LIST
+        );
+        if list && a.primitive_restart_enable != vk::FALSE {
+            refuse(
+                "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428",
+                format!("{at} enables primitive restart with the list topology {t:?}"),
+            )?;
+        }
+        let adjacency = matches!(
+            t,
+            T::LINE_LIST_WITH_ADJACENCY
+                | T::LINE_STRIP_WITH_ADJACENCY
+                | T::TRIANGLE_LIST_WITH_ADJACENCY
+                | T::TRIANGLE_STRIP_WITH_ADJACENCY
+        );
+        if adjacency && device.live().features().geometry_shader == vk::FALSE {
+            refuse(
+                "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429",
+                format!("{at}'s topology {t:?} needs the geometryShader feature"),
+            )?;
+        }
+    }
+    if let Some(t) = states.tessellation {
+        let max = limits(device).max_tessellation_patch_size;
+        if t.patch_control_points == 0 || t.patch_control_points > max {
+            refuse(
+                "VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214",
+                format!("{at}'s patchControlPoints ({}) is not within 1 to maxTessellationPatchSize ({max})", t.patch_control_points),
+            )?;
+        }
+    }
+    if let Some(m) = states.multisample {
+        if !(0.0..=1.0).contains(&m.min_sample_shading) {
+            refuse(
+                "VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786",
+                format!(
+                    "{at}'s minSampleShading ({}) is outside [0, 1]",
+                    m.min_sample_shading
+                ),
+            )?;
+        }
+    }
+    if let Some(b) = states.blend {
+        let defined = (vk::LogicOp::CLEAR.as_raw()..=vk::LogicOp::SET.as_raw())
+            .contains(&b.logic_op.as_raw());
+        if b.logic_op_enable != vk::FALSE && !defined {
+            refuse(
+                "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607",
+                format!(
+                    "{at} enables a logic operation of no VkLogicOp value ({})",
+                    b.logic_op.as_raw()
+                ),
+            )?;
+        }
+    }
+    check_specialization(states.stages, at)
+}
+
+/// Each stage's specialization constants are named once each.
+fn check_specialization(stages: &[vk::PipelineShaderStageCreateInfo<'_>], at: &str) -> Result<()> {
+    for (k, s) in stages.iter().enumerate() {
+        // SAFETY: the safe setter stores a reference that outlives the create info.
+        let Some(spec) = (unsafe { s.p_specialization_info.as_ref() }) else {
+            continue;
+        };
+        // SAFETY: the safe setter stores the entries with their count.
+        let entries =
+            unsafe { crate::retention::raw_slice(spec.p_map_entries, spec.map_entry_count) };
+        if let Some(i) = (1..entries.len()).find(|&i| {
+            entries[..i]
+                .iter()
+                .any(|e| e.constant_id == entries[i].constant_id)
+        }) {
+            refuse(
+                "VUID-VkSpecializationInfo-constantID-04911",
+                format!(
+                    "{at}.pStages[{k}] specializes constant {} twice",
+                    entries[i].constant_id
+                ),
+            )?;
+        }
     }
     Ok(())
 }
@@ -197,6 +361,7 @@ pub(crate) fn compute_pipeline_state_checks(
             &COMPUTE_DERIVATIVE,
             &at,
         )?;
+        check_specialization(core::slice::from_ref(&raw.stage), &at)?;
     }
     Ok(())
 }

@@ -226,6 +226,7 @@ const RENDER_PASS_INDICES: &str =
     "checks each attachment, subpass and input attachment index against the render pass's counts";
 const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
 const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
+const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too)";
 const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos)";
 const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first";
 const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
@@ -1478,6 +1479,16 @@ pub const SPECIALS: &[Special] = &[
             &["self", "created", "create_infos"],
         ),
         settles: &[
+            ("VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineVertexInputStateCreateInfo-binding-00615", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkSpecializationInfo-constantID-04911", How::Dynamic(STATE_STRUCTS)),
             ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::Dynamic(SHADER_LAYOUT)),
             ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136", How::Dynamic(PIPELINE_STATE)),

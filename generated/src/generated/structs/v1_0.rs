@@ -2159,13 +2159,14 @@ The rules are on [`VkPipelineColorBlendStateCreateInfo`'s reference page](https:
 
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineColorBlendStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineColorBlendStateCreateInfo<'a> {
@@ -2309,12 +2310,11 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineDynamicStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDynamicStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineDynamicStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineDynamicStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineDynamicStateCreateInfo<'a> {
@@ -2343,15 +2343,17 @@ impl<'a> PipelineDynamicStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineInputAssemblyStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineInputAssemblyStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
+- `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+- 3: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineInputAssemblyStateCreateInfo<'a> {
@@ -2455,6 +2457,7 @@ The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https
 
 - `VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineMultisampleStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2462,7 +2465,7 @@ The rules are on [`VkPipelineMultisampleStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineMultisampleStateCreateInfo-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineMultisampleStateCreateInfo-pSampleMask-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineMultisampleStateCreateInfo<'a> {
@@ -2684,12 +2687,11 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
 
 The rules are on [`VkPipelineTessellationStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineTessellationStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationStateCreateInfo<'a> {
@@ -2717,6 +2719,9 @@ impl<'a> PipelineTessellationStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineVertexInputStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineVertexInputStateCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
+- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
+- `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineVertexInputStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineVertexInputStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2724,10 +2729,7 @@ The rules are on [`VkPipelineVertexInputStateCreateInfo`'s reference page](https
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineVertexInputStateCreateInfo<'a> {
@@ -3470,10 +3472,9 @@ The rules are on [`VkSpecializationInfo`'s reference page](https://registry.khro
 
 - `VUID-VkSpecializationInfo-offset-00773`: dynamic (checks each specialization map entry lies inside the specialization data (graphics and compute pipelines))
 - `VUID-VkSpecializationInfo-pMapEntries-00774`: dynamic (checks each specialization map entry lies inside the specialization data (graphics and compute pipelines))
+- `VUID-VkSpecializationInfo-constantID-04911`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkSpecializationInfo-pMapEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSpecializationInfo-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SpecializationInfo<'a> {
