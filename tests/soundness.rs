@@ -2378,6 +2378,115 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
     rec.end().expect("end");
 }
 
+/// A batch's wait stages and device-group indices are checked before the queue sees
+/// them: each break is refused, and the layer names the same rule for the unchecked
+/// submission (which it skips, so nothing is submitted).
+#[test]
+fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    for (s, sync2_off) in [(setup(true), false), (tuff_setup::setup_bare(true), true)] {
+        let d = &s.device;
+        let signaled = d
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+            .expect("semaphore");
+        let signals = tuff::HandleSlice::new(&[&signaled]);
+        let first = fence(&s);
+        // SAFETY: an empty batch that signals an unsignaled binary semaphore.
+        unsafe {
+            s.queue.queue_submit(
+                &[tuff::SubmitInfo::new().signal_semaphores(&signals)],
+                &first,
+            )
+        }
+        .expect("signal");
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        cb.begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin")
+            .end()
+            .expect("end");
+        let waits = tuff::HandleSlice::new(&[&signaled]);
+        let cbs = tuff::HandleSlice::new(&[&cb]);
+        type S = vk::PipelineStageFlags;
+        let mut cases: Vec<(&str, S, Vec<u32>, Vec<u32>)> = vec![];
+        if sync2_off {
+            cases.push((
+                "VUID-VkSubmitInfo-pWaitDstStageMask-03937",
+                S::empty(),
+                vec![],
+                vec![],
+            ));
+        } else {
+            cases.extend([
+                (
+                    "VUID-VkSubmitInfo-pWaitDstStageMask-00078",
+                    S::HOST,
+                    vec![],
+                    vec![],
+                ),
+                (
+                    "VUID-VkSubmitInfo-pWaitDstStageMask-04090",
+                    S::GEOMETRY_SHADER,
+                    vec![],
+                    vec![],
+                ),
+                (
+                    "VUID-VkSubmitInfo-pWaitDstStageMask-04091",
+                    S::TESSELLATION_CONTROL_SHADER,
+                    vec![],
+                    vec![],
+                ),
+                (
+                    "VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086",
+                    S::ALL_COMMANDS,
+                    vec![0],
+                    vec![0b10],
+                ),
+                // Last: the 1.3.239 layer does not check it, so the unchecked call
+                // reaches lavapipe (which has one device and reads no index): proven
+                // by the error alone.
+                (
+                    "VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085",
+                    S::ALL_COMMANDS,
+                    vec![1],
+                    vec![1],
+                ),
+            ]);
+        }
+        let done = fence(&s);
+        for (expected, stage, indices, masks) in cases {
+            let stages = [stage];
+            let mut group = tuff::DeviceGroupSubmitInfo::new()
+                .wait_semaphore_device_indices(&indices)
+                .command_buffer_device_masks(&masks);
+            let mut batch = tuff::SubmitInfo::new()
+                .wait_semaphores(&waits, &stages)
+                .expect("one stage per wait")
+                .command_buffers(&cbs);
+            if !indices.is_empty() {
+                batch = batch.push_next(&mut group);
+            }
+            let batch = [batch];
+            assert_eq!(
+                vuid(unsafe { s.queue.queue_submit(&batch, &done) }),
+                expected
+            );
+            s.messages.take();
+            s.messages.abort_on_error(true);
+            // SAFETY: the layer skips the submission, which breaks only the rule under
+            // test.
+            let _ = unsafe { s.queue.queue_submit_unchecked(&batch, &done) };
+            s.messages.abort_on_error(false);
+            if expected.ends_with("-00085") {
+                let said = s.messages.take();
+                assert!(said.is_empty(), "the layer said: {said:?}");
+            } else {
+                assert_layer_reports(&s, expected);
+            }
+        }
+        s.queue.queue_wait_idle().expect("idle");
+    }
+}
+
 /// Private data reaches the object through its handle, as a pointer: a handle of a
 /// dropped object, or of another type, or of an object that is not a child of the
 /// device, is refused before the driver sees it.

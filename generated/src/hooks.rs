@@ -112,6 +112,8 @@ pub(crate) fn queue_submit_checks(
     )?;
     for (i, b) in submits.iter().enumerate() {
         check_device_group_submit(i, b)?;
+        check_group_indices(queue.parent(), i, b)?;
+        check_wait_stages(queue, i, b)?;
     }
     submission::check_binary_ops(
         queue.parent(),
@@ -2739,6 +2741,99 @@ unsafe fn chained<'c, T>(
 
 /// The checks of `vkQueueSubmit` on a chained `VkDeviceGroupSubmitInfo`: drivers read
 /// one device mask and index per command buffer and semaphore of the batch from it.
+/// A batch's wait stage masks: no host stage, none without the feature it needs,
+/// not 0 without synchronization2, and each stage one the queue's capabilities
+/// support.
+fn check_wait_stages(queue: &Queue, i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: the safe setter stores the masks with the wait semaphores' count.
+    let masks =
+        unsafe { crate::retention::raw_slice(b.p_wait_dst_stage_mask, b.wait_semaphore_count) };
+    if masks.is_empty() {
+        return Ok(());
+    }
+    let device = queue.parent();
+    let f = device.live().features();
+    let sync2 = device.live().with_features(|f| f.v13.synchronization2) != vk::FALSE;
+    type S = vk::PipelineStageFlags;
+    for (k, m) in masks.iter().enumerate() {
+        let at = format!("pSubmits[{i}].pWaitDstStageMask[{k}]");
+        if m.contains(S::HOST) {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-00078",
+                format!("{at} includes VK_PIPELINE_STAGE_HOST_BIT"),
+            )?;
+        }
+        if m.contains(S::GEOMETRY_SHADER) && f.geometry_shader == vk::FALSE {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-04090",
+                format!(
+                    "{at} includes the geometry shader stage, and geometryShader is not enabled"
+                ),
+            )?;
+        }
+        if m.intersects(S::TESSELLATION_CONTROL_SHADER | S::TESSELLATION_EVALUATION_SHADER)
+            && f.tessellation_shader == vk::FALSE
+        {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-04091",
+                format!(
+                    "{at} includes a tessellation stage, and tessellationShader is not enabled"
+                ),
+            )?;
+        }
+        if m.is_empty() && !sync2 {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-03937",
+                format!("{at} is 0, and synchronization2 is not enabled"),
+            )?;
+        }
+        if let Some(s) = stages::unsupported_stage(*m, queue.queue_flags()) {
+            refuse(
+                "VUID-vkQueueSubmit-pWaitDstStageMask-00066",
+                format!(
+                    "{at} includes {s:?}, which the queue's capabilities ({:?}) do not support",
+                    queue.queue_flags()
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A chained `VkDeviceGroupSubmitInfo`'s device indices and masks name only the
+/// device's physical devices.
+fn check_group_indices(device: &Device, i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: `b` is a safe struct's.
+    let group: Option<&vk::DeviceGroupSubmitInfo<'_>> =
+        unsafe { chained(b.p_next, vk::StructureType::DEVICE_GROUP_SUBMIT_INFO) };
+    let Some(g) = group else { return Ok(()) };
+    let count = device.live().physical_count();
+    // SAFETY: the safe setters store each array with its count.
+    let (waits, signals, masks) = unsafe {
+        (
+            crate::retention::raw_slice(g.p_wait_semaphore_device_indices, g.wait_semaphore_count),
+            crate::retention::raw_slice(
+                g.p_signal_semaphore_device_indices,
+                g.signal_semaphore_count,
+            ),
+            crate::retention::raw_slice(g.p_command_buffer_device_masks, g.command_buffer_count),
+        )
+    };
+    if let Some(d) = waits.iter().chain(signals).find(|d| **d >= count) {
+        refuse(
+            "VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085",
+            format!("pSubmits[{i}]'s device group info names device index {d}; the device has {count} physical devices"),
+        )?;
+    }
+    if let Some(m) = masks.iter().find(|m| count < 32 && **m >> count != 0) {
+        refuse(
+            "VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086",
+            format!("pSubmits[{i}]'s device group info has device mask {m:#x}; the device has {count} physical devices"),
+        )?;
+    }
+    Ok(())
+}
+
 fn check_device_group_submit(i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
     // SAFETY: `b` is a safe struct's.
     let group: Option<&vk::DeviceGroupSubmitInfo<'_>> =

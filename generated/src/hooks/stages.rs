@@ -90,3 +90,34 @@ pub(crate) fn unsupported_access(access: A, stages: S) -> Option<A> {
         .find(|(a, supported)| access.contains(*a) && !stages.intersects(*supported))
         .map(|(a, _)| *a)
 }
+
+/// The first stage of `stages` that no capability of a queue with `flags` supports
+/// (the specification's table of supported pipeline stages); `HOST` is no queue's.
+pub(crate) fn unsupported_stage(stages: S, flags: vk::QueueFlags) -> Option<S> {
+    use vk::QueueFlags as Q;
+    let graphics = flags.contains(Q::GRAPHICS);
+    let compute = flags.contains(Q::COMPUTE);
+    let transfer = graphics || compute || flags.contains(Q::TRANSFER);
+    let each: [(S, bool); 16] = [
+        (S::TOP_OF_PIPE, true),
+        (S::BOTTOM_OF_PIPE, true),
+        (S::ALL_COMMANDS, true),
+        (S::DRAW_INDIRECT, graphics || compute),
+        (S::VERTEX_INPUT, graphics),
+        (S::VERTEX_SHADER, graphics),
+        (S::TESSELLATION_CONTROL_SHADER, graphics),
+        (S::TESSELLATION_EVALUATION_SHADER, graphics),
+        (S::GEOMETRY_SHADER, graphics),
+        (S::FRAGMENT_SHADER, graphics),
+        (S::EARLY_FRAGMENT_TESTS, graphics),
+        (S::LATE_FRAGMENT_TESTS, graphics),
+        (S::COLOR_ATTACHMENT_OUTPUT, graphics),
+        (S::ALL_GRAPHICS, graphics),
+        (S::COMPUTE_SHADER, compute),
+        (S::TRANSFER, transfer),
+    ];
+    each.iter()
+        .find(|(s, ok)| stages.contains(*s) && !ok)
+        .map(|(s, _)| *s)
+        .or_else(|| stages.contains(S::HOST).then_some(S::HOST))
+}

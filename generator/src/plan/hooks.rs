@@ -271,6 +271,9 @@ const VIEW_RANGE: &str = "checks the subresource range's aspects, levels and lay
 const VIEW_TYPE: &str = "checks the view type against the image's type, flags, usage and sample count, recorded at its creation";
 const VIEW_FORMAT: &str = "checks the view's format against the image's (its compatibility class, block size, plane formats and listed view formats, recorded at its creation, from vk.xml's <formats>), its chroma against the image's extent, and a chained Y'CbCr conversion's format and the swizzle";
 const VIEW_USAGE: &str = "checks the view's usage (chained, or the image's or its stencil usage, as the specification derives it) against the image's and against the format features the physical device reports for the image's tiling";
+const WAIT_STAGES: &str = "checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support";
+const UNPROVEN_QUEUE_STAGES: &str = "checked by the safe methods in every build (each stage against the queue family's flags and the specification's table of supported stages), but no test breaks it: lavapipe's only queue family supports every stage";
+const GROUP_INDICES: &str = "checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation";
 const ACQUIRE_SIGNALS: &str = "checks the acquire has a semaphore or a fence to signal";
 const RETIRED_ACQUIRE: &str = "checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain";
 const BINARY_STATE: &str = "checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete";
@@ -439,6 +442,13 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083", How::Dynamic(CHAINED_COUNT)),
             ("VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084", How::Dynamic(CHAINED_COUNT)),
             ("VUID-vkQueueSubmit-pWaitSemaphores-03238", How::Dynamic(BINARY_STATE)),
+            ("VUID-VkSubmitInfo-pWaitDstStageMask-00078", How::Dynamic(WAIT_STAGES)),
+            ("VUID-VkSubmitInfo-pWaitDstStageMask-04090", How::Dynamic(WAIT_STAGES)),
+            ("VUID-VkSubmitInfo-pWaitDstStageMask-04091", How::Dynamic(WAIT_STAGES)),
+            ("VUID-VkSubmitInfo-pWaitDstStageMask-03937", How::Dynamic(WAIT_STAGES)),
+            ("VUID-vkQueueSubmit-pWaitDstStageMask-00066", How::User(UNPROVEN_QUEUE_STAGES)),
+            ("VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085", How::Dynamic(GROUP_INDICES)),
+            ("VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086", How::Dynamic(GROUP_INDICES)),
             ("VUID-vkQueueSubmit-pSignalSemaphores-00067", How::Dynamic(BINARY_SIGNALED)),
             ("VUID-vkQueueSubmit-pWaitSemaphores-00069", How::User(SAME_AS_03238)),
             ("VUID-vkQueueSubmit-pWaitSemaphores-00068", How::User(ONE_WAITER)),

@@ -3504,7 +3504,10 @@ impl<'a> SpecializationInfo<'a> {
 
 The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubmitInfo.html). Settled by the wrappers:
 
+- `VUID-VkSubmitInfo-pWaitDstStageMask-04090`: dynamic (checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support)
+- `VUID-VkSubmitInfo-pWaitDstStageMask-04091`: dynamic (checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support)
 - `VUID-VkSubmitInfo-pCommandBuffers-00075`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
+- `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: dynamic (checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support)
 - `VUID-VkSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSubmitInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -3513,11 +3516,12 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 - `VUID-VkSubmitInfo-pCommandBuffers-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-pSignalSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkSubmitInfo-pWaitDstStageMask-03937`: dynamic (checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support)
 - `VUID-VkSubmitInfo-pWaitSemaphores-03239`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 - `VUID-VkSubmitInfo-pNext-03240`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 - `VUID-VkSubmitInfo-pNext-03241`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 23 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {

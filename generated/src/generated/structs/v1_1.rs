@@ -484,12 +484,12 @@ The rules are on [`VkDeviceGroupSubmitInfo`'s reference page](https://registry.k
 - `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`: dynamic (checks the chained struct's count against the count of the struct it extends)
 - `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`: dynamic (checks the chained struct's count against the count of the struct it extends)
 - `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`: dynamic (checks the chained struct's count against the count of the struct it extends)
+- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`: dynamic (checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation)
+- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`: dynamic (checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation)
 - `VUID-VkDeviceGroupSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSubmitInfo<'a> {
