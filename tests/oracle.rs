@@ -364,14 +364,19 @@ fn barrier(s: &Setup, info: &tuff::DependencyInfo<'_>) -> Outcome {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.cmd_pipeline_barrier2(info) };
-    let safe = rec.end();
+    // A refused barrier is not recorded; one the implicit checks refuse poisons
+    // the recording, whose end returns the error.
+    let recorded = unsafe { rec.cmd_pipeline_barrier2(info) };
+    let ended = rec.end();
+    let safe = recorded.and(ended);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-    let layer = under_layer(s, || unsafe { rec.cmd_pipeline_barrier2_unchecked(info) });
+    let layer = under_layer(s, || {
+        let _ = unsafe { rec.cmd_pipeline_barrier2_unchecked(info) };
+    });
     rec.end().expect("end");
     Outcome { safe, layer }
 }
@@ -2292,12 +2297,12 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     let readback = pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::TRANSFER_DST);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
 
-    // A geometry-shader stage on a device without the feature: the recorder skips
-    // the barrier and `end` returns the refusal.
+    // A geometry-shader stage on a device without the feature: the barrier is
+    // refused and not recorded.
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe {
+    let refused = unsafe {
         rec.cmd_pipeline_barrier(
             vk::PipelineStageFlags::GEOMETRY_SHADER,
             vk::PipelineStageFlags::TRANSFER,
@@ -2308,9 +2313,10 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         )
     };
     assert_eq!(
-        refusal(rec.end()),
+        refusal(refused),
         "VUID-vkCmdPipelineBarrier-srcStageMask-04090"
     );
+    rec.end().expect("end");
     // A cube-array view of the frame's image without the imageCubeArray feature.
     assert_eq!(
         refusal(

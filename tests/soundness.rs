@@ -76,6 +76,7 @@ fn record_gated_fill(
             &[],
             &[],
         )
+        .expect("recorded")
     };
     unsafe { rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7) }.expect("fill");
     rec.end().expect("end");
@@ -485,6 +486,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
             &[],
             &[],
         )
+        .expect("recorded")
     };
     unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
     rec.end().expect("end primary");
@@ -872,6 +874,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                 &[],
                 &[],
             )
+            .expect("recorded")
         };
         let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
         rec.cmd_end_render_pass().end().expect("end");
@@ -1418,6 +1421,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
                 &[],
                 &[],
             )
+            .expect("recorded")
         };
         unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
         rec.end().expect("end secondary");

@@ -394,6 +394,7 @@ fn present_one_frame(
                 vk::AccessFlags::TRANSFER_WRITE,
             )],
         )
+        .expect("recorded")
     };
     unsafe {
         rec.cmd_clear_color_image(
@@ -404,6 +405,7 @@ fn present_one_frame(
             },
             &[range],
         )
+        .expect("recorded")
     };
     unsafe {
         rec.cmd_pipeline_barrier(
@@ -419,6 +421,7 @@ fn present_one_frame(
                 vk::AccessFlags::empty(),
             )],
         )
+        .expect("recorded")
     };
     rec.end().expect("end");
     let fence = d
@@ -441,15 +444,15 @@ fn present_one_frame(
     .expect("submit");
     let swapchains = tuff::HandleSlice::new(&[swapchain]);
     let indices = [index];
-    let r = unsafe {
-        s.queue.queue_present_khr(
+    let r = s
+        .queue
+        .queue_present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
                 .swapchains(&swapchains, &indices)
                 .expect("one index per swapchain"),
         )
-    }
-    .expect("present");
+        .expect("present");
     assert!(
         r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
         "{r:?}"
@@ -1074,6 +1077,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
                 &to_host,
                 &[],
             )
+            .expect("recorded")
         };
         rec.end().expect("end");
     };
@@ -1255,15 +1259,270 @@ fn acquire_and_present_take_binary_semaphores() {
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let binary = "VUID-vkQueuePresentKHR-pWaitSemaphores-03267";
-    assert_eq!(
-        refused(unsafe { s.queue.queue_present_khr(&present) }),
-        binary
-    );
+    assert_eq!(refused(s.queue.queue_present_khr(&present)), binary);
     layer_names(&s, binary, || {
         // SAFETY: the layer names the rule and skips the call.
         let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
     });
     s.queue.queue_wait_idle().expect("idle");
+    drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// A presented image must be acquired and not presented since, and in
+/// PRESENT_SRC_KHR as the submissions before the presentation leave it: the safe
+/// presentation refuses either, and the layer names the layout rule for the
+/// unchecked one.
+#[test]
+fn only_acquired_images_in_the_present_layout_are_presented() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        .expect("swapchain");
+    let images = s
+        .device
+        .get_swapchain_images_khr(&swapchain)
+        .expect("swapchain images");
+    let fence = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let (index, _) = s
+        .device
+        .acquire_next_image_khr(&swapchain, u64::MAX, None, Some(&fence))
+        .expect("acquire");
+    assert_eq!(
+        s.device
+            .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .expect("acquired"),
+        vk::Result::SUCCESS
+    );
+    let rule = "VUID-VkPresentInfoKHR-pImageIndices-01296";
+    let swapchains = tuff::HandleSlice::new(&[&swapchain]);
+    let indices = [index];
+    let other = [(index + 1) % images.len() as u32];
+    let present = |indices| {
+        tuff::PresentInfoKHR::new()
+            .swapchains(&swapchains, indices)
+            .expect("one index per swapchain")
+    };
+    // Acquired, but still UNDEFINED: nothing moved it to PRESENT_SRC_KHR.
+    assert_eq!(refused(s.queue.queue_present_khr(&present(&indices))), rule);
+    // Another image, never acquired.
+    assert_eq!(refused(s.queue.queue_present_khr(&present(&other))), rule);
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present(&indices)) };
+    });
+    s.queue.queue_wait_idle().expect("idle");
+    drop(images);
+    drop(swapchain);
+    drop(surface);
+    assert_silent(&s.messages);
+}
+
+/// Acquires an image of `swapchain` (waiting on a fence) and moves it to
+/// PRESENT_SRC_KHR; returns its index.
+fn acquire_for_present(
+    s: &Setup,
+    swapchain: &tuff::SwapchainKHR,
+    images: &[tuff::Image],
+    pool: &tuff::CommandPool,
+) -> u32 {
+    let d = &s.device;
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let (index, _) = d
+        .acquire_next_image_khr(swapchain, u64::MAX, None, Some(&fence))
+        .expect("acquire");
+    assert_eq!(
+        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .expect("acquired"),
+        vk::Result::SUCCESS
+    );
+    let mut cb = d
+        .allocate_command_buffers(
+            pool,
+            &tuff::CommandBufferAllocateInfo::new(pool).command_buffer_count(1),
+        )
+        .expect("command buffer")
+        .pop()
+        .expect("one");
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let barrier = tuff::ImageMemoryBarrier::new(&images[index as usize])
+        .old_layout(vk::ImageLayout::UNDEFINED)
+        .new_layout(vk::ImageLayout::PRESENT_SRC_KHR)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .subresource_range(vk::ImageSubresourceRange {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            base_mip_level: 0,
+            level_count: 1,
+            base_array_layer: 0,
+            layer_count: 1,
+        });
+    unsafe {
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TOP_OF_PIPE,
+            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[barrier],
+        )
+    }
+    .expect("barrier");
+    rec.end().expect("end");
+    let done = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+    }
+    .expect("submit");
+    assert_eq!(
+        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+            .expect("moved"),
+        vk::Result::SUCCESS
+    );
+    index
+}
+
+/// A chained `VkDeviceGroupPresentInfoKHR` is checked against the presentation's
+/// swapchain count, the device group's present masks, the mask each image was
+/// acquired with and the swapchain's modes: each rule broken is refused by the
+/// safe presentation, and the layer names it for the unchecked one. A valid one
+/// presents.
+#[test]
+fn device_group_presentations_are_checked_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup_with(true, Wsi::Xlib);
+    let window = x11_window::X11Window::open(32, 32);
+    let surface = xlib_surface(&s, &window);
+    let swapchain = s
+        .device
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
+        .expect("swapchain");
+    let images = s
+        .device
+        .get_swapchain_images_khr(&swapchain)
+        .expect("swapchain images");
+    let pool = s
+        .device
+        .create_command_pool(&tuff::CommandPoolCreateInfo::new().queue_family_index(s.family))
+        .expect("pool");
+    type Mode = vk::DeviceGroupPresentModeFlagsKHR;
+    // The device is a group of one: its present mask is bit 0, its swapchains use
+    // the LOCAL mode, and an image acquired with vkAcquireNextImageKHR has mask 1.
+    let cases: [(&[u32], Mode, &str); 7] = [
+        (
+            &[1, 1],
+            Mode::LOCAL,
+            "VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297",
+        ),
+        (
+            &[3],
+            Mode::LOCAL,
+            "VUID-VkDeviceGroupPresentInfoKHR-mode-01298",
+        ),
+        (
+            &[2],
+            Mode::REMOTE,
+            "VUID-VkDeviceGroupPresentInfoKHR-mode-01299",
+        ),
+        (
+            &[2],
+            Mode::SUM,
+            "VUID-VkDeviceGroupPresentInfoKHR-mode-01300",
+        ),
+        (
+            &[2],
+            Mode::LOCAL_MULTI_DEVICE,
+            "VUID-VkDeviceGroupPresentInfoKHR-mode-01301",
+        ),
+        (
+            &[0],
+            Mode::SUM,
+            "VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302",
+        ),
+        (
+            &[1],
+            Mode::REMOTE,
+            "VUID-VkDeviceGroupPresentInfoKHR-mode-01303",
+        ),
+    ];
+    let swapchains = tuff::HandleSlice::new(&[&swapchain]);
+    let index = acquire_for_present(&s, &swapchain, &images, &pool);
+    let indices = [index];
+    for (masks, mode, rule) in cases {
+        let mut group = tuff::DeviceGroupPresentInfoKHR::new()
+            .device_masks(masks)
+            .mode(mode);
+        let present = tuff::PresentInfoKHR::new()
+            .swapchains(&swapchains, &indices)
+            .expect("one index per swapchain")
+            .push_next(&mut group);
+        assert_eq!(
+            refused(s.queue.queue_present_khr(&present)),
+            rule,
+            "{masks:?} {mode:?}"
+        );
+    }
+    // A valid one.
+    let mut group = tuff::DeviceGroupPresentInfoKHR::new()
+        .device_masks(&[1])
+        .mode(Mode::LOCAL);
+    let present = tuff::PresentInfoKHR::new()
+        .swapchains(&swapchains, &indices)
+        .expect("one index per swapchain")
+        .push_next(&mut group);
+    let r = s.queue.queue_present_khr(&present).expect("present");
+    assert!(
+        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        "{r:?}"
+    );
+    s.queue.queue_wait_idle().expect("idle");
+    // The layer, for the unchecked presentation: the 1.3.239 layer checks none of
+    // these rules on a device of one physical device, so it stays silent and the
+    // presentation is made (these rules are proven by tuff's error alone). Each case
+    // presents an image of its own.
+    for (masks, mode, rule) in cases {
+        let index = acquire_for_present(&s, &swapchain, &images, &pool);
+        let indices = [index];
+        let mut group = tuff::DeviceGroupPresentInfoKHR::new()
+            .device_masks(masks)
+            .mode(mode);
+        let present = tuff::PresentInfoKHR::new()
+            .swapchains(&swapchains, &indices)
+            .expect("one index per swapchain")
+            .push_next(&mut group);
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the layer skips the call if it reports it; if it is silent, the
+        // driver of a group of one physical device presents the image.
+        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+        s.messages.abort_on_error(false);
+        let messages = s.messages.take();
+        // A layer that names the rule skips the call and leaves the image acquired,
+        // which the next case's acquire would wait on: this test must change then.
+        assert!(
+            messages.is_empty(),
+            "the layer now reports {rule} (or another rule): {messages:?}"
+        );
+        s.queue.queue_wait_idle().expect("idle");
+    }
+    s.queue.queue_wait_idle().expect("idle");
+    drop(images);
     drop(swapchain);
     drop(surface);
     assert_silent(&s.messages);
@@ -1422,10 +1681,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .expect("one index per swapchain");
     let present_rule = "VUID-vkQueuePresentKHR-pWaitSemaphores-03268";
     // SAFETY: the call is refused.
-    assert_eq!(
-        refused(unsafe { s.queue.queue_present_khr(&present) }),
-        present_rule
-    );
+    assert_eq!(refused(s.queue.queue_present_khr(&present)), present_rule);
     layer_names(&s, present_rule, || {
         // SAFETY: the layer names the rule and skips the call.
         let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };

@@ -276,7 +276,7 @@ pub fn record_frame<S: Scene>(
                 &to_host,
                 &[],
             )
-        };
+        }?;
     }
     rec.end()?;
     Ok(())

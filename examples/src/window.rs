@@ -319,8 +319,6 @@ impl<S: Scene> Live<S> {
         let mut frame = self.frames.next_frame()?;
         let acquired = &self.acquired[frame.index];
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
-        // SAFETY: the semaphore is unsignalled with no pending wait, and the swapchain is not
-        // retired.
         let index =
             match gpu
                 .device
@@ -361,15 +359,11 @@ impl<S: Scene> Live<S> {
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
         let signals = tuff::HandleSlice::new(&[rendered]);
-        // SAFETY: the image was acquired and rendered to, is in PRESENT_SRC_KHR, and the wait
-        // semaphore is signalled by this frame's submission.
-        match unsafe {
-            gpu.queue.queue_present_khr(
-                &tuff::PresentInfoKHR::new()
-                    .wait_semaphores(&signals)
-                    .swapchains(&swapchains, &indices)?,
-            )
-        } {
+        match gpu.queue.queue_present_khr(
+            &tuff::PresentInfoKHR::new()
+                .wait_semaphores(&signals)
+                .swapchains(&swapchains, &indices)?,
+        ) {
             Ok(r) => self.stale |= r == vk::Result::SUBOPTIMAL_KHR,
             Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,
             Err(e) => return Err(e.into()),

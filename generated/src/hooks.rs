@@ -22,6 +22,7 @@ use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
 mod creation;
+mod layouts;
 mod pipeline;
 mod render_pass;
 mod stages;
@@ -32,6 +33,11 @@ use creation::image_create_rules;
 pub(crate) use creation::{
     allocate_memory_checks, allocate_memory_gate, create_device_checks,
     descriptor_set_layout_checks, sampler_checks,
+};
+pub(crate) use layouts::{
+    cmd_pipeline_barrier_checks, cmd_pipeline_barrier_done, dependency_checks, dependency_done,
+    execute_layout_checks, execute_layouts_done, framebuffer_created, image_layout_checks,
+    image_layouts_named, render_pass_layout_checks, Names,
 };
 pub(crate) use pipeline::{compute_pipeline_state_checks, graphics_pipeline_state_checks};
 pub(crate) use render_pass::{
@@ -245,7 +251,8 @@ fn submit_checks(
     rules: &SubmitRules,
 ) -> Result<()> {
     submission::check_fence(fence, rules)?;
-    submission::check_command_buffers(queue.parent(), cbs, rules)
+    submission::check_command_buffers(queue.parent(), cbs, rules)?;
+    submission::check_layouts(queue.parent(), cbs)
 }
 
 /// After `vkQueueSubmit`: the fence holds everything the submission names (its
@@ -324,7 +331,7 @@ pub(crate) fn cmd_execute_commands_checks<S: State>(
             });
         }
     }
-    Ok(())
+    execute_layout_checks(recorder, command_buffers)
 }
 
 /// A primary is pending while it may run; so are the secondaries it executes.
@@ -429,7 +436,204 @@ pub(crate) fn queue_present_khr_checks(
         queue.raw(),
         &ops,
         &submission::PRESENT_BINARY,
-    )
+    )?;
+    check_presented_images(queue.parent(), present_info)?;
+    check_surface_support(queue, present_info)?;
+    check_device_group_present(queue.parent(), present_info)
+}
+
+/// Refuses a swapchain whose surface the queue's family cannot present to, as
+/// `vkGetPhysicalDeviceSurfaceSupportKHR` says (asked once per swapchain and family).
+#[cfg(feature = "khr_swapchain")]
+fn check_surface_support(queue: &Queue, present_info: &PresentInfoKHR<'_>) -> Result<()> {
+    let device = queue.parent();
+    let Some(family) = device.live().queue_family(queue.raw()) else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stores the array with its count.
+    let swapchains = unsafe {
+        crate::retention::raw_slice(present_info.p_swapchains, present_info.swapchain_count)
+    };
+    for (n, swapchain) in swapchains.iter().enumerate() {
+        if device.live().presents_from(*swapchain, family) {
+            continue;
+        }
+        let Some(surface) = device.live().swapchain_surface(*swapchain) else {
+            continue;
+        };
+        let fp = device
+            .parent()
+            .parent()
+            .ext()
+            .khr_surface
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_surface"))?
+            .get_physical_device_surface_support_khr;
+        let mut supported = vk::FALSE;
+        // SAFETY: the physical device of the device, a family the device has a queue
+        // of, and the live surface of a live swapchain (its wrapper keeps it alive).
+        let r = unsafe { fp(device.parent().raw(), family, surface, &mut supported) };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        if supported != vk::TRUE {
+            return refuse(
+                "VUID-vkQueuePresentKHR-pSwapchains-01292",
+                format!("the surface of pSwapchains[{n}] does not support presentation from the queue's family {family}"),
+            );
+        }
+        device.live().set_presents_from(*swapchain, family);
+    }
+    Ok(())
+}
+
+/// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, read once (a device of one
+/// physical device that cannot ask presents from it alone).
+#[cfg(feature = "khr_swapchain")]
+fn present_masks(device: &Device) -> Result<[u32; vk::MAX_DEVICE_GROUP_SIZE]> {
+    if let Some(masks) = device.live().present_masks() {
+        return Ok(masks);
+    }
+    let mut masks = [0; vk::MAX_DEVICE_GROUP_SIZE];
+    masks[0] = 1;
+    if device.exts().version(1) {
+        let mut caps = DeviceGroupPresentCapabilitiesKHR::new();
+        device.get_device_group_present_capabilities_khr(&mut caps)?;
+        masks = caps.present_mask;
+    }
+    device.live().set_present_masks(masks);
+    Ok(masks)
+}
+
+/// The rules of a chained `VkDeviceGroupPresentInfoKHR`: its count, each device
+/// mask against the mode and the devices that can present, against the mask its
+/// image was acquired with, and the mode against the swapchain's modes.
+#[cfg(feature = "khr_swapchain")]
+fn check_device_group_present(device: &Device, present_info: &PresentInfoKHR<'_>) -> Result<()> {
+    let info = present_info.as_raw();
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let Some(group) = (unsafe {
+        chained::<vk::DeviceGroupPresentInfoKHR<'_>>(
+            info.p_next,
+            vk::StructureType::DEVICE_GROUP_PRESENT_INFO_KHR,
+        )
+    }) else {
+        return Ok(());
+    };
+    if group.swapchain_count != 0 && group.swapchain_count != info.swapchain_count {
+        return refuse(
+            "VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297",
+            format!(
+                "swapchainCount is {}, and VkPresentInfoKHR::swapchainCount is {}",
+                group.swapchain_count, info.swapchain_count
+            ),
+        );
+    }
+    // SAFETY: the safe setters store each array with its count.
+    let (masks, swapchains, indices) = unsafe {
+        (
+            crate::retention::raw_slice(group.p_device_masks, group.swapchain_count),
+            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+        )
+    };
+    let present = present_masks(device)?;
+    let can_present = |bit: u32| present.get(bit as usize).is_some_and(|m| *m != 0);
+    let bits = |mask: u32| (0..32).filter(move |b| mask & (1 << b) != 0);
+    type Mode = vk::DeviceGroupPresentModeFlagsKHR;
+    for (n, mask) in masks.iter().enumerate() {
+        let one_bit = mask.count_ones() == 1;
+        let (vuid, ok) = match group.mode {
+            Mode::LOCAL => (
+                "VUID-VkDeviceGroupPresentInfoKHR-mode-01298",
+                one_bit && bits(*mask).all(can_present),
+            ),
+            Mode::REMOTE => (
+                "VUID-VkDeviceGroupPresentInfoKHR-mode-01299",
+                one_bit && present.iter().any(|p| p & mask != 0),
+            ),
+            Mode::SUM => (
+                "VUID-VkDeviceGroupPresentInfoKHR-mode-01300",
+                present.iter().any(|p| p & mask == *mask),
+            ),
+            Mode::LOCAL_MULTI_DEVICE => (
+                "VUID-VkDeviceGroupPresentInfoKHR-mode-01301",
+                bits(*mask).all(can_present),
+            ),
+            _ => ("", true),
+        };
+        if !ok {
+            return refuse(
+                vuid,
+                format!(
+                    "pDeviceMasks[{n}] = {mask:#x} does not suit mode {:?} with the device group's presentMask {:x?}",
+                    group.mode, &present[..device.live().physical_count().clamp(1, 32) as usize]
+                ),
+            );
+        }
+        let acquired = swapchains
+            .get(n)
+            .zip(indices.get(n))
+            .and_then(|(s, i)| device.live().acquired_image(*s, *i).ok());
+        if let Some((_, acquired_mask)) = acquired {
+            if acquired_mask != *mask {
+                return refuse(
+                    "VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302",
+                    format!("pDeviceMasks[{n}] = {mask:#x}, and the image was acquired with device mask {acquired_mask:#x}"),
+                );
+            }
+        }
+    }
+    for (n, swapchain) in swapchains.iter().enumerate() {
+        let modes = device.live().swapchain_modes(*swapchain);
+        if group.mode.as_raw().count_ones() != 1 || !modes.contains(group.mode) {
+            return refuse(
+                "VUID-VkDeviceGroupPresentInfoKHR-mode-01303",
+                format!(
+                    "mode is {:?}, and pSwapchains[{n}] was created for modes {modes:?}",
+                    group.mode
+                ),
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Refuses an image index that is not acquired, or whose image the submissions so
+/// far leave in a layout other than `PRESENT_SRC_KHR` (or `SHARED_PRESENT_KHR`).
+#[cfg(feature = "khr_swapchain")]
+fn check_presented_images(device: &Device, present_info: &PresentInfoKHR<'_>) -> Result<()> {
+    const VUID: &str = "VUID-VkPresentInfoKHR-pImageIndices-01296";
+    let info = present_info.as_raw();
+    // SAFETY: the safe setter stores both arrays with the one count.
+    let (swapchains, indices) = unsafe {
+        (
+            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+        )
+    };
+    for (n, (swapchain, index)) in swapchains.iter().zip(indices).enumerate() {
+        match device.live().acquired_image(*swapchain, *index) {
+            Ok((image, _)) => crate::layouts::check_device_layout(
+                device.live(),
+                image,
+                &[
+                    vk::ImageLayout::PRESENT_SRC_KHR,
+                    vk::ImageLayout::SHARED_PRESENT_KHR,
+                ],
+                VUID,
+            )?,
+            Err(false) => refuse(
+                VUID,
+                format!("pImageIndices[{n}] = {index} is not an image acquired from pSwapchains[{n}] and not presented since"),
+            )?,
+            Err(true) => refuse(
+                VUID,
+                format!("image {index} of pSwapchains[{n}] was never returned by get_swapchain_images_khr, so no command made its layout PRESENT_SRC_KHR"),
+            )?,
+        }
+    }
+    Ok(())
 }
 
 /// Held before the call: a presentation the engine rejects still waits on its
@@ -812,6 +1016,9 @@ pub(crate) fn image_created(
         },
         views,
     );
+    if create_info.initial_layout == vk::ImageLayout::PREINITIALIZED {
+        device.live().image_preinitialized(image.raw());
+    }
     image
 }
 
@@ -916,6 +1123,14 @@ pub(crate) fn swapchain_created(
             bound: true,
             external: vk::ExternalMemoryHandleTypeFlags::empty(),
         },
+        // SAFETY: the chain of a safe struct, and the type its sType names.
+        unsafe {
+            chained::<vk::DeviceGroupSwapchainCreateInfoKHR<'_>>(
+                create_info.p_next,
+                vk::StructureType::DEVICE_GROUP_SWAPCHAIN_CREATE_INFO_KHR,
+            )
+        }
+        .map_or(vk::DeviceGroupPresentModeFlagsKHR::LOCAL, |g| g.modes),
     );
     swapchain
 }
@@ -1559,6 +1774,9 @@ pub(crate) fn memory_allocated(
 
 /// The queue remembers its family's flags for the `queuetype` checks.
 pub(crate) fn queue_got(device: &Device, queue: Queue, queue_family_index: u32) -> Queue {
+    device
+        .live()
+        .queue_family_of(queue.raw(), queue_family_index);
     queue.with_queue_flags(crate::validation::family_flags(device, queue_family_index))
 }
 
@@ -5206,6 +5424,7 @@ pub(crate) fn render_pass_created(
             no_attachments,
             color_formats,
             depth_formats,
+            layouts: render_pass::attachment_layouts(create_info),
         },
     );
     render_pass
@@ -5232,6 +5451,7 @@ pub(crate) fn render_pass2_created(
             no_attachments,
             color_formats,
             depth_formats,
+            layouts: render_pass::attachment_layouts2(create_info),
         },
     );
     render_pass
@@ -5241,7 +5461,9 @@ pub(crate) fn render_pass2_created(
 pub(crate) fn render_pass_begun<S: State>(
     recorder: &mut Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
+    layout_vuid: &'static str,
 ) {
+    layouts::render_pass_layouts(recorder, render_pass_begin, layout_vuid);
     let record = recorder
         .device()
         .live()

@@ -51,6 +51,7 @@ mod allocation;
 mod debug_log;
 mod frames;
 mod hooks;
+mod layouts;
 mod mapping;
 mod physical;
 mod presence;

@@ -146,6 +146,8 @@ pub struct Recorder<'c, S: State> {
     pub(crate) instance: Option<PassInstance>,
     /// The queries begun and not yet ended.
     pub(crate) queries: Vec<ActiveQuery>,
+    /// The image layouts the recording needs at its start and leaves so far.
+    pub(crate) layouts: crate::layouts::Recording,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
     /// any of its buffers: held for the whole recording.
@@ -282,6 +284,7 @@ impl CommandBuffer {
             skipped_begin: false,
             instance: None,
             queries: Vec::new(),
+            layouts: Default::default(),
             _state: PhantomData,
         })
     }
@@ -351,6 +354,14 @@ impl<'c, S: State> Recorder<'c, S> {
         }
     }
 
+    /// The device's records and the recording's image layouts, borrowed together
+    /// for a command that changes the layouts.
+    pub(crate) fn layouts_mut(
+        &mut self,
+    ) -> (&crate::retention::Live, &mut crate::layouts::Recording) {
+        (self.device.live(), &mut self.layouts)
+    }
+
     /// The queue flags of the family of the command buffer's pool.
     #[inline]
     pub(crate) fn pool_queue_flags(&self) -> vk::QueueFlags {
@@ -393,6 +404,7 @@ impl<'c, S: State> Recorder<'c, S> {
             skipped_begin: self.skipped_begin,
             instance: self.instance,
             queries: self.queries,
+            layouts: self.layouts,
             alive: self.alive,
             pool_sync: self.pool_sync,
             _state: PhantomData,
@@ -416,6 +428,7 @@ impl<'c, S: State> Recorder<'c, S> {
             return Err(e);
         }
         self.cb.uses().ended(true);
+        self.cb.uses().set_layouts(self.layouts);
         Ok(())
     }
 }

@@ -77,6 +77,8 @@ pub(crate) struct Live {
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
     /// Each live image view's parameters.
     views: Vutex<HashMap<u64, ViewRecord>>,
+    /// Each live framebuffer's attachments (none for an imageless one).
+    framebuffers: Vutex<HashMap<u64, Vec<vk::ImageView>>>,
     /// The view formats each live image's create info listed, where it listed any.
     view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
     /// Each live sampler Y'CbCr conversion's format.
@@ -89,6 +91,10 @@ pub(crate) struct Live {
     ledger: crate::submission::Ledger,
     /// The host synchronization of each queue of the device.
     queues: Vutex<HashMap<u64, HostSync>>,
+    /// The queue family of each queue got through the wrappers.
+    queue_families: Vutex<HashMap<u64, u32>>,
+    /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, read once.
+    present_masks: Vutex<Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]>>,
     /// The device's timeline semaphores (the others are binary).
     timelines: Vutex<std::collections::HashSet<u64>>,
     /// The binary semaphores with a signal or wait submitted that may matter still
@@ -112,6 +118,10 @@ pub(crate) struct Live {
     shader_modules: Vutex<HashMap<u64, Vrc<crate::spirv::Interface>>>,
     /// What the checks of commands and structs that name an image need to know of it.
     images: Vutex<HashMap<u64, ImageRecord>>,
+    /// The layout of each subresource of an image (numbered as
+    /// [`crate::layouts::Shape`] does) as the submissions so far leave it; an
+    /// unlisted image is wholly `UNDEFINED`.
+    layouts: Vutex<HashMap<u64, Vec<vk::ImageLayout>>>,
     /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
     /// records for every image it returns.
     swapchains: Vutex<HashMap<u64, ImageRecord>>,
@@ -172,6 +182,23 @@ pub(crate) struct RenderPassRecord {
     pub color_formats: Vec<Vec<vk::Format>>,
     /// Each subpass's depth/stencil attachment's format, if it uses one.
     pub depth_formats: Vec<Option<vk::Format>>,
+    /// Each attachment's initial and final layouts, and those of its stencil
+    /// aspect (the same unless a `VkAttachmentDescriptionStencilLayout` says
+    /// otherwise).
+    pub layouts: Vec<AttachmentLayouts>,
+}
+
+/// The layouts a render pass instance needs an attachment in and leaves it in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct AttachmentLayouts {
+    /// `initialLayout`.
+    pub initial: vk::ImageLayout,
+    /// `finalLayout`.
+    pub last: vk::ImageLayout,
+    /// The stencil aspect's `initialLayout`.
+    pub stencil_initial: vk::ImageLayout,
+    /// The stencil aspect's `finalLayout`.
+    pub stencil_last: vk::ImageLayout,
 }
 
 /// An attachment's role in some subpass: color, resolve, depth/stencil, input, or
@@ -203,6 +230,12 @@ pub(crate) struct ViewRecord {
     pub identity: bool,
     /// Its usage, as the specification derives it.
     pub usage: vk::ImageUsageFlags,
+    /// Its subresource range's aspects.
+    pub aspect: vk::ImageAspectFlags,
+    /// Its subresource range's first mip level.
+    pub base_level: u32,
+    /// Its subresource range's first array layer.
+    pub base_layer: u32,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
@@ -329,8 +362,16 @@ pub(crate) struct SwapchainState {
     surface: u64,
     /// A later creation named it as `oldSwapchain`.
     retired: bool,
-    /// The indices of its images acquired and not presented since.
-    acquired: Vec<u32>,
+    /// The indices of its images acquired and not presented since, with the device
+    /// mask each was acquired with.
+    acquired: Vec<(u32, u32)>,
+    /// Its images, by index, once `get_swapchain_images_khr` returned them.
+    images: Vec<vk::Image>,
+    /// The device-group present modes it may use (`VkDeviceGroupSwapchainCreateInfoKHR`).
+    modes: vk::DeviceGroupPresentModeFlagsKHR,
+    /// The queue families (as bits; the first 64) seen to support presentation to
+    /// its surface.
+    present_families: u64,
 }
 
 /// An image's creation parameters, as its checks read them.
@@ -389,6 +430,10 @@ impl Default for Live {
             sparse_gate: Vutex::new(()),
             buffers: Vutex::new(HashMap::default()),
             images: Vutex::new(HashMap::default()),
+            layouts: Vutex::new(HashMap::default()),
+            queue_families: Vutex::new(HashMap::default()),
+            present_masks: Vutex::new(None),
+            framebuffers: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
             swapchain_states: Vutex::new(HashMap::default()),
             shader_modules: Vutex::new(HashMap::default()),
@@ -564,11 +609,15 @@ impl Live {
             vk::ObjectType::IMAGE_VIEW => {
                 self.views.lock().remove(&key.1);
             }
+            vk::ObjectType::FRAMEBUFFER => {
+                self.framebuffers.lock().remove(&key.1);
+            }
             vk::ObjectType::SAMPLER_YCBCR_CONVERSION => {
                 self.conversions.lock().remove(&key.1);
             }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);
+                self.layouts.lock().remove(&key.1);
                 self.view_formats.lock().remove(&key.1);
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
@@ -791,6 +840,22 @@ impl Live {
         self.views.lock().get(&raw.as_raw()).copied()
     }
 
+    /// Records a new framebuffer's attachments.
+    pub(crate) fn framebuffer_created(&self, raw: vk::Framebuffer, views: &[vk::ImageView]) {
+        self.framebuffers
+            .lock()
+            .insert(raw.as_raw(), views.to_vec());
+    }
+
+    /// The attachments of a live framebuffer (empty for an imageless one).
+    pub(crate) fn framebuffer_views(&self, raw: vk::Framebuffer) -> Vec<vk::ImageView> {
+        self.framebuffers
+            .lock()
+            .get(&raw.as_raw())
+            .cloned()
+            .unwrap_or_default()
+    }
+
     /// Records a new sampler Y'CbCr conversion's format.
     pub(crate) fn conversion_created(&self, raw: vk::SamplerYcbcrConversion, format: vk::Format) {
         self.conversions.lock().insert(raw.as_raw(), format);
@@ -815,6 +880,7 @@ impl Live {
         raw: vk::SwapchainKHR,
         surface: vk::SurfaceKHR,
         images: ImageRecord,
+        modes: vk::DeviceGroupPresentModeFlagsKHR,
     ) {
         self.swapchains.lock().insert(raw.as_raw(), images);
         self.swapchain_states.lock().insert(
@@ -823,8 +889,66 @@ impl Live {
                 surface: surface.as_raw(),
                 retired: false,
                 acquired: Vec::new(),
+                images: Vec::new(),
+                modes,
+                present_families: 0,
             },
         );
+    }
+
+    /// The device-group present modes a live swapchain may use.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn swapchain_modes(
+        &self,
+        raw: vk::SwapchainKHR,
+    ) -> vk::DeviceGroupPresentModeFlagsKHR {
+        self.swapchain_states
+            .lock()
+            .get(&raw.as_raw())
+            .map_or(vk::DeviceGroupPresentModeFlagsKHR::LOCAL, |s| s.modes)
+    }
+
+    /// Whether queue family `family` was seen to support presentation to the
+    /// swapchain's surface.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn presents_from(&self, raw: vk::SwapchainKHR, family: u32) -> bool {
+        family < 64
+            && self
+                .swapchain_states
+                .lock()
+                .get(&raw.as_raw())
+                .is_some_and(|s| s.present_families & (1 << family) != 0)
+    }
+
+    /// Queue family `family` supports presentation to the swapchain's surface.
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn set_presents_from(&self, raw: vk::SwapchainKHR, family: u32) {
+        if let (true, Some(s)) = (
+            family < 64,
+            self.swapchain_states.lock().get_mut(&raw.as_raw()),
+        ) {
+            s.present_families |= 1 << family;
+        }
+    }
+
+    /// Records the queue family a queue of the device belongs to.
+    pub(crate) fn queue_family_of(&self, queue: vk::Queue, family: u32) {
+        self.queue_families.lock().insert(queue.as_raw(), family);
+    }
+
+    /// The queue family of a queue got through the wrappers.
+    pub(crate) fn queue_family(&self, queue: vk::Queue) -> Option<u32> {
+        self.queue_families.lock().get(&queue.as_raw()).copied()
+    }
+
+    /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, once read.
+    pub(crate) fn present_masks(&self) -> Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]> {
+        *self.present_masks.lock()
+    }
+
+    /// Records `VkDeviceGroupPresentCapabilitiesKHR::presentMask`.
+    pub(crate) fn set_present_masks(&self, masks: [u32; vk::MAX_DEVICE_GROUP_SIZE]) {
+        *self.present_masks.lock() = Some(masks);
     }
 
     /// The surface a live swapchain presents to.
@@ -864,11 +988,10 @@ impl Live {
 
     /// Image `index` of the swapchain was acquired.
     #[cfg(feature = "khr_swapchain")]
-    pub(crate) fn image_acquired(&self, raw: vk::SwapchainKHR, index: u32) {
+    pub(crate) fn image_acquired(&self, raw: vk::SwapchainKHR, index: u32, device_mask: u32) {
         if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
-            if !s.acquired.contains(&index) {
-                s.acquired.push(index);
-            }
+            s.acquired.retain(|(i, _)| *i != index);
+            s.acquired.push((index, device_mask));
         }
     }
 
@@ -876,7 +999,7 @@ impl Live {
     #[cfg(feature = "khr_swapchain")]
     pub(crate) fn image_presented(&self, raw: vk::SwapchainKHR, index: u32) {
         if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
-            s.acquired.retain(|i| *i != index);
+            s.acquired.retain(|(i, _)| *i != index);
         }
     }
 
@@ -892,16 +1015,68 @@ impl Live {
         let Some(record) = self.swapchains.lock().get(&raw.as_raw()).copied() else {
             return;
         };
-        let mut recorded = self.images.lock();
-        for image in images {
-            recorded.insert(image.as_raw(), record);
+        {
+            let mut recorded = self.images.lock();
+            for image in images {
+                recorded.insert(image.as_raw(), record);
+            }
         }
+        if let Some(s) = self.swapchain_states.lock().get_mut(&raw.as_raw()) {
+            s.images = images.to_vec();
+        }
+    }
+
+    /// Image `index` of a swapchain, if it is acquired and not presented since
+    /// (`Err(false)`: not acquired; `Err(true)`: acquired, but its image was never
+    /// returned by `get_swapchain_images_khr`).
+    #[cfg(feature = "khr_swapchain")]
+    pub(crate) fn acquired_image(
+        &self,
+        raw: vk::SwapchainKHR,
+        index: u32,
+    ) -> core::result::Result<(vk::Image, u32), bool> {
+        let states = self.swapchain_states.lock();
+        let Some(s) = states.get(&raw.as_raw()) else {
+            return Err(false);
+        };
+        let Some((_, mask)) = s.acquired.iter().find(|(i, _)| *i == index) else {
+            return Err(false);
+        };
+        let image = s.images.get(index as usize).copied().ok_or(true)?;
+        Ok((image, *mask))
     }
 
     /// The record of a live image made through the wrappers, or of a swapchain's
     /// image that `get_swapchain_images_khr` returned.
     pub(crate) fn image(&self, raw: vk::Image) -> Option<ImageRecord> {
         self.images.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// The layouts of an image's `len` subresources as the submissions so far
+    /// leave them.
+    pub(crate) fn image_layouts(&self, image: u64, len: usize) -> Vec<vk::ImageLayout> {
+        match self.layouts.lock().get(&image) {
+            Some(l) if l.len() == len => l.clone(),
+            _ => vec![vk::ImageLayout::UNDEFINED; len],
+        }
+    }
+
+    /// Records that a new image's subresources start `PREINITIALIZED`.
+    pub(crate) fn image_preinitialized(&self, image: vk::Image) {
+        if let Some(record) = self.image(image) {
+            let len = crate::layouts::Shape::of(&record).len();
+            self.layouts
+                .lock()
+                .insert(image.as_raw(), vec![vk::ImageLayout::PREINITIALIZED; len]);
+        }
+    }
+
+    /// Records the layouts a submission leaves an image's subresources in.
+    pub(crate) fn set_image_layouts(&self, image: u64, layouts: Vec<vk::ImageLayout>) {
+        // Only a listed image: one destroyed since the check keeps no entry.
+        if self.images.lock().contains_key(&image) {
+            self.layouts.lock().insert(image, layouts);
+        }
     }
 
     /// The record of a live buffer made through the wrappers.

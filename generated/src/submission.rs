@@ -250,6 +250,9 @@ struct UsesState {
     /// The secondaries the current recording executes, with their generation and
     /// link count then.
     secondaries: Vec<(Vrc<Uses>, u64, u64)>,
+    /// The image layouts the last recording needs at its start and leaves at its
+    /// end; `None` while recording, or when it names none.
+    layouts: Option<Vrc<crate::layouts::Recording>>,
 }
 
 impl Uses {
@@ -347,6 +350,7 @@ impl Uses {
             state.recording = false;
             state.executable = false;
             state.generation += 1;
+            state.layouts = None;
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -372,6 +376,7 @@ impl Uses {
             state.generation += 1;
             state.simultaneous = flags.contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
             state.one_time = flags.contains(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+            state.layouts = None;
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -383,6 +388,17 @@ impl Uses {
         let mut state = self.state.lock();
         state.recording = false;
         state.executable = executable;
+    }
+
+    /// The image layouts of the recording that just ended.
+    pub(crate) fn set_layouts(&self, layouts: crate::layouts::Recording) {
+        let layouts = (!layouts.is_empty()).then(|| Vrc::new(layouts));
+        self.state.lock().layouts = layouts;
+    }
+
+    /// The image layouts the last recording needs at its start and leaves.
+    pub(crate) fn layouts(&self) -> Option<Vrc<crate::layouts::Recording>> {
+        self.state.lock().layouts.clone()
     }
 
     /// The current recording executes `secondary`.
@@ -580,6 +596,31 @@ pub(crate) fn check_command_buffers(
     Ok(())
 }
 
+/// Refuses command buffers that need, at their start, image layouts other than
+/// those the device's earlier submissions and the command buffers before them in
+/// `cbs` leave (the rule of the command that named the layout).
+pub(crate) fn check_layouts(device: &Device, cbs: &[vk::CommandBuffer]) -> Result<()> {
+    let mut overlay = crate::layouts::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(layouts) = device.command_buffer_uses(*raw).and_then(|u| u.layouts()) {
+            overlay.check(&layouts)?;
+            overlay.apply(&layouts);
+        }
+    }
+    Ok(())
+}
+
+/// Records the image layouts that `cbs`, submitted in this order, leave.
+fn record_layouts(device: &Device, cbs: &[vk::CommandBuffer]) {
+    let mut overlay = crate::layouts::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(layouts) = device.command_buffer_uses(*raw).and_then(|u| u.layouts()) {
+            overlay.apply(&layouts);
+        }
+    }
+    overlay.commit();
+}
+
 /// Records a submission of `cbs` (and the secondaries they execute) and of what
 /// `kept` holds, made to `queue` with `fence`; the fence holds it from now on.
 pub(crate) fn submitted(
@@ -601,6 +642,7 @@ pub(crate) fn submitted(
             uses.mark(&sub);
         }
     }
+    record_layouts(device, cbs);
     if let Some(f) = fence {
         f.track(sub.clone());
     }

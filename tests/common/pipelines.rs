@@ -378,6 +378,7 @@ impl Pipelines {
                     &[],
                     &to_transfer,
                 )
+                .expect("recorded")
             };
             unsafe {
                 rec.cmd_copy_image_to_buffer(

@@ -624,6 +624,51 @@ pub(crate) fn attachment_uses(
     Pass::of(create_info).attachment_uses(&[])
 }
 
+/// Each attachment's initial and final layouts (`vkCreateRenderPass`: the stencil
+/// aspect's are the same).
+pub(crate) fn attachment_layouts(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<crate::retention::AttachmentLayouts> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+        .iter()
+        .map(|a| crate::retention::AttachmentLayouts {
+            initial: a.initial_layout,
+            last: a.final_layout,
+            stencil_initial: a.initial_layout,
+            stencil_last: a.final_layout,
+        })
+        .collect()
+}
+
+/// [`attachment_layouts`] for `vkCreateRenderPass2`, whose attachments may chain
+/// their stencil aspect's layouts.
+pub(crate) fn attachment_layouts2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<crate::retention::AttachmentLayouts> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+        .iter()
+        .map(|a| {
+            // SAFETY: the chain of a safe struct, and the type its sType names.
+            let stencil: Option<&vk::AttachmentDescriptionStencilLayout<'_>> = unsafe {
+                super::chained(
+                    a.p_next,
+                    vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
+                )
+            };
+            crate::retention::AttachmentLayouts {
+                initial: a.initial_layout,
+                last: a.final_layout,
+                stencil_initial: stencil.map_or(a.initial_layout, |s| s.stencil_initial_layout),
+                stencil_last: stencil.map_or(a.final_layout, |s| s.stencil_final_layout),
+            }
+        })
+        .collect()
+}
+
 /// [`attachment_uses`] for `vkCreateRenderPass2`, whose subpasses may chain a
 /// depth/stencil resolve.
 pub(crate) fn attachment_uses2(

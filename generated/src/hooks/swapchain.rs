@@ -379,7 +379,12 @@ pub(crate) fn acquire_next_image_khr_done(
             Vec::new(),
         );
     }
-    device.live().image_acquired(swapchain.raw(), index);
+    // An image acquired with vkAcquireNextImageKHR is acquired for every physical
+    // device of the logical device.
+    let all = (1u64 << device.live().physical_count().min(32)) - 1;
+    device
+        .live()
+        .image_acquired(swapchain.raw(), index, all as u32);
 }
 
 /// The checks of `vkAcquireNextImage2KHR` that [`acquire_checks`] makes.
@@ -415,5 +420,7 @@ pub(crate) fn acquire_next_image2_khr_done(
             None,
         );
     }
-    device.live().image_acquired(acquire_info.swapchain, index);
+    device
+        .live()
+        .image_acquired(acquire_info.swapchain, index, acquire_info.device_mask);
 }

@@ -507,6 +507,9 @@ pub(crate) fn image_view_created(
                     && identity(c.b, vk::ComponentSwizzle::B)
                     && identity(c.a, vk::ComponentSwizzle::A),
                 usage: view_usage(&image, r.aspect_mask, usage.map(|u| u.usage)),
+                aspect: r.aspect_mask,
+                base_level: r.base_mip_level,
+                base_layer: r.base_array_layer,
             },
         );
     }

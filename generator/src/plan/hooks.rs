@@ -136,6 +136,12 @@ const CBS: &str = "checks each command buffer's lifecycle state, kept by the wra
 const SECONDARY: &str = "checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet";
 const TIMELINE_VALUES: &str =
     "checks each batch gives one value per timeline semaphore it waits on or signals";
+const LAYOUT: &str = "checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them)";
+const PRESENTED: &str = "checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout)";
+const LAYOUT_PASS: &str = "checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, \"the render pass initial layout ... and the previous known layout of the attachment ... must match\")";
+const UNPROVEN_SURFACE_SUPPORT: &str = "checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface";
+const GROUP_PRESENT: &str = "checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them)";
+const LAYOUT_TRANSFERS: &str = "partly checked: the old layout is checked as the layouts of copies are (a test breaks it through the safe method and the layer names it for the unchecked one), except in a barrier that transfers queue family ownership, whose release and acquire name the same old layout and which the recorder cannot yet tell apart";
 const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
 const POOL_FAMILY: &str =
@@ -506,6 +512,7 @@ pub const SPECIALS: &[Special] = &[
         command: "vkCmdExecuteCommands",
         check: call("hooks::cmd_execute_commands_checks", &["self", "command_buffers"]),
         before: call("hooks::cmd_execute_commands_before", &["self", "command_buffers"]),
+        after: call("hooks::execute_layouts_done", &["self", "command_buffers"]),
         settles: &[(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
             How::Dynamic("refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing"),
@@ -587,6 +594,15 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkQueuePresentKHR-pWaitSemaphores-03268", How::Dynamic(BINARY_STATE)),
             ("VUID-vkQueuePresentKHR-pWaitSemaphores-01295", How::User(SAME_AS_03268)),
             ("VUID-vkQueuePresentKHR-pWaitSemaphores-01294", How::User(ONE_WAITER)),
+            ("VUID-VkPresentInfoKHR-pImageIndices-01296", How::Dynamic(PRESENTED)),
+            ("VUID-vkQueuePresentKHR-pSwapchains-01292", How::User(UNPROVEN_SURFACE_SUPPORT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-mode-01298", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-mode-01299", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-mode-01300", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-mode-01301", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302", How::Dynamic(GROUP_PRESENT)),
+            ("VUID-VkDeviceGroupPresentInfoKHR-mode-01303", How::Dynamic(GROUP_PRESENT)),
         ],
         ..NONE
     },
@@ -937,12 +953,28 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdBeginRenderPass",
-        after: call("hooks::render_pass_begun", &["&mut self", "render_pass_begin"]),
+        check: call(
+            "hooks::render_pass_layout_checks",
+            &["&self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
+        ),
+        after: call(
+            "hooks::render_pass_begun",
+            &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
+        ),
+        settles: &[("VUID-vkCmdBeginRenderPass-initialLayout-00900", How::Dynamic(LAYOUT_PASS))],
         ..NONE
     },
     Special {
         command: "vkCmdBeginRenderPass2",
-        after: call("hooks::render_pass_begun", &["&mut self", "render_pass_begin"]),
+        check: call(
+            "hooks::render_pass_layout_checks",
+            &["&self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
+        ),
+        after: call(
+            "hooks::render_pass_begun",
+            &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
+        ),
+        settles: &[("VUID-vkCmdBeginRenderPass2-initialLayout-03100", How::Dynamic(LAYOUT_PASS))],
         ..NONE
     },
     Special {
@@ -1569,6 +1601,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateFramebuffer",
         check_last: call("hooks::create_framebuffer_checks", &["self", "create_info"]),
+        created: call("hooks::framebuffer_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-vkCreateFramebuffer-pCreateInfo-02777", How::User(UNPROVEN_OTHER_DEVICE_VIEW)),
             ("VUID-VkFramebufferCreateInfo-attachmentCount-00876", How::Dynamic(FRAMEBUFFER_ATTACHMENTS)),
@@ -1785,12 +1818,119 @@ pub const SPECIALS: &[Special] = &[
     bound!("vkCmdDispatchIndirect", COMPUTE, How::Dynamic(SETS_BOUND)),
     bound!("vkCmdDispatchBase", COMPUTE, How::Dynamic(SETS_BOUND)),
     Special {
+        command: "vkCmdCopyImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdCopyImage-srcImageLayout-00128", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdCopyImage-dstImageLayout-00133", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBlitImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdBlitImage-srcImageLayout-00221", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdBlitImage-dstImageLayout-00226", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResolveImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdResolveImage-srcImageLayout-00260", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdResolveImage-dstImageLayout-00262", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyImage2",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::CopyImage2(copy_image_info)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::CopyImage2(copy_image_info)"]),
+        settles: &[
+            ("VUID-VkCopyImageInfo2-srcImageLayout-00128", How::Dynamic(LAYOUT)),
+            ("VUID-VkCopyImageInfo2-dstImageLayout-00133", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBlitImage2",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::BlitImage2(blit_image_info)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::BlitImage2(blit_image_info)"]),
+        settles: &[
+            ("VUID-VkBlitImageInfo2-srcImageLayout-00221", How::Dynamic(LAYOUT)),
+            ("VUID-VkBlitImageInfo2-dstImageLayout-00226", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResolveImage2",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ResolveImage2(resolve_image_info)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ResolveImage2(resolve_image_info)"]),
+        settles: &[
+            ("VUID-VkResolveImageInfo2-srcImageLayout-00260", How::Dynamic(LAYOUT)),
+            ("VUID-VkResolveImageInfo2-dstImageLayout-00262", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearColorImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearColorImage-imageLayout-00004", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearDepthStencilImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearDepthStencilImage-imageLayout-00011", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdPipelineBarrier",
+        check: call("hooks::cmd_pipeline_barrier_checks", &["self", "image_memory_barriers"]),
+        after: call("hooks::cmd_pipeline_barrier_done", &["self", "image_memory_barriers"]),
+        settles: &[("VUID-VkImageMemoryBarrier-oldLayout-01197", How::User(LAYOUT_TRANSFERS))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdWaitEvents",
+        check: call("hooks::cmd_pipeline_barrier_checks", &["self", "image_memory_barriers"]),
+        after: call("hooks::cmd_pipeline_barrier_done", &["self", "image_memory_barriers"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdPipelineBarrier2",
+        check: call("hooks::dependency_checks", &["self", "core::slice::from_ref(dependency_info)"]),
+        after: call("hooks::dependency_done", &["self", "core::slice::from_ref(dependency_info)"]),
+        settles: &[("VUID-VkImageMemoryBarrier2-oldLayout-01197", How::User(LAYOUT_TRANSFERS))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdWaitEvents2",
+        check: call("hooks::dependency_checks", &["self", "dependency_infos"]),
+        after: call("hooks::dependency_done", &["self", "dependency_infos"]),
+        ..NONE
+    },
+    Special {
         command: "vkCmdCopyBufferToImage",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::BufferToImage(dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::BufferToImage(dst_image.raw(), dst_image_layout, regions)"]),
         check_last: call(
             "hooks::cmd_copy_buffer_to_image_checks",
             &["self", "src_buffer", "dst_image", "regions"],
         ),
-        settles: &[(
+        settles: &[
+            ("VUID-vkCmdCopyBufferToImage-dstImageLayout-00180", How::Dynamic(LAYOUT)),(
             "VUID-vkCmdCopyBufferToImage-pRegions-00171",
             How::Dynamic(BUFFER_IMAGE_RANGE),
         )],
@@ -1798,11 +1938,14 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdCopyImageToBuffer",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ImageToBuffer(src_image.raw(), src_image_layout, regions)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ImageToBuffer(src_image.raw(), src_image_layout, regions)"]),
         check_last: call(
             "hooks::cmd_copy_image_to_buffer_checks",
             &["self", "src_image", "dst_buffer", "regions"],
         ),
-        settles: &[(
+        settles: &[
+            ("VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189", How::Dynamic(LAYOUT)),(
             "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
             How::Dynamic(BUFFER_IMAGE_RANGE),
         )],
@@ -1810,11 +1953,14 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdCopyBufferToImage2",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info)"]),
         check_last: call(
             "hooks::cmd_copy_buffer_to_image2_checks",
             &["self", "copy_buffer_to_image_info"],
         ),
-        settles: &[(
+        settles: &[
+            ("VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180", How::Dynamic(LAYOUT)),(
             "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
             How::Dynamic(BUFFER_IMAGE_RANGE),
         )],
@@ -1822,11 +1968,14 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdCopyImageToBuffer2",
+        check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info)"]),
+        after: call("hooks::image_layouts_named", &["self", "crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info)"]),
         check_last: call(
             "hooks::cmd_copy_image_to_buffer2_checks",
             &["self", "copy_image_to_buffer_info"],
         ),
-        settles: &[(
+        settles: &[
+            ("VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189", How::Dynamic(LAYOUT)),(
             "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
             How::Dynamic(BUFFER_IMAGE_RANGE),
         )],

@@ -994,25 +994,31 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(
-            Framebuffer::from_raw(
-                out,
+            crate::hooks::framebuffer_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::framebuffer_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                Framebuffer::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::framebuffer_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }

@@ -550,6 +550,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                     command_buffers_raw.as_ptr(),
                 )
             };
+            crate::hooks::execute_layouts_done(self, command_buffers);
         }
         Ok(())
     }
@@ -634,7 +635,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 35 (exp
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::cmd_pipeline_barrier_checks(self, image_memory_barriers)?;
         {
             let r = self
                 .validate_cmd_pipeline_barrier(
@@ -645,9 +647,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 35 (exp
                     buffer_memory_barriers,
                     image_memory_barriers,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -666,7 +666,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 35 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier-srcStageMask-04090`, `VUID-vkCmdPipelineBarrier-srcStageMask-04091`, `VUID-vkCmdPipelineBarrier-dstStageMask-04090`, `VUID-vkCmdPipelineBarrier-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier-srcStageMask-04090`, `VUID-vkCmdPipelineBarrier-srcStageMask-04091`, `VUID-vkCmdPipelineBarrier-dstStageMask-04090`, `VUID-vkCmdPipelineBarrier-dstStageMask-04091`, `VUID-VkImageMemoryBarrier-oldLayout-01197`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier_unchecked<'a>(
         &mut self,
@@ -676,51 +676,55 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_pipeline_barrier;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_stage_mask,
-                dst_stage_mask,
-                dependency_flags,
-                memory_barriers.len() as u32,
-                memory_barriers.as_ptr().cast(),
-                buffer_memory_barriers.len() as u32,
-                buffer_memory_barriers.as_ptr().cast(),
-                image_memory_barriers.len() as u32,
-                image_memory_barriers.as_ptr().cast(),
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in buffer_memory_barriers.iter() {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
-                };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_stage_mask,
+                    dst_stage_mask,
+                    dependency_flags,
+                    memory_barriers.len() as u32,
+                    memory_barriers.as_ptr().cast(),
+                    buffer_memory_barriers.len() as u32,
+                    buffer_memory_barriers.as_ptr().cast(),
+                    image_memory_barriers.len() as u32,
+                    image_memory_barriers.as_ptr().cast(),
+                )
+            };
+            crate::hooks::cmd_pipeline_barrier_done(self, image_memory_barriers);
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in buffer_memory_barriers.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in image_memory_barriers.iter() {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
-                };
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in image_memory_barriers.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdPushConstants`
 
@@ -1299,7 +1303,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::cmd_pipeline_barrier_checks(self, image_memory_barriers)?;
         {
             let r = self
                 .validate_cmd_wait_events(
@@ -1310,9 +1315,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
                     buffer_memory_barriers,
                     image_memory_barriers,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1341,59 +1344,63 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_wait_events;
-        for h in events {
-            self.retain(h.retained());
-        }
-        let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
-            .iter()
-            .map(|h| h.raw())
-            .collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                events.len() as u32,
-                events_raw.as_ptr(),
-                src_stage_mask,
-                dst_stage_mask,
-                memory_barriers.len() as u32,
-                memory_barriers.as_ptr().cast(),
-                buffer_memory_barriers.len() as u32,
-                buffer_memory_barriers.as_ptr().cast(),
-                image_memory_barriers.len() as u32,
-                image_memory_barriers.as_ptr().cast(),
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in buffer_memory_barriers.iter() {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
-                };
+        {
+            for h in events {
+                self.retain(h.retained());
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in image_memory_barriers.iter() {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
-                };
+            let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
+                .iter()
+                .map(|h| h.raw())
+                .collect();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    events.len() as u32,
+                    events_raw.as_ptr(),
+                    src_stage_mask,
+                    dst_stage_mask,
+                    memory_barriers.len() as u32,
+                    memory_barriers.as_ptr().cast(),
+                    buffer_memory_barriers.len() as u32,
+                    buffer_memory_barriers.as_ptr().cast(),
+                    image_memory_barriers.len() as u32,
+                    image_memory_barriers.as_ptr().cast(),
+                )
+            };
+            crate::hooks::cmd_pipeline_barrier_done(self, image_memory_barriers);
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in buffer_memory_barriers.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in image_memory_barriers.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
+            }
         }
+        Ok(())
     }
     /**`vkCmdWriteTimestamp`
 
@@ -1464,13 +1471,12 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginRenderPass-initialLayout-00895`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
 - `VUID-vkCmdBeginRenderPass-initialLayout-00897`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-vkCmdBeginRenderPass-initialLayout-00898`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
 - `VUID-vkCmdBeginRenderPass-initialLayout-00899`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-vkCmdBeginRenderPass-initialLayout-00900`: If the `initialLayout` member of any of the `VkAttachmentDescription` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is not `VK_IMAGE_LAYOUT_UNDEFINED`, then each such `initialLayout` must be equal to the current layout of the corresponding attachment image subresource of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin`
 - `VUID-vkCmdBeginRenderPass-srcStageMask-06451`: The `srcStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass-dstStageMask-06452`: The `dstStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass-framebuffer-02532`: For any attachment in `framebuffer` that is used by `renderPass` and is bound to memory locations that are also bound to another attachment used by `renderPass`, and if at least one of those uses causes either attachment to be written to, both attachments must have had the `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT` set
@@ -1513,6 +1519,7 @@ The caller upholds these 42 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass.html). Settled by the wrappers:
 
+- `VUID-vkCmdBeginRenderPass-initialLayout-00900`: dynamic (checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, "the render pass initial layout ... and the previous known layout of the attachment ... must match"))
 - `VUID-vkCmdBeginRenderPass-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1522,15 +1529,23 @@ The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khro
 - `VUID-vkCmdBeginRenderPass-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
+        let always: Result<()> = crate::hooks::render_pass_layout_checks(
+            &self,
+            render_pass_begin,
+            "VUID-vkCmdBeginRenderPass-initialLayout-00900",
+        );
         {
-            let r = self.validate_cmd_begin_render_pass(render_pass_begin, contents);
+            let r = always
+                .and_then(|()| {
+                    self.validate_cmd_begin_render_pass(render_pass_begin, contents)
+                });
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -1545,7 +1560,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, `VUID-vkCmdBeginRenderPass-initialLayout-00900`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass_unchecked<'a>(
         mut self,
@@ -1561,7 +1576,11 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
                 contents,
             )
         };
-        crate::hooks::render_pass_begun(&mut self, render_pass_begin);
+        crate::hooks::render_pass_begun(
+            &mut self,
+            render_pass_begin,
+            "VUID-vkCmdBeginRenderPass-initialLayout-00900",
+        );
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
@@ -1582,7 +1601,7 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
 
 # Safety
 
-The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBlitImage-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdBlitImage-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -1591,9 +1610,7 @@ The caller upholds these 27 rules that no check of this method enforces (its com
 - `VUID-vkCmdBlitImage-pRegions-00216`: The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
 - `VUID-vkCmdBlitImage-pRegions-00217`: The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
 - `VUID-vkCmdBlitImage-srcImage-01999`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-vkCmdBlitImage-srcImageLayout-00221`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdBlitImage-dstImage-02000`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-vkCmdBlitImage-dstImageLayout-00226`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdBlitImage-srcImage-00229`: If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
 - `VUID-vkCmdBlitImage-srcImage-00230`: If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
 - `VUID-vkCmdBlitImage-srcImage-00231`: If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
@@ -1618,8 +1635,10 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 
 - `VUID-vkCmdBlitImage-srcImage-00219`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdBlitImage-srcImage-00220`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdBlitImage-srcImageLayout-00221`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdBlitImage-dstImage-00224`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdBlitImage-dstImage-00225`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdBlitImage-dstImageLayout-00226`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdBlitImage-srcSubresource-01705`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdBlitImage-dstSubresource-01706`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdBlitImage-srcSubresource-01707`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
@@ -1648,7 +1667,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-srcImageLayout-00222`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdBlitImage-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 29 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_blit_image(
         &mut self,
@@ -1658,7 +1677,17 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29 (exp
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::BlitImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         {
             let r = self
                 .validate_cmd_blit_image(
@@ -1669,9 +1698,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29 (exp
                     regions,
                     filter,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1690,7 +1717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_blit_image_unchecked(
         &mut self,
@@ -1700,32 +1727,44 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_blit_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-                filter,
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                    filter,
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::BlitImage(
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions,
+                ),
+            );
+            self.retain_with(src_image.address(), || src_image.retained());
+            self.retain_with(dst_image.address(), || dst_image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdClearColorImage`
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdClearColorImage-image-01993`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-vkCmdClearColorImage-imageLayout-00004`: `imageLayout` must specify the layout of the image subresource ranges of `image` specified in `pRanges` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdClearColorImage-aspectMask-02498`: The VkImageSubresourceRange::`aspectMask` members of the elements of the `pRanges` array must each only include `VK_IMAGE_ASPECT_COLOR_BIT`
 - `VUID-vkCmdClearColorImage-baseMipLevel-01470`: The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
 - `VUID-vkCmdClearColorImage-baseArrayLayer-01472`: The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
@@ -1741,6 +1780,7 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 
 - `VUID-vkCmdClearColorImage-image-00002`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdClearColorImage-image-00003`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdClearColorImage-imageLayout-00004`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdClearColorImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearColorImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdClearColorImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1753,10 +1793,10 @@ The rules are on [`vkCmdClearColorImage`'s reference page](https://registry.khro
 - `VUID-vkCmdClearColorImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdClearColorImage-imageLayout-00005`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
+Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 11: explicit rule; the wrappers do not check it*/
+- 10: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_clear_color_image(
         &mut self,
@@ -1764,12 +1804,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
         image_layout: vk::ImageLayout,
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
+        )?;
         {
             let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1781,7 +1823,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_clear_color_image_unchecked(
         &mut self,
@@ -1789,32 +1831,38 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
         image_layout: vk::ImageLayout,
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_clear_color_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                image.raw(),
-                image_layout,
-                color as *const vk::ClearColorValue as *const _,
-                ranges.len() as u32,
-                ranges.as_ptr().cast(),
-            )
-        };
-        self.retain_with(image.address(), || image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    image.raw(),
+                    image_layout,
+                    color as *const vk::ClearColorValue as *const _,
+                    ranges.len() as u32,
+                    ranges.as_ptr().cast(),
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
+            );
+            self.retain_with(image.address(), || image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdClearDepthStencilImage`
 
 # Safety
 
-The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdClearDepthStencilImage-image-01994`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `image`
 - `VUID-vkCmdClearDepthStencilImage-pRanges-02659`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `image`
 - `VUID-vkCmdClearDepthStencilImage-pRanges-02660`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_DEPTH_BIT`, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `image`
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`: `imageLayout` must specify the layout of the image subresource ranges of `image` specified in `pRanges` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`: `imageLayout` must be either of `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`: The VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include bits other than `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-vkCmdClearDepthStencilImage-image-02825`: If the `image`&#8217;s format does not have a stencil component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the `VK_IMAGE_ASPECT_STENCIL_BIT` bit
@@ -1830,6 +1878,7 @@ The caller upholds these 14 rules that no check of this method enforces (its com
 The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html). Settled by the wrappers:
 
 - `VUID-vkCmdClearDepthStencilImage-image-00010`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdClearDepthStencilImage-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1842,10 +1891,10 @@ The rules are on [`vkCmdClearDepthStencilImage`'s reference page](https://regist
 - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdClearDepthStencilImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17.
+Left to the caller (listed one by one in the crate's `validation.json`): 16.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 15: explicit rule; the wrappers do not check it*/
+- 14: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_clear_depth_stencil_image(
         &mut self,
@@ -1853,7 +1902,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
         image_layout: vk::ImageLayout,
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges),
+        )?;
         {
             let r = self
                 .validate_cmd_clear_depth_stencil_image(
@@ -1862,9 +1915,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
                     depth_stencil,
                     ranges,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1881,7 +1932,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_clear_depth_stencil_image_unchecked(
         &mut self,
@@ -1889,20 +1940,27 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
         image_layout: vk::ImageLayout,
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_clear_depth_stencil_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                image.raw(),
-                image_layout,
-                depth_stencil as *const vk::ClearDepthStencilValue as *const _,
-                ranges.len() as u32,
-                ranges.as_ptr().cast(),
-            )
-        };
-        self.retain_with(image.address(), || image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    image.raw(),
+                    image_layout,
+                    depth_stencil as *const vk::ClearDepthStencilValue as *const _,
+                    ranges.len() as u32,
+                    ranges.as_ptr().cast(),
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges),
+            );
+            self.retain_with(image.address(), || image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdCopyBuffer`
 
@@ -1988,7 +2046,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
 
 # Safety
 
-The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -2014,7 +2072,6 @@ The caller upholds these 36 rules that no check of this method enforces (its com
 - `VUID-vkCmdCopyBufferToImage-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
 - `VUID-vkCmdCopyBufferToImage-pRegions-00173`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-vkCmdCopyBufferToImage-dstImage-00179`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdCopyBufferToImage-pRegions-06217`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `dstImage`
 - `VUID-vkCmdCopyBufferToImage-pRegions-07740`: If {imageparam} has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
 - `VUID-vkCmdCopyBufferToImage-pRegions-07741`: If {imageparam} has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
@@ -2036,6 +2093,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00178`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyBufferToImage-pRegions-06218`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -2053,7 +2111,7 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 35 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image(
         &mut self,
@@ -2062,6 +2120,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 35 (exp
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::BufferToImage(
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         {
             let r = self
                 .validate_cmd_copy_buffer_to_image(
@@ -2093,7 +2159,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 35 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
@@ -2115,6 +2181,14 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
                     regions.as_ptr().cast(),
                 )
             };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::BufferToImage(
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions,
+                ),
+            );
             self.retain_with(src_buffer.address(), || src_buffer.retained());
             self.retain_with(dst_image.address(), || dst_image.retained());
         }
@@ -2124,14 +2198,12 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
 
 # Safety
 
-The caller upholds these 48 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
 - `VUID-vkCmdCopyImage-commandBuffer-01827`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdCopyImage-pRegions-00124`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-vkCmdCopyImage-srcImageLayout-00128`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
-- `VUID-vkCmdCopyImage-dstImageLayout-00133`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdCopyImage-srcImage-00136`: The sample count of `srcImage` and `dstImage` must match
 - `VUID-vkCmdCopyImage-srcOffset-01783`: The `srcOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
 - `VUID-vkCmdCopyImage-dstOffset-01784`: The `dstOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
@@ -2179,6 +2251,8 @@ The caller upholds these 48 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyImage-srcImageLayout-00128`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
+- `VUID-vkCmdCopyImage-dstImageLayout-00133`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdCopyImage-srcSubresource-01696`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImage-dstSubresource-01697`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImage-srcSubresource-01698`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
@@ -2210,7 +2284,7 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-srcImageLayout-00129`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 58 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_image(
         &mut self,
@@ -2219,7 +2293,17 @@ Left to the caller (listed one by one in the crate's `validation.json`): 58 (exp
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::CopyImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         {
             let r = self
                 .validate_cmd_copy_image(
@@ -2229,9 +2313,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 58 (exp
                     dst_image_layout,
                     regions,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -2249,7 +2331,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 58 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, `VUID-vkCmdCopyImage-srcImageLayout-00128`, `VUID-vkCmdCopyImage-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_unchecked(
         &mut self,
@@ -2258,28 +2340,41 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_copy_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::CopyImage(
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions,
+                ),
+            );
+            self.retain_with(src_image.address(), || src_image.retained());
+            self.retain_with(dst_image.address(), || dst_image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdCopyImageToBuffer`
 
 # Safety
 
-The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
@@ -2304,7 +2399,6 @@ The caller upholds these 34 rules that no check of this method enforces (its com
 - `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
 - `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: `srcImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdCopyImageToBuffer-pRegions-06220`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `srcImage`
 - `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: If {imageparam} has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
 - `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: If {imageparam} has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
@@ -2325,6 +2419,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImageToBuffer-pRegions-06221`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
@@ -2342,7 +2437,7 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer(
         &mut self,
@@ -2351,6 +2446,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ImageToBuffer(
+                src_image.raw(),
+                src_image_layout,
+                regions,
+            ),
+        )?;
         {
             let r = self
                 .validate_cmd_copy_image_to_buffer(
@@ -2382,7 +2485,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
@@ -2404,6 +2507,14 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
                     regions.as_ptr().cast(),
                 )
             };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ImageToBuffer(
+                    src_image.raw(),
+                    src_image_layout,
+                    regions,
+                ),
+            );
             self.retain_with(src_image.address(), || src_image.retained());
             self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         }
@@ -2889,7 +3000,7 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdResolveImage-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdResolveImage-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -2897,8 +3008,6 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 - `VUID-vkCmdResolveImage-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-vkCmdResolveImage-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-vkCmdResolveImage-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdResolveImage-srcImageLayout-00260`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
-- `VUID-vkCmdResolveImage-dstImageLayout-00262`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdResolveImage-dstImage-02003`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
 - `VUID-vkCmdResolveImage-srcImage-01386`: `srcImage` and `dstImage` must have been created with the same image format
 - `VUID-vkCmdResolveImage-srcImage-04446`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
@@ -2919,6 +3028,8 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 
 - `VUID-vkCmdResolveImage-srcImage-00256`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdResolveImage-dstImage-00258`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdResolveImage-srcImageLayout-00260`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
+- `VUID-vkCmdResolveImage-dstImageLayout-00262`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdResolveImage-srcSubresource-01709`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdResolveImage-dstSubresource-01710`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdResolveImage-srcSubresource-01711`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
@@ -2946,7 +3057,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-srcImageLayout-00261`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-vkCmdResolveImage-dstImageLayout-00263`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 22 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_resolve_image(
         &mut self,
@@ -2955,7 +3066,17 @@ Left to the caller (listed one by one in the crate's `validation.json`): 22 (exp
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ResolveImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         {
             let r = self
                 .validate_cmd_resolve_image(
@@ -2965,9 +3086,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 22 (exp
                     dst_image_layout,
                     regions,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -2985,7 +3104,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 22 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_resolve_image_unchecked(
         &mut self,
@@ -2994,22 +3113,35 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_resolve_image;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                src_image.raw(),
-                src_image_layout,
-                dst_image.raw(),
-                dst_image_layout,
-                regions.len() as u32,
-                regions.as_ptr().cast(),
-            )
-        };
-        self.retain_with(src_image.address(), || src_image.retained());
-        self.retain_with(dst_image.address(), || dst_image.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions.len() as u32,
+                    regions.as_ptr().cast(),
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ResolveImage(
+                    src_image.raw(),
+                    src_image_layout,
+                    dst_image.raw(),
+                    dst_image_layout,
+                    regions,
+                ),
+            );
+            self.retain_with(src_image.address(), || src_image.retained());
+            self.retain_with(dst_image.address(), || dst_image.retained());
+        }
+        Ok(())
     }
     /**`vkCmdSetEvent`
 

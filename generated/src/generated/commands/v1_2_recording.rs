@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: Both the `framebuffer` and `renderPass` members of `pRenderPassBegin` must have been created on the same VkDevice that `commandBuffer` was allocated on
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
@@ -15,7 +15,6 @@ The caller upholds these 43 rules that no check of this method enforces (its com
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: If the `initialLayout` member of any of the `VkAttachmentDescription` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is not `VK_IMAGE_LAYOUT_UNDEFINED`, then each such `initialLayout` must be equal to the current layout of the corresponding attachment image subresource of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin`
 - `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`: The `srcStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`: The `dstStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass2-framebuffer-02533`: For any attachment in `framebuffer` that is used by `renderPass` and is bound to memory locations that are also bound to another attachment used by `renderPass`, and if at least one of those uses causes either attachment to be written to, both attachments must have had the `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT` set
@@ -57,6 +56,7 @@ The caller upholds these 43 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass2.html). Settled by the wrappers:
 
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: dynamic (checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, "the render pass initial layout ... and the previous known layout of the attachment ... must match"))
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginRenderPass2-pSubpassBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -66,16 +66,27 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 - `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass2<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
+        let always: Result<()> = crate::hooks::render_pass_layout_checks(
+            &self,
+            render_pass_begin,
+            "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
+        );
         {
-            let r = self
-                .validate_cmd_begin_render_pass2(render_pass_begin, subpass_begin_info);
+            let r = always
+                .and_then(|()| {
+                    self
+                        .validate_cmd_begin_render_pass2(
+                            render_pass_begin,
+                            subpass_begin_info,
+                        )
+                });
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -92,7 +103,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, `VUID-vkCmdBeginRenderPass2-initialLayout-03100`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
         mut self,
@@ -108,7 +119,11 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
             )
         };
-        crate::hooks::render_pass_begun(&mut self, render_pass_begin);
+        crate::hooks::render_pass_begun(
+            &mut self,
+            render_pass_begin,
+            "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
+        );
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();

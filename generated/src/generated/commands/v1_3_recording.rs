@@ -132,7 +132,7 @@ The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run ti
 
 # Safety
 
-The caller upholds these 27 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBlitImage2-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdBlitImage2-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -141,9 +141,7 @@ The caller upholds these 27 rules that no check of this method enforces (its com
 - `VUID-VkBlitImageInfo2-pRegions-00216`: The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
 - `VUID-VkBlitImageInfo2-pRegions-00217`: The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
 - `VUID-VkBlitImageInfo2-srcImage-01999`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-VkBlitImageInfo2-srcImageLayout-00221`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkBlitImageInfo2-dstImage-02000`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-VkBlitImageInfo2-dstImageLayout-00226`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkBlitImageInfo2-srcImage-00229`: If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
 - `VUID-VkBlitImageInfo2-srcImage-00230`: If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
 - `VUID-VkBlitImageInfo2-srcImage-00231`: If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
@@ -175,12 +173,17 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_blit_image2<'a>(&mut self, blit_image_info: &BlitImageInfo2<'a>) {
+    pub unsafe fn cmd_blit_image2<'a>(
+        &mut self,
+        blit_image_info: &BlitImageInfo2<'a>,
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::BlitImage2(blit_image_info),
+        )?;
         {
             let r = self.validate_cmd_blit_image2(blit_image_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -190,29 +193,38 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, `VUID-VkBlitImageInfo2-srcImageLayout-00221`, `VUID-VkBlitImageInfo2-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_blit_image2_unchecked<'a>(
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_blit_image2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(self.raw(), blit_image_info as *const BlitImageInfo2<'a> as *const _)
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(blit_image_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::blit_image_info2(e.as_raw(), live, &mut kept) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(self.raw(), blit_image_info as *const BlitImageInfo2<'a> as *const _)
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::BlitImage2(blit_image_info),
+            );
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(blit_image_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::blit_image_info2(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdCopyBuffer2`
 
@@ -285,7 +297,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
 
 # Safety
 
-The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -299,7 +311,6 @@ The caller upholds these 34 rules that no check of this method enforces (its com
 - `VUID-VkCopyBufferToImageInfo2-pRegions-00172`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `dstImage`
 - `VUID-VkCopyBufferToImageInfo2-pRegions-00173`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyBufferToImageInfo2-dstImage-00179`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkCopyBufferToImageInfo2-srcImage-00199`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
 - `VUID-VkCopyBufferToImageInfo2-srcImage-00201`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
 - `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
@@ -339,6 +350,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
+        )?;
         {
             let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
             r?;
@@ -352,7 +367,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
         &mut self,
@@ -368,6 +383,10 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
                         as *const _,
                 )
             };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
+            );
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -393,14 +412,12 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
 
 # Safety
 
-The caller upholds these 48 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage2-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage2-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
 - `VUID-vkCmdCopyImage2-commandBuffer-01827`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-VkCopyImageInfo2-pRegions-00124`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-VkCopyImageInfo2-srcImageLayout-00128`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
-- `VUID-VkCopyImageInfo2-dstImageLayout-00133`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkCopyImageInfo2-srcImage-00136`: The sample count of `srcImage` and `dstImage` must match
 - `VUID-VkCopyImageInfo2-srcOffset-01783`: The `srcOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
 - `VUID-VkCopyImageInfo2-dstOffset-01784`: The `dstOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
@@ -457,12 +474,17 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn cmd_copy_image2<'a>(&mut self, copy_image_info: &CopyImageInfo2<'a>) {
+    pub unsafe fn cmd_copy_image2<'a>(
+        &mut self,
+        copy_image_info: &CopyImageInfo2<'a>,
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::CopyImage2(copy_image_info),
+        )?;
         {
             let r = self.validate_cmd_copy_image2(copy_image_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -472,35 +494,44 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, `VUID-VkCopyImageInfo2-srcImageLayout-00128`, `VUID-VkCopyImageInfo2-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image2_unchecked<'a>(
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_copy_image2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(self.raw(), copy_image_info as *const CopyImageInfo2<'a> as *const _)
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(copy_image_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::copy_image_info2(e.as_raw(), live, &mut kept) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(self.raw(), copy_image_info as *const CopyImageInfo2<'a> as *const _)
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::CopyImage2(copy_image_info),
+            );
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(copy_image_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::copy_image_info2(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdCopyImageToBuffer2`
 
 # Safety
 
-The caller upholds these 32 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 31 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
@@ -513,7 +544,6 @@ The caller upholds these 32 rules that no check of this method enforces (its com
 - `VUID-VkCopyImageToBufferInfo2-pRegions-00182`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `srcImage`
 - `VUID-VkCopyImageToBufferInfo2-pRegions-00184`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00188`: `srcImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00199`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00201`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
 - `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
@@ -552,6 +582,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
+        )?;
         {
             let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
             r?;
@@ -565,7 +599,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
         &mut self,
@@ -581,6 +615,10 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
                         as *const _,
                 )
             };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
+            );
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -665,7 +703,7 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdResolveImage2-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdResolveImage2-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -676,8 +714,6 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 - `VUID-VkResolveImageInfo2-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkResolveImageInfo2-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkResolveImageInfo2-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkResolveImageInfo2-srcImageLayout-00260`: `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
-- `VUID-VkResolveImageInfo2-dstImageLayout-00262`: `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkResolveImageInfo2-dstImage-02003`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
 - `VUID-VkResolveImageInfo2-srcImage-01386`: `srcImage` and `dstImage` must have been created with the same image format
 - `VUID-VkResolveImageInfo2-srcImage-04446`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
@@ -705,12 +741,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     pub unsafe fn cmd_resolve_image2<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::image_layout_checks(
+            self,
+            crate::hooks::Names::ResolveImage2(resolve_image_info),
+        )?;
         {
             let r = self.validate_cmd_resolve_image2(resolve_image_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -720,34 +758,41 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, `VUID-VkResolveImageInfo2-srcImageLayout-00260`, `VUID-VkResolveImageInfo2-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_resolve_image2_unchecked<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_resolve_image2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
-            )
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(resolve_image_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe {
-                    crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
-                };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
+                )
+            };
+            crate::hooks::image_layouts_named(
+                self,
+                crate::hooks::Names::ResolveImage2(resolve_image_info),
+            );
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(resolve_image_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdSetEvent2`
 
@@ -1061,12 +1106,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
     pub unsafe fn cmd_pipeline_barrier2<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
-    ) {
+    ) -> Result<()> {
+        crate::hooks::dependency_checks(self, core::slice::from_ref(dependency_info))?;
         {
             let r = self.validate_cmd_pipeline_barrier2(dependency_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1076,29 +1120,35 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, `VUID-VkImageMemoryBarrier2-oldLayout-01197`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_pipeline_barrier2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
-        };
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(dependency_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
+            };
+            crate::hooks::dependency_done(self, core::slice::from_ref(dependency_info));
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in core::iter::once(dependency_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdSetCullMode`
 
@@ -1775,6 +1825,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
                 ),
             });
         }
+        crate::hooks::dependency_checks(self, dependency_infos)?;
         {
             let r = self.validate_cmd_wait_events2(events, dependency_infos);
             r?;
@@ -1812,6 +1863,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
                     dependency_infos.as_ptr().cast(),
                 )
             };
+            crate::hooks::dependency_done(self, dependency_infos);
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();

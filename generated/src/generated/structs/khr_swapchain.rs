@@ -8,6 +8,7 @@ use super::*;
 
 The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentInfoKHR.html). Settled by the wrappers:
 
+- `VUID-VkPresentInfoKHR-pImageIndices-01296`: dynamic (checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout))
 - `VUID-VkPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPresentInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -18,7 +19,7 @@ The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -1761,7 +1761,8 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 Left to the caller (listed one by one in the crate's `validation.json`): 41.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 38: explicit rule; the wrappers do not check it*/
+- 37: explicit rule; the wrappers do not check it
+- 1: partly checked: the old layout is checked as the layouts of copies are (a test breaks it through the safe method and the layer names it for the unchecked one), except in a barrier that transfers queue family ownership, whose release and acquire name the same old layout and which the recorder cannot yet tell apart*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {

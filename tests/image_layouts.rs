@@ -1,0 +1,879 @@
+//! Image layouts: every command that names the layout of an image's subresources
+//! is checked against the layout they are in when it executes, which the recorder
+//! follows through barriers, render passes and secondaries, and each submission
+//! through the submissions before it.
+//!
+//! Each rule is broken twice: through the safe method, which must refuse it with the
+//! rule's VUID, and through the `_unchecked` twin under the validation layer (told to
+//! skip the call it reports), which must name the same VUID. Programs that keep the
+//! rules run with no message from the layer.
+//!
+//! SAFETY of the `unsafe` blocks: the recording methods are `unsafe` for rules their
+//! `# Safety` sections list; these programs keep them (the images, buffers and
+//! regions are valid and in bounds) but for the layout each case names wrongly on
+//! purpose, which tuff refuses and the layer skips.
+
+#[path = "common/pipelines.rs"]
+mod pipelines;
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use pipelines::host_buffer;
+use tuff::vk;
+use tuff_setup::{setup, vuid, Setup};
+use vulkan::assert_silent;
+
+const UNDEFINED: vk::ImageLayout = vk::ImageLayout::UNDEFINED;
+const GENERAL: vk::ImageLayout = vk::ImageLayout::GENERAL;
+const SRC: vk::ImageLayout = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+const DST: vk::ImageLayout = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
+const SIDE: u32 = 4;
+
+/// Runs `unchecked` with the layer told to skip the call it reports, and fails
+/// unless the layer named `vuid`.
+fn layer_names(s: &Setup, vuid: &str, unchecked: impl FnOnce()) {
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    let messages = s.messages.take();
+    assert!(
+        messages.iter().any(|m| m.contains(vuid)),
+        "the validation layer did not report {vuid}; it said:\n{}",
+        messages.join("\n")
+    );
+}
+
+/// A `SIDE` x `SIDE` image of `format` and `samples` with memory.
+fn image(
+    s: &Setup,
+    format: vk::Format,
+    samples: vk::SampleCountFlags,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory) {
+    let image = s
+        .device
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(format)
+                .extent(vk::Extent3D {
+                    width: SIDE,
+                    height: SIDE,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(samples)
+                .usage(usage),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    (image, memory)
+}
+
+fn color_image(s: &Setup) -> (tuff::Image, tuff::DeviceMemory) {
+    image(
+        s,
+        vk::Format::R8G8B8A8_UNORM,
+        vk::SampleCountFlags::TYPE_1,
+        vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST,
+    )
+}
+
+fn range(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
+    vk::ImageSubresourceRange {
+        aspect_mask: aspect,
+        base_mip_level: 0,
+        level_count: 1,
+        base_array_layer: 0,
+        layer_count: 1,
+    }
+}
+
+fn layers(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceLayers {
+    vk::ImageSubresourceLayers {
+        aspect_mask: aspect,
+        mip_level: 0,
+        base_array_layer: 0,
+        layer_count: 1,
+    }
+}
+
+const COLOR: vk::ImageAspectFlags = vk::ImageAspectFlags::COLOR;
+const WHOLE: vk::Extent3D = vk::Extent3D {
+    width: SIDE,
+    height: SIDE,
+    depth: 1,
+};
+
+/// Records a barrier that moves the whole of `image` (aspects `aspect`) from `old`
+/// to `new`.
+fn transition(
+    rec: &mut tuff::Recorder<'_, tuff::Outside>,
+    image: &tuff::Image,
+    aspect: vk::ImageAspectFlags,
+    old: vk::ImageLayout,
+    new: vk::ImageLayout,
+) -> tuff::Result<()> {
+    let barrier = tuff::ImageMemoryBarrier::new(image)
+        .old_layout(old)
+        .new_layout(new)
+        .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+        .dst_access_mask(vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::TRANSFER_WRITE)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .subresource_range(range(aspect));
+    unsafe {
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::TRANSFER,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[barrier],
+        )
+    }
+}
+
+/// A command that names a layout, recorded checked (`false`) or unchecked (`true`).
+type Call<'a> = Box<dyn Fn(&mut tuff::Recorder<'_, tuff::Outside>, bool) -> tuff::Result<()> + 'a>;
+
+/// Every command that names an image layout, each after barriers that leave its
+/// images in other layouts than it names: refused with its rule, and named by the
+/// layer for the unchecked twin. The same commands with the right layouts record
+/// and run with no message.
+#[test]
+fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (a, _a_memory) = color_image(&s);
+    let (b, _b_memory) = color_image(&s);
+    let (depth, _depth_memory) = image(
+        &s,
+        vk::Format::D32_SFLOAT,
+        vk::SampleCountFlags::TYPE_1,
+        vk::ImageUsageFlags::TRANSFER_DST,
+    );
+    let (multi, _multi_memory) = image(
+        &s,
+        vk::Format::R8G8B8A8_UNORM,
+        vk::SampleCountFlags::TYPE_4,
+        vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::COLOR_ATTACHMENT,
+    );
+    let (buffer, _buffer_memory) = host_buffer(
+        &s,
+        u64::from(SIDE * SIDE * 4),
+        vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST,
+    );
+    let buffer_region = vk::BufferImageCopy {
+        buffer_offset: 0,
+        buffer_row_length: 0,
+        buffer_image_height: 0,
+        image_subresource: layers(COLOR),
+        image_offset: vk::Offset3D::default(),
+        image_extent: WHOLE,
+    };
+    let buffer_region2 = [tuff::BufferImageCopy2::new()
+        .image_subresource(layers(COLOR))
+        .image_extent(WHOLE)];
+    let copy = vk::ImageCopy {
+        src_subresource: layers(COLOR),
+        src_offset: vk::Offset3D::default(),
+        dst_subresource: layers(COLOR),
+        dst_offset: vk::Offset3D::default(),
+        extent: WHOLE,
+    };
+    let copy2 = [tuff::ImageCopy2::new()
+        .src_subresource(layers(COLOR))
+        .dst_subresource(layers(COLOR))
+        .extent(WHOLE)];
+    let corner = vk::Offset3D {
+        x: SIDE as i32,
+        y: SIDE as i32,
+        z: 1,
+    };
+    let blit = vk::ImageBlit {
+        src_subresource: layers(COLOR),
+        src_offsets: [vk::Offset3D::default(), corner],
+        dst_subresource: layers(COLOR),
+        dst_offsets: [vk::Offset3D::default(), corner],
+    };
+    let blit2 = [tuff::ImageBlit2::new()
+        .src_subresource(layers(COLOR))
+        .src_offsets([vk::Offset3D::default(), corner])
+        .dst_subresource(layers(COLOR))
+        .dst_offsets([vk::Offset3D::default(), corner])];
+    let resolve = vk::ImageResolve {
+        src_subresource: layers(COLOR),
+        src_offset: vk::Offset3D::default(),
+        dst_subresource: layers(COLOR),
+        dst_offset: vk::Offset3D::default(),
+        extent: WHOLE,
+    };
+    let resolve2 = [tuff::ImageResolve2::new()
+        .src_subresource(layers(COLOR))
+        .dst_subresource(layers(COLOR))
+        .extent(WHOLE)];
+    let clear = vk::ClearColorValue {
+        float32: [0.5, 0.5, 0.5, 1.0],
+    };
+    let clear_depth = vk::ClearDepthStencilValue {
+        depth: 1.0,
+        stencil: 0,
+    };
+    let depth_aspect = vk::ImageAspectFlags::DEPTH;
+
+    // Before each case the sources `a` and `multi` are moved to
+    // TRANSFER_SRC_OPTIMAL and the destinations `b` and `depth` to
+    // TRANSFER_DST_OPTIMAL; each case then names GENERAL for one of them.
+    let cases: Vec<(&str, Call<'_>)> = vec![
+        (
+            "VUID-vkCmdCopyBufferToImage-dstImageLayout-00180",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_copy_buffer_to_image_unchecked(&buffer, &b, GENERAL, &[buffer_region])
+                } else {
+                    rec.cmd_copy_buffer_to_image(&buffer, &b, GENERAL, &[buffer_region])
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_copy_image_to_buffer_unchecked(&a, GENERAL, &buffer, &[buffer_region])
+                } else {
+                    rec.cmd_copy_image_to_buffer(&a, GENERAL, &buffer, &[buffer_region])
+                }
+            }),
+        ),
+        (
+            "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::CopyBufferToImageInfo2::new(&buffer, &b)
+                    .dst_image_layout(GENERAL)
+                    .regions(&buffer_region2);
+                if unchecked {
+                    rec.cmd_copy_buffer_to_image2_unchecked(&info)
+                } else {
+                    rec.cmd_copy_buffer_to_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::CopyImageToBufferInfo2::new(&a, &buffer)
+                    .src_image_layout(GENERAL)
+                    .regions(&buffer_region2);
+                if unchecked {
+                    rec.cmd_copy_image_to_buffer2_unchecked(&info)
+                } else {
+                    rec.cmd_copy_image_to_buffer2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdCopyImage-srcImageLayout-00128",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_copy_image_unchecked(&a, GENERAL, &b, DST, &[copy])
+                } else {
+                    rec.cmd_copy_image(&a, GENERAL, &b, DST, &[copy])
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdCopyImage-dstImageLayout-00133",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_copy_image_unchecked(&a, SRC, &b, GENERAL, &[copy])
+                } else {
+                    rec.cmd_copy_image(&a, SRC, &b, GENERAL, &[copy])
+                }
+            }),
+        ),
+        (
+            "VUID-VkCopyImageInfo2-srcImageLayout-00128",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::CopyImageInfo2::new(&a, &b)
+                    .src_image_layout(GENERAL)
+                    .dst_image_layout(DST)
+                    .regions(&copy2);
+                if unchecked {
+                    rec.cmd_copy_image2_unchecked(&info)
+                } else {
+                    rec.cmd_copy_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-VkCopyImageInfo2-dstImageLayout-00133",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::CopyImageInfo2::new(&a, &b)
+                    .src_image_layout(SRC)
+                    .dst_image_layout(GENERAL)
+                    .regions(&copy2);
+                if unchecked {
+                    rec.cmd_copy_image2_unchecked(&info)
+                } else {
+                    rec.cmd_copy_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdBlitImage-srcImageLayout-00221",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_blit_image_unchecked(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
+                } else {
+                    rec.cmd_blit_image(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdBlitImage-dstImageLayout-00226",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_blit_image_unchecked(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
+                } else {
+                    rec.cmd_blit_image(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
+                }
+            }),
+        ),
+        (
+            "VUID-VkBlitImageInfo2-srcImageLayout-00221",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::BlitImageInfo2::new(&a, &b)
+                    .src_image_layout(GENERAL)
+                    .dst_image_layout(DST)
+                    .regions(&blit2)
+                    .filter(vk::Filter::NEAREST);
+                if unchecked {
+                    rec.cmd_blit_image2_unchecked(&info)
+                } else {
+                    rec.cmd_blit_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-VkBlitImageInfo2-dstImageLayout-00226",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::BlitImageInfo2::new(&a, &b)
+                    .src_image_layout(SRC)
+                    .dst_image_layout(GENERAL)
+                    .regions(&blit2)
+                    .filter(vk::Filter::NEAREST);
+                if unchecked {
+                    rec.cmd_blit_image2_unchecked(&info)
+                } else {
+                    rec.cmd_blit_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdResolveImage-srcImageLayout-00260",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_resolve_image_unchecked(&multi, GENERAL, &b, DST, &[resolve])
+                } else {
+                    rec.cmd_resolve_image(&multi, GENERAL, &b, DST, &[resolve])
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdResolveImage-dstImageLayout-00262",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_resolve_image_unchecked(&multi, SRC, &b, GENERAL, &[resolve])
+                } else {
+                    rec.cmd_resolve_image(&multi, SRC, &b, GENERAL, &[resolve])
+                }
+            }),
+        ),
+        (
+            "VUID-VkResolveImageInfo2-srcImageLayout-00260",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::ResolveImageInfo2::new(&multi, &b)
+                    .src_image_layout(GENERAL)
+                    .dst_image_layout(DST)
+                    .regions(&resolve2);
+                if unchecked {
+                    rec.cmd_resolve_image2_unchecked(&info)
+                } else {
+                    rec.cmd_resolve_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-VkResolveImageInfo2-dstImageLayout-00262",
+            Box::new(|rec, unchecked| unsafe {
+                let info = tuff::ResolveImageInfo2::new(&multi, &b)
+                    .src_image_layout(SRC)
+                    .dst_image_layout(GENERAL)
+                    .regions(&resolve2);
+                if unchecked {
+                    rec.cmd_resolve_image2_unchecked(&info)
+                } else {
+                    rec.cmd_resolve_image2(&info)
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdClearColorImage-imageLayout-00004",
+            Box::new(|rec, unchecked| unsafe {
+                if unchecked {
+                    rec.cmd_clear_color_image_unchecked(&b, GENERAL, &clear, &[range(COLOR)])
+                } else {
+                    rec.cmd_clear_color_image(&b, GENERAL, &clear, &[range(COLOR)])
+                }
+            }),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-imageLayout-00011",
+            Box::new(|rec, unchecked| unsafe {
+                let ranges = [range(depth_aspect)];
+                if unchecked {
+                    rec.cmd_clear_depth_stencil_image_unchecked(
+                        &depth,
+                        GENERAL,
+                        &clear_depth,
+                        &ranges,
+                    )
+                } else {
+                    rec.cmd_clear_depth_stencil_image(&depth, GENERAL, &clear_depth, &ranges)
+                }
+            }),
+        ),
+    ];
+    let prepare = |rec: &mut tuff::Recorder<'_, tuff::Outside>| {
+        transition(rec, &a, COLOR, UNDEFINED, SRC).expect("a");
+        transition(rec, &b, COLOR, UNDEFINED, DST).expect("b");
+        transition(rec, &depth, depth_aspect, UNDEFINED, DST).expect("depth");
+        transition(rec, &multi, COLOR, UNDEFINED, SRC).expect("multi");
+    };
+    for (rule, call) in &cases {
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        prepare(&mut rec);
+        assert_eq!(vuid(call(&mut rec, false)), *rule, "the safe call");
+        layer_names(&s, rule, || {
+            let _ = call(&mut rec, true);
+        });
+        rec.end().expect("end");
+    }
+    assert_silent(&s.messages);
+}
+
+/// A barrier's `oldLayout` is checked against the layout the recording left.
+#[test]
+fn a_barrier_from_a_layout_the_image_is_not_in_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (a, _memory) = color_image(&s);
+    let rule = "VUID-VkImageMemoryBarrier-oldLayout-01197";
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &a, COLOR, UNDEFINED, DST).expect("to DST");
+    assert_eq!(vuid(transition(&mut rec, &a, COLOR, GENERAL, SRC)), rule);
+    let barrier = tuff::ImageMemoryBarrier::new(&a)
+        .old_layout(GENERAL)
+        .new_layout(SRC)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .subresource_range(range(COLOR));
+    layer_names(&s, rule, || {
+        let _ = unsafe {
+            rec.cmd_pipeline_barrier_unchecked(
+                vk::PipelineStageFlags::TRANSFER,
+                vk::PipelineStageFlags::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &[barrier],
+            )
+        };
+    });
+    rec.end().expect("end");
+    // The layout the recording left is the one a barrier may leave from (in a new
+    // recording: the layer skipped the unchecked barrier above, which the recorder
+    // followed as recorded).
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &a, COLOR, UNDEFINED, DST).expect("to DST");
+    transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}
+
+fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
+    let fence = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let handles = tuff::HandleSlice::new(cbs);
+    unsafe {
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+    }?;
+    let waited = s
+        .device
+        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        .expect("wait");
+    assert_eq!(waited, vk::Result::SUCCESS);
+    Ok(())
+}
+
+/// A recording that needs, at its start, a layout its own commands do not set is
+/// checked when it is submitted, against the layout the submissions before it
+/// leave (the earlier command buffers of the same submission included).
+#[test]
+fn layouts_are_followed_across_submissions() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (a, _memory) = color_image(&s);
+    let (buffer, buffer_memory) = host_buffer(
+        &s,
+        u64::from(SIDE * SIDE * 4),
+        vk::BufferUsageFlags::TRANSFER_DST,
+    );
+    let region = vk::BufferImageCopy {
+        buffer_offset: 0,
+        buffer_row_length: 0,
+        buffer_image_height: 0,
+        image_subresource: layers(COLOR),
+        image_offset: vk::Offset3D::default(),
+        image_extent: WHOLE,
+    };
+    let clear = vk::ClearColorValue {
+        float32: [0.0, 1.0, 0.0, 1.0],
+    };
+    let (_pool, mut to_dst) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = to_dst
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &a, COLOR, UNDEFINED, DST).expect("to DST");
+    unsafe { rec.cmd_clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    rec.end().expect("end");
+    // Reads the image in TRANSFER_SRC_OPTIMAL, which it sets nowhere.
+    let (_pool2, mut read) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = read
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    unsafe { rec.cmd_copy_image_to_buffer(&a, SRC, &buffer, &[region]) }.expect("copy");
+    rec.end().expect("end");
+    let (_pool3, mut to_src) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = to_src
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
+    rec.end().expect("end");
+
+    let rule = "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189";
+    // Nothing moved the image out of UNDEFINED yet.
+    assert_eq!(vuid(submit(&s, &[&read])), rule);
+    // The clear leaves it in TRANSFER_DST_OPTIMAL.
+    submit(&s, &[&to_dst]).expect("clear");
+    assert_eq!(vuid(submit(&s, &[&read])), rule);
+    // Moved to TRANSFER_SRC_OPTIMAL by the command buffer before it in the same
+    // submission: the read is valid.
+    submit(&s, &[&to_src, &read]).expect("moved, then read");
+    let texel = pipelines::access_memory(&s, &buffer_memory, 4, None);
+    assert_eq!(texel, [0, 255, 0, 255], "the clear color, read back");
+    // The image stays in TRANSFER_SRC_OPTIMAL: the read alone is valid now, and
+    // the move from TRANSFER_DST_OPTIMAL is not.
+    submit(&s, &[&read]).expect("read again");
+    assert_eq!(
+        vuid(submit(&s, &[&to_src])),
+        "VUID-VkImageMemoryBarrier-oldLayout-01197"
+    );
+    assert_silent(&s.messages);
+}
+
+/// A secondary that needs a layout the primary leaves otherwise is refused where
+/// the primary executes it.
+#[test]
+fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (a, _memory) = color_image(&s);
+    let clear = vk::ClearColorValue {
+        float32: [0.0, 0.0, 0.0, 1.0],
+    };
+    let (_pool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    let inheritance = tuff::CommandBufferInheritanceInfo::new();
+    let mut rec = secondary
+        .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
+        .expect("begin");
+    unsafe { rec.cmd_clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    rec.end().expect("end");
+    let (_pool2, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = primary
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &a, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
+    assert_eq!(
+        vuid(unsafe { rec.cmd_execute_commands(&[&secondary]) }),
+        "VUID-vkCmdClearColorImage-imageLayout-00004"
+    );
+    transition(&mut rec, &a, COLOR, GENERAL, DST).expect("to DST");
+    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
+    // The secondary leaves the image in TRANSFER_DST_OPTIMAL, as the primary knows.
+    transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
+    rec.end().expect("end");
+    submit(&s, &[&primary]).expect("submit");
+    assert_silent(&s.messages);
+}
+
+const ATTACHMENT: vk::ImageLayout = vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL;
+const AREA: vk::Rect2D = vk::Rect2D {
+    offset: vk::Offset2D { x: 0, y: 0 },
+    extent: vk::Extent2D {
+        width: 8,
+        height: 8,
+    },
+};
+
+/// Render passes that need the attachment in COLOR_ATTACHMENT_OPTIMAL and leave
+/// it in TRANSFER_SRC_OPTIMAL (through `vkCreateRenderPass`, then
+/// `vkCreateRenderPass2`), with a framebuffer each on `view`.
+fn loading_passes(s: &Setup, view: &tuff::ImageView) -> [(tuff::RenderPass, tuff::Framebuffer); 2] {
+    let d = &s.device;
+    let attachments = [vk::AttachmentDescription {
+        format: vk::Format::R8G8B8A8_UNORM,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::LOAD,
+        store_op: vk::AttachmentStoreOp::STORE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: ATTACHMENT,
+        final_layout: SRC,
+        ..Default::default()
+    }];
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: ATTACHMENT,
+    }];
+    let subpasses = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color)];
+    // Transfers before the instance, and the copy after it, are ordered with it.
+    let attachment_access =
+        vk::AccessFlags::COLOR_ATTACHMENT_READ | vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+    let dependencies = [
+        vk::SubpassDependency {
+            src_subpass: vk::SUBPASS_EXTERNAL,
+            dst_subpass: 0,
+            src_stage_mask: vk::PipelineStageFlags::TRANSFER,
+            dst_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            src_access_mask: vk::AccessFlags::TRANSFER_WRITE,
+            dst_access_mask: attachment_access,
+            dependency_flags: vk::DependencyFlags::empty(),
+        },
+        vk::SubpassDependency {
+            src_subpass: 0,
+            dst_subpass: vk::SUBPASS_EXTERNAL,
+            src_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+            src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+            dst_access_mask: vk::AccessFlags::TRANSFER_READ,
+            dependency_flags: vk::DependencyFlags::empty(),
+        },
+    ];
+    let one = d
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses)
+                .dependencies(&dependencies),
+        )
+        .expect("render pass");
+    let dependencies2 = dependencies.map(|d| {
+        tuff::SubpassDependency2::new()
+            .src_subpass(d.src_subpass)
+            .dst_subpass(d.dst_subpass)
+            .src_stage_mask(d.src_stage_mask)
+            .dst_stage_mask(d.dst_stage_mask)
+            .src_access_mask(d.src_access_mask)
+            .dst_access_mask(d.dst_access_mask)
+    });
+    let attachments2 = [tuff::AttachmentDescription2::new()
+        .format(vk::Format::R8G8B8A8_UNORM)
+        .samples(vk::SampleCountFlags::TYPE_1)
+        .load_op(vk::AttachmentLoadOp::LOAD)
+        .store_op(vk::AttachmentStoreOp::STORE)
+        .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
+        .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
+        .initial_layout(ATTACHMENT)
+        .final_layout(SRC)];
+    let color2 = [tuff::AttachmentReference2::new()
+        .attachment(0)
+        .layout(ATTACHMENT)
+        .aspect_mask(COLOR)];
+    let subpasses2 = [tuff::SubpassDescription2::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color2)];
+    #[allow(unused_unsafe)]
+    // SAFETY: a valid render pass of one color attachment and one subpass.
+    let two = unsafe {
+        d.create_render_pass2(
+            &tuff::RenderPassCreateInfo2::new()
+                .attachments(&attachments2)
+                .subpasses(&subpasses2)
+                .dependencies(&dependencies2),
+        )
+    }
+    .expect("render pass 2");
+    [one, two].map(|rp| {
+        let views = tuff::HandleSlice::new(&[view]);
+        let fb = d
+            .create_framebuffer(
+                &tuff::FramebufferCreateInfo::new(&rp)
+                    .attachments(&views)
+                    .width(8)
+                    .height(8)
+                    .layers(1),
+            )
+            .expect("framebuffer");
+        (rp, fb)
+    })
+}
+
+/// Begins and ends a render pass instance on `pass` (with `vkCmdBeginRenderPass2`
+/// when `two`), checked or not.
+fn render_pass_instance<'c>(
+    rec: tuff::Recorder<'c, tuff::Outside>,
+    (rp, fb): &(tuff::RenderPass, tuff::Framebuffer),
+    two: bool,
+    unchecked: bool,
+) -> tuff::Recorder<'c, tuff::Outside> {
+    let begin = tuff::RenderPassBeginInfo::new(rp, fb).render_area(AREA);
+    let contents = tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE);
+    let end = tuff::SubpassEndInfo::new();
+    unsafe {
+        match (two, unchecked) {
+            (false, false) => rec
+                .cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
+                .cmd_end_render_pass(),
+            (false, true) => rec
+                .cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                .cmd_end_render_pass_unchecked(),
+            (true, false) => rec
+                .cmd_begin_render_pass2(&begin, &contents)
+                .cmd_end_render_pass2(&end),
+            (true, true) => rec
+                .cmd_begin_render_pass2_unchecked(&begin, &contents)
+                .cmd_end_render_pass2_unchecked(&end),
+        }
+    }
+}
+
+/// A render pass instance needs its attachments in their initial layouts and
+/// leaves them in their final ones: a recording that leaves the image in another
+/// layout is refused (and the layer names the rule for the unchecked twin), one
+/// that needs it at its start is checked at submission, and a copy after the
+/// instance reads the final layout.
+#[test]
+fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(
+        8,
+        vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST,
+    );
+    let passes = loading_passes(&s, &target.view);
+    let rules = [
+        "VUID-vkCmdBeginRenderPass-initialLayout-00900",
+        "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
+    ];
+    for (two, rule) in [(false, rules[0]), (true, rules[1])] {
+        let pass = &passes[usize::from(two)];
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        transition(&mut rec, &target.image, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
+        let rec = render_pass_instance(rec, pass, two, false);
+        assert_eq!(vuid(rec.end()), rule, "the safe begin");
+
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        transition(&mut rec, &target.image, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
+        // The 1.3.239 layer reports this rule as
+        // UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, in words that name
+        // the initial layout and the attachment's layout before the instance. (It
+        // then reports the end of an instance it skipped the begin of.)
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        let ended = render_pass_instance(rec, pass, two, true);
+        s.messages.abort_on_error(false);
+        drop(ended);
+        let messages = s.messages.take();
+        assert!(
+            messages.iter().any(|m| m.contains(rule)
+                || (m.contains("UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass")
+                    && m.contains(
+                        "render pass initial layout is VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL"
+                    )
+                    && m.contains(
+                        "previous known layout of the attachment is VK_IMAGE_LAYOUT_GENERAL"
+                    ))),
+            "the validation layer did not report {rule}; it said:\n{}",
+            messages.join("\n")
+        );
+    }
+    // The instance needs COLOR_ATTACHMENT_OPTIMAL from before the recording: the
+    // image is UNDEFINED until a submission moves it.
+    let (buffer, memory) = host_buffer(&s, 8 * 8 * 4, vk::BufferUsageFlags::TRANSFER_DST);
+    let region = vk::BufferImageCopy {
+        buffer_offset: 0,
+        buffer_row_length: 0,
+        buffer_image_height: 0,
+        image_subresource: layers(COLOR),
+        image_offset: vk::Offset3D::default(),
+        image_extent: vk::Extent3D {
+            width: 8,
+            height: 8,
+            depth: 1,
+        },
+    };
+    let clear = vk::ClearColorValue {
+        float32: [1.0, 0.0, 1.0, 1.0],
+    };
+    let (_pool, mut load) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = load
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut rec = render_pass_instance(rec, &passes[0], false, false);
+    // The final layout, TRANSFER_SRC_OPTIMAL, is the one the copy names.
+    unsafe { rec.cmd_copy_image_to_buffer(&target.image, SRC, &buffer, &[region]) }.expect("copy");
+    rec.end().expect("end");
+    assert_eq!(vuid(submit(&s, &[&load])), rules[0]);
+    let (_pool, mut prepare) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = prepare
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &target.image, COLOR, UNDEFINED, DST).expect("to DST");
+    unsafe { rec.cmd_clear_color_image(&target.image, DST, &clear, &[range(COLOR)]) }
+        .expect("clear");
+    transition(&mut rec, &target.image, COLOR, DST, ATTACHMENT).expect("to ATTACHMENT");
+    rec.end().expect("end");
+    submit(&s, &[&prepare, &load]).expect("prepared, then loaded and copied");
+    let texel = pipelines::access_memory(&s, &memory, 4, None);
+    assert_eq!(
+        texel,
+        [255, 0, 255, 255],
+        "the cleared color, loaded and stored"
+    );
+    assert_silent(&s.messages);
+}
