@@ -568,7 +568,8 @@ fn layouts_are_followed_across_submissions() {
     let mut rec = read
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.cmd_copy_image_to_buffer(&a, SRC, &buffer, &[region]) }.expect("copy");
+    rec.cmd_copy_image_to_buffer(&a, SRC, &buffer, &[region])
+        .expect("copy");
     rec.end().expect("end");
     let (_pool3, mut to_src) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = to_src
@@ -856,7 +857,8 @@ fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
         .expect("begin");
     let mut rec = render_pass_instance(rec, &passes[0], false, false);
     // The final layout, TRANSFER_SRC_OPTIMAL, is the one the copy names.
-    unsafe { rec.cmd_copy_image_to_buffer(&target.image, SRC, &buffer, &[region]) }.expect("copy");
+    rec.cmd_copy_image_to_buffer(&target.image, SRC, &buffer, &[region])
+        .expect("copy");
     rec.end().expect("end");
     assert_eq!(vuid(submit(&s, &[&load])), rules[0]);
     let (_pool, mut prepare) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);

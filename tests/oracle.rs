@@ -1374,7 +1374,7 @@ fn cmd_copy_image_to_buffer(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| unsafe { r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region) },
+        |r| r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.cmd_copy_image_to_buffer_unchecked(&image, a.src_image_layout, &buffer, &region)
@@ -1677,6 +1677,9 @@ macro_rules! transfer2_fixture {
                 change(unsafe { info.raw_values_mut() }, limits, &mut $o.clone());
                 record(
                     s,
+                    // SAFETY: as in `buffer_create_info`; some of these commands are
+                    // safe now.
+                    #[allow(unused_unsafe)]
                     |r| unsafe { r.$cmd(info) },
                     // SAFETY: as in `buffer_create_info`; the command buffer is never
                     // submitted.

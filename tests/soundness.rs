@@ -4187,9 +4187,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                 let calls: [(&str, RecordCall<'_>); 3] = [
                     (
                         to_buffer,
-                        Box::new(|rec| unsafe {
-                            rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])
-                        }),
+                        Box::new(|rec| rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])),
                     ),
                     (
                         to_image2,
@@ -4197,7 +4195,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                     ),
                     (
                         to_buffer2,
-                        Box::new(|rec| unsafe { rec.cmd_copy_image_to_buffer2(&out) }),
+                        Box::new(|rec| rec.cmd_copy_image_to_buffer2(&out)),
                     ),
                 ];
                 for (expected, call) in calls {
@@ -4215,7 +4213,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits]) }
+    rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits])
         .expect("a region that fills the buffer exactly");
     rec.end().expect("end");
     assert_silent(&s.messages);

@@ -238,25 +238,23 @@ pub fn record_frame<S: Scene>(
     scene.draw(&mut rec, view)?;
     let mut rec = rec.cmd_end_render_pass();
     if let Some((image, buffer)) = readback {
-        // SAFETY: the region is the whole color image, in TRANSFER_SRC_OPTIMAL after the
-        // barrier above, copied into a readback buffer of exactly its size.
-        unsafe {
-            rec.cmd_copy_image_to_buffer(
-                image,
-                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                buffer,
-                &[vk::BufferImageCopy {
-                    image_subresource: vk::ImageSubresourceLayers {
-                        aspect_mask: vk::ImageAspectFlags::COLOR,
-                        mip_level: 0,
-                        base_array_layer: 0,
-                        layer_count: 1,
-                    },
-                    image_extent: view.extent.into(),
-                    ..Default::default()
-                }],
-            )
-        }?;
+        // The whole color image, in TRANSFER_SRC_OPTIMAL after the render pass, into a
+        // readback buffer of exactly its size.
+        rec.cmd_copy_image_to_buffer(
+            image,
+            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+            buffer,
+            &[vk::BufferImageCopy {
+                image_subresource: vk::ImageSubresourceLayers {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    mip_level: 0,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                },
+                image_extent: view.extent.into(),
+                ..Default::default()
+            }],
+        )?;
         // A fence wait does not make device writes visible to the host; this does.
         let to_host = [tuff::BufferMemoryBarrier::new(buffer)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)

@@ -206,7 +206,8 @@ impl Device {
             self.fns()
                 .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
         }?;
-        self.live().buffer_bound(buffer.raw(), allocation.offset());
+        self.live()
+            .buffer_bound(buffer.raw(), allocation.memory(), allocation.offset());
         let memory = BoundMemory::new(allocation);
         buffer.retain_memory(memory.cell.clone());
         Ok(Bound {
@@ -285,7 +286,12 @@ impl Device {
             self.fns()
                 .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
         }?;
-        self.live().image_bound(image.raw());
+        self.live().image_bound(
+            image.raw(),
+            allocation.memory(),
+            allocation.offset(),
+            requirements.size,
+        );
         let memory = BoundMemory::new(allocation);
         image.retain_memory(memory.cell.clone());
         Ok(Bound {

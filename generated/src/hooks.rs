@@ -21,6 +21,7 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
+mod copies;
 mod creation;
 mod layouts;
 mod pipeline;
@@ -943,7 +944,9 @@ pub(crate) fn bind_buffer_memory_done(
     memory_offset: vk::DeviceSize,
 ) {
     buffer.retain_memory(memory.retained());
-    device.live().buffer_bound(buffer.raw(), memory_offset);
+    device
+        .live()
+        .buffer_bound(buffer.raw(), memory.raw(), memory_offset);
 }
 
 /// Each buffer keeps its memory alive (the safe infos name both by wrappers); commands
@@ -951,7 +954,9 @@ pub(crate) fn bind_buffer_memory_done(
 pub(crate) fn bind_buffer_memory2_done(device: &Device, bind_infos: &[BindBufferMemoryInfo<'_>]) {
     for info in bind_infos {
         device.live().bound2(info.buffer, info.memory);
-        device.live().buffer_bound(info.buffer, info.memory_offset);
+        device
+            .live()
+            .buffer_bound(info.buffer, info.memory, info.memory_offset);
     }
 }
 
@@ -959,7 +964,10 @@ pub(crate) fn bind_buffer_memory2_done(device: &Device, bind_infos: &[BindBuffer
 pub(crate) fn bind_image_memory2_done(device: &Device, bind_infos: &[BindImageMemoryInfo<'_>]) {
     for info in bind_infos {
         device.live().bound2(info.image, info.memory);
-        device.live().image_bound(info.image);
+        let size = image_size(device, info.image);
+        device
+            .live()
+            .image_bound(info.image, info.memory, info.memory_offset, size);
     }
 }
 
@@ -1571,9 +1579,53 @@ pub(crate) fn cmd_copy_buffer_checks<S: State>(
 }
 
 /// The image keeps its memory alive.
-pub(crate) fn bind_image_memory_done(device: &Device, image: &Image, memory: &DeviceMemory) {
+pub(crate) fn bind_image_memory_done(
+    device: &Device,
+    image: &Image,
+    memory: &DeviceMemory,
+    memory_offset: vk::DeviceSize,
+) {
     image.retain_memory(memory.retained());
-    device.live().image_bound(image.raw());
+    let size = image_size(device, image.raw());
+    device
+        .live()
+        .image_bound(image.raw(), memory.raw(), memory_offset, size);
+}
+
+/// The bytes a live image of the device takes in the memory it is bound to.
+fn image_size(device: &Device, image: vk::Image) -> vk::DeviceSize {
+    // SAFETY: `image` is a live image of `device` (a wrapper's, just bound).
+    unsafe { device.fns().get_image_memory_requirements(image) }.size
+}
+
+/// What the checks of recorded commands need of a command pool's queue family.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PoolFamily {
+    /// Its queue flags.
+    pub flags: vk::QueueFlags,
+    /// Its `minImageTransferGranularity`.
+    pub granularity: vk::Extent3D,
+    /// Whether the pool was created with `VK_COMMAND_POOL_CREATE_PROTECTED_BIT`.
+    pub protected: bool,
+}
+
+/// The queue family of the recorder's command pool, as its pool's creation
+/// recorded it (all capabilities, for a pool the wrappers did not record).
+pub(crate) fn pool_family<S: State>(recorder: &Recorder<'_, S>) -> PoolFamily {
+    let pool = recorder.command_buffer().parent().raw();
+    recorder
+        .device()
+        .live()
+        .pool_family(pool)
+        .unwrap_or(PoolFamily {
+            flags: recorder.pool_queue_flags(),
+            granularity: vk::Extent3D {
+                width: 1,
+                height: 1,
+                depth: 1,
+            },
+            protected: false,
+        })
 }
 
 /// Every queue operation of the queue is complete.
@@ -1717,6 +1769,29 @@ pub(crate) fn command_pool_created(
     create_info: &CommandPoolCreateInfo<'_>,
 ) -> CommandPool {
     let flags = crate::validation::family_flags(device, create_info.queue_family_index);
+    let physical = device.parent();
+    // SAFETY: the physical device is a live wrapper of its instance.
+    let families = unsafe {
+        physical
+            .parent()
+            .fns()
+            .get_physical_device_queue_family_properties(physical.raw())
+    };
+    let granularity = families
+        .get(create_info.queue_family_index as usize)
+        .map_or(vk::Extent3D::default(), |f| {
+            f.min_image_transfer_granularity
+        });
+    device.live().pool_created(
+        pool.raw(),
+        PoolFamily {
+            flags,
+            granularity,
+            protected: create_info
+                .flags
+                .contains(vk::CommandPoolCreateFlags::PROTECTED),
+        },
+    );
     pool.with_create_flags(create_info.flags)
         .with_queue_flags(flags)
 }
@@ -4353,60 +4428,77 @@ fn check_buffer_image_regions(
     Ok(())
 }
 
-/// A region of `vkCmdCopyBufferToImage` and `vkCmdCopyImageToBuffer` as
-/// [`check_buffer_image_regions`] reads it.
-fn region1(r: &vk::BufferImageCopy) -> (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D) {
-    (
-        r.buffer_offset,
-        r.buffer_row_length,
-        r.buffer_image_height,
-        r.image_subresource,
-        r.image_extent,
+/// The checks of a copy between `buffer` and `image` that memory safety needs:
+/// each region against the image (its type, format, texel blocks, subresources,
+/// the queue family's granularity), protected memory, the overlap of the two
+/// bindings, and the buffer's end (`range_vuid`).
+fn check_buffer_image_copy<S: State>(
+    recorder: &Recorder<'_, S>,
+    (buffer, image): (vk::Buffer, vk::Image),
+    regions: &[copies::Region],
+    (rules, range_vuid, to_image): (&copies::Rules, &'static str, bool),
+) -> Result<()> {
+    let device = recorder.device();
+    let family = pool_family(recorder);
+    if let Some(record) = device.live().image(image) {
+        copies::check_regions(device, &record, family, regions.iter().copied(), rules)?;
+    }
+    copies::check_protection(device, family, (buffer, image), to_image, rules)?;
+    copies::check_overlap(device, (buffer, image), regions, rules)?;
+    check_buffer_image_regions(
+        device,
+        buffer,
+        image,
+        regions.iter().map(|r| {
+            (
+                r.offset,
+                r.row_length,
+                r.image_height,
+                r.subresource,
+                r.extent,
+            )
+        }),
+        range_vuid,
     )
 }
 
-/// As [`region1`], for the `*2` commands' regions.
-fn region2(
-    r: &vk::BufferImageCopy2<'_>,
-) -> (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D) {
-    (
-        r.buffer_offset,
-        r.buffer_row_length,
-        r.buffer_image_height,
-        r.image_subresource,
-        r.image_extent,
-    )
-}
-
-/// Refuses a copy from a buffer into an image that would read past the buffer's end.
+/// Refuses a copy from a buffer into an image that breaks a rule of its regions.
 pub(crate) fn cmd_copy_buffer_to_image_checks<S: State>(
     recorder: &Recorder<'_, S>,
     src_buffer: &Buffer,
     dst_image: &Image,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
-    check_buffer_image_regions(
-        recorder.device(),
-        src_buffer.raw(),
-        dst_image.raw(),
-        regions.iter().map(region1),
-        "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+    let regions: SmallVec<[copies::Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (src_buffer.raw(), dst_image.raw()),
+        &regions,
+        (
+            &copies::TO_IMAGE,
+            "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+            true,
+        ),
     )
 }
 
-/// Refuses a copy from an image into a buffer that would write past the buffer's end.
+/// Refuses a copy from an image into a buffer that breaks a rule of its regions.
 pub(crate) fn cmd_copy_image_to_buffer_checks<S: State>(
     recorder: &Recorder<'_, S>,
     src_image: &Image,
     dst_buffer: &Buffer,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
-    check_buffer_image_regions(
-        recorder.device(),
-        dst_buffer.raw(),
-        src_image.raw(),
-        regions.iter().map(region1),
-        "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+    let regions: SmallVec<[copies::Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (dst_buffer.raw(), src_image.raw()),
+        &regions,
+        (
+            &copies::TO_BUFFER,
+            "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+            false,
+        ),
     )
 }
 
@@ -4418,12 +4510,16 @@ pub(crate) fn cmd_copy_buffer_to_image2_checks<S: State>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
-    check_buffer_image_regions(
-        recorder.device(),
-        raw.src_buffer,
-        raw.dst_image,
-        regions.iter().map(region2),
-        "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+    let regions: SmallVec<[copies::Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (raw.src_buffer, raw.dst_image),
+        &regions,
+        (
+            &copies::TO_IMAGE2,
+            "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+            true,
+        ),
     )
 }
 
@@ -4435,12 +4531,16 @@ pub(crate) fn cmd_copy_image_to_buffer2_checks<S: State>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
-    check_buffer_image_regions(
-        recorder.device(),
-        raw.dst_buffer,
-        raw.src_image,
-        regions.iter().map(region2),
-        "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+    let regions: SmallVec<[copies::Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (raw.dst_buffer, raw.src_image),
+        &regions,
+        (
+            &copies::TO_BUFFER2,
+            "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+            false,
+        ),
     )
 }
 

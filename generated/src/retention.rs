@@ -60,6 +60,10 @@ pub(crate) type DynamicRange = (u64, u64, u64);
 /// The dynamic buffer descriptors of one set, by binding and array element.
 type SetRanges = HashMap<(u32, u32), DynamicRange>;
 
+/// Where a buffer or image is bound: the raw memory, the offset there and the
+/// bytes it takes.
+pub(crate) type Binding = (u64, u64, u64);
+
 /// A live object, weakly, and its host synchronization.
 type LiveEntry = (Vweak<dyn tuff_runtime::Retain>, HostSync);
 
@@ -93,6 +97,13 @@ pub(crate) struct Live {
     queues: Vutex<HashMap<u64, HostSync>>,
     /// The queue family of each queue got through the wrappers.
     queue_families: Vutex<HashMap<u64, u32>>,
+    /// Each live command pool's queue family: its flags and image transfer
+    /// granularity, and whether the pool is protected.
+    pools: Vutex<HashMap<u64, crate::hooks::PoolFamily>>,
+    /// Each bound buffer's and image's memory, offset and size there.
+    bindings: Vutex<HashMap<(vk::ObjectType, u64), Binding>>,
+    /// The format properties asked of the physical device, by format.
+    formats: Vutex<HashMap<i32, vk::FormatProperties>>,
     /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, read once.
     present_masks: Vutex<Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]>>,
     /// The device's timeline semaphores (the others are binary).
@@ -432,6 +443,9 @@ impl Default for Live {
             images: Vutex::new(HashMap::default()),
             layouts: Vutex::new(HashMap::default()),
             queue_families: Vutex::new(HashMap::default()),
+            pools: Vutex::new(HashMap::default()),
+            bindings: Vutex::new(HashMap::default()),
+            formats: Vutex::new(HashMap::default()),
             present_masks: Vutex::new(None),
             framebuffers: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
@@ -602,6 +616,7 @@ impl Live {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
                 self.buffers.lock().remove(&key.1);
+                self.bindings.lock().remove(&key);
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
                 }
@@ -612,12 +627,16 @@ impl Live {
             vk::ObjectType::FRAMEBUFFER => {
                 self.framebuffers.lock().remove(&key.1);
             }
+            vk::ObjectType::COMMAND_POOL => {
+                self.pools.lock().remove(&key.1);
+            }
             vk::ObjectType::SAMPLER_YCBCR_CONVERSION => {
                 self.conversions.lock().remove(&key.1);
             }
             vk::ObjectType::IMAGE => {
                 self.images.lock().remove(&key.1);
                 self.layouts.lock().remove(&key.1);
+                self.bindings.lock().remove(&key);
                 self.view_formats.lock().remove(&key.1);
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
@@ -785,11 +804,31 @@ impl Live {
     }
 
     /// Records that memory is bound to a buffer.
-    pub(crate) fn buffer_bound(&self, raw: vk::Buffer, memory_offset: vk::DeviceSize) {
-        if let Some(r) = self.buffers.lock().get_mut(&raw.as_raw()) {
+    pub(crate) fn buffer_bound(
+        &self,
+        raw: vk::Buffer,
+        memory: vk::DeviceMemory,
+        memory_offset: vk::DeviceSize,
+    ) {
+        let size = {
+            let mut buffers = self.buffers.lock();
+            let Some(r) = buffers.get_mut(&raw.as_raw()) else {
+                return;
+            };
             r.bound = true;
             r.memory_offset = memory_offset;
-        }
+            r.size
+        };
+        self.bindings.lock().insert(
+            (vk::ObjectType::BUFFER, raw.as_raw()),
+            (memory.as_raw(), memory_offset, size),
+        );
+    }
+
+    /// The memory a buffer or image is bound to, its offset there and the bytes it
+    /// takes (`None` before it is bound, or for a sparse one).
+    pub(crate) fn binding<H: vk::Handle>(&self, raw: H) -> Option<Binding> {
+        self.bindings.lock().get(&(H::TYPE, raw.as_raw())).copied()
     }
 
     /// Records a new shader module's interface.
@@ -867,10 +906,22 @@ impl Live {
     }
 
     /// Records that memory is bound to an image.
-    pub(crate) fn image_bound(&self, raw: vk::Image) {
+    pub(crate) fn image_bound(
+        &self,
+        raw: vk::Image,
+        memory: vk::DeviceMemory,
+        memory_offset: vk::DeviceSize,
+        size: vk::DeviceSize,
+    ) {
         if let Some(r) = self.images.lock().get_mut(&raw.as_raw()) {
             r.bound = true;
+        } else {
+            return;
         }
+        self.bindings.lock().insert(
+            (vk::ObjectType::IMAGE, raw.as_raw()),
+            (memory.as_raw(), memory_offset, size),
+        );
     }
 
     /// Records what a swapchain's images are.
@@ -929,6 +980,30 @@ impl Live {
         ) {
             s.present_families |= 1 << family;
         }
+    }
+
+    /// Records a new command pool's queue family.
+    pub(crate) fn pool_created(&self, raw: vk::CommandPool, family: crate::hooks::PoolFamily) {
+        self.pools.lock().insert(raw.as_raw(), family);
+    }
+
+    /// The queue family of a live command pool made through the wrappers.
+    pub(crate) fn pool_family(&self, raw: vk::CommandPool) -> Option<crate::hooks::PoolFamily> {
+        self.pools.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// A format's properties, asked of the physical device once.
+    pub(crate) fn format_properties(
+        &self,
+        physical: &crate::PhysicalDevice,
+        format: vk::Format,
+    ) -> crate::Result<vk::FormatProperties> {
+        if let Some(p) = self.formats.lock().get(&format.as_raw()) {
+            return Ok(*p);
+        }
+        let p = physical.get_physical_device_format_properties(format)?;
+        self.formats.lock().insert(format.as_raw(), p);
+        Ok(p)
     }
 
     /// Records the queue family a queue of the device belongs to.

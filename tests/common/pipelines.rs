@@ -380,27 +380,25 @@ impl Pipelines {
                 )
                 .expect("recorded")
             };
-            unsafe {
-                rec.cmd_copy_image_to_buffer(
-                    &target.image,
-                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                    buffer,
-                    &[vk::BufferImageCopy {
-                        image_subresource: vk::ImageSubresourceLayers {
-                            aspect_mask: vk::ImageAspectFlags::COLOR,
-                            mip_level: 0,
-                            base_array_layer: 0,
-                            layer_count: 1,
-                        },
-                        image_extent: vk::Extent3D {
-                            width: 1,
-                            height: 1,
-                            depth: 1,
-                        },
-                        ..Default::default()
-                    }],
-                )
-            }
+            rec.cmd_copy_image_to_buffer(
+                &target.image,
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                buffer,
+                &[vk::BufferImageCopy {
+                    image_subresource: vk::ImageSubresourceLayers {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        mip_level: 0,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    },
+                    image_extent: vk::Extent3D {
+                        width: 1,
+                        height: 1,
+                        depth: 1,
+                    },
+                    ..Default::default()
+                }],
+            )
             .expect("recorded");
         }
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)

@@ -318,12 +318,28 @@ impl Names<'_> {
 }
 
 /// Refuses a command that names a layout the recording's earlier commands leave
-/// its subresources out of.
+/// its subresources out of, or (for the commands that name subresources with
+/// `VkImageSubresourceLayers`) color with depth or stencil.
 pub(crate) fn image_layout_checks<S: State>(
     recorder: &Recorder<'_, S>,
     names: Names<'_>,
 ) -> Result<()> {
-    check(recorder, &names.named())
+    let named = names.named();
+    if !matches!(names, Names::ClearColor(..) | Names::ClearDepthStencil(..)) {
+        // The others name their subresources with `VkImageSubresourceLayers`.
+        for (_, sel, _, _, _) in &named {
+            let a = sel.aspect;
+            if a.contains(vk::ImageAspectFlags::COLOR)
+                && a.intersects(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL)
+            {
+                return Err(crate::Error::Validation {
+                    vuid: "VUID-VkImageSubresourceLayers-aspectMask-00167",
+                    message: format!("an aspectMask of {a:?} names color with depth or stencil"),
+                });
+            }
+        }
+    }
+    check(recorder, &named)
 }
 
 /// The recording needs the layouts a command names.

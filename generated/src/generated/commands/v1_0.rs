@@ -366,7 +366,7 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_image_memory_done(self, image, memory);
+        crate::hooks::bind_image_memory_done(self, image, memory, memory_offset);
         Ok(())
     }
     /**`vkCreateBuffer`

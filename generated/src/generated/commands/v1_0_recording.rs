@@ -1601,7 +1601,7 @@ The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run 
 
 # Safety
 
-The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBlitImage-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdBlitImage-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -1627,7 +1627,6 @@ The caller upholds these 25 rules that no check of this method enforces (its com
 - `VUID-vkCmdBlitImage-dstImage-06422`: `dstImage` must not use a format that requires a sampler {YCbCr} conversion
 - `VUID-VkImageBlit-aspectMask-00238`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageBlit-layerCount-00239`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 
 # Valid usage
 
@@ -2046,53 +2045,33 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any element of {regionsparam} must be a multiple of `4`
-- `VUID-vkCmdCopyBufferToImage-imageOffset-07738`: The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT`, for each element of {regionsparam}, the `aspectMask` member of `imageSubresource` must not be `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkCmdCopyBufferToImage-srcImage-00199`: If {imageparam} is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
-- `VUID-vkCmdCopyBufferToImage-imageOffset-00200`: For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-srcImage-00201`: If {imageparam} is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
-- `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`: For each element of `pRegions`, `bufferImageHeight` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-pRegions-07274`: For each element of `pRegions`, `imageOffset.x` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-pRegions-07275`: For each element of `pRegions`, `imageOffset.y` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-pRegions-07276`: For each element of `pRegions`, `imageOffset.z` must be a multiple of the texel block extent depth of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00207`: For each element of `pRegions`, if the sum of `imageOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00208`: For each element of `pRegions`, if the sum of `imageOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-imageExtent-00209`: For each element of `pRegions`, if the sum of `imageOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-aspectMask-00211`: For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in {imageparam}
-- `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`: If {imageparam} is of type `VK_IMAGE_TYPE_3D`, for each element of `pRegions`, `imageSubresource.baseArrayLayer` must be `0` and `imageSubresource.layerCount` must be `1`
-- `VUID-vkCmdCopyBufferToImage-pRegions-07277`: For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of {imageparam} must be less than or equal to 231-1
-- `VUID-vkCmdCopyBufferToImage-pRegions-07273`: For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyBufferToImage-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
-- `VUID-vkCmdCopyBufferToImage-pRegions-00173`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-vkCmdCopyBufferToImage-dstImage-00179`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdCopyBufferToImage-pRegions-06217`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `dstImage`
-- `VUID-vkCmdCopyBufferToImage-pRegions-07740`: If {imageparam} has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
-- `VUID-vkCmdCopyBufferToImage-pRegions-07741`: If {imageparam} has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
-- `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
-- `VUID-vkCmdCopyBufferToImage-dstImage-01997`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdCopyBufferToImage-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range [0,1]
-- `VUID-VkBufferImageCopy-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
-- `VUID-VkBufferImageCopy-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
-- `VUID-VkBufferImageCopy-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
-- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 
 # Valid usage
 
 The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyBufferToImage-imageOffset-00200`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-srcImage-00201`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07274`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07275`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-imageExtent-00207`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-imageExtent-00208`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-aspectMask-00211`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-pRegions-07277`: dynamic (checks each region's row length in bytes against 2^31-1 (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-vkCmdCopyBufferToImage-pRegions-07273`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyBufferToImage-srcImage-04053`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-vkCmdCopyBufferToImage-pRegions-00171`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
+- `VUID-vkCmdCopyBufferToImage-pRegions-00173`: dynamic (checks each region's bytes of the buffer against the whole binding of the image when both are bound to one memory, as the device recorded their bindings (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyBufferToImage-dstImage-00178`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyBufferToImage-dstImage-00179`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
@@ -2111,7 +2090,18 @@ The rules are on [`vkCmdCopyBufferToImage`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyBufferToImage-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20.
+
+- 1: checked by the safe methods in every build, but no test breaks it: an image whose format lacks the transfer feature cannot have the transfer usage the copy also needs
+- 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
+- 3: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel
+- 2: checked by the safe methods in every build, but no test breaks it: no format of the emitted API has a texel block deeper than one texel
+- 3: checked by the safe methods in every build, but no test breaks it: no test copies a multi-planar image yet
+- 1: checked by the safe methods in every build, by the check of the texel block size (pRegions-07273), whose condition it is for these formats and whose VUID the error names
+- 1: checked by the safe methods in every build: a 1D image is one texel high, so the check of the y range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
+- 4: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image(
         &mut self,
@@ -2159,7 +2149,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 34 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image_unchecked(
         &mut self,
@@ -2198,7 +2188,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
 
 # Safety
 
-The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdCopyImage-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdCopyImage-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -2245,7 +2235,6 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-vkCmdCopyImage-aspect-06663`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `dstImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `dstImage`
 - `VUID-vkCmdCopyImage-aspect-06664`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `srcImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `srcImage`
 - `VUID-vkCmdCopyImage-aspect-06665`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `dstImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `dstImage`
-- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 
 # Valid usage
 
@@ -2372,53 +2361,29 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
     }
     /**`vkCmdCopyImageToBuffer`
 
-# Safety
-
-The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`: If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any element of {regionsparam} must be a multiple of `4`
-- `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`: The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00199`: If {imageparam} is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
-- `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`: For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00201`: If {imageparam} is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
-- `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`: For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`: For each element of `pRegions`, `bufferImageHeight` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07274`: For each element of `pRegions`, `imageOffset.x` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07275`: For each element of `pRegions`, `imageOffset.y` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07276`: For each element of `pRegions`, `imageOffset.z` must be a multiple of the texel block extent depth of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`: For each element of `pRegions`, if the sum of `imageOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`: For each element of `pRegions`, if the sum of `imageOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`: For each element of `pRegions`, if the sum of `imageOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`: For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`: If {imageparam} is of type `VK_IMAGE_TYPE_3D`, for each element of `pRegions`, `imageSubresource.baseArrayLayer` must be `0` and `imageSubresource.layerCount` must be `1`
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07277`: For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of {imageparam} must be less than or equal to 231-1
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07273`: For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
-- `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
-- `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: `srcImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdCopyImageToBuffer-pRegions-06220`: The image region specified by each element of `pRegions` must be contained within the specified `imageSubresource` of `srcImage`
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07740`: If {imageparam} has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
-- `VUID-vkCmdCopyImageToBuffer-pRegions-07741`: If {imageparam} has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`: If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
-- `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`: If {imageparam} has a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the element size of the compatible format for the format and the `aspectMask` of the `imageSubresource` as defined in Compatible formats of planes of multi-planar formats
-- `VUID-vkCmdCopyImageToBuffer-srcImage-01998`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-VkBufferImageCopy-bufferRowLength-00195`: `bufferRowLength` must be `0`, or greater than or equal to the `width` member of `imageExtent`
-- `VUID-VkBufferImageCopy-bufferImageHeight-00196`: `bufferImageHeight` must be `0`, or greater than or equal to the `height` member of `imageExtent`
-- `VUID-VkBufferImageCopy-aspectMask-00212`: The `aspectMask` member of `imageSubresource` must only have a single bit set
-- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-
 # Valid usage
 
 The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
 
+- `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00201`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07274`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07275`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07277`: dynamic (checks each region's row length in bytes against 2^31-1 (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-vkCmdCopyImageToBuffer-pRegions-07273`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-vkCmdCopyImageToBuffer-srcImage-04053`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-vkCmdCopyImageToBuffer-pRegions-00183`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
+- `VUID-vkCmdCopyImageToBuffer-pRegions-00184`: dynamic (checks each region's bytes of the buffer against the whole binding of the image when both are bound to one memory, as the device recorded their bindings (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00186`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-vkCmdCopyImageToBuffer-srcImage-00188`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
@@ -2437,9 +2402,20 @@ The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.kh
 - `VUID-vkCmdCopyImageToBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 32 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
+
+- 1: checked by the safe methods in every build, but no test breaks it: an image whose format lacks the transfer feature cannot have the transfer usage the copy also needs
+- 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
+- 2: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel
+- 2: checked by the safe methods in every build, but no test breaks it: no format of the emitted API has a texel block deeper than one texel
+- 3: checked by the safe methods in every build, but no test breaks it: no test copies a multi-planar image yet
+- 1: checked by the safe methods in every build, by the check of the texel block size (pRegions-07273), whose condition it is for these formats and whose VUID the error names
+- 1: checked by the safe methods in every build: a 1D image is one texel high, so the check of the y range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer(
+    pub fn cmd_copy_image_to_buffer(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2485,7 +2461,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 32 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`, `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`, `VUID-vkCmdCopyImageToBuffer-pRegions-07274`, `VUID-vkCmdCopyImageToBuffer-pRegions-07275`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`, `VUID-vkCmdCopyImageToBuffer-pRegions-07273`, `VUID-vkCmdCopyImageToBuffer-srcImage-04053`, `VUID-vkCmdCopyImageToBuffer-pRegions-07277`, `VUID-vkCmdCopyImageToBuffer-srcImage-00188`, `VUID-vkCmdCopyImageToBuffer-pRegions-00184`, `VUID-vkCmdCopyImageToBuffer-srcImage-00201`, `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`, `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`, `VUID-vkCmdCopyImageToBuffer-srcImage-00199`, `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`, `VUID-vkCmdCopyImageToBuffer-pRegions-06220`, `VUID-vkCmdCopyImageToBuffer-pRegions-07276`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`, `VUID-vkCmdCopyImageToBuffer-pRegions-07740`, `VUID-vkCmdCopyImageToBuffer-pRegions-07741`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`, `VUID-vkCmdCopyImageToBuffer-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`, `VUID-VkImageSubresourceLayers-aspectMask-00167`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_copy_image_to_buffer_unchecked(
         &mut self,
@@ -3000,7 +2976,7 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
 
 # Safety
 
-The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 18 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdResolveImage-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
 - `VUID-vkCmdResolveImage-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
@@ -3020,7 +2996,6 @@ The caller upholds these 19 rules that no check of this method enforces (its com
 - `VUID-vkCmdResolveImage-dstImage-06765`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-VkImageResolve-aspectMask-00266`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
 - `VUID-VkImageResolve-layerCount-00267`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkImageSubresourceLayers-aspectMask-00167`: If `aspectMask` contains `VK_IMAGE_ASPECT_COLOR_BIT`, it must not contain either of `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 
 # Valid usage
 

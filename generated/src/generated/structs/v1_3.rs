@@ -142,15 +142,16 @@ impl<'a> BufferCopy2<'a> {
 
 The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferImageCopy2.html). Settled by the wrappers:
 
+- `VUID-VkBufferImageCopy2-bufferRowLength-00195`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkBufferImageCopy2-bufferImageHeight-00196`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkBufferImageCopy2-aspectMask-00212`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkBufferImageCopy2-imageExtent-06659`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-imageExtent-06660`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-imageExtent-06661`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferImageCopy2<'a> {
@@ -509,17 +510,28 @@ impl<'a> CopyBufferInfo2<'a> {
 The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferToImageInfo2.html). Settled by the wrappers:
 
 - `VUID-VkCopyBufferToImageInfo2-pRegions-00171`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
+- `VUID-VkCopyBufferToImageInfo2-pRegions-00173`: dynamic (checks each region's bytes of the buffer against the whole binding of the image when both are bound to one memory, as the device recorded their bindings (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-00174`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-00176`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyBufferToImageInfo2-dstImage-00177`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyBufferToImageInfo2-dstImage-00178`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkCopyBufferToImageInfo2-dstImage-00179`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-VkCopyBufferToImageInfo2-imageSubresource-01701`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyBufferToImageInfo2-imageSubresource-01702`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkCopyBufferToImageInfo2-pRegions-06223`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyBufferToImageInfo2-pRegions-06224`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
 - `VUID-VkCopyBufferToImageInfo2-imageOffset-00200`: dynamic (checks the rule as written (recogniser: offsets inside an image subresource))
+- `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07274`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07275`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyBufferToImageInfo2-aspectMask-00211`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07277`: dynamic (checks each region's row length in bytes against 2^31-1 (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkCopyBufferToImageInfo2-pRegions-07273`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyBufferToImageInfo2-srcImage-04053`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyBufferToImageInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -530,7 +542,17 @@ The rules are on [`VkCopyBufferToImageInfo2`'s reference page](https://registry.
 - `VUID-VkCopyBufferToImageInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 31 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 20.
+
+- 1: checked by the safe methods in every build, but no test breaks it: an image whose format lacks the transfer feature cannot have the transfer usage the copy also needs
+- 2: checked by the safe methods in every build, but no test breaks it: no format of the emitted API has a texel block deeper than one texel
+- 3: checked by the safe methods in every build, but no test breaks it: no test copies a multi-planar image yet
+- 1: checked by the safe methods in every build, by the check of the texel block size (pRegions-07273), whose condition it is for these formats and whose VUID the error names
+- 1: checked by the safe methods in every build: a 1D image is one texel high, so the check of the y range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
+- 1: checked by the safe methods in every build: the image is one texel deep, so the check of the z range, which comes first, names its own VUID
+- 9: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyBufferToImageInfo2<'a> {
@@ -675,13 +697,24 @@ impl<'a> CopyImageInfo2<'a> {
 The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyImageToBufferInfo2.html). Settled by the wrappers:
 
 - `VUID-VkCopyImageToBufferInfo2-pRegions-00183`: dynamic (checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size)
+- `VUID-VkCopyImageToBufferInfo2-pRegions-00184`: dynamic (checks each region's bytes of the buffer against the whole binding of the image when both are bound to one memory, as the device recorded their bindings (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00186`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyImageToBufferInfo2-srcImage-00187`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-00191`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-VkCopyImageToBufferInfo2-dstBuffer-00192`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
+- `VUID-VkCopyImageToBufferInfo2-srcImage-00188`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`: dynamic (checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them))
 - `VUID-VkCopyImageToBufferInfo2-imageSubresource-01704`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-bufferImageHeight-00204`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07274`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07275`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-imageExtent-00207`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-imageExtent-00208`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyImageToBufferInfo2-aspectMask-00211`: dynamic (checks the rule as written (recogniser: aspects present in an image's format))
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07277`: dynamic (checks each region's row length in bytes against 2^31-1 (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkCopyImageToBufferInfo2-pRegions-07273`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
+- `VUID-VkCopyImageToBufferInfo2-srcImage-04053`: dynamic (checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation)
 - `VUID-VkCopyImageToBufferInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyImageToBufferInfo2-srcImage-parameter`: static (set from wrappers, which always hold valid handles)
@@ -692,10 +725,18 @@ The rules are on [`VkCopyImageToBufferInfo2`'s reference page](https://registry.
 - `VUID-VkCopyImageToBufferInfo2-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 34.
+Left to the caller (listed one by one in the crate's `validation.json`): 23.
 
 - 4: checked by the safe methods in every build, but no oracle case breaks it yet
-- 30: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build, but no test breaks it: an image whose format lacks the transfer feature cannot have the transfer usage the copy also needs
+- 2: checked by the safe methods in every build, but no test breaks it: no format of the emitted API has a texel block deeper than one texel
+- 3: checked by the safe methods in every build, but no test breaks it: no test copies a multi-planar image yet
+- 1: checked by the safe methods in every build, by the check of the texel block size (pRegions-07273), whose condition it is for these formats and whose VUID the error names
+- 1: checked by the safe methods in every build: a 1D image is one texel high, so the check of the y range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
+- 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
+- 1: checked by the safe methods in every build: the image is one texel deep, so the check of the z range, which comes first, names its own VUID
+- 8: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyImageToBufferInfo2<'a> {
