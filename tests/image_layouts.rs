@@ -126,16 +126,14 @@ fn transition(
         .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .subresource_range(range(aspect));
-    unsafe {
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::TRANSFER,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[],
-            &[barrier],
-        )
-    }
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier],
+    )
 }
 
 /// A command that names a layout, recorded checked (`false`) or unchecked (`true`).
@@ -500,6 +498,24 @@ fn a_barrier_from_a_layout_the_image_is_not_in_is_refused_and_the_layer_agrees()
                 &[barrier],
             )
         };
+    });
+    // The same through vkCmdPipelineBarrier2.
+    let rule2 = "VUID-VkImageMemoryBarrier2-oldLayout-01197";
+    let barrier2 = [tuff::ImageMemoryBarrier2::new(&a)
+        .src_stage_mask(vk::PipelineStageFlags2::TRANSFER)
+        .dst_stage_mask(vk::PipelineStageFlags2::TRANSFER)
+        .old_layout(GENERAL)
+        .new_layout(SRC)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .subresource_range(range(COLOR))];
+    let dependency = tuff::DependencyInfo::new().image_memory_barriers(&barrier2);
+    assert_eq!(
+        vuid(unsafe { rec.cmd_pipeline_barrier2(&dependency) }),
+        rule2
+    );
+    layer_names(&s, rule2, || {
+        let _ = unsafe { rec.cmd_pipeline_barrier2_unchecked(&dependency) };
     });
     rec.end().expect("end");
     // The layout the recording left is the one a barrier may leave from (in a new

@@ -1163,7 +1163,7 @@ fn cmd_pipeline_barrier(
     change(&mut a, limits, &mut Objects::default());
     record(
         s,
-        |r| unsafe {
+        |r| {
             r.cmd_pipeline_barrier(
                 a.src_stage_mask,
                 a.dst_stage_mask,
@@ -2122,7 +2122,7 @@ fn barrier1(
     let flags = vk::DependencyFlags::empty();
     record(
         s,
-        |r| unsafe { r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images) },
+        |r| r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.cmd_pipeline_barrier_unchecked(stage, stage, flags, &[], buffers, images) },
     )
@@ -2305,16 +2305,14 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let refused = unsafe {
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::GEOMETRY_SHADER,
-            vk::PipelineStageFlags::TRANSFER,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[],
-            &[],
-        )
-    };
+    let refused = rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::GEOMETRY_SHADER,
+        vk::PipelineStageFlags::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[],
+    );
     assert_eq!(
         refusal(refused),
         "VUID-vkCmdPipelineBarrier-srcStageMask-04090"
@@ -2375,16 +2373,17 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
 
 /// A feature enabled through the struct of the extension it came from
 /// (`VkPhysicalDeviceSynchronization2Features`) rather than a core version's
-/// features struct is known too: a barrier that needs `synchronization2` (an
-/// `ATTACHMENT_OPTIMAL` layout, `VUID-VkImageMemoryBarrier-synchronization2-07793`)
-/// is accepted, and the layer agrees.
+/// features struct is known too: a barrier that needs `synchronization2` (a
+/// `READ_ONLY_OPTIMAL` layout, `VUID-VkImageMemoryBarrier-synchronization2-07793`,
+/// on the fixture's sampled image, which that layout's usage rule allows) is
+/// accepted, and the layer agrees.
 #[test]
 fn a_feature_enabled_through_its_extension_struct_is_known() {
     let _serial = vulkan::serial();
     let s = setup_with_extension_feature_structs(true);
     let limits = s.physical.get_physical_device_properties().limits;
     let out = image_memory_barrier(&s, &limits, &|v, _, _| {
-        v.old_layout = vk::ImageLayout::ATTACHMENT_OPTIMAL;
+        v.old_layout = vk::ImageLayout::READ_ONLY_OPTIMAL;
     });
     assert!(
         out.safe.is_ok(),

@@ -380,22 +380,20 @@ fn present_one_frame(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe {
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::TRANSFER,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[],
-            &[barrier(
-                vk::ImageLayout::UNDEFINED,
-                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-                vk::AccessFlags::empty(),
-                vk::AccessFlags::TRANSFER_WRITE,
-            )],
-        )
-        .expect("recorded")
-    };
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier(
+            vk::ImageLayout::UNDEFINED,
+            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+            vk::AccessFlags::empty(),
+            vk::AccessFlags::TRANSFER_WRITE,
+        )],
+    )
+    .expect("recorded");
     unsafe {
         rec.cmd_clear_color_image(
             image,
@@ -407,22 +405,20 @@ fn present_one_frame(
         )
         .expect("recorded")
     };
-    unsafe {
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[],
-            &[barrier(
-                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-                vk::ImageLayout::PRESENT_SRC_KHR,
-                vk::AccessFlags::TRANSFER_WRITE,
-                vk::AccessFlags::empty(),
-            )],
-        )
-        .expect("recorded")
-    };
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier(
+            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+            vk::ImageLayout::PRESENT_SRC_KHR,
+            vk::AccessFlags::TRANSFER_WRITE,
+            vk::AccessFlags::empty(),
+        )],
+    )
+    .expect("recorded");
     rec.end().expect("end");
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
@@ -1068,17 +1064,15 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .size(vk::WHOLE_SIZE)];
-        unsafe {
-            rec.cmd_pipeline_barrier(
-                vk::PipelineStageFlags::TRANSFER,
-                vk::PipelineStageFlags::HOST,
-                vk::DependencyFlags::empty(),
-                &[],
-                &to_host,
-                &[],
-            )
-            .expect("recorded")
-        };
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[],
+            &to_host,
+            &[],
+        )
+        .expect("recorded");
         rec.end().expect("end");
     };
     let mut order = Vec::new();
@@ -1369,16 +1363,14 @@ fn acquire_for_present(
             base_array_layer: 0,
             layer_count: 1,
         });
-    unsafe {
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TOP_OF_PIPE,
-            vk::PipelineStageFlags::BOTTOM_OF_PIPE,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[],
-            &[barrier],
-        )
-    }
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TOP_OF_PIPE,
+        vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[barrier],
+    )
     .expect("barrier");
     rec.end().expect("end");
     let done = d
@@ -1680,7 +1672,6 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let present_rule = "VUID-vkQueuePresentKHR-pWaitSemaphores-03268";
-    // SAFETY: the call is refused.
     assert_eq!(refused(s.queue.queue_present_khr(&present)), present_rule);
     layer_names(&s, present_rule, || {
         // SAFETY: the layer names the rule and skips the call.

@@ -263,18 +263,15 @@ pub fn record_frame<S: Scene>(
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .offset(0)
             .size(vk::WHOLE_SIZE)];
-        // SAFETY: the barrier names the whole color image with the layout it is in, on this
-        // queue's family, with stages this queue supports.
-        unsafe {
-            rec.cmd_pipeline_barrier(
-                vk::PipelineStageFlags::TRANSFER,
-                vk::PipelineStageFlags::HOST,
-                vk::DependencyFlags::empty(),
-                &[],
-                &to_host,
-                &[],
-            )
-        }?;
+        // The copy's writes, made visible to the host that reads the buffer.
+        rec.cmd_pipeline_barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[],
+            &to_host,
+            &[],
+        )?;
     }
     rec.end()?;
     Ok(())

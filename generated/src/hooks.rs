@@ -21,6 +21,7 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
+mod barriers;
 mod copies;
 mod creation;
 mod layouts;
@@ -30,6 +31,7 @@ mod stages;
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
 mod view;
+pub(crate) use barriers::{pipeline_barrier_checks, wait_events_checks};
 use creation::image_create_rules;
 pub(crate) use creation::{
     allocate_memory_checks, allocate_memory_gate, create_device_checks,
@@ -1176,6 +1178,7 @@ pub(crate) fn buffer_created(
             size: create_info.size,
             usage: create_info.usage,
             flags: create_info.flags,
+            sharing: create_info.sharing_mode,
             bound: false,
             memory_offset: 0,
             external: external_handle_types(create_info.as_raw().p_next),
@@ -1601,6 +1604,8 @@ fn image_size(device: &Device, image: vk::Image) -> vk::DeviceSize {
 /// What the checks of recorded commands need of a command pool's queue family.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct PoolFamily {
+    /// The family's index.
+    pub index: u32,
     /// Its queue flags.
     pub flags: vk::QueueFlags,
     /// Its `minImageTransferGranularity`.
@@ -1618,6 +1623,7 @@ pub(crate) fn pool_family<S: State>(recorder: &Recorder<'_, S>) -> PoolFamily {
         .live()
         .pool_family(pool)
         .unwrap_or(PoolFamily {
+            index: vk::QUEUE_FAMILY_IGNORED,
             flags: recorder.pool_queue_flags(),
             granularity: vk::Extent3D {
                 width: 1,
@@ -1785,6 +1791,7 @@ pub(crate) fn command_pool_created(
     device.live().pool_created(
         pool.raw(),
         PoolFamily {
+            index: create_info.queue_family_index,
             flags,
             granularity,
             protected: create_info
@@ -5525,6 +5532,8 @@ pub(crate) fn render_pass_created(
             color_formats,
             depth_formats,
             layouts: render_pass::attachment_layouts(create_info),
+            used: render_pass::used_attachments(create_info),
+            self_dependencies: render_pass::self_dependencies(create_info),
         },
     );
     render_pass
@@ -5552,6 +5561,8 @@ pub(crate) fn render_pass2_created(
             color_formats,
             depth_formats,
             layouts: render_pass::attachment_layouts2(create_info),
+            used: render_pass::used_attachments2(create_info),
+            self_dependencies: render_pass::self_dependencies2(create_info),
         },
     );
     render_pass
@@ -5564,6 +5575,12 @@ pub(crate) fn render_pass_begun<S: State>(
     layout_vuid: &'static str,
 ) {
     layouts::render_pass_layouts(recorder, render_pass_begin, layout_vuid);
+    let live = recorder.device().live();
+    let images = layouts::pass_views(live, render_pass_begin)
+        .iter()
+        .map(|v| live.view(*v).map_or(vk::Image::null(), |r| r.image))
+        .collect();
+    recorder.pass_images = images;
     let record = recorder
         .device()
         .live()
@@ -5581,6 +5598,7 @@ pub(crate) fn render_pass_begun<S: State>(
             .and_then(|r| r.no_attachments.first().copied())
             .unwrap_or(false),
         samples: None,
+        dynamic: false,
     });
 }
 
@@ -5607,6 +5625,7 @@ pub(crate) fn rendering_begun<S: State>(
     recorder.instance = Some(crate::recorder::PassInstance {
         view_mask: raw.view_mask,
         no_attachments,
+        dynamic: true,
         ..Default::default()
     });
 }

@@ -88,6 +88,9 @@ pub(crate) struct PassInstance {
     pub no_attachments: bool,
     /// The sample count of the first graphics pipeline bound in the current subpass.
     pub samples: Option<vk::SampleCountFlags>,
+    /// Whether the instance was begun with `vkCmdBeginRendering` (for a continuing
+    /// secondary: whether it inherits dynamic rendering).
+    pub dynamic: bool,
 }
 
 /// A query begun in the recording and not yet ended.
@@ -148,6 +151,8 @@ pub struct Recorder<'c, S: State> {
     pub(crate) queries: Vec<ActiveQuery>,
     /// The image layouts the recording needs at its start and leaves so far.
     pub(crate) layouts: crate::layouts::Recording,
+    /// The images of the render pass instance's attachments, by attachment index.
+    pub(crate) pass_images: Vec<vk::Image>,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
     /// any of its buffers: held for the whole recording.
@@ -224,6 +229,7 @@ impl CommandBuffer {
         let mut rec = self.begin_in(info)?;
         rec.instance = Some(PassInstance {
             subpass: inheritance.map_or(0, |i| i.subpass),
+            dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
             ..PassInstance::default()
         });
         Ok(rec.into_state())
@@ -285,6 +291,7 @@ impl CommandBuffer {
             instance: None,
             queries: Vec::new(),
             layouts: Default::default(),
+            pass_images: Vec::new(),
             _state: PhantomData,
         })
     }
@@ -405,6 +412,7 @@ impl<'c, S: State> Recorder<'c, S> {
             instance: self.instance,
             queries: self.queries,
             layouts: self.layouts,
+            pass_images: self.pass_images,
             alive: self.alive,
             pool_sync: self.pool_sync,
             _state: PhantomData,

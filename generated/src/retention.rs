@@ -197,6 +197,22 @@ pub(crate) struct RenderPassRecord {
     /// aspect (the same unless a `VkAttachmentDescriptionStencilLayout` says
     /// otherwise).
     pub layouts: Vec<AttachmentLayouts>,
+    /// The attachments each subpass references.
+    pub used: Vec<Vec<u32>>,
+    /// Its dependencies from a subpass to itself.
+    pub self_dependencies: Vec<SelfDependency>,
+}
+
+/// A render pass's dependency from a subpass to itself, which a pipeline barrier
+/// inside the subpass must fit in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct SelfDependency {
+    /// The subpass.
+    pub subpass: u32,
+    /// Its source and destination stage masks.
+    pub stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    /// Its source and destination access masks.
+    pub access: (vk::AccessFlags, vk::AccessFlags),
 }
 
 /// The layouts a render pass instance needs an attachment in and leaves it in.
@@ -347,6 +363,8 @@ pub(crate) struct BufferRecord {
     pub usage: vk::BufferUsageFlags,
     /// `VkBufferCreateInfo::flags`.
     pub flags: vk::BufferCreateFlags,
+    /// `VkBufferCreateInfo::sharingMode`.
+    pub sharing: vk::SharingMode,
     /// Whether memory is bound to it.
     pub bound: bool,
     /// Where in its memory it is bound (0 until it is).

@@ -369,17 +369,15 @@ impl Pipelines {
                     base_array_layer: 0,
                     layer_count: 1,
                 })];
-            unsafe {
-                rec.cmd_pipeline_barrier(
-                    vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-                    vk::PipelineStageFlags::TRANSFER,
-                    vk::DependencyFlags::empty(),
-                    &[],
-                    &[],
-                    &to_transfer,
-                )
-                .expect("recorded")
-            };
+            rec.cmd_pipeline_barrier(
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+                vk::PipelineStageFlags::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &to_transfer,
+            )
+            .expect("recorded");
             rec.cmd_copy_image_to_buffer(
                 &target.image,
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,

@@ -27,15 +27,15 @@ type Named = (
     &'static str,
 );
 
-/// Whether a barrier transfers queue family ownership: its release and its
-/// acquire name the same `oldLayout`, and the recorder does not know which side
-/// a recording is, so it follows the new layout without checking the old.
-fn transfers(src: u32, dst: u32) -> bool {
-    src != dst && src != vk::QUEUE_FAMILY_IGNORED && dst != vk::QUEUE_FAMILY_IGNORED
+/// Whether a barrier recorded for queue family `ours` acquires ownership from
+/// another family: the release named the same `oldLayout` and made the transition,
+/// so the acquire follows the new layout without needing the old one.
+fn acquires(src: u32, dst: u32, ours: u32) -> bool {
+    src != dst && src != vk::QUEUE_FAMILY_IGNORED && dst != vk::QUEUE_FAMILY_IGNORED && src != ours
 }
 
-fn barrier(b: &vk::ImageMemoryBarrier<'_>) -> Named {
-    let old = if transfers(b.src_queue_family_index, b.dst_queue_family_index) {
+fn barrier(b: &vk::ImageMemoryBarrier<'_>, ours: u32) -> Named {
+    let old = if acquires(b.src_queue_family_index, b.dst_queue_family_index, ours) {
         vk::ImageLayout::UNDEFINED
     } else {
         b.old_layout
@@ -49,16 +49,19 @@ fn barrier(b: &vk::ImageMemoryBarrier<'_>) -> Named {
     (b.image, Sel::range(&b.subresource_range), old, new, BARRIER)
 }
 
-fn barrier2(b: &vk::ImageMemoryBarrier2<'_>) -> Named {
-    let (image, sel, old, new, _) = barrier(&vk::ImageMemoryBarrier {
-        src_queue_family_index: b.src_queue_family_index,
-        dst_queue_family_index: b.dst_queue_family_index,
-        old_layout: b.old_layout,
-        new_layout: b.new_layout,
-        image: b.image,
-        subresource_range: b.subresource_range,
-        ..Default::default()
-    });
+fn barrier2(b: &vk::ImageMemoryBarrier2<'_>, ours: u32) -> Named {
+    let (image, sel, old, new, _) = barrier(
+        &vk::ImageMemoryBarrier {
+            src_queue_family_index: b.src_queue_family_index,
+            dst_queue_family_index: b.dst_queue_family_index,
+            old_layout: b.old_layout,
+            new_layout: b.new_layout,
+            image: b.image,
+            subresource_range: b.subresource_range,
+            ..Default::default()
+        },
+        ours,
+    );
     (image, sel, old, new, BARRIER2)
 }
 
@@ -66,7 +69,10 @@ fn barrier2(b: &vk::ImageMemoryBarrier2<'_>) -> Named {
 const UNCHANGED: vk::ImageLayout = vk::ImageLayout::UNDEFINED;
 
 /// The image barriers of dependency infos.
-fn dependency_barriers<'i>(infos: impl Iterator<Item = &'i DependencyInfo<'i>>) -> Vec<Named> {
+fn dependency_barriers<'i>(
+    infos: impl Iterator<Item = &'i DependencyInfo<'i>>,
+    ours: u32,
+) -> Vec<Named> {
     infos
         .flat_map(|d| {
             // SAFETY: the safe struct stores the array with its length.
@@ -74,7 +80,7 @@ fn dependency_barriers<'i>(infos: impl Iterator<Item = &'i DependencyInfo<'i>>) 
                 crate::retention::raw_slice(d.p_image_memory_barriers, d.image_memory_barrier_count)
             }
         })
-        .map(barrier2)
+        .map(|b| barrier2(b, ours))
         .collect()
 }
 
@@ -97,8 +103,11 @@ fn record<S: State>(recorder: &mut Recorder<'_, S>, named: &[Named]) {
     }
 }
 
-fn barriers(image_memory_barriers: &[ImageMemoryBarrier<'_>]) -> Vec<Named> {
-    image_memory_barriers.iter().map(|b| barrier(b)).collect()
+fn barriers(image_memory_barriers: &[ImageMemoryBarrier<'_>], ours: u32) -> Vec<Named> {
+    image_memory_barriers
+        .iter()
+        .map(|b| barrier(b, ours))
+        .collect()
 }
 
 /// Refuses image barriers whose `oldLayout` is not the layout the recording leaves.
@@ -106,7 +115,8 @@ pub(crate) fn cmd_pipeline_barrier_checks<S: State>(
     recorder: &Recorder<'_, S>,
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) -> Result<()> {
-    check(recorder, &barriers(image_memory_barriers))
+    let ours = super::pool_family(recorder).index;
+    check(recorder, &barriers(image_memory_barriers, ours))
 }
 
 /// The recording follows the layout transitions of image barriers.
@@ -114,7 +124,8 @@ pub(crate) fn cmd_pipeline_barrier_done<S: State>(
     recorder: &mut Recorder<'_, S>,
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) {
-    record(recorder, &barriers(image_memory_barriers));
+    let ours = super::pool_family(recorder).index;
+    record(recorder, &barriers(image_memory_barriers, ours));
 }
 
 /// As [`cmd_pipeline_barrier_checks`], for the barriers of dependency infos.
@@ -122,7 +133,8 @@ pub(crate) fn dependency_checks<S: State>(
     recorder: &Recorder<'_, S>,
     infos: &[DependencyInfo<'_>],
 ) -> Result<()> {
-    check(recorder, &dependency_barriers(infos.iter()))
+    let ours = super::pool_family(recorder).index;
+    check(recorder, &dependency_barriers(infos.iter(), ours))
 }
 
 /// As [`cmd_pipeline_barrier_done`], for the barriers of dependency infos.
@@ -130,7 +142,8 @@ pub(crate) fn dependency_done<S: State>(
     recorder: &mut Recorder<'_, S>,
     infos: &[DependencyInfo<'_>],
 ) {
-    record(recorder, &dependency_barriers(infos.iter()));
+    let ours = super::pool_family(recorder).index;
+    record(recorder, &dependency_barriers(infos.iter(), ours));
 }
 
 /// What a command that reads or writes an image in a layout it names needs.
@@ -392,6 +405,30 @@ pub(crate) fn framebuffer_created(
     framebuffer
 }
 
+/// The image views a render pass instance renders to: its framebuffer's, or those
+/// an imageless framebuffer's begin info chains.
+pub(crate) fn pass_views(
+    live: &crate::retention::Live,
+    render_pass_begin: &RenderPassBeginInfo<'_>,
+) -> Vec<vk::ImageView> {
+    let raw = render_pass_begin.as_raw();
+    let views = live.framebuffer_views(raw.framebuffer);
+    if !views.is_empty() {
+        return views;
+    }
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let imageless: Option<&vk::RenderPassAttachmentBeginInfo<'_>> = unsafe {
+        super::chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_ATTACHMENT_BEGIN_INFO,
+        )
+    };
+    imageless.map_or(Vec::new(), |i| {
+        // SAFETY: the safe setter stores the views with their count.
+        unsafe { crate::retention::raw_slice(i.p_attachments, i.attachment_count) }.to_vec()
+    })
+}
+
 /// The layouts a render pass instance needs its attachments in (`vuid` names the
 /// rule) and leaves them in: each attachment's view, split by aspect where the
 /// stencil aspect has layouts of its own.
@@ -404,21 +441,7 @@ fn attachments(
     let Some(pass) = live.render_pass(raw.render_pass) else {
         return Vec::new();
     };
-    let mut views = live.framebuffer_views(raw.framebuffer);
-    if views.is_empty() {
-        // SAFETY: the chain of a safe struct, and the type its sType names.
-        let imageless: Option<&vk::RenderPassAttachmentBeginInfo<'_>> = unsafe {
-            super::chained(
-                raw.p_next,
-                vk::StructureType::RENDER_PASS_ATTACHMENT_BEGIN_INFO,
-            )
-        };
-        if let Some(i) = imageless {
-            // SAFETY: the safe setter stores the views with their count.
-            views = unsafe { crate::retention::raw_slice(i.p_attachments, i.attachment_count) }
-                .to_vec();
-        }
-    }
+    let views = pass_views(live, render_pass_begin);
     let depth_stencil = vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL;
     let mut named = Vec::new();
     for (view, layouts) in views.iter().zip(&pass.layouts) {

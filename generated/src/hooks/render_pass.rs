@@ -210,6 +210,24 @@ impl Pass {
 
     /// Each attachment's format, sample count and roles, for the render pass's
     /// record (`depth_resolves`: the attachments subpasses resolve depth/stencil to).
+    /// The attachments each subpass references (input, color, resolve,
+    /// depth/stencil).
+    fn used(&self) -> Vec<Vec<u32>> {
+        self.subpasses
+            .iter()
+            .map(|s| {
+                s.inputs
+                    .iter()
+                    .chain(&s.colors)
+                    .chain(s.resolves.iter().flatten())
+                    .chain(&s.depth)
+                    .filter(|r| r.used())
+                    .map(|r| r.attachment)
+                    .collect()
+            })
+            .collect()
+    }
+
     fn attachment_uses(
         &self,
         depth_resolves: &[u32],
@@ -664,6 +682,89 @@ pub(crate) fn attachment_layouts2(
                 last: a.final_layout,
                 stencil_initial: stencil.map_or(a.initial_layout, |s| s.stencil_initial_layout),
                 stencil_last: stencil.map_or(a.final_layout, |s| s.stencil_final_layout),
+            }
+        })
+        .collect()
+}
+
+/// The attachments each subpass of `vkCreateRenderPass`'s create info uses (input,
+/// color, resolve and depth/stencil references).
+pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {
+    Pass::of(create_info).used()
+}
+
+/// [`used_attachments`] for `vkCreateRenderPass2`, with each subpass's
+/// depth/stencil resolve attachment.
+pub(crate) fn used_attachments2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<u32>> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the subpasses with their count.
+    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let mut used = Pass::of2(create_info).used();
+    for (u, s) in used.iter_mut().zip(subpasses) {
+        // SAFETY: the `pNext` of a safe struct, and the type the sType names; its
+        // reference outlives the create info.
+        let r: Option<&vk::SubpassDescriptionDepthStencilResolve<'_>> = unsafe {
+            chained(
+                s.p_next,
+                vk::StructureType::SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE,
+            )
+        };
+        // SAFETY: as above.
+        if let Some(a) = unsafe { r.and_then(|r| r.p_depth_stencil_resolve_attachment.as_ref()) } {
+            if a.attachment != vk::ATTACHMENT_UNUSED {
+                u.push(a.attachment);
+            }
+        }
+    }
+    used
+}
+
+/// The dependencies of `vkCreateRenderPass`'s create info from a subpass to itself.
+pub(crate) fn self_dependencies(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<crate::retention::SelfDependency> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the dependencies with their count.
+    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+        .iter()
+        .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
+        .map(|d| crate::retention::SelfDependency {
+            subpass: d.src_subpass,
+            stages: (d.src_stage_mask, d.dst_stage_mask),
+            access: (d.src_access_mask, d.dst_access_mask),
+        })
+        .collect()
+}
+
+/// [`self_dependencies`] for `vkCreateRenderPass2` (a chained `VkMemoryBarrier2`'s
+/// stages and access types replace the dependency's, their first 32 bits read).
+pub(crate) fn self_dependencies2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<crate::retention::SelfDependency> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the dependencies with their count.
+    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+        .iter()
+        .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
+        .map(|d| {
+            // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+            let barrier: Option<&vk::MemoryBarrier2<'_>> =
+                unsafe { chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2) };
+            let low = |v: u64| v as u32;
+            crate::retention::SelfDependency {
+                subpass: d.src_subpass,
+                stages: barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
+                    (
+                        vk::PipelineStageFlags::from_raw(low(b.src_stage_mask.as_raw())),
+                        vk::PipelineStageFlags::from_raw(low(b.dst_stage_mask.as_raw())),
+                    )
+                }),
+                access: barrier.map_or((d.src_access_mask, d.dst_access_mask), |b| {
+                    (
+                        vk::AccessFlags::from_raw(low(b.src_access_mask.as_raw())),
+                        vk::AccessFlags::from_raw(low(b.dst_access_mask.as_raw())),
+                    )
+                }),
             }
         })
         .collect()

@@ -733,7 +733,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
 
 # Safety
 
-The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
 - `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
@@ -749,7 +749,6 @@ The caller upholds these 34 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
 - `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
@@ -984,7 +983,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` that expresses a dependency from the current subpass to itself, with synchronization scopes and access scopes that are all supersets of the scopes defined in this command
 - `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
@@ -1005,7 +1004,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
 - `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
@@ -1689,7 +1687,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
 - `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
@@ -1710,7 +1708,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
 - `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01197`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or the current layout of the image subresources affected by the barrier
 - `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
 - `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`

@@ -306,8 +306,13 @@ The rules are on [`VkBufferMemoryBarrier`'s reference page](https://registry.khr
 - `VUID-VkBufferMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkBufferMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkBufferMemoryBarrier-buffer-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkBufferMemoryBarrier-buffer-04089`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 2: checked by the safe methods in every build, but no test breaks it: a concurrent resource needs two queue families, and lavapipe has one
+- 2: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -1746,6 +1751,14 @@ impl<'a> ImageCreateInfo<'a> {
 
 The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryBarrier.html). Settled by the wrappers:
 
+- `VUID-VkImageMemoryBarrier-oldLayout-01208`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01209`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01210`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01211`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01212`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01213`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01197`: dynamic (checks the old layout against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave; an acquire (a transfer from another queue family to the pool's) follows the new layout without needing the old one, which the release named and moved from)
+- `VUID-VkImageMemoryBarrier-newLayout-01198`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
 - `VUID-VkImageMemoryBarrier-subresourceRange-01724`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageMemoryBarrier-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
@@ -1755,14 +1768,28 @@ The rules are on [`VkImageMemoryBarrier`'s reference page](https://registry.khro
 - `VUID-VkImageMemoryBarrier-newLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter`: dynamic (checks the struct's own rules)
+- `VUID-VkImageMemoryBarrier-oldLayout-01658`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-oldLayout-01659`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-VkImageMemoryBarrier-synchronization2-07793`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageMemoryBarrier-synchronization2-07794`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070`: dynamic (checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it))
+- `VUID-VkImageMemoryBarrier-image-04072`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-image-01671`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-image-03319`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
+- `VUID-VkImageMemoryBarrier-image-03320`: dynamic (checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 41.
+Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 37: explicit rule; the wrappers do not check it
-- 1: partly checked: the old layout is checked as the layouts of copies are (a test breaks it through the safe method and the layer names it for the unchecked one), except in a barrier that transfers queue family ownership, whose release and acquire name the same old layout and which the recorder cannot yet tell apart*/
+- 2: checked by the safe methods in every build, but no test breaks it: a concurrent resource needs two queue families, and lavapipe has one
+- 2: checked by the safe methods in every build, but no test breaks it: no test makes a disjoint multi-planar image yet
+- 13: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {

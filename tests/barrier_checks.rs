@@ -1,0 +1,719 @@
+//! Pipeline barriers: each buffer and image barrier is checked against the resource
+//! it names (the usage a layout needs, the aspects of its format, its sharing mode
+//! and the queue families it transfers between), and the barrier's stages and
+//! access types against each other and against the render pass instance it is
+//! recorded in.
+//!
+//! Each case records one barrier that breaks one rule: tuff must refuse the safe
+//! call with the rule's VUID, and the validation layer, for the `_unchecked` twin
+//! (told to skip the call it reports), must name the same VUID.
+//!
+//! SAFETY of the `unsafe` blocks: `cmd_pipeline_barrier` is `unsafe` for rules its
+//! `# Safety` section lists, which these barriers keep but for the one each case
+//! breaks on purpose, which tuff refuses and the layer skips; no command buffer is
+//! submitted.
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::{setup, setup_bare, setup_full_features, vuid, Setup};
+use vulkan::assert_silent;
+
+type L = vk::ImageLayout;
+type U = vk::ImageUsageFlags;
+type S = vk::PipelineStageFlags;
+type A = vk::AccessFlags;
+const COLOR: vk::ImageAspectFlags = vk::ImageAspectFlags::COLOR;
+const DEPTH: vk::ImageAspectFlags = vk::ImageAspectFlags::DEPTH;
+const STENCIL: vk::ImageAspectFlags = vk::ImageAspectFlags::STENCIL;
+const IGNORED: u32 = vk::QUEUE_FAMILY_IGNORED;
+
+/// The images and the buffer the cases name.
+struct Objects {
+    /// RGBA8 for transfers only.
+    color: tuff::Image,
+    /// RGBA8, sampled and a transfer destination, never a source.
+    no_src: tuff::Image,
+    /// RGBA8, sampled and a transfer source, never a destination.
+    no_dst: tuff::Image,
+    /// D32 with S8, a transfer destination only.
+    depth: tuff::Image,
+    buffer: tuff::Buffer,
+    _memory: Vec<tuff::DeviceMemory>,
+}
+
+fn image(s: &Setup, format: vk::Format, usage: U) -> (tuff::Image, tuff::DeviceMemory) {
+    let image = s
+        .device
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(format)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(usage),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    (image, memory)
+}
+
+fn objects(s: &Setup) -> Objects {
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let (color, m1) = image(s, rgba, U::TRANSFER_SRC | U::TRANSFER_DST);
+    let (no_src, m2) = image(s, rgba, U::SAMPLED | U::TRANSFER_DST);
+    let (no_dst, m3) = image(s, rgba, U::SAMPLED | U::TRANSFER_SRC);
+    let (depth, m4) = image(s, vk::Format::D32_SFLOAT_S8_UINT, U::TRANSFER_DST);
+    let buffer = s
+        .device
+        .create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(256)
+                .usage(vk::BufferUsageFlags::TRANSFER_DST),
+        )
+        .expect("buffer");
+    let needs = s
+        .device
+        .get_buffer_memory_requirements(&buffer)
+        .expect("requirements");
+    let m5 = s
+        .device
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(needs.size)
+                .memory_type_index(
+                    s.memory_type(needs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                ),
+        )
+        .expect("memory");
+    s.device.bind_buffer_memory(&buffer, &m5, 0).expect("bind");
+    Objects {
+        color,
+        no_src,
+        no_dst,
+        depth,
+        buffer,
+        _memory: vec![m1, m2, m3, m4, m5],
+    }
+}
+
+fn range(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
+    vk::ImageSubresourceRange {
+        aspect_mask: aspect,
+        base_mip_level: 0,
+        level_count: 1,
+        base_array_layer: 0,
+        layer_count: 1,
+    }
+}
+
+/// A barrier of the whole of `image` (aspects `aspect`) from `old` to `new`, on no
+/// queue family transfer, with no access.
+fn image_barrier<'a>(
+    image: &'a tuff::Image,
+    aspect: vk::ImageAspectFlags,
+    old: L,
+    new: L,
+) -> tuff::ImageMemoryBarrier<'a> {
+    tuff::ImageMemoryBarrier::new(image)
+        .old_layout(old)
+        .new_layout(new)
+        .src_queue_family_index(IGNORED)
+        .dst_queue_family_index(IGNORED)
+        .subresource_range(range(aspect))
+}
+
+fn buffer_barrier(buffer: &tuff::Buffer) -> tuff::BufferMemoryBarrier<'_> {
+    tuff::BufferMemoryBarrier::new(buffer)
+        .src_queue_family_index(IGNORED)
+        .dst_queue_family_index(IGNORED)
+        .offset(0)
+        .size(vk::WHOLE_SIZE)
+}
+
+/// One pipeline barrier: its stages, flags and barriers.
+struct Barrier<'a> {
+    stages: (S, S),
+    flags: vk::DependencyFlags,
+    memory: Vec<tuff::MemoryBarrier<'a>>,
+    buffers: Vec<tuff::BufferMemoryBarrier<'a>>,
+    images: Vec<tuff::ImageMemoryBarrier<'a>>,
+}
+
+impl<'a> Barrier<'a> {
+    fn new() -> Self {
+        Barrier {
+            stages: (S::TRANSFER, S::TRANSFER),
+            flags: vk::DependencyFlags::empty(),
+            memory: Vec::new(),
+            buffers: Vec::new(),
+            images: Vec::new(),
+        }
+    }
+
+    fn image(mut self, b: tuff::ImageMemoryBarrier<'a>) -> Self {
+        self.images.push(b);
+        self
+    }
+
+    fn record<St: tuff::recorder::State>(
+        &self,
+        rec: &mut tuff::Recorder<'_, St>,
+        unchecked: bool,
+    ) -> tuff::Result<()> {
+        let (src, dst) = self.stages;
+        unsafe {
+            if unchecked {
+                rec.cmd_pipeline_barrier_unchecked(
+                    src,
+                    dst,
+                    self.flags,
+                    &self.memory,
+                    &self.buffers,
+                    &self.images,
+                )
+            } else {
+                rec.cmd_pipeline_barrier(
+                    src,
+                    dst,
+                    self.flags,
+                    &self.memory,
+                    &self.buffers,
+                    &self.images,
+                )
+            }
+        }
+    }
+}
+
+/// What the 1.3.239 layer says of a case's unchecked barrier.
+#[derive(Clone, Copy)]
+enum Layer {
+    /// It names the rule.
+    Names,
+    /// It names the rule by another VUID of the same condition.
+    NamesAs(&'static str),
+    /// It does not check the rule and reports no error: tuff's error alone proves it.
+    Silent,
+}
+
+/// Records `barrier` safely (which must name `rule`) and unchecked under the layer
+/// (which must say what `layer` says) into a new command buffer; returns what went
+/// wrong.
+fn try_case(
+    s: &Setup,
+    what: &str,
+    barrier: &Barrier<'_>,
+    rule: &str,
+    layer_says: Layer,
+) -> Option<String> {
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let safe = match barrier.record(&mut rec, false) {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
+        other => format!("{other:?}"),
+    };
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    let _ = barrier.record(&mut rec, true);
+    s.messages.abort_on_error(false);
+    let layer = s.messages.take();
+    rec.end().expect("end");
+    let errors: Vec<_> = layer.iter().filter(|m| m.starts_with("ERROR")).collect();
+    let named = match layer_says {
+        Layer::Names => errors.iter().any(|m| m.contains(rule)),
+        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(other)),
+        Layer::Silent => errors.is_empty(),
+    };
+    (safe != rule || !named).then(|| {
+        format!(
+            "{what}: tuff said {safe}, expected {rule}; the layer said {:?}",
+            layer
+                .iter()
+                .map(|m| m.split(']').next().unwrap_or(m))
+                .collect::<Vec<_>>()
+        )
+    })
+}
+
+/// Image barriers whose layouts need a usage the image lacks, whose new layout is
+/// none, whose aspects do not fit the format, or whose queue families cannot be
+/// transferred between; buffer barriers likewise; and access types no stage of
+/// the barrier supports.
+#[test]
+fn barriers_are_checked_against_their_resources_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let ds = DEPTH | STENCIL;
+    let layout_cases: [(&tuff::Image, vk::ImageAspectFlags, L, &str); 10] = [
+        (
+            &o.color,
+            COLOR,
+            L::COLOR_ATTACHMENT_OPTIMAL,
+            "oldLayout-01208",
+        ),
+        (
+            &o.depth,
+            ds,
+            L::DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+            "oldLayout-01209",
+        ),
+        (
+            &o.depth,
+            ds,
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+            "oldLayout-01210",
+        ),
+        (
+            &o.color,
+            COLOR,
+            L::SHADER_READ_ONLY_OPTIMAL,
+            "oldLayout-01211",
+        ),
+        (&o.no_src, COLOR, L::TRANSFER_SRC_OPTIMAL, "oldLayout-01212"),
+        (&o.no_dst, COLOR, L::TRANSFER_DST_OPTIMAL, "oldLayout-01213"),
+        (
+            &o.depth,
+            ds,
+            L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL,
+            "oldLayout-01658",
+        ),
+        (
+            &o.depth,
+            ds,
+            L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL,
+            "oldLayout-01659",
+        ),
+        (
+            &o.color,
+            COLOR,
+            L::ATTACHMENT_OPTIMAL,
+            "srcQueueFamilyIndex-03938",
+        ),
+        (
+            &o.color,
+            COLOR,
+            L::READ_ONLY_OPTIMAL,
+            "srcQueueFamilyIndex-03939",
+        ),
+    ];
+    let mut wrong = Vec::new();
+    for (image, aspect, layout, tail) in layout_cases {
+        let rule = format!("VUID-VkImageMemoryBarrier-{tail}");
+        let b = Barrier::new().image(image_barrier(image, aspect, L::UNDEFINED, layout));
+        // The 1.3.239 layer does not check the usage of synchronization2's layouts.
+        let layer = if tail.starts_with("srcQueueFamilyIndex") {
+            Layer::Silent
+        } else {
+            Layer::Names
+        };
+        wrong.extend(try_case(&s, &format!("to {layout:?}"), &b, &rule, layer));
+    }
+    let mut cases: Vec<(&str, Barrier<'_>, &str, Layer)> = vec![
+        (
+            "a barrier to UNDEFINED",
+            Barrier::new().image(image_barrier(&o.color, COLOR, L::GENERAL, L::UNDEFINED)),
+            "VUID-VkImageMemoryBarrier-newLayout-01198",
+            Layer::Names,
+        ),
+        (
+            "the depth aspect of a color image",
+            Barrier::new().image(image_barrier(&o.color, DEPTH, L::UNDEFINED, L::GENERAL)),
+            "VUID-VkImageMemoryBarrier-image-01671",
+            Layer::Names,
+        ),
+        (
+            "the depth aspect alone of a depth/stencil image",
+            Barrier::new().image(image_barrier(&o.depth, DEPTH, L::UNDEFINED, L::GENERAL)),
+            "VUID-VkImageMemoryBarrier-image-03320",
+            Layer::Names,
+        ),
+        (
+            "an image transfer between two special families",
+            Barrier::new().image(
+                image_barrier(&o.color, COLOR, L::GENERAL, L::GENERAL)
+                    .src_queue_family_index(vk::QUEUE_FAMILY_EXTERNAL)
+                    .dst_queue_family_index(vk::QUEUE_FAMILY_FOREIGN_EXT),
+            ),
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070",
+            Layer::Silent,
+        ),
+        (
+            "an image transfer from a family the device has not",
+            Barrier::new().image(
+                image_barrier(&o.color, COLOR, L::GENERAL, L::GENERAL)
+                    .src_queue_family_index(7)
+                    .dst_queue_family_index(0),
+            ),
+            "VUID-VkImageMemoryBarrier-image-04072",
+            Layer::Names,
+        ),
+        (
+            "a memory barrier reading in a stage that does not read",
+            Barrier {
+                memory: vec![tuff::MemoryBarrier::new().src_access_mask(A::SHADER_READ)],
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-srcAccessMask-02815",
+            Layer::Names,
+        ),
+        (
+            "a memory barrier writing in a stage that does not write",
+            Barrier {
+                memory: vec![tuff::MemoryBarrier::new().dst_access_mask(A::SHADER_WRITE)],
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-dstAccessMask-02816",
+            Layer::Names,
+        ),
+        (
+            "a buffer barrier's source access",
+            Barrier {
+                buffers: vec![buffer_barrier(&o.buffer).src_access_mask(A::UNIFORM_READ)],
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817",
+            Layer::NamesAs("VUID-vkCmdPipelineBarrier-srcAccessMask-02815"),
+        ),
+        (
+            "a buffer barrier's destination access",
+            Barrier {
+                buffers: vec![buffer_barrier(&o.buffer).dst_access_mask(A::UNIFORM_READ)],
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818",
+            Layer::NamesAs("VUID-vkCmdPipelineBarrier-dstAccessMask-02816"),
+        ),
+        (
+            "an image barrier's source access",
+            Barrier::new().image(
+                image_barrier(&o.color, COLOR, L::GENERAL, L::GENERAL)
+                    .src_access_mask(A::COLOR_ATTACHMENT_WRITE),
+            ),
+            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819",
+            Layer::NamesAs("VUID-vkCmdPipelineBarrier-srcAccessMask-02815"),
+        ),
+        (
+            "an image barrier's destination access",
+            Barrier::new().image(
+                image_barrier(&o.color, COLOR, L::GENERAL, L::GENERAL)
+                    .dst_access_mask(A::COLOR_ATTACHMENT_WRITE),
+            ),
+            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820",
+            Layer::NamesAs("VUID-vkCmdPipelineBarrier-dstAccessMask-02816"),
+        ),
+        (
+            "a view-local barrier outside a render pass instance",
+            Barrier {
+                flags: vk::DependencyFlags::VIEW_LOCAL,
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-dependencyFlags-01186",
+            Layer::Names,
+        ),
+        (
+            "a buffer transfer between two special families",
+            Barrier {
+                buffers: vec![buffer_barrier(&o.buffer)
+                    .src_queue_family_index(vk::QUEUE_FAMILY_EXTERNAL)
+                    .dst_queue_family_index(vk::QUEUE_FAMILY_FOREIGN_EXT)],
+                ..Barrier::new()
+            },
+            "VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087",
+            Layer::Silent,
+        ),
+        (
+            "a buffer transfer from a family the device has not",
+            Barrier {
+                buffers: vec![buffer_barrier(&o.buffer)
+                    .src_queue_family_index(7)
+                    .dst_queue_family_index(0)],
+                ..Barrier::new()
+            },
+            "VUID-VkBufferMemoryBarrier-buffer-04089",
+            Layer::Names,
+        ),
+    ];
+    for (what, b, rule, layer) in cases.drain(..) {
+        wrong.extend(try_case(&s, what, &b, rule, layer));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}
+
+/// Without synchronization2 a stage mask may not be 0.
+#[test]
+fn an_empty_stage_mask_needs_synchronization2() {
+    let _serial = vulkan::serial();
+    let s = setup_bare(true);
+    let mut wrong = Vec::new();
+    for (stages, rule) in [
+        (
+            (S::empty(), S::TRANSFER),
+            "VUID-vkCmdPipelineBarrier-srcStageMask-03937",
+        ),
+        (
+            (S::TRANSFER, S::empty()),
+            "VUID-vkCmdPipelineBarrier-dstStageMask-03937",
+        ),
+    ] {
+        let b = Barrier {
+            stages,
+            ..Barrier::new()
+        };
+        wrong.extend(try_case(&s, rule, &b, rule, Layer::Names));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}
+
+/// The layouts of separate depth and stencil aspects need the usage too, and with
+/// separateDepthStencilLayouts a barrier names the depth or the stencil aspect.
+#[test]
+fn separate_depth_and_stencil_layouts_are_checked() {
+    let _serial = vulkan::serial();
+    let s = setup_full_features(true);
+    let o = objects(&s);
+    let mut wrong = Vec::new();
+    for (aspect, layout, tail) in [
+        (
+            DEPTH,
+            L::DEPTH_READ_ONLY_OPTIMAL,
+            "srcQueueFamilyIndex-04065",
+        ),
+        (
+            DEPTH,
+            L::DEPTH_ATTACHMENT_OPTIMAL,
+            "srcQueueFamilyIndex-04066",
+        ),
+        (
+            STENCIL,
+            L::STENCIL_READ_ONLY_OPTIMAL,
+            "srcQueueFamilyIndex-04067",
+        ),
+        (
+            STENCIL,
+            L::STENCIL_ATTACHMENT_OPTIMAL,
+            "srcQueueFamilyIndex-04068",
+        ),
+        (COLOR, L::GENERAL, "image-03319"),
+    ] {
+        let rule = format!("VUID-VkImageMemoryBarrier-{tail}");
+        let b = Barrier::new().image(image_barrier(&o.depth, aspect, L::UNDEFINED, layout));
+        // The 1.3.239 layer does not check the usage of separate depth and stencil
+        // layouts.
+        let layer = if tail.starts_with("srcQueueFamilyIndex") {
+            Layer::Silent
+        } else {
+            Layer::Names
+        };
+        wrong.extend(try_case(&s, &rule, &b, &rule, layer));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}
+
+/// Inside a render pass instance a barrier may not name a buffer, change a layout
+/// or transfer ownership; inside dynamic rendering there may be none.
+#[test]
+fn barriers_inside_render_pass_instances_are_checked() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(4, U::TRANSFER_SRC);
+    let o = objects(&s);
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 4,
+            height: 4,
+        },
+    };
+    let clear = [vk::ClearValue::default()];
+    // A render pass whose subpass depends on itself, as a barrier inside it needs
+    // (VUID-vkCmdPipelineBarrier-pDependencies-02285, which the layer checks first).
+    let attachments = [vk::AttachmentDescription {
+        format: vk::Format::R8G8B8A8_UNORM,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::CLEAR,
+        store_op: vk::AttachmentStoreOp::STORE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: L::UNDEFINED,
+        final_layout: L::COLOR_ATTACHMENT_OPTIMAL,
+        ..Default::default()
+    }];
+    let color_ref = [vk::AttachmentReference {
+        attachment: 0,
+        layout: L::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let subpasses = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color_ref)];
+    let itself = [vk::SubpassDependency {
+        src_subpass: 0,
+        dst_subpass: 0,
+        src_stage_mask: S::COLOR_ATTACHMENT_OUTPUT,
+        dst_stage_mask: S::COLOR_ATTACHMENT_OUTPUT,
+        src_access_mask: A::COLOR_ATTACHMENT_WRITE,
+        dst_access_mask: A::COLOR_ATTACHMENT_WRITE,
+        dependency_flags: vk::DependencyFlags::BY_REGION,
+    }];
+    let render_pass = s
+        .device
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses)
+                .dependencies(&itself),
+        )
+        .expect("render pass");
+    let views = tuff::HandleSlice::new(&[&target.view]);
+    let framebuffer = s
+        .device
+        .create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&render_pass)
+                .attachments(&views)
+                .width(4)
+                .height(4)
+                .layers(1),
+        )
+        .expect("framebuffer");
+    let begin = tuff::RenderPassBeginInfo::new(&render_pass, &framebuffer)
+        .render_area(area)
+        .clear_values(&clear);
+    let attachment = L::COLOR_ATTACHMENT_OPTIMAL;
+    let cases: Vec<(Barrier<'_>, &str)> = vec![
+        (
+            Barrier {
+                stages: (S::COLOR_ATTACHMENT_OUTPUT, S::COLOR_ATTACHMENT_OUTPUT),
+                flags: vk::DependencyFlags::BY_REGION,
+                buffers: vec![buffer_barrier(&o.buffer)],
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178",
+        ),
+        (
+            Barrier {
+                stages: (S::COLOR_ATTACHMENT_OUTPUT, S::COLOR_ATTACHMENT_OUTPUT),
+                flags: vk::DependencyFlags::BY_REGION,
+                ..Barrier::new()
+            }
+            .image(image_barrier(&target.image, COLOR, attachment, L::GENERAL)),
+            "VUID-vkCmdPipelineBarrier-oldLayout-01181",
+        ),
+        (
+            Barrier {
+                stages: (S::COLOR_ATTACHMENT_OUTPUT, S::COLOR_ATTACHMENT_OUTPUT),
+                flags: vk::DependencyFlags::BY_REGION,
+                ..Barrier::new()
+            }
+            .image(
+                image_barrier(&target.image, COLOR, attachment, attachment)
+                    .src_queue_family_index(s.family)
+                    .dst_queue_family_index(vk::QUEUE_FAMILY_EXTERNAL),
+            ),
+            "VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182",
+        ),
+        (
+            Barrier {
+                stages: (S::COLOR_ATTACHMENT_OUTPUT, S::COLOR_ATTACHMENT_OUTPUT),
+                flags: vk::DependencyFlags::BY_REGION,
+                ..Barrier::new()
+            }
+            .image(image_barrier(&o.color, COLOR, L::GENERAL, L::GENERAL)),
+            "VUID-vkCmdPipelineBarrier-image-04073",
+        ),
+        (
+            // Wider than the subpass's dependency on itself.
+            Barrier {
+                stages: (S::ALL_COMMANDS, S::COLOR_ATTACHMENT_OUTPUT),
+                flags: vk::DependencyFlags::BY_REGION,
+                ..Barrier::new()
+            },
+            "VUID-vkCmdPipelineBarrier-pDependencies-02285",
+        ),
+    ];
+    let mut wrong = Vec::new();
+    for (b, rule) in &cases {
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        let safe = match b.record(&mut rec, false) {
+            Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
+            other => format!("{other:?}"),
+        };
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        let _ = b.record(&mut rec, true);
+        s.messages.abort_on_error(false);
+        let layer = s.messages.take();
+        rec.cmd_end_render_pass().end().expect("end");
+        if safe != *rule || !layer.iter().any(|m| m.contains(rule)) {
+            wrong.push(format!(
+                "tuff said {safe}, expected {rule}; the layer said {:?}",
+                layer
+                    .iter()
+                    .map(|m| m.split(']').next().unwrap_or(m))
+                    .collect::<Vec<_>>()
+            ));
+        }
+    }
+    // Dynamic rendering.
+    let rule = "VUID-vkCmdPipelineBarrier-None-06191";
+    let color = [tuff::RenderingAttachmentInfo::new()
+        .image_view(Some(&target.view))
+        .image_layout(attachment)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)];
+    let info = tuff::RenderingInfo::new()
+        .render_area(area)
+        .layer_count(1)
+        .color_attachments(&color);
+    let b = Barrier {
+        stages: (S::COLOR_ATTACHMENT_OUTPUT, S::COLOR_ATTACHMENT_OUTPUT),
+        ..Barrier::new()
+    };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let to_attachment = Barrier {
+        stages: (S::TOP_OF_PIPE, S::COLOR_ATTACHMENT_OUTPUT),
+        ..Barrier::new()
+    }
+    .image(
+        image_barrier(&target.image, COLOR, L::UNDEFINED, attachment)
+            .dst_access_mask(A::COLOR_ATTACHMENT_WRITE),
+    );
+    to_attachment
+        .record(&mut rec, false)
+        .expect("to COLOR_ATTACHMENT_OPTIMAL");
+    let mut rec = unsafe { rec.cmd_begin_rendering(&info) };
+    assert_eq!(vuid(b.record(&mut rec, false)), rule);
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    let _ = b.record(&mut rec, true);
+    s.messages.abort_on_error(false);
+    let layer = s.messages.take();
+    assert!(
+        layer.iter().any(|m| m.contains(rule)),
+        "the layer did not name {rule}: {layer:?}"
+    );
+    rec.cmd_end_rendering().end().expect("end");
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}
