@@ -663,6 +663,15 @@ const AREA: vk::Rect2D = vk::Rect2D {
 /// it in TRANSFER_SRC_OPTIMAL (through `vkCreateRenderPass`, then
 /// `vkCreateRenderPass2`), with a framebuffer each on `view`.
 fn loading_passes(s: &Setup, view: &tuff::ImageView) -> [(tuff::RenderPass, tuff::Framebuffer); 2] {
+    loading_passes_to(s, view, SRC)
+}
+
+/// As [`loading_passes`], leaving the attachment in `last`.
+fn loading_passes_to(
+    s: &Setup,
+    view: &tuff::ImageView,
+    last: vk::ImageLayout,
+) -> [(tuff::RenderPass, tuff::Framebuffer); 2] {
     let d = &s.device;
     let attachments = [vk::AttachmentDescription {
         format: vk::Format::R8G8B8A8_UNORM,
@@ -672,7 +681,7 @@ fn loading_passes(s: &Setup, view: &tuff::ImageView) -> [(tuff::RenderPass, tuff
         stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
         stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
         initial_layout: ATTACHMENT,
-        final_layout: SRC,
+        final_layout: last,
         ..Default::default()
     }];
     let color = [vk::AttachmentReference {
@@ -730,7 +739,7 @@ fn loading_passes(s: &Setup, view: &tuff::ImageView) -> [(tuff::RenderPass, tuff
         .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
         .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
         .initial_layout(ATTACHMENT)
-        .final_layout(SRC)];
+        .final_layout(last)];
     let color2 = [tuff::AttachmentReference2::new()
         .attachment(0)
         .layout(ATTACHMENT)
@@ -893,5 +902,120 @@ fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
         [255, 0, 255, 255],
         "the cleared color, loaded and stored"
     );
+    assert_silent(&s.messages);
+}
+
+/// A render pass instance's begin: its render area inside the framebuffer, a
+/// clear value for each attachment it clears, and the usage each layout the
+/// render pass gives an attachment needs of its view. Each is refused through
+/// `vkCmdBeginRenderPass` and `vkCmdBeginRenderPass2`, and the layer names the
+/// rule for the unchecked begin.
+#[test]
+fn a_render_pass_begin_is_checked_against_its_framebuffer() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    // A view with the color attachment usage alone.
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let begin_both = |pass: (&tuff::RenderPass, &tuff::Framebuffer),
+                      two: bool,
+                      area: vk::Rect2D,
+                      clears: &[vk::ClearValue],
+                      rule: &str| {
+        let begin = tuff::RenderPassBeginInfo::new(pass.0, pass.1)
+            .render_area(area)
+            .clear_values(clears);
+        let contents = tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE);
+        let end = tuff::SubpassEndInfo::new();
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let rec = unsafe {
+            if two {
+                rec.cmd_begin_render_pass2(&begin, &contents)
+                    .cmd_end_render_pass2(&end)
+            } else {
+                rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
+                    .cmd_end_render_pass()
+            }
+        };
+        assert_eq!(vuid(rec.end()), rule, "two: {two}");
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        let rec = unsafe {
+            if two {
+                rec.cmd_begin_render_pass2_unchecked(&begin, &contents)
+                    .cmd_end_render_pass2_unchecked(&end)
+            } else {
+                rec.cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                    .cmd_end_render_pass_unchecked()
+            }
+        };
+        s.messages.abort_on_error(false);
+        drop(rec);
+        let messages = s.messages.take();
+        assert!(
+            messages.iter().any(|m| m.contains(rule)),
+            "the layer did not name {rule} (two: {two}): {messages:?}"
+        );
+    };
+    let clear = [vk::ClearValue::default()];
+    let cleared = (&target.render_pass, &target.framebuffer);
+    let area = |x: i32, y: i32, w: u32, h: u32| vk::Rect2D {
+        offset: vk::Offset2D { x, y },
+        extent: vk::Extent2D {
+            width: w,
+            height: h,
+        },
+    };
+    for two in [false, true] {
+        for (a, rule) in [
+            (area(-1, 0, 4, 4), "VUID-VkRenderPassBeginInfo-pNext-02850"),
+            (area(0, -1, 4, 4), "VUID-VkRenderPassBeginInfo-pNext-02851"),
+            (area(4, 0, 5, 4), "VUID-VkRenderPassBeginInfo-pNext-02852"),
+            (area(0, 4, 4, 5), "VUID-VkRenderPassBeginInfo-pNext-02853"),
+        ] {
+            begin_both(cleared, two, a, &clear, rule);
+        }
+        begin_both(
+            cleared,
+            two,
+            AREA,
+            &[],
+            "VUID-VkRenderPassBeginInfo-clearValueCount-00902",
+        );
+    }
+    for (last, rules) in [
+        (
+            SRC,
+            [
+                "VUID-vkCmdBeginRenderPass-initialLayout-00898",
+                "VUID-vkCmdBeginRenderPass2-initialLayout-03098",
+            ],
+        ),
+        (
+            DST,
+            [
+                "VUID-vkCmdBeginRenderPass-initialLayout-00899",
+                "VUID-vkCmdBeginRenderPass2-initialLayout-03099",
+            ],
+        ),
+        (
+            vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
+            [
+                "VUID-vkCmdBeginRenderPass-initialLayout-00897",
+                "VUID-vkCmdBeginRenderPass2-initialLayout-03097",
+            ],
+        ),
+    ] {
+        let passes = loading_passes_to(&s, &target.view, last);
+        for (two, pass) in passes.iter().enumerate() {
+            begin_both((&pass.0, &pass.1), two == 1, AREA, &[], rules[two]);
+        }
+    }
     assert_silent(&s.messages);
 }

@@ -508,7 +508,8 @@ struct Case {
     vuid: &'static str,
     on: On,
     /// Whether the unchecked call may run under the layer: not where the 1.3.239
-    /// layer lets the broken call through to a driver that crashes on it.
+    /// layer lets the broken call through to a driver that crashes on it, or
+    /// crashes on it itself.
     layer: bool,
     also: &'static [&'static str],
     change: fn(&mut Parts),
@@ -708,13 +709,12 @@ const CASES: &[Case] = &[
             |p| p.multisample = false,
         )
     },
-    // With the subpass out of range, the 1.3.239 layer also misreads the stage's resources
-    // (01688) and, at times, the subpass's attachments (a fragment output with no attachment).
+    // With the subpass out of range, the 1.3.239 layer reads past the render pass's
+    // subpasses: it misreports the stage's resources (01688) and the subpass's
+    // attachments, and in about one run in fifteen crashes. Proven by the error
+    // alone, without the layer.
     Case {
-        also: &[
-            "VUID-VkGraphicsPipelineCreateInfo-layout-01688",
-            "UNASSIGNED-CoreValidation-Shader-OutputNotConsumed",
-        ],
+        layer: false,
         ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06046", |p| {
             p.target = Target::Pass {
                 colors: vec![RGBA8],

@@ -25,6 +25,7 @@ mod barriers;
 mod copies;
 mod creation;
 mod layouts;
+mod pass_begin;
 mod pipeline;
 mod render_pass;
 mod stages;
@@ -42,6 +43,7 @@ pub(crate) use layouts::{
     execute_layout_checks, execute_layouts_done, framebuffer_created, image_layout_checks,
     image_layouts_named, render_pass_layout_checks, Names,
 };
+pub(crate) use pass_begin::{begin_render_pass_checks, BEGIN, BEGIN2};
 pub(crate) use pipeline::{compute_pipeline_state_checks, graphics_pipeline_state_checks};
 pub(crate) use render_pass::{
     create_render_pass2_checks, render_pass2_reference_checks, render_pass_reference_checks,
@@ -5534,6 +5536,8 @@ pub(crate) fn render_pass_created(
             layouts: render_pass::attachment_layouts(create_info),
             used: render_pass::used_attachments(create_info),
             self_dependencies: render_pass::self_dependencies(create_info),
+            clear_count: render_pass::clears(create_info),
+            taken: render_pass::layouts_taken(create_info),
         },
     );
     render_pass
@@ -5563,6 +5567,8 @@ pub(crate) fn render_pass2_created(
             layouts: render_pass::attachment_layouts2(create_info),
             used: render_pass::used_attachments2(create_info),
             self_dependencies: render_pass::self_dependencies2(create_info),
+            clear_count: render_pass::clears2(create_info),
+            taken: render_pass::layouts_taken2(create_info),
         },
     );
     render_pass

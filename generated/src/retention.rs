@@ -60,6 +60,10 @@ pub(crate) type DynamicRange = (u64, u64, u64);
 /// The dynamic buffer descriptors of one set, by binding and array element.
 type SetRanges = HashMap<(u32, u32), DynamicRange>;
 
+/// A framebuffer's attachments (none for an imageless one) and its width, height
+/// and layer count.
+pub(crate) type FramebufferRecord = (Vec<vk::ImageView>, [u32; 3]);
+
 /// Where a buffer or image is bound: the raw memory, the offset there and the
 /// bytes it takes.
 pub(crate) type Binding = (u64, u64, u64);
@@ -81,8 +85,9 @@ pub(crate) struct Live {
     memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
     /// Each live image view's parameters.
     views: Vutex<HashMap<u64, ViewRecord>>,
-    /// Each live framebuffer's attachments (none for an imageless one).
-    framebuffers: Vutex<HashMap<u64, Vec<vk::ImageView>>>,
+    /// Each live framebuffer's attachments (none for an imageless one) and its
+    /// width, height and layer count.
+    framebuffers: Vutex<HashMap<u64, FramebufferRecord>>,
     /// The view formats each live image's create info listed, where it listed any.
     view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
     /// Each live sampler Y'CbCr conversion's format.
@@ -201,6 +206,11 @@ pub(crate) struct RenderPassRecord {
     pub used: Vec<Vec<u32>>,
     /// Its dependencies from a subpass to itself.
     pub self_dependencies: Vec<SelfDependency>,
+    /// One more than the largest attachment index that a render pass instance
+    /// clears (0: none), the `clearValueCount` it needs at least.
+    pub clear_count: u32,
+    /// Every layout each attachment takes: initial, final, and in each reference.
+    pub taken: Vec<Vec<vk::ImageLayout>>,
 }
 
 /// A render pass's dependency from a subpass to itself, which a pipeline barrier
@@ -898,10 +908,20 @@ impl Live {
     }
 
     /// Records a new framebuffer's attachments.
-    pub(crate) fn framebuffer_created(&self, raw: vk::Framebuffer, views: &[vk::ImageView]) {
+    pub(crate) fn framebuffer_created(
+        &self,
+        raw: vk::Framebuffer,
+        views: &[vk::ImageView],
+        size: [u32; 3],
+    ) {
         self.framebuffers
             .lock()
-            .insert(raw.as_raw(), views.to_vec());
+            .insert(raw.as_raw(), (views.to_vec(), size));
+    }
+
+    /// A live framebuffer's width, height and layer count.
+    pub(crate) fn framebuffer_size(&self, raw: vk::Framebuffer) -> Option<[u32; 3]> {
+        self.framebuffers.lock().get(&raw.as_raw()).map(|f| f.1)
     }
 
     /// The attachments of a live framebuffer (empty for an imageless one).
@@ -909,7 +929,7 @@ impl Live {
         self.framebuffers
             .lock()
             .get(&raw.as_raw())
-            .cloned()
+            .map(|f| f.0.clone())
             .unwrap_or_default()
     }
 

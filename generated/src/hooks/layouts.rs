@@ -401,7 +401,11 @@ pub(crate) fn framebuffer_created(
         // SAFETY: the safe setter stores the attachments with their count.
         unsafe { crate::retention::raw_slice(info.p_attachments, info.attachment_count) }
     };
-    device.live().framebuffer_created(framebuffer.raw(), views);
+    device.live().framebuffer_created(
+        framebuffer.raw(),
+        views,
+        [info.width, info.height, info.layers],
+    );
     framebuffer
 }
 

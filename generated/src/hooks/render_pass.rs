@@ -687,6 +687,73 @@ pub(crate) fn attachment_layouts2(
         .collect()
 }
 
+/// One more than the largest attachment index a render pass instance clears: a
+/// `loadOp` of CLEAR, or a `stencilLoadOp` of CLEAR for a depth/stencil format.
+fn clear_count(
+    attachments: impl Iterator<Item = (vk::Format, vk::AttachmentLoadOp, vk::AttachmentLoadOp)>,
+) -> u32 {
+    let depth_stencil = |f| {
+        crate::formats::aspects(f).is_some_and(|a| {
+            a.intersects(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL)
+        })
+    };
+    attachments
+        .enumerate()
+        .filter(|(_, (f, load, stencil))| {
+            *load == vk::AttachmentLoadOp::CLEAR
+                || (depth_stencil(*f) && *stencil == vk::AttachmentLoadOp::CLEAR)
+        })
+        .map(|(i, _)| i as u32 + 1)
+        .max()
+        .unwrap_or(0)
+}
+
+/// [`clear_count`] of `vkCreateRenderPass`'s create info.
+pub(crate) fn clears(create_info: &RenderPassCreateInfo<'_>) -> u32 {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    let a = unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) };
+    clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
+}
+
+/// [`clear_count`] of `vkCreateRenderPass2`'s create info.
+pub(crate) fn clears2(create_info: &RenderPassCreateInfo2<'_>) -> u32 {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    let a = unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) };
+    clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
+}
+
+/// Every layout each attachment takes: its initial and final layouts (and its
+/// stencil aspect's) and those of the references to it.
+fn taken(
+    pass: &Pass,
+    layouts: &[crate::retention::AttachmentLayouts],
+) -> Vec<Vec<vk::ImageLayout>> {
+    let mut out: Vec<Vec<vk::ImageLayout>> = layouts
+        .iter()
+        .map(|l| vec![l.initial, l.last, l.stencil_initial, l.stencil_last])
+        .collect();
+    for s in &pass.subpasses {
+        for (_, r) in s.refs() {
+            if let Some(t) = out.get_mut(r.attachment as usize) {
+                t.push(r.layout);
+            }
+        }
+    }
+    out
+}
+
+/// [`taken`] of `vkCreateRenderPass`'s create info.
+pub(crate) fn layouts_taken(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<vk::ImageLayout>> {
+    taken(&Pass::of(create_info), &attachment_layouts(create_info))
+}
+
+/// [`taken`] of `vkCreateRenderPass2`'s create info.
+pub(crate) fn layouts_taken2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<vk::ImageLayout>> {
+    taken(&Pass::of2(create_info), &attachment_layouts2(create_info))
+}
+
 /// The attachments each subpass of `vkCreateRenderPass`'s create info uses (input,
 /// color, resolve and depth/stencil references).
 pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {

@@ -160,6 +160,8 @@ const BARRIER_ACCESS: &str = "checks each access type against the table of the s
 const BARRIER_CONCURRENT: &str = "checked by the safe methods in every build, but no test breaks it: a concurrent resource needs two queue families, and lavapipe has one";
 const BARRIER_PLANES: &str = "checked by the safe methods in every build, but no test breaks it: no test makes a disjoint multi-planar image yet";
 const BARRIER_FAMILY: &str = "checked by the safe methods in every build (the specification's table of the stages each queue capability supports), but no test breaks it: lavapipe's only queue family supports every stage";
+const PASS_BEGIN: &str = "checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them";
+const PASS_BEGIN_UNPROVEN: &str = "checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts";
 const LAYOUT_BARRIER: &str = "checks the old layout against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave; an acquire (a transfer from another queue family to the pool's) follows the new layout without needing the old one, which the release named and moved from";
 const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
@@ -973,27 +975,44 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCmdBeginRenderPass",
         check: call(
-            "hooks::render_pass_layout_checks",
-            &["&self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
+            "hooks::begin_render_pass_checks",
+            &["&self", "render_pass_begin", "&crate::hooks::BEGIN"],
         ),
         after: call(
             "hooks::render_pass_begun",
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
         ),
-        settles: &[("VUID-vkCmdBeginRenderPass-initialLayout-00900", How::Dynamic(LAYOUT_PASS))],
+        settles: &[
+            ("VUID-vkCmdBeginRenderPass-initialLayout-00897", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass-initialLayout-00898", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass-initialLayout-00899", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass-initialLayout-00895", How::User(PASS_BEGIN_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass-initialLayout-01758", How::User(PASS_BEGIN_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass-initialLayout-02842", How::User(PASS_BEGIN_UNPROVEN)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02850", How::Dynamic(PASS_BEGIN)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02851", How::Dynamic(PASS_BEGIN)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02852", How::Dynamic(PASS_BEGIN)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02853", How::Dynamic(PASS_BEGIN)),
+            ("VUID-VkRenderPassBeginInfo-clearValueCount-00902", How::Dynamic(PASS_BEGIN)),("VUID-vkCmdBeginRenderPass-initialLayout-00900", How::Dynamic(LAYOUT_PASS))],
         ..NONE
     },
     Special {
         command: "vkCmdBeginRenderPass2",
         check: call(
-            "hooks::render_pass_layout_checks",
-            &["&self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
+            "hooks::begin_render_pass_checks",
+            &["&self", "render_pass_begin", "&crate::hooks::BEGIN2"],
         ),
         after: call(
             "hooks::render_pass_begun",
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
         ),
-        settles: &[("VUID-vkCmdBeginRenderPass2-initialLayout-03100", How::Dynamic(LAYOUT_PASS))],
+        settles: &[
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-03097", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-03098", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-03099", How::Dynamic(PASS_BEGIN)),
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-03094", How::User(PASS_BEGIN_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-03096", How::User(PASS_BEGIN_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass2-initialLayout-02844", How::User(PASS_BEGIN_UNPROVEN)),("VUID-vkCmdBeginRenderPass2-initialLayout-03100", How::Dynamic(LAYOUT_PASS))],
         ..NONE
     },
     Special {

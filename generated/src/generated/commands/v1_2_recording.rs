@@ -7,18 +7,12 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 31 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginRenderPass2-framebuffer-02779`: Both the `framebuffer` and `renderPass` members of `pRenderPassBegin` must have been created on the same VkDevice that `commandBuffer` was allocated on
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03094`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03096`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
-- `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
 - `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`: The `srcStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`: The `dstStageMask` members of any element of the `pDependencies` member of VkRenderPassCreateInfo used to create `renderPass` must be supported by the capabilities of the queue family identified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo used to create the command pool which `commandBuffer` was allocated from
 - `VUID-vkCmdBeginRenderPass2-framebuffer-02533`: For any attachment in `framebuffer` that is used by `renderPass` and is bound to memory locations that are also bound to another attachment used by `renderPass`, and if at least one of those uses causes either attachment to be written to, both attachments must have had the `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT` set
-- `VUID-vkCmdBeginRenderPass2-initialLayout-02844`: If any of the `initialLayout` or `finalLayout` member of the `VkAttachmentDescription` structures or the `layout` member of the `VkAttachmentReference` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
 - `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`: If any of the `stencilInitialLayout` or `stencilFinalLayout` member of the `VkAttachmentDescriptionStencilLayout` structures or the `stencilLayout` member of the `VkAttachmentReferenceStencilLayout` structures specified when creating the render pass specified in the `renderPass` member of `pRenderPassBegin` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then the corresponding attachment image view of the framebuffer specified in the `framebuffer` member of `pRenderPassBegin` must have been created with a `usage` value including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: `deviceMask` must be a valid device mask value
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
@@ -30,13 +24,8 @@ The caller upholds these 42 rules that no check of this method enforces (its com
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`: Each element of `pAttachments` must only specify a single mip level
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`: Each element of `pAttachments` must have been created with the identity swizzle
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114`: Each element of `pAttachments` must have been created with VkImageViewCreateInfo::`viewType` not equal to `VK_IMAGE_VIEW_TYPE_3D`
-- `VUID-VkRenderPassBeginInfo-clearValueCount-00902`: `clearValueCount` must be greater than the largest attachment index in `renderPass` specifying a `loadOp` (or `stencilLoadOp`, if the attachment has a depth/stencil format) of `VK_ATTACHMENT_LOAD_OP_CLEAR`
 - `VUID-VkRenderPassBeginInfo-clearValueCount-04962`: If `clearValueCount` is not `0`, `pClearValues` must be a valid pointer to an array of `clearValueCount` VkClearValue unions
 - `VUID-VkRenderPassBeginInfo-renderPass-00904`: `renderPass` must be compatible with the `renderPass` member of the VkFramebufferCreateInfo structure specified when creating `framebuffer`
-- `VUID-VkRenderPassBeginInfo-pNext-02850`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.x` must be greater than or equal to 0
-- `VUID-VkRenderPassBeginInfo-pNext-02851`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.y` must be greater than or equal to 0
-- `VUID-VkRenderPassBeginInfo-pNext-02852`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.x` + `renderArea.extent.width` must be less than or equal to VkFramebufferCreateInfo::`width` the `framebuffer` was created with
-- `VUID-VkRenderPassBeginInfo-pNext-02853`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.y` + `renderArea.extent.height` must be less than or equal to VkFramebufferCreateInfo::`height` the `framebuffer` was created with
 - `VUID-VkRenderPassBeginInfo-pNext-02856`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, `offset.x` + `extent.width` of each element of `pDeviceRenderAreas` must be less than or equal to VkFramebufferCreateInfo::`width` the `framebuffer` was created with
 - `VUID-VkRenderPassBeginInfo-pNext-02857`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, `offset.y` + `extent.height` of each element of `pDeviceRenderAreas` must be less than or equal to VkFramebufferCreateInfo::`height` the `framebuffer` was created with
 - `VUID-VkRenderPassBeginInfo-framebuffer-03207`: If `framebuffer` was created with a VkFramebufferCreateInfo::`flags` value that did not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, and the `pNext` chain includes a VkRenderPassAttachmentBeginInfo structure, its `attachmentCount` must be zero
@@ -56,6 +45,9 @@ The caller upholds these 42 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass2.html). Settled by the wrappers:
 
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03097`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03098`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-vkCmdBeginRenderPass2-initialLayout-03099`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
 - `VUID-vkCmdBeginRenderPass2-initialLayout-03100`: dynamic (checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, "the render pass initial layout ... and the previous known layout of the attachment ... must match"))
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdBeginRenderPass2-pRenderPassBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -66,17 +58,20 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 - `VUID-vkCmdBeginRenderPass2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 3: checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts
+- 7: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass2<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
-        let always: Result<()> = crate::hooks::render_pass_layout_checks(
+        let always: Result<()> = crate::hooks::begin_render_pass_checks(
             &self,
             render_pass_begin,
-            "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
+            &crate::hooks::BEGIN2,
         );
         {
             let r = always
@@ -103,7 +98,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, `VUID-vkCmdBeginRenderPass2-initialLayout-03100`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, `VUID-vkCmdBeginRenderPass2-initialLayout-03097`, `VUID-vkCmdBeginRenderPass2-initialLayout-03098`, `VUID-vkCmdBeginRenderPass2-initialLayout-03099`, `VUID-vkCmdBeginRenderPass2-initialLayout-03094`, `VUID-vkCmdBeginRenderPass2-initialLayout-03096`, `VUID-vkCmdBeginRenderPass2-initialLayout-02844`, `VUID-vkCmdBeginRenderPass2-initialLayout-03100`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
         mut self,

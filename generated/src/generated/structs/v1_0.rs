@@ -2925,14 +2925,19 @@ impl<'a> QueryPoolCreateInfo<'a> {
 
 The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassBeginInfo.html). Settled by the wrappers:
 
+- `VUID-VkRenderPassBeginInfo-clearValueCount-00902`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
 - `VUID-VkRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassBeginInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-framebuffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkRenderPassBeginInfo-pNext-02850`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-VkRenderPassBeginInfo-pNext-02851`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-VkRenderPassBeginInfo-pNext-02852`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-VkRenderPassBeginInfo-pNext-02853`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 22 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassBeginInfo<'a> {
