@@ -1019,3 +1019,103 @@ fn a_render_pass_begin_is_checked_against_its_framebuffer() {
     }
     assert_silent(&s.messages);
 }
+
+/// A chained `VkDeviceGroupRenderPassBeginInfo` (on lavapipe, a group of one):
+/// its device mask against the device's physical devices, its render areas'
+/// count, and each area against the framebuffer and the limits; the layer names
+/// each rule for the unchecked begin.
+#[test]
+fn a_device_group_render_pass_begin_is_checked() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let limits = s.physical.get_physical_device_properties().limits;
+    let area = |x: i32, y: i32, w: u32, h: u32| vk::Rect2D {
+        offset: vk::Offset2D { x, y },
+        extent: vk::Extent2D {
+            width: w,
+            height: h,
+        },
+    };
+    let (wide, high) = (limits.max_framebuffer_width, limits.max_framebuffer_height);
+    let group = "VUID-VkDeviceGroupRenderPassBeginInfo-";
+    let cases: Vec<(u32, Vec<vk::Rect2D>, String)> = vec![
+        (2, vec![], format!("{group}deviceMask-00905")),
+        (
+            1,
+            vec![AREA, AREA],
+            format!("{group}deviceRenderAreaCount-00908"),
+        ),
+        (1, vec![area(-1, 0, 4, 4)], format!("{group}offset-06166")),
+        (1, vec![area(0, -1, 4, 4)], format!("{group}offset-06167")),
+        (1, vec![area(1, 0, wide, 4)], format!("{group}offset-06168")),
+        (1, vec![area(0, 1, 4, high)], format!("{group}offset-06169")),
+        (
+            1,
+            vec![area(4, 0, 5, 4)],
+            "VUID-VkRenderPassBeginInfo-pNext-02856".into(),
+        ),
+        (
+            1,
+            vec![area(0, 4, 4, 5)],
+            "VUID-VkRenderPassBeginInfo-pNext-02857".into(),
+        ),
+    ];
+    let clear = [vk::ClearValue::default()];
+    let mut wrong = Vec::new();
+    for (mask, areas, rule) in &cases {
+        let mut chained = tuff::DeviceGroupRenderPassBeginInfo::new()
+            .device_mask(*mask)
+            .device_render_areas(areas);
+        let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+            .render_area(AREA)
+            .clear_values(&clear)
+            .push_next(&mut chained);
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) }
+            .cmd_end_render_pass();
+        let said = match rec.end() {
+            Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
+            other => format!("{other:?}"),
+        };
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        let rec = unsafe {
+            rec.cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                .cmd_end_render_pass_unchecked()
+        };
+        s.messages.abort_on_error(false);
+        drop(rec);
+        let errors: Vec<String> = s
+            .messages
+            .take()
+            .into_iter()
+            .filter(|m| m.starts_with("ERROR"))
+            .collect();
+        // An area past maxFramebufferWidth is past every framebuffer: the layer
+        // names that rule (02856, 02857), which the change breaks too.
+        let also = match rule.rsplit('-').next() {
+            Some("06168") => "VUID-VkRenderPassBeginInfo-pNext-02856",
+            Some("06169") => "VUID-VkRenderPassBeginInfo-pNext-02857",
+            _ => rule.as_str(),
+        };
+        if !errors
+            .iter()
+            .any(|m| m.contains(rule.as_str()) || m.contains(also))
+        {
+            wrong.push(format!("the layer did not name {rule}: {errors:?}"));
+        }
+        if said != *rule {
+            wrong.push(format!("tuff said {said}, expected {rule}"));
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}

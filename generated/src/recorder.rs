@@ -153,6 +153,9 @@ pub struct Recorder<'c, S: State> {
     pub(crate) layouts: crate::layouts::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
+    /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
+    /// or every physical device of the device).
+    pub(crate) device_mask: u32,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
     /// any of its buffers: held for the whole recording.
@@ -274,6 +277,18 @@ impl CommandBuffer {
         self.uses().began(info.flags);
         self.uses().set_recorder(true);
         let queue_flags = self.parent().queue_flags();
+        // SAFETY: the safe info only chains structs pushed through `push_next`.
+        let group = unsafe { crate::support::chain_nodes(info.p_next) }
+            .find(|n| n.s_type == vk::StructureType::DEVICE_GROUP_COMMAND_BUFFER_BEGIN_INFO)
+            .map(|n| {
+                // SAFETY: the node's sType names this struct.
+                unsafe {
+                    (*(n as *const vk::BaseInStructure<'_>)
+                        .cast::<vk::DeviceGroupCommandBufferBeginInfo<'_>>())
+                    .device_mask
+                }
+            });
+        let all = ((1u64 << self.device().live().physical_count().min(32)) - 1) as u32;
         Ok(Recorder {
             device: self.device().clone(),
             raw: self.raw(),
@@ -292,6 +307,7 @@ impl CommandBuffer {
             queries: Vec::new(),
             layouts: Default::default(),
             pass_images: Vec::new(),
+            device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
     }
@@ -413,6 +429,7 @@ impl<'c, S: State> Recorder<'c, S> {
             queries: self.queries,
             layouts: self.layouts,
             pass_images: self.pass_images,
+            device_mask: self.device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,
             _state: PhantomData,

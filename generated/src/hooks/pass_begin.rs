@@ -130,6 +130,9 @@ pub(crate) fn begin_render_pass_checks<S: State>(
             vk::StructureType::DEVICE_GROUP_RENDER_PASS_BEGIN_INFO,
         )
     };
+    if let Some(g) = group {
+        check_device_group(recorder, g, live.framebuffer_size(raw.framebuffer))?;
+    }
     if group.is_none_or(|g| g.device_render_area_count == 0) {
         let area = raw.render_area;
         let size = live.framebuffer_size(raw.framebuffer);
@@ -191,4 +194,89 @@ pub(crate) fn begin_render_pass_checks<S: State>(
         }
     }
     super::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
+}
+
+/// The rules of a chained `VkDeviceGroupRenderPassBeginInfo`: its device mask
+/// against the device's physical devices and the command buffer's initial mask, and
+/// each device's render area against the framebuffer and its limits.
+fn check_device_group<S: State>(
+    recorder: &Recorder<'_, S>,
+    g: &vk::DeviceGroupRenderPassBeginInfo<'_>,
+    framebuffer: Option<[u32; 3]>,
+) -> Result<()> {
+    let device = recorder.device();
+    let count = device.live().physical_count().min(32);
+    let all = ((1u64 << count) - 1) as u32;
+    if g.device_mask & !all != 0 {
+        refuse(
+            "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905",
+            format!(
+                "deviceMask {:#x} names a physical device the device has not ({count})",
+                g.device_mask
+            ),
+        )?;
+    }
+    if g.device_mask & !recorder.device_mask != 0 {
+        refuse(
+            "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907",
+            format!(
+                "deviceMask {:#x} is not within the command buffer's initial device mask {:#x}",
+                g.device_mask, recorder.device_mask
+            ),
+        )?;
+    }
+    if g.device_render_area_count != 0 && g.device_render_area_count != count {
+        refuse(
+            "VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908",
+            format!(
+                "deviceRenderAreaCount is {}, and the device has {count} physical devices",
+                g.device_render_area_count
+            ),
+        )?;
+    }
+    let limits = super::limits(device);
+    // SAFETY: the safe setter stores the areas with their count.
+    let areas =
+        unsafe { crate::retention::raw_slice(g.p_device_render_areas, g.device_render_area_count) };
+    let end = |offset: i32, extent: u32| i64::from(offset) + i64::from(extent);
+    for (n, a) in areas.iter().enumerate() {
+        let (x, y) = (
+            end(a.offset.x, a.extent.width),
+            end(a.offset.y, a.extent.height),
+        );
+        for (ok, vuid) in [
+            (
+                a.offset.x >= 0,
+                "VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166",
+            ),
+            (
+                a.offset.y >= 0,
+                "VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167",
+            ),
+            (
+                x <= i64::from(limits.max_framebuffer_width),
+                "VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168",
+            ),
+            (
+                y <= i64::from(limits.max_framebuffer_height),
+                "VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169",
+            ),
+            (
+                framebuffer.is_none_or(|f| x <= i64::from(f[0])),
+                "VUID-VkRenderPassBeginInfo-pNext-02856",
+            ),
+            (
+                framebuffer.is_none_or(|f| y <= i64::from(f[1])),
+                "VUID-VkRenderPassBeginInfo-pNext-02857",
+            ),
+        ] {
+            if !ok {
+                refuse(
+                    vuid,
+                    format!("pDeviceRenderAreas[{n}] ({a:?}) is outside the framebuffer ({framebuffer:?}) or its limits"),
+                )?;
+            }
+        }
+    }
+    Ok(())
 }

@@ -162,6 +162,9 @@ const BARRIER_PLANES: &str = "checked by the safe methods in every build, but no
 const BARRIER_FAMILY: &str = "checked by the safe methods in every build (the specification's table of the stages each queue capability supports), but no test breaks it: lavapipe's only queue family supports every stage";
 const PASS_BEGIN: &str = "checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them";
 const PASS_BEGIN_UNPROVEN: &str = "checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts";
+const PASS_GROUP: &str = "checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits";
+const PASS_GROUP_LIMIT: &str = "checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one)";
+const PASS_GROUP_MASK: &str = "checked by the safe methods in every build, but no test breaks it: in a group of one physical device, the only valid masks are the initial mask";
 const LAYOUT_BARRIER: &str = "checks the old layout against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave; an acquire (a transfer from another queue family to the pool's) follows the new layout without needing the old one, which the release named and moved from";
 const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
@@ -983,6 +986,16 @@ pub const SPECIALS: &[Special] = &[
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
         ),
         settles: &[
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02856", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkRenderPassBeginInfo-pNext-02857", How::Dynamic(PASS_GROUP)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168", How::Dynamic(PASS_GROUP_LIMIT)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169", How::Dynamic(PASS_GROUP_LIMIT)),
+            ("VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907", How::User(PASS_GROUP_MASK)),
+            ("VUID-VkRenderPassBeginInfo-clearValueCount-04962", How::Static("set from a slice by the safe setter, which stores its pointer with its count")),
             ("VUID-vkCmdBeginRenderPass-initialLayout-00897", How::Dynamic(PASS_BEGIN)),
             ("VUID-vkCmdBeginRenderPass-initialLayout-00898", How::Dynamic(PASS_BEGIN)),
             ("VUID-vkCmdBeginRenderPass-initialLayout-00899", How::Dynamic(PASS_BEGIN)),

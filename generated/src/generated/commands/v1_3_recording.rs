@@ -7,16 +7,9 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 58 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 51 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginRendering-commandBuffer-06068`: If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: `deviceMask` must be a valid device mask value
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`: `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: `deviceRenderAreaCount` must either be zero or equal to the number of physical devices in the logical device
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: The `offset.x` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`: The `offset.y` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`: The sum of the `offset.x` and `extent.width` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferWidth`
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`: The sum of the `offset.y` and `extent.height` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferHeight`
 - `VUID-VkRenderingAttachmentInfo-imageView-06129`: If `imageView` is not VK_NULL_HANDLE and has a non-integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_AVERAGE_BIT`
 - `VUID-VkRenderingAttachmentInfo-imageView-06130`: If `imageView` is not VK_NULL_HANDLE and has an integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_SAMPLE_ZERO_BIT`
 - `VUID-VkRenderingAttachmentInfo-imageView-06864`: If `imageView` is not VK_NULL_HANDLE, `resolveImageView` is not VK_NULL_HANDLE, and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageView` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`

@@ -2926,6 +2926,7 @@ impl<'a> QueryPoolCreateInfo<'a> {
 The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassBeginInfo.html). Settled by the wrappers:
 
 - `VUID-VkRenderPassBeginInfo-clearValueCount-00902`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-VkRenderPassBeginInfo-clearValueCount-04962`: static (set from a slice by the safe setter, which stores its pointer with its count)
 - `VUID-VkRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkRenderPassBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2936,8 +2937,10 @@ The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khr
 - `VUID-VkRenderPassBeginInfo-pNext-02851`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
 - `VUID-VkRenderPassBeginInfo-pNext-02852`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
 - `VUID-VkRenderPassBeginInfo-pNext-02853`: dynamic (checks the render area against the framebuffer's size, the clear values against the largest attachment the render pass clears, and each layout the render pass gives an attachment against the usage of the framebuffer's view, as the device recorded them)
+- `VUID-VkRenderPassBeginInfo-pNext-02856`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
+- `VUID-VkRenderPassBeginInfo-pNext-02857`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 22 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassBeginInfo<'a> {

@@ -446,11 +446,17 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a
 
 The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupRenderPassBeginInfo.html). Settled by the wrappers:
 
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
 - `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`: dynamic (checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one))
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`: dynamic (checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one))
 - `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no test breaks it: in a group of one physical device, the only valid masks are the initial mask).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {
