@@ -651,7 +651,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
         let safe = match b.record(&mut rec, false) {
             Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
             other => format!("{other:?}"),

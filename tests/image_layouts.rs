@@ -1075,7 +1075,8 @@ fn a_device_group_render_pass_begin_is_checked() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) }
+        let rec = rec
+            .cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
             .cmd_end_render_pass();
         let said = match rec.end() {
             Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
@@ -1118,4 +1119,271 @@ fn a_device_group_render_pass_begin_is_checked() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert_silent(&s.messages);
+}
+
+/// The views a render pass instance on an imageless framebuffer is given must
+/// match the framebuffer's attachment image infos and the render pass's
+/// attachments; a framebuffer with views takes none; and the render pass must be
+/// compatible with the framebuffer's.
+#[test]
+fn the_views_of_an_imageless_framebuffer_and_the_render_pass_are_checked() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let srgb = vk::Format::R8G8B8A8_SRGB;
+    let color_usage = vk::ImageUsageFlags::COLOR_ATTACHMENT;
+    // A one-attachment render pass of `format`.
+    let pass = |format: vk::Format| {
+        let attachments = [vk::AttachmentDescription {
+            format,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::DONT_CARE,
+            store_op: vk::AttachmentStoreOp::STORE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: UNDEFINED,
+            final_layout: ATTACHMENT,
+            ..Default::default()
+        }];
+        let color = [vk::AttachmentReference {
+            attachment: 0,
+            layout: ATTACHMENT,
+        }];
+        let subpasses = [tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color)];
+        d.create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpasses),
+        )
+        .expect("render pass")
+    };
+    let render_pass = pass(rgba);
+    let formats = [rgba, srgb];
+    // A view of a new image: (width, height, layers, levels, samples, flags, usage,
+    // listed view formats, view format, swizzled).
+    type Spec = (
+        u32,
+        u32,
+        u32,
+        u32,
+        u32,
+        vk::ImageCreateFlags,
+        vk::ImageUsageFlags,
+        usize,
+        vk::Format,
+        bool,
+    );
+    let view = |(w, h, layers, levels, samples, flags, usage, listed, format, swizzle): Spec| {
+        let mut list = tuff::ImageFormatListCreateInfo::new().view_formats(&formats[..listed]);
+        let image = d
+            .create_image(
+                &tuff::ImageCreateInfo::new()
+                    .flags(flags)
+                    .image_type(vk::ImageType::TYPE_2D)
+                    .format(rgba)
+                    .extent(vk::Extent3D {
+                        width: w,
+                        height: h,
+                        depth: 1,
+                    })
+                    .mip_levels(levels)
+                    .array_layers(layers)
+                    .samples(vk::SampleCountFlags::from_raw(samples))
+                    .usage(usage)
+                    .push_next(&mut list),
+            )
+            .expect("image");
+        let memory = s.bind_image(&image);
+        let components = if swizzle {
+            vk::ComponentMapping {
+                r: vk::ComponentSwizzle::G,
+                ..Default::default()
+            }
+        } else {
+            vk::ComponentMapping::default()
+        };
+        let view = d
+            .create_image_view(
+                &tuff::ImageViewCreateInfo::new(&image)
+                    .view_type(if layers > 1 {
+                        vk::ImageViewType::TYPE_2D_ARRAY
+                    } else {
+                        vk::ImageViewType::TYPE_2D
+                    })
+                    .format(format)
+                    .components(components)
+                    .subresource_range(vk::ImageSubresourceRange {
+                        aspect_mask: COLOR,
+                        base_mip_level: 0,
+                        level_count: levels,
+                        base_array_layer: 0,
+                        layer_count: layers,
+                    }),
+            )
+            .expect("view");
+        (image, memory, view)
+    };
+    let mutable = vk::ImageCreateFlags::MUTABLE_FORMAT;
+    let good: Spec = (8, 8, 1, 1, 1, mutable, color_usage, 2, rgba, false);
+    // The framebuffer's one attachment image info, which `good` matches.
+    let info = [tuff::FramebufferAttachmentImageInfo::new()
+        .flags(mutable)
+        .usage(color_usage)
+        .width(8)
+        .height(8)
+        .layer_count(1)
+        .view_formats(&formats)];
+    let mut attachments =
+        tuff::FramebufferAttachmentsCreateInfo::new().attachment_image_infos(&info);
+    // An imageless framebuffer reads only the count of its attachments.
+    let (_placeholder_image, _placeholder_memory, placeholder) = view(good);
+    let counted = tuff::HandleSlice::new(&[&placeholder]);
+    let imageless = d
+        .create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&render_pass)
+                .flags(vk::FramebufferCreateFlags::IMAGELESS)
+                .attachments(&counted)
+                .width(8)
+                .height(8)
+                .layers(1)
+                .push_next(&mut attachments),
+        )
+        .expect("imageless framebuffer");
+    let with = |f: fn(&mut Spec)| {
+        let mut spec = good;
+        f(&mut spec);
+        spec
+    };
+    let cases: Vec<(Vec<Spec>, &str)> = vec![
+        (
+            vec![good, good],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03208",
+        ),
+        (
+            vec![with(|s| s.3 = 2)],
+            "VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218",
+        ),
+        (
+            vec![with(|s| s.9 = true)],
+            "VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219",
+        ),
+        (
+            vec![with(|s| {
+                s.5 = vk::ImageCreateFlags::empty();
+                s.7 = 1;
+            })],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03209",
+        ),
+        (
+            vec![with(|s| {
+                s.6 = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC
+            })],
+            "VUID-VkRenderPassBeginInfo-framebuffer-04627",
+        ),
+        (
+            vec![with(|s| s.0 = 16)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03211",
+        ),
+        (
+            vec![with(|s| s.1 = 16)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03212",
+        ),
+        (
+            vec![with(|s| s.2 = 2)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03213",
+        ),
+        (
+            vec![with(|s| s.7 = 1)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03214",
+        ),
+        (
+            vec![with(|s| s.8 = vk::Format::R8G8B8A8_SRGB)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03216",
+        ),
+        (
+            vec![with(|s| s.4 = 4)],
+            "VUID-VkRenderPassBeginInfo-framebuffer-03217",
+        ),
+    ];
+    let mut wrong = Vec::new();
+    let mut kept = Vec::new();
+    for (spec, rule) in cases {
+        let made: Vec<_> = spec.into_iter().map(view).collect();
+        let views: Vec<&tuff::ImageView> = made.iter().map(|m| &m.2).collect();
+        let handles = tuff::HandleSlice::new(&views);
+        let mut given = tuff::RenderPassAttachmentBeginInfo::new().attachments(&handles);
+        let begin = tuff::RenderPassBeginInfo::new(&render_pass, &imageless)
+            .render_area(AREA)
+            .push_next(&mut given);
+        wrong.extend(try_begin(&s, &begin, rule));
+        kept.push(made);
+    }
+    // A framebuffer with views takes none from the begin info; and a render pass
+    // of another format is not compatible with the framebuffer's.
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let (_i, _m, extra) = view(good);
+    let extra_views = [&extra];
+    let handles = tuff::HandleSlice::new(&extra_views);
+    let mut given = tuff::RenderPassAttachmentBeginInfo::new().attachments(&handles);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(AREA)
+        .clear_values(&clear)
+        .push_next(&mut given);
+    wrong.extend(try_begin(
+        &s,
+        &begin,
+        "VUID-VkRenderPassBeginInfo-framebuffer-03207",
+    ));
+    let other = pass(vk::Format::B8G8R8A8_UNORM);
+    let begin = tuff::RenderPassBeginInfo::new(&other, &target.framebuffer).render_area(AREA);
+    wrong.extend(try_begin(
+        &s,
+        &begin,
+        "VUID-VkRenderPassBeginInfo-renderPass-00904",
+    ));
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    drop(kept);
+    assert_silent(&s.messages);
+}
+
+/// Begins and ends a render pass instance with `begin`, safely (which must name
+/// `rule`) and unchecked under the layer (which must name it too); returns what
+/// went wrong.
+fn try_begin(s: &Setup, begin: &tuff::RenderPassBeginInfo<'_>, rule: &str) -> Option<String> {
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let rec = rec
+        .cmd_begin_render_pass(begin, vk::SubpassContents::INLINE)
+        .cmd_end_render_pass();
+    let said = match rec.end() {
+        Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
+        other => format!("{other:?}"),
+    };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    let rec = unsafe {
+        rec.cmd_begin_render_pass_unchecked(begin, vk::SubpassContents::INLINE)
+            .cmd_end_render_pass_unchecked()
+    };
+    s.messages.abort_on_error(false);
+    drop(rec);
+    let errors: Vec<String> = s
+        .messages
+        .take()
+        .into_iter()
+        .filter(|m| m.starts_with("ERROR"))
+        .map(|m| m.split(']').next().unwrap_or(&m).to_string())
+        .collect();
+    let named = errors.iter().any(|m| m.contains(rule));
+    (said != rule || !named).then(|| format!("{rule}: tuff said {said}; the layer said {errors:?}"))
 }

@@ -158,7 +158,7 @@ fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
         })
         .clear_values(&clear);
     // Neither the begin nor the matching end reaches the driver.
-    let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+    let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
     let rec = rec.cmd_end_render_pass();
     assert_eq!(vuid(rec.end()), "VUID-vkCmdBeginRenderPass-bufferlevel");
     assert!(!cb.is_executable());

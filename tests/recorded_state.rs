@@ -677,16 +677,12 @@ fn in_render_pass(
             height: 4,
         },
     };
-    // SAFETY: the framebuffer is the render pass's, the area inside it, and the
-    // attachment's layout is what the render pass expects.
-    let mut rec = unsafe {
-        rec.cmd_begin_render_pass(
-            &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
-                .render_area(area)
-                .clear_values(&clear),
-            vk::SubpassContents::INLINE,
-        )
-    };
+    let mut rec = rec.cmd_begin_render_pass(
+        &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+            .render_area(area)
+            .clear_values(&clear),
+        vk::SubpassContents::INLINE,
+    );
     inside(&mut rec);
     rec.cmd_end_render_pass().end()
 }
@@ -708,21 +704,18 @@ fn inside_area<'c>(
     (rp, fb): (&tuff::RenderPass, &tuff::Framebuffer),
 ) -> tuff::Recorder<'c, tuff::InRenderPass> {
     let clear = [vk::ClearValue::default()];
-    // SAFETY: as in `in_render_pass`.
-    unsafe {
-        rec.cmd_begin_render_pass(
-            &tuff::RenderPassBeginInfo::new(rp, fb)
-                .render_area(vk::Rect2D {
-                    offset: vk::Offset2D::default(),
-                    extent: vk::Extent2D {
-                        width: 4,
-                        height: 4,
-                    },
-                })
-                .clear_values(&clear),
-            vk::SubpassContents::INLINE,
-        )
-    }
+    rec.cmd_begin_render_pass(
+        &tuff::RenderPassBeginInfo::new(rp, fb)
+            .render_area(vk::Rect2D {
+                offset: vk::Offset2D::default(),
+                extent: vk::Extent2D {
+                    width: 4,
+                    height: 4,
+                },
+            })
+            .clear_values(&clear),
+        vk::SubpassContents::INLINE,
+    )
 }
 
 #[test]

@@ -758,9 +758,7 @@ fn recorder_states_follow_the_begin_info() {
             },
         })
         .clear_values(&clear);
-    let mut rec = unsafe {
-        rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS)
-    };
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
     unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
     rec.cmd_end_render_pass().end().expect("end primary");
     let done = fence(&s);
@@ -876,7 +874,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             )
             .expect("recorded")
         };
-        let rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
         rec.cmd_end_render_pass().end().expect("end");
         submit(&s, &[&cb], &done).expect("submit");
         // Set from another thread after a while, so that a failed assertion below
@@ -3567,7 +3565,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_set);
             }
         }
-        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
         for (expected, draw) in &draws {
             if unchecked {
                 draw(&mut rec, true).expect("recorded");

@@ -213,16 +213,13 @@ pub fn record_frame<S: Scene>(
         },
     ];
     let area: vk::Rect2D = view.extent.into();
-    // SAFETY: the frame's command buffer is recorded once per submission, from a graphics pool.
-    let mut rec = unsafe {
-        frame.record()?.cmd_begin_render_pass(
-            &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
-                .render_area(area)
-                // Without a depth attachment, only the color is cleared.
-                .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
-            vk::SubpassContents::INLINE,
-        )
-    };
+    let mut rec = frame.record()?.cmd_begin_render_pass(
+        &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+            .render_area(area)
+            // Without a depth attachment, only the color is cleared.
+            .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
+        vk::SubpassContents::INLINE,
+    );
     rec.cmd_set_viewport(
         0,
         &[vk::Viewport {

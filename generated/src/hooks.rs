@@ -5538,6 +5538,9 @@ pub(crate) fn render_pass_created(
             self_dependencies: render_pass::self_dependencies(create_info),
             clear_count: render_pass::clears(create_info),
             taken: render_pass::layouts_taken(create_info),
+            stencil_taken: Vec::new(),
+            may_alias: render_pass::may_alias(create_info),
+            dependency_stages: render_pass::dependency_stages(create_info),
         },
     );
     render_pass
@@ -5569,6 +5572,9 @@ pub(crate) fn render_pass2_created(
             self_dependencies: render_pass::self_dependencies2(create_info),
             clear_count: render_pass::clears2(create_info),
             taken: render_pass::layouts_taken2(create_info),
+            stencil_taken: render_pass::stencil_layouts2(create_info),
+            may_alias: render_pass::may_alias2(create_info),
+            dependency_stages: render_pass::dependency_stages2(create_info),
         },
     );
     render_pass

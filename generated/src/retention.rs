@@ -64,6 +64,20 @@ type SetRanges = HashMap<(u32, u32), DynamicRange>;
 /// and layer count.
 pub(crate) type FramebufferRecord = (Vec<vk::ImageView>, [u32; 3]);
 
+/// What an imageless framebuffer's `VkFramebufferAttachmentImageInfo` says of the
+/// view that a render pass instance on it gives for one attachment.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct AttachmentImage {
+    /// `flags`.
+    pub flags: vk::ImageCreateFlags,
+    /// `usage`.
+    pub usage: vk::ImageUsageFlags,
+    /// `width`, `height` and `layerCount`.
+    pub size: [u32; 3],
+    /// `pViewFormats`, sorted.
+    pub formats: Vec<vk::Format>,
+}
+
 /// Where a buffer or image is bound: the raw memory, the offset there and the
 /// bytes it takes.
 pub(crate) type Binding = (u64, u64, u64);
@@ -88,6 +102,10 @@ pub(crate) struct Live {
     /// Each live framebuffer's attachments (none for an imageless one) and its
     /// width, height and layer count.
     framebuffers: Vutex<HashMap<u64, FramebufferRecord>>,
+    /// Each live imageless framebuffer's attachment image infos.
+    imageless: Vutex<HashMap<u64, Vec<AttachmentImage>>>,
+    /// The record of the render pass each live framebuffer was created with.
+    framebuffer_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
     /// The view formats each live image's create info listed, where it listed any.
     view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
     /// Each live sampler Y'CbCr conversion's format.
@@ -211,6 +229,14 @@ pub(crate) struct RenderPassRecord {
     pub clear_count: u32,
     /// Every layout each attachment takes: initial, final, and in each reference.
     pub taken: Vec<Vec<vk::ImageLayout>>,
+    /// The layouts each attachment's stencil aspect takes through
+    /// `VkAttachmentDescriptionStencilLayout` and `VkAttachmentReferenceStencilLayout`.
+    pub stencil_taken: Vec<Vec<vk::ImageLayout>>,
+    /// Each attachment's `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT`.
+    pub may_alias: Vec<bool>,
+    /// The union of the source and of the destination stage masks of its
+    /// dependencies.
+    pub dependency_stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
 }
 
 /// A render pass's dependency from a subpass to itself, which a pipeline barrier
@@ -476,6 +502,8 @@ impl Default for Live {
             formats: Vutex::new(HashMap::default()),
             present_masks: Vutex::new(None),
             framebuffers: Vutex::new(HashMap::default()),
+            imageless: Vutex::new(HashMap::default()),
+            framebuffer_passes: Vutex::new(HashMap::default()),
             swapchains: Vutex::new(HashMap::default()),
             swapchain_states: Vutex::new(HashMap::default()),
             shader_modules: Vutex::new(HashMap::default()),
@@ -654,6 +682,9 @@ impl Live {
             }
             vk::ObjectType::FRAMEBUFFER => {
                 self.framebuffers.lock().remove(&key.1);
+                self.imageless.lock().remove(&key.1);
+                let pass = self.framebuffer_passes.lock().remove(&key.1);
+                drop(pass);
             }
             vk::ObjectType::COMMAND_POOL => {
                 self.pools.lock().remove(&key.1);
@@ -917,6 +948,32 @@ impl Live {
         self.framebuffers
             .lock()
             .insert(raw.as_raw(), (views.to_vec(), size));
+    }
+
+    /// Records an imageless framebuffer's attachment image infos.
+    pub(crate) fn imageless_created(&self, raw: vk::Framebuffer, infos: Vec<AttachmentImage>) {
+        self.imageless.lock().insert(raw.as_raw(), infos);
+    }
+
+    /// A live imageless framebuffer's attachment image infos (`None` for a
+    /// framebuffer with image views).
+    pub(crate) fn imageless(&self, raw: vk::Framebuffer) -> Option<Vec<AttachmentImage>> {
+        self.imageless.lock().get(&raw.as_raw()).cloned()
+    }
+
+    /// Records the render pass a new framebuffer was created with.
+    pub(crate) fn framebuffer_pass(&self, raw: vk::Framebuffer, pass: vk::RenderPass) {
+        if let Some(record) = self.render_pass(pass) {
+            self.framebuffer_passes.lock().insert(raw.as_raw(), record);
+        }
+    }
+
+    /// The record of the render pass a live framebuffer was created with.
+    pub(crate) fn framebuffer_pass_record(
+        &self,
+        raw: vk::Framebuffer,
+    ) -> Option<Vrc<RenderPassRecord>> {
+        self.framebuffer_passes.lock().get(&raw.as_raw()).cloned()
     }
 
     /// A live framebuffer's width, height and layer count.

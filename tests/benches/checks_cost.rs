@@ -156,7 +156,7 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
     let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(AREA)
         .clear_values(&clear);
-    let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
     rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
         .expect("bind");
     rec.cmd_set_viewport(0, &[VIEWPORT]).expect("viewport");

@@ -106,7 +106,7 @@ fn main() {
         let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             .clear_values(&clear);
-        let mut rec = unsafe { rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE) };
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
             .expect("bind");
         rec.cmd_set_viewport(0, &[viewport]).expect("viewport");

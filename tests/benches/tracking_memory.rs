@@ -281,14 +281,12 @@ fn main() {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let mut rec = unsafe {
-        rec.cmd_begin_render_pass(
-            &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                .render_area(area)
-                .clear_values(&clear),
-            vk::SubpassContents::INLINE,
-        )
-    };
+    let mut rec = rec.cmd_begin_render_pass(
+        &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+            .render_area(area)
+            .clear_values(&clear),
+        vk::SubpassContents::INLINE,
+    );
     rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
         .expect("bind");
     rec.cmd_set_viewport(0, &[viewport]).expect("viewport");

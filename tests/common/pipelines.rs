@@ -321,14 +321,12 @@ impl Pipelines {
                 height: size,
             },
         };
-        let mut rec = unsafe {
-            rec.cmd_begin_render_pass(
-                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                    .render_area(area)
-                    .clear_values(&clear),
-                vk::SubpassContents::INLINE,
-            )
-        };
+        let mut rec = rec.cmd_begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                .render_area(area)
+                .clear_values(&clear),
+            vk::SubpassContents::INLINE,
+        );
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
             .expect("recorded");
         rec.cmd_set_viewport(

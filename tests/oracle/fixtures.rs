@@ -208,7 +208,8 @@ pub fn device_group_render_pass_begin_info(
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let safe = unsafe { rec.cmd_begin_render_pass(&info, vk::SubpassContents::INLINE) }
+    let safe = rec
+        .cmd_begin_render_pass(&info, vk::SubpassContents::INLINE)
         .cmd_end_render_pass()
         .end();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);

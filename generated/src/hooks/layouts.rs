@@ -406,6 +406,44 @@ pub(crate) fn framebuffer_created(
         views,
         [info.width, info.height, info.layers],
     );
+    device
+        .live()
+        .framebuffer_pass(framebuffer.raw(), info.render_pass);
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let images: Option<&vk::FramebufferAttachmentsCreateInfo<'_>> = unsafe {
+        super::chained(
+            info.p_next,
+            vk::StructureType::FRAMEBUFFER_ATTACHMENTS_CREATE_INFO,
+        )
+    };
+    if let (true, Some(images)) = (
+        info.flags.contains(vk::FramebufferCreateFlags::IMAGELESS),
+        images,
+    ) {
+        // SAFETY: the safe setters store each array with its count.
+        let infos = unsafe {
+            crate::retention::raw_slice(
+                images.p_attachment_image_infos,
+                images.attachment_image_info_count,
+            )
+        }
+        .iter()
+        .map(|i| {
+            // SAFETY: as above.
+            let mut formats =
+                unsafe { crate::retention::raw_slice(i.p_view_formats, i.view_format_count) }
+                    .to_vec();
+            formats.sort_by_key(|f| f.as_raw());
+            crate::retention::AttachmentImage {
+                flags: i.flags,
+                usage: i.usage,
+                size: [i.width, i.height, i.layer_count],
+                formats,
+            }
+        })
+        .collect();
+        device.live().imageless_created(framebuffer.raw(), infos);
+    }
     framebuffer
 }
 

@@ -19,6 +19,13 @@ pub(crate) struct BeginRules {
     /// needs one when the render pass gives the attachment one of them, and the
     /// rule.
     pub usage: [(&'static [L], U, &'static str); 6],
+    /// The render pass's dependencies' source and destination stages are ones the
+    /// pool's queue family supports.
+    pub dependency_stages: (&'static str, &'static str),
+    /// Attachments that alias memory and are written have MAY_ALIAS.
+    pub alias: &'static str,
+    /// The stencil layout structs' STENCIL layouts need the depth/stencil usage.
+    pub stencil: &'static str,
 }
 
 const COLOR: &[L] = &[L::COLOR_ATTACHMENT_OPTIMAL];
@@ -74,6 +81,12 @@ pub(crate) const BEGIN: BeginRules = BeginRules {
             "VUID-vkCmdBeginRenderPass-initialLayout-02842",
         ),
     ],
+    dependency_stages: (
+        "VUID-vkCmdBeginRenderPass-srcStageMask-06451",
+        "VUID-vkCmdBeginRenderPass-dstStageMask-06452",
+    ),
+    alias: "VUID-vkCmdBeginRenderPass-framebuffer-02532",
+    stencil: "VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843",
 };
 
 /// `vkCmdBeginRenderPass2`.
@@ -111,6 +124,12 @@ pub(crate) const BEGIN2: BeginRules = BeginRules {
             "VUID-vkCmdBeginRenderPass2-initialLayout-02844",
         ),
     ],
+    dependency_stages: (
+        "VUID-vkCmdBeginRenderPass2-srcStageMask-06453",
+        "VUID-vkCmdBeginRenderPass2-dstStageMask-06454",
+    ),
+    alias: "VUID-vkCmdBeginRenderPass2-framebuffer-02533",
+    stencil: "VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845",
 };
 
 /// The checks of a render pass instance's begin: the render area inside the
@@ -177,11 +196,57 @@ pub(crate) fn begin_render_pass_checks<S: State>(
             ),
         )?;
     }
+    let family = super::pool_family(recorder);
+    let no_host = |m: vk::PipelineStageFlags| m & !vk::PipelineStageFlags::HOST;
+    for (mask, vuid) in [
+        (pass.dependency_stages.0, rules.dependency_stages.0),
+        (pass.dependency_stages.1, rules.dependency_stages.1),
+    ] {
+        if let Some(st) = super::stages::unsupported_stage(no_host(mask), family.flags) {
+            refuse(
+                vuid,
+                format!("a dependency of the render pass names {st:?}, which the pool's queue family ({:?}) does not support", family.flags),
+            )?;
+        }
+    }
+    if let Some(made_with) = live.framebuffer_pass_record(raw.framebuffer) {
+        let compatible = made_with.attachments.len() == pass.attachments.len()
+            && made_with
+                .attachments
+                .iter()
+                .zip(&pass.attachments)
+                .all(|(a, b)| a.0 == b.0 && a.1 == b.1)
+            && made_with.view_masks == pass.view_masks
+            && made_with.color_formats == pass.color_formats
+            && made_with.depth_formats == pass.depth_formats
+            && made_with.used == pass.used;
+        if !compatible {
+            refuse(
+                "VUID-VkRenderPassBeginInfo-renderPass-00904",
+                "the render pass is not compatible with the one the framebuffer was created with (its attachments' formats and sample counts, or its subpasses' attachments and view masks, differ)".into(),
+            )?;
+        }
+    }
+    check_attachment_views(live, render_pass_begin, &pass)?;
     let views = super::layouts::pass_views(live, render_pass_begin);
+    check_aliasing(live, &views, &pass, rules.alias)?;
     for (n, (view, taken)) in views.iter().zip(&pass.taken).enumerate() {
         let Some(v) = live.view(*view) else {
             continue;
         };
+        let stencil = [L::STENCIL_ATTACHMENT_OPTIMAL, L::STENCIL_READ_ONLY_OPTIMAL];
+        if let Some(l) = pass
+            .stencil_taken
+            .get(n)
+            .and_then(|t| t.iter().find(|l| stencil.contains(l)))
+        {
+            if !v.usage.contains(U::DEPTH_STENCIL_ATTACHMENT) {
+                refuse(
+                    rules.stencil,
+                    format!("the render pass gives attachment {n}'s stencil aspect layout {l:?}, and its view's usage {:?} lacks DEPTH_STENCIL_ATTACHMENT", v.usage),
+                )?;
+            }
+        }
         for (layouts, needs, vuid) in &rules.usage {
             if let Some(l) = taken.iter().find(|l| layouts.contains(l)) {
                 if !v.usage.intersects(*needs) {
@@ -274,6 +339,141 @@ fn check_device_group<S: State>(
                 refuse(
                     vuid,
                     format!("pDeviceRenderAreas[{n}] ({a:?}) is outside the framebuffer ({framebuffer:?}) or its limits"),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The views a chained `VkRenderPassAttachmentBeginInfo` gives: none for a
+/// framebuffer with image views; for an imageless one, one per attachment image
+/// info, each matching it and the render pass's attachment, a single level with
+/// the identity swizzle, and no 3D view.
+fn check_attachment_views(
+    live: &crate::retention::Live,
+    render_pass_begin: &RenderPassBeginInfo<'_>,
+    pass: &crate::retention::RenderPassRecord,
+) -> Result<()> {
+    let raw = render_pass_begin.as_raw();
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let chained: Option<&vk::RenderPassAttachmentBeginInfo<'_>> = unsafe {
+        super::chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_ATTACHMENT_BEGIN_INFO,
+        )
+    };
+    // SAFETY: the safe setter stores the views with their count.
+    let views = chained.map_or(&[][..], |c| unsafe {
+        crate::retention::raw_slice(c.p_attachments, c.attachment_count)
+    });
+    let Some(infos) = live.imageless(raw.framebuffer) else {
+        if !views.is_empty() {
+            refuse(
+                "VUID-VkRenderPassBeginInfo-framebuffer-03207",
+                "a framebuffer with image views, and a chained VkRenderPassAttachmentBeginInfo that gives views too".into(),
+            )?;
+        }
+        return Ok(());
+    };
+    if views.len() != infos.len() {
+        refuse(
+            "VUID-VkRenderPassBeginInfo-framebuffer-03208",
+            format!(
+                "the imageless framebuffer has {} attachment image infos, and the begin info gives {} views",
+                infos.len(),
+                views.len()
+            ),
+        )?;
+    }
+    for (n, (view, info)) in views.iter().zip(&infos).enumerate() {
+        let (Some(v), at) = (live.view(*view), format!("pAttachments[{n}]")) else {
+            refuse(
+                "VUID-VkRenderPassBeginInfo-framebuffer-02780",
+                format!("pAttachments[{n}] is no view of the framebuffer's device"),
+            )?;
+            continue;
+        };
+        let Some(image) = live.image(v.image) else {
+            continue;
+        };
+        let size = |e: u32| (e >> v.base_level.min(31)).max(1);
+        let mut formats = live.view_formats(v.image);
+        formats.sort_by_key(|f| f.as_raw());
+        let attachment = pass.attachments.get(n);
+        for (ok, vuid, what) in [
+            (v.levels == 1, "VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218", "names more than one mip level"),
+            (v.identity, "VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219", "swizzles its components"),
+            (v.view_type != vk::ImageViewType::TYPE_3D, "VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114", "is a 3D view"),
+            (image.flags == info.flags, "VUID-VkRenderPassBeginInfo-framebuffer-03209", "is of an image whose flags differ from its attachment image info's"),
+            (v.usage == info.usage, "VUID-VkRenderPassBeginInfo-framebuffer-04627", "has a usage other than its attachment image info's"),
+            (size(image.extent.width) == info.size[0], "VUID-VkRenderPassBeginInfo-framebuffer-03211", "has a width other than its attachment image info's"),
+            (size(image.extent.height) == info.size[1], "VUID-VkRenderPassBeginInfo-framebuffer-03212", "has a height other than its attachment image info's"),
+            (v.layers == info.size[2], "VUID-VkRenderPassBeginInfo-framebuffer-03213", "has a layer count other than its attachment image info's"),
+            // An image that lists no view formats is compared by its view's format
+            // alone (03216), as the 1.3.239 layer does.
+            (formats.is_empty() || formats.len() == info.formats.len(), "VUID-VkRenderPassBeginInfo-framebuffer-03214", "is of an image listing another number of view formats than its attachment image info"),
+            (formats.is_empty() || formats == info.formats, "VUID-VkRenderPassBeginInfo-framebuffer-03215", "is of an image listing other view formats than its attachment image info"),
+            (attachment.is_none_or(|a| a.0 == v.format), "VUID-VkRenderPassBeginInfo-framebuffer-03216", "has a format other than the render pass's attachment"),
+            (attachment.is_none_or(|a| a.1 == image.samples), "VUID-VkRenderPassBeginInfo-framebuffer-03217", "is of an image with a sample count other than the render pass's attachment"),
+        ] {
+            if !ok {
+                refuse(vuid, format!("{at} {what}"))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Refuses two attachments the render pass uses, one of them written, whose
+/// views share memory (the same subresources of one image, or bindings that
+/// overlap) unless both have MAY_ALIAS.
+fn check_aliasing(
+    live: &crate::retention::Live,
+    views: &[vk::ImageView],
+    pass: &crate::retention::RenderPassRecord,
+    vuid: &'static str,
+) -> Result<()> {
+    use crate::retention::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_RESOLVE};
+    let written = USED_COLOR | USED_RESOLVE | USED_DEPTH | USED_DEPTH_RESOLVE;
+    let used: Vec<(usize, crate::retention::ViewRecord, u8)> = views
+        .iter()
+        .enumerate()
+        .filter_map(|(i, v)| {
+            let roles = pass.attachments.get(i)?.2;
+            (roles != 0).then_some(())?;
+            Some((i, live.view(*v)?, roles))
+        })
+        .collect();
+    let overlap = |a: (u32, u32), b: (u32, u32)| a.0 < b.1 && b.0 < a.1;
+    for (k, (i, a, ra)) in used.iter().enumerate() {
+        for (j, b, rb) in &used[k + 1..] {
+            if (ra | rb) & written == 0 {
+                continue;
+            }
+            let shared = if a.image == b.image {
+                a.aspect.intersects(b.aspect)
+                    && overlap(
+                        (a.base_level, a.base_level + a.levels),
+                        (b.base_level, b.base_level + b.levels),
+                    )
+                    && overlap(
+                        (a.base_layer, a.base_layer + a.layers),
+                        (b.base_layer, b.base_layer + b.layers),
+                    )
+            } else {
+                match (live.binding(a.image), live.binding(b.image)) {
+                    (Some((ma, oa, sa)), Some((mb, ob, sb))) => {
+                        ma == mb && oa < ob.saturating_add(sb) && ob < oa.saturating_add(sa)
+                    }
+                    _ => false,
+                }
+            };
+            let flagged = |n: usize| pass.may_alias.get(n).copied().unwrap_or(false);
+            if shared && !(flagged(*i) && flagged(*j)) {
+                refuse(
+                    vuid,
+                    format!("attachments {i} and {j} share memory, one is written, and not both have MAY_ALIAS"),
                 )?;
             }
         }

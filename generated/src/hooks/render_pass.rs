@@ -754,6 +754,105 @@ pub(crate) fn layouts_taken2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec
     taken(&Pass::of2(create_info), &attachment_layouts2(create_info))
 }
 
+/// The layouts each attachment's stencil aspect takes through the stencil layout
+/// structs `vkCreateRenderPass2`'s attachments and references chain.
+pub(crate) fn stencil_layouts2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<Vec<vk::ImageLayout>> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setters store each array with its count; a depth/stencil
+    // reference outlives the create info; each chain is a safe struct's, and the
+    // type each sType names.
+    unsafe {
+        let attachments = crate::retention::raw_slice(raw.p_attachments, raw.attachment_count);
+        let mut out: Vec<Vec<vk::ImageLayout>> = attachments
+            .iter()
+            .map(|a| {
+                let s: Option<&vk::AttachmentDescriptionStencilLayout<'_>> = chained(
+                    a.p_next,
+                    vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
+                );
+                s.map_or(Vec::new(), |s| {
+                    vec![s.stencil_initial_layout, s.stencil_final_layout]
+                })
+            })
+            .collect();
+        for sub in crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) {
+            let refs =
+                crate::retention::raw_slice(sub.p_input_attachments, sub.input_attachment_count)
+                    .iter()
+                    .chain(sub.p_depth_stencil_attachment.as_ref());
+            for r in refs {
+                let s: Option<&vk::AttachmentReferenceStencilLayout<'_>> = chained(
+                    r.p_next,
+                    vk::StructureType::ATTACHMENT_REFERENCE_STENCIL_LAYOUT,
+                );
+                if let (Some(s), Some(t)) = (s, out.get_mut(r.attachment as usize)) {
+                    t.push(s.stencil_layout);
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Each attachment's MAY_ALIAS flag (`vkCreateRenderPass`).
+pub(crate) fn may_alias(create_info: &RenderPassCreateInfo<'_>) -> Vec<bool> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+        .iter()
+        .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
+        .collect()
+}
+
+/// [`may_alias`] for `vkCreateRenderPass2`.
+pub(crate) fn may_alias2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<bool> {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the attachments with their count.
+    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+        .iter()
+        .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
+        .collect()
+}
+
+/// The union of the source and of the destination stage masks of the
+/// dependencies of `vkCreateRenderPass`'s create info.
+pub(crate) fn dependency_stages(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the dependencies with their count.
+    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+        .iter()
+        .fold(Default::default(), |(s, d), x| {
+            (s | x.src_stage_mask, d | x.dst_stage_mask)
+        })
+}
+
+/// [`dependency_stages`] for `vkCreateRenderPass2` (a chained `VkMemoryBarrier2`'s
+/// masks, their first 32 bits, in place of the dependency's).
+pub(crate) fn dependency_stages2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stores the dependencies with their count.
+    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+        .iter()
+        .map(|d| {
+            // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+            let barrier: Option<&vk::MemoryBarrier2<'_>> =
+                unsafe { chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2) };
+            barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
+                (
+                    vk::PipelineStageFlags::from_raw(b.src_stage_mask.as_raw() as u32),
+                    vk::PipelineStageFlags::from_raw(b.dst_stage_mask.as_raw() as u32),
+                )
+            })
+        })
+        .fold(Default::default(), |(s, d), (x, y)| (s | x, d | y))
+}
+
 /// The attachments each subpass of `vkCreateRenderPass`'s create info uses (input,
 /// color, resolve and depth/stencil references).
 pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {

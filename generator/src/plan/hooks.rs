@@ -165,6 +165,10 @@ const PASS_BEGIN_UNPROVEN: &str = "checked by the safe methods in every build, b
 const PASS_GROUP: &str = "checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits";
 const PASS_GROUP_LIMIT: &str = "checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one)";
 const PASS_GROUP_MASK: &str = "checked by the safe methods in every build, but no test breaks it: in a group of one physical device, the only valid masks are the initial mask";
+const PASS_VIEWS: &str = "checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them";
+const PASS_FORMATS: &str = "checks the view formats the view's image lists against the attachment image info's (an image that lists none is judged by its view's format alone, as the 1.3.239 layer judges it)";
+const PASS_UNPROVEN: &str = "checked by the safe methods in every build, but no test breaks it yet";
+const PASS_FAMILY: &str = "checked by the safe methods in every build (each dependency's stages against the pool's queue family), but no test breaks it: lavapipe's only queue family supports every stage";
 const LAYOUT_BARRIER: &str = "checks the old layout against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave; an acquire (a transfer from another queue family to the pool's) follows the new layout without needing the old one, which the release named and moved from";
 const UNPROVEN: &str =
     "checked by the safe methods in every build, but no test breaks it yet, so the report does not count it";
@@ -986,6 +990,26 @@ pub const SPECIALS: &[Special] = &[
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
         ),
         settles: &[
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03207", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03208", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03209", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-04627", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03211", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03212", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03213", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03214", How::Dynamic(PASS_FORMATS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03216", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03217", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-renderPass-00904", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219", How::Dynamic(PASS_VIEWS)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-02780", How::User(PASS_UNPROVEN)),
+            ("VUID-VkRenderPassBeginInfo-framebuffer-03215", How::User(PASS_UNPROVEN)),
+            ("VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114", How::User(PASS_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass-framebuffer-02532", How::User(PASS_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843", How::User(PASS_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass-srcStageMask-06451", How::User(PASS_FAMILY)),
+            ("VUID-vkCmdBeginRenderPass-dstStageMask-06452", How::User(PASS_FAMILY)),
             ("VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905", How::Dynamic(PASS_GROUP)),
             ("VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908", How::Dynamic(PASS_GROUP)),
             ("VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166", How::Dynamic(PASS_GROUP)),
@@ -1020,6 +1044,10 @@ pub const SPECIALS: &[Special] = &[
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
         ),
         settles: &[
+            ("VUID-vkCmdBeginRenderPass2-framebuffer-02533", How::User(PASS_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845", How::User(PASS_UNPROVEN)),
+            ("VUID-vkCmdBeginRenderPass2-srcStageMask-06453", How::User(PASS_FAMILY)),
+            ("VUID-vkCmdBeginRenderPass2-dstStageMask-06454", How::User(PASS_FAMILY)),
             ("VUID-vkCmdBeginRenderPass2-initialLayout-03097", How::Dynamic(PASS_BEGIN)),
             ("VUID-vkCmdBeginRenderPass2-initialLayout-03098", How::Dynamic(PASS_BEGIN)),
             ("VUID-vkCmdBeginRenderPass2-initialLayout-03099", How::Dynamic(PASS_BEGIN)),

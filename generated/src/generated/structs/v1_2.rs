@@ -1698,10 +1698,15 @@ for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
 
 The rules are on [`VkRenderPassAttachmentBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassAttachmentBeginInfo.html). Settled by the wrappers:
 
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`: dynamic (checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them)
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`: dynamic (checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them)
 - `VUID-VkRenderPassAttachmentBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: checked by the safe methods in every build, but no test breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassAttachmentBeginInfo<'a> {
