@@ -930,14 +930,12 @@ fn a_render_pass_begin_is_checked_against_its_framebuffer() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let rec = unsafe {
-            if two {
-                rec.cmd_begin_render_pass2(&begin, &contents)
-                    .cmd_end_render_pass2(&end)
-            } else {
-                rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
-                    .cmd_end_render_pass()
-            }
+        let rec = if two {
+            rec.cmd_begin_render_pass2(&begin, &contents)
+                .cmd_end_render_pass2(&end)
+        } else {
+            rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
+                .cmd_end_render_pass()
         };
         assert_eq!(vuid(rec.end()), rule, "two: {two}");
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -1386,4 +1384,54 @@ fn try_begin(s: &Setup, begin: &tuff::RenderPassBeginInfo<'_>, rule: &str) -> Op
         .collect();
     let named = errors.iter().any(|m| m.contains(rule));
     (said != rule || !named).then(|| format!("{rule}: tuff said {said}; the layer said {errors:?}"))
+}
+
+/// `vkCmdBeginRenderPass2` refuses a framebuffer and render pass of another device
+/// (the unchecked begin is never submitted).
+#[test]
+fn a_render_pass_of_another_device_is_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let other = setup(true);
+    let target = other.color_target(8, vk::ImageUsageFlags::empty());
+    let rule = "VUID-vkCmdBeginRenderPass2-framebuffer-02779";
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(AREA)
+        .clear_values(&clear);
+    let contents = tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE);
+    let end = tuff::SubpassEndInfo::new();
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let rec = rec
+        .cmd_begin_render_pass2(&begin, &contents)
+        .cmd_end_render_pass2(&end);
+    assert_eq!(vuid(rec.end()), rule);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    let rec = unsafe {
+        rec.cmd_begin_render_pass2_unchecked(&begin, &contents)
+            .cmd_end_render_pass2_unchecked(&end)
+    };
+    s.messages.abort_on_error(false);
+    drop(rec);
+    // The 1.3.239 layer names only the begin info's commonparent rule, which the
+    // same objects break: tuff's error alone proves this one.
+    let messages = s.messages.take();
+    assert!(
+        !messages.is_empty()
+            && messages.iter().all(|m| m.contains(rule)
+                    || m.contains("VUID-VkRenderPassBeginInfo-commonparent")
+                    // The end of the instance whose begin the layer skipped.
+                    || m.contains("VUID-vkCmdEndRenderPass2-renderpass")),
+        "the layer said {messages:?}"
+    );
+    assert_silent(&s.messages);
+    assert_silent(&other.messages);
 }

@@ -904,15 +904,12 @@ fn begun2<'c>(
     // SAFETY: no query of the pool is active.
     unsafe { rec.cmd_reset_query_pool(pool, 0, 1) }.expect("reset");
     let clear = [vk::ClearValue::default()];
-    // SAFETY: as in `in_render_pass`.
-    unsafe {
-        rec.cmd_begin_render_pass2(
-            &tuff::RenderPassBeginInfo::new(rp, fb)
-                .render_area(AREA)
-                .clear_values(&clear),
-            &tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE),
-        )
-    }
+    rec.cmd_begin_render_pass2(
+        &tuff::RenderPassBeginInfo::new(rp, fb)
+            .render_area(AREA)
+            .clear_values(&clear),
+        &tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE),
+    )
 }
 
 /// A recorder inside dynamic rendering to `view`, with the one query of `pool`

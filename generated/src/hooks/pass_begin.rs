@@ -26,6 +26,10 @@ pub(crate) struct BeginRules {
     pub alias: &'static str,
     /// The stencil layout structs' STENCIL layouts need the depth/stencil usage.
     pub stencil: &'static str,
+    /// The framebuffer and the render pass are the command buffer's device's (a
+    /// rule of `vkCmdBeginRenderPass2` only; the begin info's own commonparent
+    /// rule says the same for both commands).
+    pub same_device: &'static str,
 }
 
 const COLOR: &[L] = &[L::COLOR_ATTACHMENT_OPTIMAL];
@@ -87,6 +91,7 @@ pub(crate) const BEGIN: BeginRules = BeginRules {
     ),
     alias: "VUID-vkCmdBeginRenderPass-framebuffer-02532",
     stencil: "VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843",
+    same_device: "",
 };
 
 /// `vkCmdBeginRenderPass2`.
@@ -130,6 +135,7 @@ pub(crate) const BEGIN2: BeginRules = BeginRules {
     ),
     alias: "VUID-vkCmdBeginRenderPass2-framebuffer-02533",
     stencil: "VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845",
+    same_device: "VUID-vkCmdBeginRenderPass2-framebuffer-02779",
 };
 
 /// The checks of a render pass instance's begin: the render area inside the
@@ -142,6 +148,17 @@ pub(crate) fn begin_render_pass_checks<S: State>(
 ) -> Result<()> {
     let live = recorder.device().live();
     let raw = render_pass_begin.as_raw();
+    // Every framebuffer and render pass made through the wrappers is listed on its
+    // device: one missing from this device's lists is another device's.
+    if !rules.same_device.is_empty()
+        && (live.render_pass(raw.render_pass).is_none()
+            || live.framebuffer_size(raw.framebuffer).is_none())
+    {
+        refuse(
+            rules.same_device,
+            "the framebuffer or the render pass is not of the command buffer's device".into(),
+        )?;
+    }
     // SAFETY: the chain of a safe struct, and the type its sType names.
     let group: Option<&vk::DeviceGroupRenderPassBeginInfo<'_>> = unsafe {
         super::chained(

@@ -1044,6 +1044,10 @@ pub const SPECIALS: &[Special] = &[
             &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
         ),
         settles: &[
+            (
+                "VUID-vkCmdBeginRenderPass2-framebuffer-02779",
+                How::Dynamic("checks the framebuffer and the render pass are listed on the command buffer's device, as every one made through the wrappers is on its own (the 1.3.239 layer names only the begin info's commonparent rule, which the same objects break: the error alone proves this one)"),
+            ),
             ("VUID-vkCmdBeginRenderPass2-framebuffer-02533", How::User(PASS_UNPROVEN)),
             ("VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845", How::User(PASS_UNPROVEN)),
             ("VUID-vkCmdBeginRenderPass2-srcStageMask-06453", How::User(PASS_FAMILY)),
