@@ -1776,7 +1776,6 @@ pub(crate) fn command_pool_created(
     pool: CommandPool,
     create_info: &CommandPoolCreateInfo<'_>,
 ) -> CommandPool {
-    let flags = crate::validation::family_flags(device, create_info.queue_family_index);
     let physical = device.parent();
     // SAFETY: the physical device is a live wrapper of its instance.
     let families = unsafe {
@@ -1785,10 +1784,12 @@ pub(crate) fn command_pool_created(
             .fns()
             .get_physical_device_queue_family_properties(physical.raw())
     };
-    let granularity = families
+    // The family's flags and granularity, from one query (an index past the families
+    // has neither).
+    let (flags, granularity) = families
         .get(create_info.queue_family_index as usize)
-        .map_or(vk::Extent3D::default(), |f| {
-            f.min_image_transfer_granularity
+        .map_or(Default::default(), |f| {
+            (f.queue_flags, f.min_image_transfer_granularity)
         });
     device.live().pool_created(
         pool.raw(),

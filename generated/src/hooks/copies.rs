@@ -46,11 +46,6 @@ pub(crate) struct Rules {
     pub row_pitch: &'static str,
     /// `bufferOffset` a multiple of the texel block size.
     pub offset_size: &'static str,
-    /// Neither depth/stencil nor multi-planar: `bufferOffset` a multiple of the
-    /// texel block size.
-    pub offset_element: &'static str,
-    /// Multi-planar: `bufferOffset` a multiple of the plane's element size.
-    pub offset_plane: &'static str,
     /// Depth/stencil: `bufferOffset` a multiple of 4.
     pub offset_depth: &'static str,
     /// The image has one sample.
@@ -106,8 +101,6 @@ pub(crate) const TO_IMAGE: Rules = Rules {
     three_planes: "VUID-vkCmdCopyBufferToImage-pRegions-07741",
     row_pitch: "VUID-vkCmdCopyBufferToImage-pRegions-07277",
     offset_size: "VUID-vkCmdCopyBufferToImage-pRegions-07273",
-    offset_element: "VUID-vkCmdCopyBufferToImage-bufferOffset-01558",
-    offset_plane: "VUID-vkCmdCopyBufferToImage-bufferOffset-01559",
     offset_depth: "VUID-vkCmdCopyBufferToImage-srcImage-04053",
     samples: "VUID-vkCmdCopyBufferToImage-dstImage-00179",
     features: (
@@ -153,8 +146,6 @@ pub(crate) const TO_BUFFER: Rules = Rules {
     three_planes: "VUID-vkCmdCopyImageToBuffer-pRegions-07741",
     row_pitch: "VUID-vkCmdCopyImageToBuffer-pRegions-07277",
     offset_size: "VUID-vkCmdCopyImageToBuffer-pRegions-07273",
-    offset_element: "VUID-vkCmdCopyImageToBuffer-bufferOffset-01558",
-    offset_plane: "VUID-vkCmdCopyImageToBuffer-bufferOffset-01559",
     offset_depth: "VUID-vkCmdCopyImageToBuffer-srcImage-04053",
     samples: "VUID-vkCmdCopyImageToBuffer-srcImage-00188",
     features: (
@@ -201,8 +192,6 @@ pub(crate) const TO_IMAGE2: Rules = Rules {
     three_planes: "VUID-VkCopyBufferToImageInfo2-pRegions-07741",
     row_pitch: "VUID-VkCopyBufferToImageInfo2-pRegions-07277",
     offset_size: "VUID-VkCopyBufferToImageInfo2-pRegions-07273",
-    offset_element: "VUID-VkCopyBufferToImageInfo2-bufferOffset-01558",
-    offset_plane: "VUID-VkCopyBufferToImageInfo2-bufferOffset-01559",
     offset_depth: "VUID-VkCopyBufferToImageInfo2-srcImage-04053",
     samples: "VUID-VkCopyBufferToImageInfo2-dstImage-00179",
     features: (
@@ -249,8 +238,6 @@ pub(crate) const TO_BUFFER2: Rules = Rules {
     three_planes: "VUID-VkCopyImageToBufferInfo2-pRegions-07741",
     row_pitch: "VUID-VkCopyImageToBufferInfo2-pRegions-07277",
     offset_size: "VUID-VkCopyImageToBufferInfo2-pRegions-07273",
-    offset_element: "VUID-VkCopyImageToBufferInfo2-bufferOffset-01558",
-    offset_plane: "VUID-VkCopyImageToBufferInfo2-bufferOffset-01559",
     offset_depth: "VUID-VkCopyImageToBufferInfo2-srcImage-04053",
     samples: "VUID-VkCopyImageToBufferInfo2-srcImage-00188",
     features: (
@@ -557,29 +544,16 @@ pub(crate) fn check_regions(
                 format!("pRegions[{n}].bufferOffset {} is not a multiple of the texel block size {size}", r.offset)
             },
         )?;
-        if planes > 0 {
-            check(
-                rules.offset_plane,
-                r.offset % u64::from(size.max(1)) == 0,
-                || {
-                    format!("pRegions[{n}].bufferOffset {} is not a multiple of the plane's element size {size}", r.offset)
-                },
-            )?;
-        } else if depth_stencil {
+        // Where the format is neither depth/stencil nor multi-planar (01558), or is
+        // multi-planar (01559, the plane's element size), the rule is the texel block
+        // size's above, whose VUID the error names.
+        if depth_stencil && planes == 0 {
             check(rules.offset_depth, r.offset % 4 == 0, || {
                 format!(
                     "pRegions[{n}].bufferOffset {} of a depth/stencil copy is not a multiple of 4",
                     r.offset
                 )
             })?;
-        } else {
-            check(
-                rules.offset_element,
-                r.offset % u64::from(size.max(1)) == 0,
-                || {
-                    format!("pRegions[{n}].bufferOffset {} is not a multiple of the texel block size {size}", r.offset)
-                },
-            )?;
         }
         check(
             rules.transfer_offset,
