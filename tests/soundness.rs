@@ -1038,7 +1038,7 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .image_info(&images)];
     assert_eq!(
-        vuid(unsafe { s.device.update_descriptor_sets(&writes, &[]) }),
+        vuid(s.device.update_descriptor_sets(&writes, &[])),
         "VUID-VkWriteDescriptorSet-descriptorType-00324"
     );
     // The same write through `_unchecked` crashes inside the layer or the driver
@@ -2142,14 +2142,12 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     let info = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&buffer))
         .range(64)];
-    unsafe {
-        d.update_descriptor_sets(
-            &[tuff::WriteDescriptorSet::new(&set)
-                .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
-                .buffer_info(&info)],
-            &[],
-        )
-    }
+    d.update_descriptor_sets(
+        &[tuff::WriteDescriptorSet::new(&set)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+            .buffer_info(&info)],
+        &[],
+    )
     .expect("write");
     let vertex = vk::ShaderStageFlags::VERTEX;
     let both = vertex | vk::ShaderStageFlags::FRAGMENT;
@@ -2289,14 +2287,12 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
         let info = [tuff::DescriptorBufferInfo::new()
             .buffer(Some(&buffer))
             .range(range)];
-        unsafe {
-            d.update_descriptor_sets(
-                &[tuff::WriteDescriptorSet::new(set)
-                    .descriptor_type(ty)
-                    .buffer_info(&info)],
-                &[],
-            )
-        }
+        d.update_descriptor_sets(
+            &[tuff::WriteDescriptorSet::new(set)
+                .descriptor_type(ty)
+                .buffer_info(&info)],
+            &[],
+        )
         .expect("write");
     };
     write(&ranged, uniform, 64);
@@ -2732,30 +2728,22 @@ fn descriptor_updates_stay_inside_their_sets() {
         ),
     ];
     for (expected, w) in &writes {
-        assert_eq!(
-            vuid(unsafe { d.update_descriptor_sets(&[*w], &[]) }),
-            *expected
-        );
+        assert_eq!(vuid(d.update_descriptor_sets(&[*w], &[])), *expected);
     }
     // The writes that set up the copies' sources, then the copies.
-    unsafe {
-        d.update_descriptor_sets(
-            &[
-                write(&a, 0, 1, uniform, &two),
-                write(&a, 0, 0, uniform, &one),
-                write(&a, 3, 0, storage, &two),
-            ],
-            &[],
-        )
-    }
+    d.update_descriptor_sets(
+        &[
+            write(&a, 0, 1, uniform, &two),
+            write(&a, 0, 0, uniform, &one),
+            write(&a, 3, 0, storage, &two),
+        ],
+        &[],
+    )
     .expect("a write running on from binding 0 into binding 2");
     for (expected, c) in &copies {
-        assert_eq!(
-            vuid(unsafe { d.update_descriptor_sets(&[], &[*c]) }),
-            *expected
-        );
+        assert_eq!(vuid(d.update_descriptor_sets(&[], &[*c])), *expected);
     }
-    unsafe { d.update_descriptor_sets(&[], &[copy(0, 0, 0, 0, 3), copy(3, 0, 3, 0, 2)]) }
+    d.update_descriptor_sets(&[], &[copy(0, 0, 0, 0, 3), copy(3, 0, 3, 0, 2)])
         .expect("copies inside both sets");
     assert_silent(&s.messages);
 

@@ -102,7 +102,8 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     let writes = [tuff::WriteDescriptorSet::new(&sets[0])
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
         .buffer_info(&buffer_info)];
-    unsafe { d.update_descriptor_sets(&writes, &[]) }.expect("descriptor writes");
+    d.update_descriptor_sets(&writes, &[])
+        .expect("descriptor writes");
     let ranges = [vk::PushConstantRange {
         stage_flags: vk::ShaderStageFlags::VERTEX,
         offset: 0,

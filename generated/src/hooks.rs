@@ -24,6 +24,7 @@ use tuff_runtime::Vrc;
 mod barriers;
 mod copies;
 mod creation;
+mod descriptors;
 mod layouts;
 mod pass_begin;
 mod pipeline;
@@ -37,6 +38,9 @@ use creation::image_create_rules;
 pub(crate) use creation::{
     allocate_memory_checks, allocate_memory_gate, create_device_checks,
     descriptor_set_layout_checks, sampler_checks,
+};
+pub(crate) use descriptors::{
+    update_descriptor_sets_checks, update_descriptor_sets_done, update_descriptor_sets_gate,
 };
 pub(crate) use layouts::{
     cmd_pipeline_barrier_checks, cmd_pipeline_barrier_done, dependency_checks, dependency_done,
@@ -147,6 +151,43 @@ pub(crate) fn queue_submit_checks(
         }?;
     }
     Ok(())
+}
+
+/// Takes the device's descriptor gate for `vkQueueSubmit` and refuses command
+/// buffers that an update of a set they bind left invalid.
+pub(crate) fn queue_submit_gate<'q>(
+    queue: &'q Queue,
+    submits: &[SubmitInfo<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    submission::sets_gate(
+        queue.parent(),
+        &submit_command_buffers(submits),
+        submission::SUBMIT.executable,
+    )
+}
+
+/// As [`queue_submit_gate`], for `vkQueueSubmit2`.
+pub(crate) fn queue_submit2_gate<'q>(
+    queue: &'q Queue,
+    submits: &[SubmitInfo2<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    submission::sets_gate(
+        queue.parent(),
+        &submit2_command_buffers(submits),
+        submission::SUBMIT2.executable,
+    )
+}
+
+/// The device remembers the buffer of a new buffer view.
+pub(crate) fn buffer_view_created(
+    device: &Device,
+    view: BufferView,
+    create_info: &BufferViewCreateInfo<'_>,
+) -> BufferView {
+    device
+        .live()
+        .buffer_view_created(view.raw(), create_info.as_raw().buffer);
+    view
 }
 
 /// The checks of `vkQueueSubmit2`: the fence and the command buffers' states.
@@ -716,208 +757,6 @@ pub(crate) fn reset_descriptor_pool_done(descriptor_pool: &DescriptorPool) {
     descriptor_pool.forget_deferred();
 }
 
-/// The safe structs as ash's, which they are transparent over.
-fn raw_writes<'s>(writes: &'s [WriteDescriptorSet<'_>]) -> &'s [vk::WriteDescriptorSet<'s>] {
-    // SAFETY: `WriteDescriptorSet` is `repr(transparent)` over ash's struct.
-    unsafe { core::slice::from_raw_parts(writes.as_ptr().cast(), writes.len()) }
-}
-
-/// The safe copy structs as ash's, which they are transparent over.
-fn raw_copies<'s>(copies: &'s [CopyDescriptorSet<'_>]) -> &'s [vk::CopyDescriptorSet<'s>] {
-    // SAFETY: `CopyDescriptorSet` is `repr(transparent)` over ash's struct.
-    unsafe { core::slice::from_raw_parts(copies.as_ptr().cast(), copies.len()) }
-}
-
-/// Refuses a write whose descriptor type selects an array that is not set, and a
-/// write or copy outside its sets' bindings: drivers index their descriptor arrays
-/// with the binding, array element and count.
-pub(crate) fn update_descriptor_sets_checks(
-    device: &Device,
-    descriptor_writes: &[WriteDescriptorSet<'_>],
-    descriptor_copies: &[CopyDescriptorSet<'_>],
-) -> Result<()> {
-    let writes = raw_writes(descriptor_writes);
-    crate::retention::Live::check_writes(writes)?;
-    let live = device.live();
-    let layout_of = |set: vk::DescriptorSet| {
-        live.set_layout_of(set).ok_or(Error::Misuse(
-            "the descriptor set was not allocated through the wrappers",
-        ))
-    };
-    for (i, w) in writes.iter().enumerate() {
-        let layout = layout_of(w.dst_set)?;
-        let at = format!("pDescriptorWrites[{i}]");
-        let first = find_binding(&layout, w.dst_binding, &at, WRITE_BINDING)?;
-        if layout.bindings[first].ty != w.descriptor_type {
-            refuse(
-                "VUID-VkWriteDescriptorSet-descriptorType-00319",
-                format!(
-                    "{at}.descriptorType ({:?}) must match the type of binding {} ({:?})",
-                    w.descriptor_type, w.dst_binding, layout.bindings[first].ty
-                ),
-            )?;
-        }
-        check_span(
-            &layout,
-            first,
-            w.dst_array_element,
-            w.descriptor_count,
-            &at,
-            WRITE_SPAN,
-        )?;
-    }
-    for (i, c) in raw_copies(descriptor_copies).iter().enumerate() {
-        let at = format!("pDescriptorCopies[{i}]");
-        let src = layout_of(c.src_set)?;
-        let dst = layout_of(c.dst_set)?;
-        let s = find_binding(&src, c.src_binding, &at, COPY_SRC_BINDING)?;
-        let d = find_binding(&dst, c.dst_binding, &at, COPY_DST_BINDING)?;
-        if src.bindings[s].ty != dst.bindings[d].ty {
-            refuse(
-                "VUID-VkCopyDescriptorSet-dstBinding-02632",
-                format!(
-                    "{at}: the type of dstBinding ({:?}) must equal the type of srcBinding ({:?})",
-                    dst.bindings[d].ty, src.bindings[s].ty
-                ),
-            )?;
-        }
-        check_span(
-            &src,
-            s,
-            c.src_array_element,
-            c.descriptor_count,
-            &at,
-            COPY_SRC_SPAN,
-        )?;
-        check_span(
-            &dst,
-            d,
-            c.dst_array_element,
-            c.descriptor_count,
-            &at,
-            COPY_DST_SPAN,
-        )?;
-    }
-    Ok(())
-}
-
-/// The rules a binding lookup breaks: (no such binding, a binding of no descriptors).
-type BindingRules = (&'static str, &'static str);
-const WRITE_BINDING: BindingRules = (
-    "VUID-VkWriteDescriptorSet-dstBinding-00315",
-    "VUID-VkWriteDescriptorSet-dstBinding-00316",
-);
-const COPY_SRC_BINDING: BindingRules = (
-    "VUID-VkCopyDescriptorSet-srcBinding-00345",
-    "VUID-VkCopyDescriptorSet-srcBinding-00345",
-);
-const COPY_DST_BINDING: BindingRules = (
-    "VUID-VkCopyDescriptorSet-dstBinding-00347",
-    "VUID-VkCopyDescriptorSet-dstBinding-00347",
-);
-
-/// The rules a span of array elements breaks: (past the bindings, consecutive
-/// bindings that differ, an inline uniform block's misaligned offset or size).
-type SpanRules = (&'static str, &'static str, &'static str, &'static str);
-const WRITE_SPAN: SpanRules = (
-    "VUID-VkWriteDescriptorSet-dstArrayElement-00321",
-    "VUID-VkWriteDescriptorSet-descriptorCount-00317",
-    "VUID-VkWriteDescriptorSet-descriptorType-02219",
-    "VUID-VkWriteDescriptorSet-descriptorType-02220",
-);
-const COPY_SRC_SPAN: SpanRules = (
-    "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
-    "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
-    "VUID-VkCopyDescriptorSet-srcBinding-02223",
-    "VUID-VkCopyDescriptorSet-srcBinding-02225",
-);
-const COPY_DST_SPAN: SpanRules = (
-    "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
-    "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
-    "VUID-VkCopyDescriptorSet-dstBinding-02224",
-    "VUID-VkCopyDescriptorSet-srcBinding-02225",
-);
-
-/// The index in `layout` of the binding numbered `binding`, which must exist and hold
-/// descriptors.
-fn find_binding(
-    layout: &SetLayoutRecord,
-    binding: u32,
-    at: &str,
-    rules: BindingRules,
-) -> Result<usize> {
-    match layout
-        .bindings
-        .binary_search_by_key(&binding, |b| b.binding)
-    {
-        Ok(i) if layout.bindings[i].count > 0 => Ok(i),
-        Ok(_) => Err(Error::Validation {
-            vuid: rules.1,
-            message: format!("{at}: binding {binding} of the set's layout has no descriptors"),
-        }),
-        Err(_) => Err(Error::Validation {
-            vuid: rules.0,
-            message: format!("{at}: the set's layout has no binding {binding}"),
-        }),
-    }
-}
-
-/// `count` elements from `element` of the binding at `first` fit in it and the
-/// consecutive bindings after it, which must be alike (same type, stages and
-/// immutable samplers; empty ones are skipped).
-fn check_span(
-    layout: &SetLayoutRecord,
-    first: usize,
-    element: u32,
-    count: u32,
-    at: &str,
-    rules: SpanRules,
-) -> Result<()> {
-    let head = layout.bindings[first];
-    if head.ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
-        if element % 4 != 0 {
-            refuse(rules.2, format!("{at}: the offset into an inline uniform block must be a multiple of 4 ({element})"))?;
-        }
-        if count % 4 != 0 {
-            refuse(rules.3, format!("{at}: the size of an inline uniform block update must be a multiple of 4 ({count})"))?;
-        }
-    }
-    let mut remaining = u64::from(element) + u64::from(count);
-    for b in layout.bindings[first..].iter().filter(|b| b.count > 0) {
-        if (b.ty, b.stages, b.immutable) != (head.ty, head.stages, head.immutable) {
-            return refuse(
-                rules.1,
-                format!("{at}: the update runs on from binding {} into binding {}, which differs in type, stages or immutable samplers", head.binding, b.binding),
-            );
-        }
-        if remaining <= u64::from(b.count) {
-            return Ok(());
-        }
-        remaining -= u64::from(b.count);
-    }
-    refuse(
-        rules.0,
-        format!("{at}: array element {element} plus descriptorCount {count} runs past binding {} and the consecutive bindings after it", head.binding),
-    )
-}
-
-/// The sets remember what they now hold.
-pub(crate) fn update_descriptor_sets_done(
-    device: &Device,
-    descriptor_writes: &[WriteDescriptorSet<'_>],
-    descriptor_copies: &[CopyDescriptorSet<'_>],
-) {
-    let copies = raw_copies(descriptor_copies);
-    // SAFETY: the setters of the safe structs keep every array that is set as long as
-    // its count, and `update_descriptor_sets_checks` refused a write whose type
-    // selects an array that is not set.
-    unsafe {
-        device
-            .live()
-            .write_sets(raw_writes(descriptor_writes), copies)
-    };
-}
-
 /// The set remembers what the template wrote into it.
 ///
 /// # Safety
@@ -930,6 +769,9 @@ pub(crate) unsafe fn update_descriptor_set_with_template_done(
     descriptor_update_template: &DescriptorUpdateTemplate,
     data: *const core::ffi::c_void,
 ) {
+    // Which bindings the template writes is not looked at: the update counts as one
+    // that invalidates the command buffers that bound the set.
+    device.live().set_invalidated(descriptor_set.raw());
     // SAFETY: the caller's promise, passed on.
     unsafe {
         device.live().write_template(
@@ -1927,6 +1769,12 @@ pub(crate) fn descriptor_sets_allocated(
             record = Vrc::new(own);
         }
         device.live().set_allocated(set.raw(), record);
+        device.live().set_pool_update_after_bind(
+            set.raw(),
+            descriptor_pool
+                .pool_flags()
+                .contains(vk::DescriptorPoolCreateFlags::UPDATE_AFTER_BIND),
+        );
     }
     sets.into_iter()
         .map(|set| set.with_token(descriptor_pool.set_token()))
@@ -3487,17 +3335,97 @@ pub(crate) fn cmd_bind_descriptor_sets_done<S: State>(
     let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) else {
         return;
     };
-    let layouts: Vec<_> = descriptor_sets
-        .iter()
-        .map(|s| recorder.device().live().set_layout_of(s.raw()))
-        .collect();
-    let sets = &mut recorder.bound[i].sets;
-    for (n, layout) in layouts.into_iter().enumerate() {
+    let last = recorder.sets.last().map(|(raw, _)| *raw);
+    let bound: SmallVec<[_; 4]> = {
+        let live = recorder.device().live();
+        descriptor_sets
+            .iter()
+            .map(|s| {
+                (
+                    s.raw(),
+                    live.set_layout_of(s.raw()),
+                    live.set_bound(s.raw()),
+                )
+            })
+            .collect()
+    };
+    let bound_points = &mut recorder.bound[i];
+    for (n, (raw, layout, (generation, images))) in bound.into_iter().enumerate() {
         let n = first_set as usize + n;
-        if sets.len() <= n {
-            sets.resize(n + 1, None);
+        if bound_points.sets.len() <= n {
+            bound_points.sets.resize(n + 1, None);
+            bound_points.images.resize(n + 1, None);
         }
-        sets[n] = layout;
+        bound_points.sets[n] = layout;
+        bound_points.images[n] = images;
+        // A run of binds of one set (with new dynamic offsets) is remembered once.
+        if descriptor_sets.len() > 1 || last != Some(raw.as_raw()) {
+            recorder.sets.push((raw.as_raw(), generation));
+        }
+    }
+}
+
+/// The rule of an image descriptor's layout, checked where a draw or dispatch reads
+/// it.
+const DESCRIPTOR_LAYOUT: &str = "VUID-VkDescriptorImageInfo-imageLayout-00344";
+
+/// The image descriptors a draw or dispatch at `bound` may read: those of the sets
+/// bound at every set number of the bound pipeline's layout (which of them the
+/// shaders read is not known).
+fn used_images(
+    bound: &crate::recorder::Bound,
+) -> impl Iterator<Item = &crate::retention::ImageDescriptor> {
+    let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
+    bound
+        .images
+        .iter()
+        .take(n)
+        .flatten()
+        .flat_map(|images| images.iter().map(|(_, d)| d))
+}
+
+/// Refuses a draw or dispatch whose sets hold an image descriptor whose layout is
+/// not the one the recording's earlier commands leave its subresources in, or
+/// which names an attachment of the render pass instance (whose layout in each
+/// subpass the recorder does not follow).
+fn descriptor_layout_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    bound: &crate::recorder::Bound,
+) -> Result<()> {
+    for d in used_images(bound) {
+        if recorder.pass_images.contains(&d.image) {
+            return refuse(
+                DESCRIPTOR_LAYOUT,
+                format!("an image descriptor names image 0x{:x}, an attachment of the render pass instance, whose layout in each subpass is not followed", d.image.as_raw()),
+            );
+        }
+        recorder
+            .layouts
+            .check(d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT)?;
+    }
+    Ok(())
+}
+
+/// A draw or dispatch reads its sets' image descriptors in the layouts they state:
+/// subresources the recording has not touched need those layouts at its start,
+/// which its submission checks.
+pub(crate) fn descriptor_layouts_used<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    bind_point: vk::PipelineBindPoint,
+) {
+    let Some(i) = crate::recorder::Bound::index(bind_point) else {
+        return;
+    };
+    let bound = &recorder.bound[i];
+    let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
+    let lists: SmallVec<[crate::retention::SetImages; 4]> =
+        bound.images.iter().take(n).flatten().cloned().collect();
+    if lists.is_empty() {
+        return;
+    }
+    let (live, layouts) = recorder.layouts_mut();
+    for d in lists.iter().flat_map(|l| l.iter().map(|(_, d)| d)) {
+        layouts.require(live, d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT);
     }
 }
 
@@ -3546,7 +3474,7 @@ pub(crate) fn bound_pipeline_checks<S: State>(
             ),
         )?;
     }
-    Ok(())
+    descriptor_layout_checks(recorder, bound)
 }
 
 /// The recorder remembers the vertex-buffer bindings bound (the first 64, the ones

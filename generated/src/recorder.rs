@@ -55,6 +55,10 @@ pub(crate) struct Bound {
     pub pipeline: Option<crate::retention::PipelineRecord>,
     /// The set layouts of the sets bound, by set number.
     pub sets: Vec<Option<Vrc<crate::retention::SetLayoutRecord>>>,
+    /// The image descriptors of the sets bound when they were bound, by set number:
+    /// an update after that leaves the recording invalid, so they stay what a draw
+    /// or dispatch reads.
+    pub images: Vec<Option<crate::retention::SetImages>>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
@@ -153,6 +157,9 @@ pub struct Recorder<'c, S: State> {
     pub(crate) layouts: crate::layouts::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
+    /// The descriptor sets bound so far, each with its generation then: an update
+    /// that changes it leaves the buffer invalid.
+    pub(crate) sets: Vec<(u64, u64)>,
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
@@ -307,6 +314,7 @@ impl CommandBuffer {
             queries: Vec::new(),
             layouts: Default::default(),
             pass_images: Vec::new(),
+            sets: Vec::new(),
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
@@ -429,6 +437,7 @@ impl<'c, S: State> Recorder<'c, S> {
             queries: self.queries,
             layouts: self.layouts,
             pass_images: self.pass_images,
+            sets: self.sets,
             device_mask: self.device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,
@@ -454,6 +463,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
+        self.cb.uses().set_sets(self.sets);
         Ok(())
     }
 }

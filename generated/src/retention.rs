@@ -187,6 +187,61 @@ pub(crate) struct Live {
     /// The memory bound to each buffer or image by `vkBind*Memory2`, kept as long
     /// as the object is listed (`vkBind*Memory` keep it in the wrapper instead).
     bound_memories: Vutex<HashMap<(vk::ObjectType, u64), Retained>>,
+    /// Each live descriptor set's generation and the submissions of the command
+    /// buffers that bound it.
+    set_uses: Vutex<HashMap<u64, SetUse>>,
+    /// The last generation given to a descriptor set: a device-wide count, so a set
+    /// handle that a pool reuses never meets a generation of the set it was before.
+    set_generations: std::sync::atomic::AtomicU64,
+    /// Held by every descriptor update and by every submission from its checks to its
+    /// bookkeeping: the host access to a set is externally synchronized, and a set
+    /// is never updated between a submission's check of it and the submission.
+    descriptor_gate: Vutex<()>,
+    /// The buffer of each live buffer view.
+    buffer_views: Vutex<HashMap<u64, vk::Buffer>>,
+}
+
+/// What the device knows of the command buffers that bound a descriptor set.
+#[derive(Default)]
+struct SetUse {
+    /// Changed by every update that invalidates the command buffers that bound the
+    /// set (an update of a binding without `UPDATE_AFTER_BIND`): a command buffer
+    /// remembers the generation it bound, and a different one refuses its submission.
+    generation: u64,
+    /// The submissions of command buffers that bound the set, weakly; those known
+    /// complete are pruned as new ones come.
+    subs: Vec<Vweak<crate::submission::Submission>>,
+    /// Whether the set's pool was created with `UPDATE_AFTER_BIND`.
+    pool_update_after_bind: bool,
+    /// The image descriptors the set holds (none: `None`), replaced as a whole by
+    /// each update, so a recorder that bound the set keeps the list it saw.
+    images: Option<SetImages>,
+}
+
+/// An image descriptor a set holds: the subresources its view reaches, and the
+/// layout the descriptor says they are in when a command accesses it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ImageDescriptor {
+    /// The view's image.
+    pub image: vk::Image,
+    /// The view's subresources.
+    pub sel: crate::layouts::Sel,
+    /// The descriptor's `imageLayout`.
+    pub layout: vk::ImageLayout,
+}
+
+/// The image descriptors of a set, by (binding, array element) as written.
+pub(crate) type SetImages = Vrc<Vec<((u32, u32), ImageDescriptor)>>;
+
+/// Whether a descriptor of type `ty` names an image view whose layout it states.
+pub(crate) fn names_image_layout(ty: vk::DescriptorType) -> bool {
+    matches!(
+        ty,
+        vk::DescriptorType::SAMPLED_IMAGE
+            | vk::DescriptorType::STORAGE_IMAGE
+            | vk::DescriptorType::COMBINED_IMAGE_SAMPLER
+            | vk::DescriptorType::INPUT_ATTACHMENT
+    )
 }
 
 /// A live query pool's creation parameters, which `get_query_pool_results` checks
@@ -518,6 +573,10 @@ impl Default for Live {
             queue_infos: std::sync::OnceLock::new(),
             physical_count: std::sync::OnceLock::new(),
             bound_memories: Vutex::new(HashMap::default()),
+            set_uses: Vutex::new(HashMap::default()),
+            set_generations: std::sync::atomic::AtomicU64::new(0),
+            descriptor_gate: Vutex::new(()),
+            buffer_views: Vutex::new(HashMap::default()),
         }
     }
 }
@@ -635,6 +694,14 @@ impl Live {
             let stale = self.sets.lock().remove(&raw);
             drop(stale);
             self.dynamic_ranges.lock().remove(&raw);
+            let generation = self.next_set_generation();
+            self.set_uses.lock().insert(
+                raw,
+                SetUse {
+                    generation,
+                    ..SetUse::default()
+                },
+            );
         }
     }
 
@@ -679,6 +746,9 @@ impl Live {
             }
             vk::ObjectType::IMAGE_VIEW => {
                 self.views.lock().remove(&key.1);
+            }
+            vk::ObjectType::BUFFER_VIEW => {
+                self.buffer_views.lock().remove(&key.1);
             }
             vk::ObjectType::FRAMEBUFFER => {
                 self.framebuffers.lock().remove(&key.1);
@@ -742,7 +812,170 @@ impl Live {
             let written = self.sets.lock().remove(&key.1);
             drop(written);
             self.dynamic_ranges.lock().remove(&key.1);
+            self.set_uses.lock().remove(&key.1);
         }
+    }
+
+    fn next_set_generation(&self) -> u64 {
+        self.set_generations
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+            + 1
+    }
+
+    /// The generation of a descriptor set now, what a command buffer that binds it
+    /// remembers, and the image descriptors it holds.
+    pub(crate) fn set_bound(&self, raw: vk::DescriptorSet) -> (u64, Option<SetImages>) {
+        self.set_uses
+            .lock()
+            .get(&raw.as_raw())
+            .map_or((0, None), |u| (u.generation, u.images.clone()))
+    }
+
+    /// The image descriptor of `info`: the subresources its view reaches (none for a
+    /// view the device has no record of).
+    fn image_descriptor(&self, info: &vk::DescriptorImageInfo) -> Option<ImageDescriptor> {
+        let view = self.view(info.image_view)?;
+        // A 2D view of a 3D image reaches depth slices of its one layer.
+        let flat = self
+            .image(view.image)
+            .is_some_and(|i| i.image_type == vk::ImageType::TYPE_3D);
+        let layers = if flat {
+            (0, 1)
+        } else {
+            (view.base_layer, view.base_layer.saturating_add(view.layers))
+        };
+        Some(ImageDescriptor {
+            image: view.image,
+            sel: crate::layouts::Sel {
+                aspect: view.aspect,
+                mips: (view.base_level, view.base_level.saturating_add(view.levels)),
+                layers,
+            },
+            layout: info.image_layout,
+        })
+    }
+
+    /// The image descriptors of a set at `slots`.
+    fn images_at(
+        &self,
+        set: vk::DescriptorSet,
+        slots: &[(u32, u32)],
+    ) -> Vec<Option<ImageDescriptor>> {
+        let uses = self.set_uses.lock();
+        let images = uses.get(&set.as_raw()).and_then(|u| u.images.clone());
+        slots
+            .iter()
+            .map(|slot| {
+                images
+                    .as_ref()
+                    .and_then(|i| i.iter().find(|(s, _)| s == slot).map(|(_, d)| *d))
+            })
+            .collect()
+    }
+
+    /// A set's descriptors at these slots now name these images (or none).
+    fn images_written(
+        &self,
+        set: vk::DescriptorSet,
+        updates: Vec<((u32, u32), Option<ImageDescriptor>)>,
+    ) {
+        let mut uses = self.set_uses.lock();
+        let Some(u) = uses.get_mut(&set.as_raw()) else {
+            return;
+        };
+        if u.images.is_none() && updates.iter().all(|(_, d)| d.is_none()) {
+            return;
+        }
+        let mut images: Vec<_> = u.images.as_deref().cloned().unwrap_or_default();
+        for (slot, d) in updates {
+            images.retain(|(s, _)| *s != slot);
+            if let Some(d) = d {
+                images.push((slot, d));
+            }
+        }
+        u.images = (!images.is_empty()).then(|| Vrc::new(images));
+    }
+
+    /// A descriptor set was updated in a way that invalidates the command buffers
+    /// that bound it.
+    pub(crate) fn set_invalidated(&self, raw: vk::DescriptorSet) {
+        let generation = self.next_set_generation();
+        if let Some(u) = self.set_uses.lock().get_mut(&raw.as_raw()) {
+            u.generation = generation;
+        }
+    }
+
+    /// The first of `sets` (raw set, generation bound) whose generation changed
+    /// since: an update invalidated the command buffer that bound it.
+    pub(crate) fn stale_set(&self, sets: &[(u64, u64)]) -> Option<u64> {
+        let uses = self.set_uses.lock();
+        sets.iter()
+            .find(|(set, generation)| uses.get(set).is_some_and(|u| u.generation != *generation))
+            .map(|(set, _)| *set)
+    }
+
+    /// `sub` submits command buffers that bound `sets`.
+    pub(crate) fn sets_submitted(
+        &self,
+        sets: &[(u64, u64)],
+        sub: &Vrc<crate::submission::Submission>,
+    ) {
+        let mut uses = self.set_uses.lock();
+        for (set, _) in sets {
+            if let Some(u) = uses.get_mut(set) {
+                u.subs
+                    .retain(|w| w.upgrade().is_some_and(|s| !s.is_complete()));
+                u.subs.push(Vrc::downgrade(sub));
+            }
+        }
+    }
+
+    /// The submissions of command buffers that bound a set and that tuff has not seen
+    /// complete (they may be: ask each with `poll`).
+    pub(crate) fn set_submissions(
+        &self,
+        raw: vk::DescriptorSet,
+    ) -> Vec<Vrc<crate::submission::Submission>> {
+        self.set_uses
+            .lock()
+            .get(&raw.as_raw())
+            .map_or(Vec::new(), |u| {
+                u.subs
+                    .iter()
+                    .filter_map(Vweak::upgrade)
+                    .filter(|s| !s.is_complete())
+                    .collect()
+            })
+    }
+
+    /// Records that a set's pool was created with `UPDATE_AFTER_BIND` or not.
+    pub(crate) fn set_pool_update_after_bind(&self, raw: vk::DescriptorSet, on: bool) {
+        if let Some(u) = self.set_uses.lock().get_mut(&raw.as_raw()) {
+            u.pool_update_after_bind = on;
+        }
+    }
+
+    /// Whether a set's pool was created with `UPDATE_AFTER_BIND`.
+    pub(crate) fn set_pool_is_update_after_bind(&self, raw: vk::DescriptorSet) -> bool {
+        self.set_uses
+            .lock()
+            .get(&raw.as_raw())
+            .is_some_and(|u| u.pool_update_after_bind)
+    }
+
+    /// Taken by descriptor updates and submissions (see the field).
+    pub(crate) fn descriptor_gate(&self) -> tuff_runtime::VutexGuard<'_, ()> {
+        self.descriptor_gate.lock()
+    }
+
+    /// Records a new buffer view's buffer.
+    pub(crate) fn buffer_view_created(&self, raw: vk::BufferView, buffer: vk::Buffer) {
+        self.buffer_views.lock().insert(raw.as_raw(), buffer);
+    }
+
+    /// The buffer of a live buffer view made through the wrappers.
+    pub(crate) fn buffer_view(&self, raw: vk::BufferView) -> Option<vk::Buffer> {
+        self.buffer_views.lock().get(&raw.as_raw()).copied()
     }
 
     /// Records a new query pool's creation parameters.
@@ -1334,6 +1567,14 @@ impl Live {
                 old.extend(previous);
             }
         }
+        // A submission that bound the set may still read what the update replaced
+        // (bindings updated after bind or unused while pending may be rewritten under
+        // it): it keeps the replaced objects until it completes.
+        if !old.is_empty() {
+            for sub in self.set_submissions(set) {
+                sub.keep_also(&old);
+            }
+        }
         // Released outside the lock, for the same reason as in `remove`.
         drop(old);
     }
@@ -1375,19 +1616,13 @@ impl Live {
                 continue;
             }
             let (missing, vuid, array) = match w.descriptor_type {
-                T::SAMPLER | T::COMBINED_IMAGE_SAMPLER => (
+                T::SAMPLER
+                | T::COMBINED_IMAGE_SAMPLER
+                | T::SAMPLED_IMAGE
+                | T::STORAGE_IMAGE
+                | T::INPUT_ATTACHMENT => (
                     w.p_image_info.is_null(),
-                    "VUID-VkWriteDescriptorSet-descriptorType-00325",
-                    "pImageInfo",
-                ),
-                T::SAMPLED_IMAGE | T::STORAGE_IMAGE => (
-                    w.p_image_info.is_null(),
-                    "VUID-VkWriteDescriptorSet-descriptorType-02996",
-                    "pImageInfo",
-                ),
-                T::INPUT_ATTACHMENT => (
-                    w.p_image_info.is_null(),
-                    "VUID-VkWriteDescriptorSet-descriptorType-07683",
+                    "VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493",
                     "pImageInfo",
                 ),
                 T::UNIFORM_BUFFER
@@ -1432,6 +1667,17 @@ impl Live {
     ) {
         for w in writes {
             let mut slots = Vec::with_capacity(w.descriptor_count as usize);
+            let images = (0..w.descriptor_count as usize)
+                .map(|i| {
+                    let slot = (w.dst_binding, w.dst_array_element + i as u32);
+                    // SAFETY: as for the readers below.
+                    let named = names_image_layout(w.descriptor_type)
+                        .then(|| self.image_descriptor(&unsafe { read(w.p_image_info, i) }))
+                        .flatten();
+                    (slot, named)
+                })
+                .collect();
+            self.images_written(w.dst_set, images);
             for i in 0..w.descriptor_count as usize {
                 // SAFETY (each reader): the caller vouches for `descriptor_count`
                 // elements of the array the type selects, and only that one is read.
@@ -1471,6 +1717,14 @@ impl Live {
                     ranges.entry(c.dst_set.as_raw()).or_default().extend(copied);
                 }
             }
+            let from: Vec<(u32, u32)> = (0..c.descriptor_count)
+                .map(|i| (c.src_binding, c.src_array_element + i))
+                .collect();
+            let images = (0..c.descriptor_count)
+                .map(|i| (c.dst_binding, c.dst_array_element + i))
+                .zip(self.images_at(c.src_set, &from))
+                .collect();
+            self.images_written(c.dst_set, images);
             {
                 let sets = self.sets.lock();
                 let src = sets.get(&c.src_set.as_raw());
@@ -1499,12 +1753,22 @@ impl Live {
         data: *const core::ffi::c_void,
     ) {
         let mut slots = Vec::new();
+        let mut images = Vec::new();
         for e in entries {
             if e.descriptor_type == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
                 continue;
             }
             for i in 0..e.descriptor_count as usize {
                 let at = data.cast::<u8>().wrapping_add(e.offset + i * e.stride);
+                // SAFETY: as for the readers below.
+                let named = names_image_layout(e.descriptor_type)
+                    .then(|| {
+                        self.image_descriptor(&unsafe {
+                            at.cast::<vk::DescriptorImageInfo>().read_unaligned()
+                        })
+                    })
+                    .flatten();
+                images.push(((e.dst_binding, e.dst_array_element + i as u32), named));
                 // SAFETY (each reader): the caller vouches that the entry's descriptors
                 // lie at its offset and stride, and only the kind the type selects is
                 // read. Template data need not be aligned, so it is read unaligned.
@@ -1524,6 +1788,7 @@ impl Live {
                 }
             }
         }
+        self.images_written(set, images);
         self.write(set, slots);
     }
 

@@ -78,6 +78,13 @@ impl Submission {
         drop(kept);
     }
 
+    /// Keeps `objects` too, until the submission completes (nothing, once it has).
+    pub(crate) fn keep_also(&self, objects: &[Retained]) {
+        if let Some(kept) = self.state.lock().kept.as_mut() {
+            kept.extend(objects.iter().cloned());
+        }
+    }
+
     /// Whether the submission is complete, asking its fence when tuff has not seen
     /// it signalled; a signalled fence retires the submission on `device`.
     pub(crate) fn poll(&self, device: &Device) -> bool {
@@ -253,6 +260,8 @@ struct UsesState {
     /// The image layouts the last recording needs at its start and leaves at its
     /// end; `None` while recording, or when it names none.
     layouts: Option<Vrc<crate::layouts::Recording>>,
+    /// The descriptor sets the last recording bound, each with its generation then.
+    sets: Vec<(u64, u64)>,
 }
 
 impl Uses {
@@ -351,6 +360,7 @@ impl Uses {
             state.executable = false;
             state.generation += 1;
             state.layouts = None;
+            state.sets.clear();
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -399,6 +409,28 @@ impl Uses {
     /// The image layouts the last recording needs at its start and leaves.
     pub(crate) fn layouts(&self) -> Option<Vrc<crate::layouts::Recording>> {
         self.state.lock().layouts.clone()
+    }
+
+    /// The descriptor sets the recording that just ended bound (raw set, generation).
+    pub(crate) fn set_sets(&self, sets: Vec<(u64, u64)>) {
+        self.state.lock().sets = sets;
+    }
+
+    /// Appends the descriptor sets this buffer's recording bound, and those of the
+    /// secondaries it executes, to `out`.
+    fn bound_sets(&self, out: &mut Vec<(u64, u64)>) {
+        let secondaries: Vec<Vrc<Uses>> = {
+            let state = self.state.lock();
+            out.extend_from_slice(&state.sets);
+            state
+                .secondaries
+                .iter()
+                .map(|(s, _, _)| s.clone())
+                .collect()
+        };
+        for s in secondaries {
+            s.bound_sets(out);
+        }
     }
 
     /// The current recording executes `secondary`.
@@ -610,6 +642,40 @@ pub(crate) fn check_layouts(device: &Device, cbs: &[vk::CommandBuffer]) -> Resul
     Ok(())
 }
 
+/// The descriptor sets that `cbs` and the secondaries they execute bound, each with
+/// the generation it had then.
+fn bound_sets(device: &Device, cbs: &[vk::CommandBuffer]) -> Vec<(u64, u64)> {
+    let mut sets = Vec::new();
+    for raw in cbs {
+        if let Some(uses) = device.command_buffer_uses(*raw) {
+            uses.bound_sets(&mut sets);
+        }
+    }
+    sets.sort_unstable();
+    sets.dedup();
+    sets
+}
+
+/// Takes the device's descriptor gate for a submission of `cbs` (held until its
+/// bookkeeping is done, so no update runs between this check and the submission's
+/// record of the sets it uses), and refuses command buffers that bound a descriptor
+/// set which an update has changed since: the update left them invalid
+/// (`executable` names the rule).
+pub(crate) fn sets_gate<'d>(
+    device: &'d Device,
+    cbs: &[vk::CommandBuffer],
+    executable: &'static str,
+) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
+    let gate = device.live().descriptor_gate();
+    if let Some(set) = device.live().stale_set(&bound_sets(device, cbs)) {
+        return Err(refuse(
+            executable,
+            format!("a command buffer is invalid: descriptor set 0x{set:x}, which it binds, was updated since it was recorded (update sets before recording, or bindings with UPDATE_AFTER_BIND)"),
+        ));
+    }
+    Ok(gate)
+}
+
 /// Records the image layouts that `cbs`, submitted in this order, leave.
 fn record_layouts(device: &Device, cbs: &[vk::CommandBuffer]) {
     let mut overlay = crate::layouts::Overlay::new(device.live());
@@ -643,6 +709,7 @@ pub(crate) fn submitted(
         }
     }
     record_layouts(device, cbs);
+    device.live().sets_submitted(&bound_sets(device, cbs), &sub);
     if let Some(f) = fence {
         f.track(sub.clone());
     }

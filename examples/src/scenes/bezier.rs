@@ -103,16 +103,12 @@ impl Bezier {
         let info = [tuff::DescriptorBufferInfo::new()
             .buffer(Some(&points))
             .range(vk::WHOLE_SIZE)];
-        // SAFETY: each write names a binding of the set's layout with its type and count, and
-        // a live buffer range inside the buffer with the matching usage.
-        unsafe {
-            d.update_descriptor_sets(
-                &[tuff::WriteDescriptorSet::new(&set)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(&info)],
-                &[],
-            )
-        }?;
+        d.update_descriptor_sets(
+            &[tuff::WriteDescriptorSet::new(&set)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .buffer_info(&info)],
+            &[],
+        )?;
         Ok(Bezier {
             options,
             pipeline,

@@ -85,16 +85,12 @@ impl Teapots {
             let info = [tuff::DescriptorBufferInfo::new()
                 .buffer(Some(buffer))
                 .range(size)];
-            // SAFETY: each write names a binding of the set's layout with its type and count,
-            // and a live buffer range inside the buffer with the matching usage.
-            unsafe {
-                d.update_descriptor_sets(
-                    &[tuff::WriteDescriptorSet::new(set)
-                        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
-                        .buffer_info(&info)],
-                    &[],
-                )
-            }?;
+            d.update_descriptor_sets(
+                &[tuff::WriteDescriptorSet::new(set)
+                    .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+                    .buffer_info(&info)],
+                &[],
+            )?;
         }
         let (flat, index_data) = mesh_data();
         let vertices =

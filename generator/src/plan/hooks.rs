@@ -228,6 +228,21 @@ const PUSH: &str = "checks the range against the layout's push-constant ranges, 
 const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
+const IMAGE_INFO_WRAPPERS: &str = "a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form)";
+const TEXEL_VIEW_WRAPPERS: &str =
+    "texel buffer views are taken as a slice of wrappers, which always hold valid handles";
+const OTHER_DEVICE_DESCRIPTOR: &str = "checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks)";
+const OTHER_DEVICE_BUFFER_DESCRIPTOR: &str = "checks each buffer a descriptor names is one the device recorded (the 1.3.239 layer crashes looking up a buffer of another device: proven by the error alone)";
+const NULL_DESCRIPTOR: &str =
+    "refuses a null buffer: the emitted API has no nullDescriptor feature";
+const BUFFER_DESCRIPTOR: &str = "checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits";
+const IMAGE_DESCRIPTOR: &str = "checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows";
+const BOTH_ASPECTS: &str = "checks a view of a depth/stencil image names one of its aspects (the 1.3.239 layer reports it as UNASSIGNED-CoreValidation-DrawState-InvalidImageView, both aspects set)";
+const AFTER_BIND_POOLS: &str = "checks the two sets' pools were created alike with or without UPDATE_AFTER_BIND (recorded at each set's allocation)";
+const UNPROVEN_INLINE_COPIES: &str = "checked by the safe methods in every build (an inline uniform block's offset and size against 4), but no test breaks it: the safe copy takes its count as a number, and no test has two inline uniform block bindings to copy between yet";
+const UNPROVEN_STORAGE_RANGE: &str = "checked by the safe methods in every build (the range against maxStorageBufferRange), but no test breaks it: lavapipe's limit is larger than a test can allocate";
+const UNPROVEN_PLANE_SAMPLER: &str = "checked by the safe methods in every build (the image's recorded format and flags, the view's aspect), but no test breaks it: lavapipe 22.3 supports no multi-planar format";
+const UNPROVEN_AFTER_BIND_LAYOUTS: &str = "checked by the safe methods in every build (the layouts' UPDATE_AFTER_BIND_POOL flags, recorded at their creation), but no test breaks it: lavapipe 22.3 offers update-after-bind for no descriptor type";
 const SET_BINDINGS: &str = "checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included";
 const VIEWPORTS: &str =
     "checks the first index plus the count against the device's maxViewports, read once";
@@ -352,6 +367,10 @@ macro_rules! bound {
     ($command:literal, COMPUTE, $sets:expr) => {
         Special {
             command: $command,
+            after: call(
+                "hooks::descriptor_layouts_used",
+                &["self", "vk::PipelineBindPoint::COMPUTE"],
+            ),
             check: call(
                 "hooks::bound_pipeline_checks",
                 &[
@@ -375,6 +394,10 @@ macro_rules! bound {
     ($command:literal, GRAPHICS, $sets:expr) => {
         Special {
             command: $command,
+            after: call(
+                "hooks::descriptor_layouts_used",
+                &["self", "vk::PipelineBindPoint::GRAPHICS"],
+            ),
             check: call(
                 "hooks::bound_pipeline_checks",
                 &[
@@ -407,6 +430,10 @@ macro_rules! indexed {
     ($command:literal, $range:literal, $settles:expr) => {
         Special {
             command: $command,
+            after: call(
+                "hooks::descriptor_layouts_used",
+                &["self", "vk::PipelineBindPoint::GRAPHICS"],
+            ),
             check: call(
                 "hooks::indexed_draw_checks",
                 &[
@@ -459,6 +486,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkQueueSubmit",
         check: call("hooks::queue_submit_checks", &["self", "submits", "fence"]),
+        hold: call("hooks::queue_submit_gate", &["self", "submits"]),
         after: call("hooks::queue_submit_done", &["self", "submits", "fence"]),
         required: &["fence"],
         settles: &[
@@ -492,6 +520,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkQueueSubmit2",
         check: call("hooks::queue_submit2_checks", &["self", "submits", "fence"]),
+        hold: call("hooks::queue_submit2_gate", &["self", "submits"]),
         after: call("hooks::queue_submit2_done", &["self", "submits", "fence"]),
         required: &["fence"],
         settles: &[
@@ -676,6 +705,10 @@ pub const SPECIALS: &[Special] = &[
             "hooks::update_descriptor_sets_checks",
             &["self", "descriptor_writes", "descriptor_copies"],
         ),
+        hold: call(
+            "hooks::update_descriptor_sets_gate",
+            &["self", "descriptor_writes", "descriptor_copies"],
+        ),
         after: call(
             "hooks::update_descriptor_sets_done",
             &["self", "descriptor_writes", "descriptor_copies"],
@@ -695,7 +728,61 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkCopyDescriptorSet-dstBinding-00347", How::Dynamic(SET_BINDINGS)),
             ("VUID-VkCopyDescriptorSet-dstArrayElement-00348", How::Dynamic(SET_BINDINGS)),
             ("VUID-VkCopyDescriptorSet-dstBinding-02632", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-descriptorCount-00318", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02752", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-dstBinding-02753", How::Dynamic(SET_BINDINGS)),
+            ("VUID-VkCopyDescriptorSet-srcBinding-02223", How::User(UNPROVEN_INLINE_COPIES)),
+            ("VUID-VkCopyDescriptorSet-dstBinding-02224", How::User(UNPROVEN_INLINE_COPIES)),
+            ("VUID-VkCopyDescriptorSet-srcBinding-02225", How::User(UNPROVEN_INLINE_COPIES)),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493", How::Dynamic("refuses a write whose descriptor type selects an array that is not set")),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00325", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02996", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02997", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-07683", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02994", How::Static(TEXEL_VIEW_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02995", How::Static(TEXEL_VIEW_WRAPPERS)),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236", How::Dynamic(OTHER_DEVICE_DESCRIPTOR)),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237", How::Dynamic(OTHER_DEVICE_BUFFER_DESCRIPTOR)),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238", How::Dynamic(OTHER_DEVICE_DESCRIPTOR)),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239", How::Dynamic(OTHER_DEVICE_DESCRIPTOR)),
+            ("VUID-VkDescriptorBufferInfo-buffer-02998", How::Dynamic(NULL_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00327", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00328", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00329", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00330", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00331", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00332", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00333", How::User(UNPROVEN_STORAGE_RANGE)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00334", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00335", How::Dynamic(BUFFER_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00336", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00337", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00338", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00339", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-04149", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-04150", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-04151", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-04152", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-07729", How::Dynamic(BOTH_ASPECTS)),
+            ("VUID-VkDescriptorImageInfo-imageView-01976", How::Dynamic(BOTH_ASPECTS)),
+            ("VUID-VkDescriptorImageInfo-imageView-06711", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkDescriptorImageInfo-imageView-06712", How::Dynamic(IMAGE_DESCRIPTOR)),
+            ("VUID-VkDescriptorImageInfo-sampler-01564", How::User(UNPROVEN_PLANE_SAMPLER)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02221", How::Dynamic("checks an inline uniform block write chains a VkWriteDescriptorSetInlineUniformBlock whose dataSize is the write's count")),
+            ("VUID-VkCopyDescriptorSet-srcSet-00349", How::Dynamic("checks the two ranges of a copy inside one set, as positions among the set's elements in binding order, do not overlap (the 1.3.239 layer does not check it: proven by the error alone)")),
+            ("VUID-VkCopyDescriptorSet-srcSet-01918", How::User(UNPROVEN_AFTER_BIND_LAYOUTS)),
+            ("VUID-VkCopyDescriptorSet-srcSet-04886", How::User(UNPROVEN_AFTER_BIND_LAYOUTS)),
+            ("VUID-VkCopyDescriptorSet-srcSet-01920", How::Dynamic(AFTER_BIND_POOLS)),
+            ("VUID-VkCopyDescriptorSet-srcSet-04888", How::Dynamic(AFTER_BIND_POOLS)),
+            ("VUID-vkUpdateDescriptorSets-None-03047", How::Dynamic("checks the submissions of the command buffers that bound each set the update writes (recorded at each submission, dropped once known complete) when it rewrites a binding without UPDATE_AFTER_BIND or UPDATE_UNUSED_WHILE_PENDING; an update also leaves the command buffers that bound the set invalid, and what it replaces stays alive until those submissions complete")),
+            ("VUID-VkDescriptorImageInfo-imageLayout-00344", How::Dynamic("checked where each draw and dispatch reads the sets bound at its pipeline layout's set numbers (the image descriptors each set held when it was bound; an update after that leaves the recording invalid): each descriptor's layout against what the recording's earlier commands leave its view's subresources in, and otherwise needed at the recording's start, which its submission checks against what the earlier submissions leave; a descriptor naming an attachment of the render pass instance is refused, as the recorder does not follow subpass layouts (across command buffers the 1.3.239 layer states the mismatch as UNASSIGNED-CoreValidation-DrawState-InvalidImageLayout)")),
+            ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993", How::Static("every descriptor update and every submission holds the device's descriptor gate, so no two of them touch a set at once")),
         ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateBufferView",
+        created: call("hooks::buffer_view_created", &["self", "created", "create_info"]),
         ..NONE
     },
     Special {

@@ -493,25 +493,31 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(
-            BufferView::from_raw(
-                out,
+            crate::hooks::buffer_view_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::buffer_view_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                BufferView::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::buffer_view_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }
@@ -2837,71 +2843,24 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
     }
     /**`vkUpdateDescriptorSets`
 
-# Safety
-
-The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, elements of the `pTexelBufferView` member of `pDescriptorWrites`[i] must have been created on `device`
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of any element of the `pBufferInfo` member of `pDescriptorWrites`[i] must have been created on `device`
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that included immutable samplers for `dstBinding` with `descriptorType`, the `sampler` member of any element of the `pImageInfo` member of `pDescriptorWrites`[i] must have been created on `device`
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` the `imageView` member of any element of `pDescriptorWrites`[i] must have been created on `device`
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: For each element i where `pDescriptorWrites`[i].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `pDescriptorWrites`[i].`pImageInfo` must be a valid pointer to an array of `pDescriptorWrites`[i].`descriptorCount` valid `VkDescriptorImageInfo` structures
-- `VUID-vkUpdateDescriptorSets-None-03047`: Descriptor bindings updated by this command which were created without the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` or `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT` bits set must not be used by any command that was recorded to a command buffer which is in the pending state
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: Host access to `pDescriptorWrites`[i].`dstSet` and `pDescriptorCopies`[i].`dstSet` must be externally synchronized unless explicitly denoted otherwise for specific flags
-- `VUID-VkCopyDescriptorSet-srcSet-00349`: If `srcSet` is equal to `dstSet`, then the source and destination ranges of descriptors must not overlap, where the ranges may include array elements from consecutive bindings as described by consecutive binding updates
-- `VUID-VkCopyDescriptorSet-dstBinding-02753`: If the descriptor type of the descriptor set binding specified by `dstBinding` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable samplers for `dstBinding`
-- `VUID-VkCopyDescriptorSet-srcBinding-02223`: If the descriptor type of the descriptor set binding specified by `srcBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `srcArrayElement` must be an integer multiple of `4`
-- `VUID-VkCopyDescriptorSet-dstBinding-02224`: If the descriptor type of the descriptor set binding specified by `dstBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
-- `VUID-VkCopyDescriptorSet-srcBinding-02225`: If the descriptor type of the descriptor set binding specified by either `srcBinding` or `dstBinding` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
-- `VUID-VkCopyDescriptorSet-srcSet-01918`: If `srcSet`&#8217;s layout was created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set, then `dstSet`&#8217;s layout must also have been created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set
-- `VUID-VkCopyDescriptorSet-srcSet-01920`: If the descriptor pool from which `srcSet` was allocated was created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated must also have been created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
-- `VUID-VkCopyDescriptorSet-srcSet-04886`: If `srcSet`&#8217;s layout was created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set, then `dstSet`&#8217;s layout must also have been created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` flag set
-- `VUID-VkCopyDescriptorSet-srcSet-04888`: If the descriptor pool from which `srcSet` was allocated was created without the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated must also have been created without the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set
-- `VUID-VkDescriptorBufferInfo-buffer-02998`: If the `nullDescriptor` feature is not enabled, `buffer` must not be VK_NULL_HANDLE
-- `VUID-VkDescriptorImageInfo-imageView-06711`: `imageView` must not be 2D image view created from a 3D image
-- `VUID-VkDescriptorImageInfo-imageView-06712`: `imageView` must not be a 2D array image view created from a 3D image
-- `VUID-VkDescriptorImageInfo-imageView-01976`: If `imageView` is created from a depth/stencil image, the `aspectMask` used to create the `imageView` must include either `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT` but not both
-- `VUID-VkDescriptorImageInfo-imageLayout-00344`: `imageLayout` must match the actual VkImageLayout of each subresource accessible from `imageView` at the time this descriptor is accessed as defined by the image layout matching rules
-- `VUID-VkDescriptorImageInfo-sampler-01564`: If `sampler` is used and the VkFormat of the image is a multi-planar format, the image must have been created with `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`, and the `aspectMask` of the `imageView` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or (for three-plane formats only) `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkWriteDescriptorSet-descriptorCount-00318`: All consecutive bindings updated via a single `VkWriteDescriptorSet` structure, except those with a `descriptorCount` of zero, must all either use immutable samplers or must all not use immutable samplers
-- `VUID-VkWriteDescriptorSet-descriptorType-02994`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, each element of `pTexelBufferView` must be either a valid `VkBufferView` handle or VK_NULL_HANDLE
-- `VUID-VkWriteDescriptorSet-descriptorType-02995`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` and the `nullDescriptor` feature is not enabled, each element of `pTexelBufferView` must not be VK_NULL_HANDLE
-- `VUID-VkWriteDescriptorSet-descriptorType-00325`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that included immutable samplers for `dstBinding` with `descriptorType`, the `sampler` member of each element of `pImageInfo` must be a valid `VkSampler` object
-- `VUID-VkWriteDescriptorSet-descriptorType-02996`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, or `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the `imageView` member of each element of `pImageInfo` must be either a valid `VkImageView` handle or VK_NULL_HANDLE
-- `VUID-VkWriteDescriptorSet-descriptorType-02997`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, or `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and the `nullDescriptor` feature is not enabled, the `imageView` member of each element of `pImageInfo` must not be VK_NULL_HANDLE
-- `VUID-VkWriteDescriptorSet-descriptorType-07683`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must not be VK_NULL_HANDLE
-- `VUID-VkWriteDescriptorSet-descriptorType-00327`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `offset` member of each element of `pBufferInfo` must be a multiple of `VkPhysicalDeviceLimits::minUniformBufferOffsetAlignment`
-- `VUID-VkWriteDescriptorSet-descriptorType-00328`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `offset` member of each element of `pBufferInfo` must be a multiple of `VkPhysicalDeviceLimits::minStorageBufferOffsetAlignment`
-- `VUID-VkWriteDescriptorSet-descriptorType-00329`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, and the `buffer` member of any element of `pBufferInfo` is the handle of a non-sparse buffer, then that buffer must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkWriteDescriptorSet-descriptorType-00330`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `buffer` member of each element of `pBufferInfo` must have been created with `VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-00331`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `buffer` member of each element of `pBufferInfo` must have been created with `VK_BUFFER_USAGE_STORAGE_BUFFER_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-00332`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` or `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, the `range` member of each element of `pBufferInfo`, or the effective range if `range` is `VK_WHOLE_SIZE`, must be less than or equal to `VkPhysicalDeviceLimits::maxUniformBufferRange`
-- `VUID-VkWriteDescriptorSet-descriptorType-00333`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`, the `range` member of each element of `pBufferInfo`, or the effective range if `range` is `VK_WHOLE_SIZE`, must be less than or equal to `VkPhysicalDeviceLimits::maxStorageBufferRange`
-- `VUID-VkWriteDescriptorSet-descriptorType-00334`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, the `VkBuffer` that each element of `pTexelBufferView` was created from must have been created with `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-00335`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, the `VkBuffer` that each element of `pTexelBufferView` was created from must have been created with `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-00336`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` or `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with the identity swizzle
-- `VUID-VkWriteDescriptorSet-descriptorType-07729`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with exactly one aspect
-- `VUID-VkWriteDescriptorSet-descriptorType-00337`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-04149`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Sampled Image
-- `VUID-VkWriteDescriptorSet-descriptorType-04150`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Combined Image Sampler
-- `VUID-VkWriteDescriptorSet-descriptorType-04151`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Input Attachment
-- `VUID-VkWriteDescriptorSet-descriptorType-04152`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` the `imageLayout` member of each element of `pImageInfo` must be a member of the list given in Storage Image
-- `VUID-VkWriteDescriptorSet-descriptorType-00338`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-00339`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the `imageView` member of each element of `pImageInfo` must have been created with `VK_IMAGE_USAGE_STORAGE_BIT` set
-- `VUID-VkWriteDescriptorSet-descriptorType-02752`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable samplers for `dstBinding`
-- `VUID-VkWriteDescriptorSet-descriptorType-02221`: If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, the `pNext` chain must include a VkWriteDescriptorSetInlineUniformBlock structure whose `dataSize` member equals `descriptorCount`
-
 # Valid usage
 
 The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
 
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: dynamic (checks each buffer a descriptor names is one the device recorded (the 1.3.239 layer crashes looking up a buffer of another device: proven by the error alone))
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: dynamic (refuses a write whose descriptor type selects an array that is not set)
 - `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkUpdateDescriptorSets-None-03047`: dynamic (checks the submissions of the command buffers that bound each set the update writes (recorded at each submission, dropped once known complete) when it rewrites a binding without UPDATE_AFTER_BIND or UPDATE_UNUSED_WHILE_PENDING; an update also leaves the command buffers that bound the set invalid, and what it replaces stays alive until those submissions complete)
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: static (every descriptor update and every submission holds the device's descriptor gate, so no two of them touch a set at once)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub unsafe fn update_descriptor_sets<'a>(
+    pub fn update_descriptor_sets<'a>(
         &self,
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
@@ -2916,6 +2875,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
                 .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
+        let _held = crate::hooks::update_descriptor_sets_gate(
+            self,
+            descriptor_writes,
+            descriptor_copies,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -2927,7 +2891,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, `VUID-VkWriteDescriptorSet-dstBinding-00315`, `VUID-VkWriteDescriptorSet-dstBinding-00316`, `VUID-VkWriteDescriptorSet-descriptorType-00319`, `VUID-VkWriteDescriptorSet-dstArrayElement-00321`, `VUID-VkWriteDescriptorSet-descriptorCount-00317`, `VUID-VkCopyDescriptorSet-srcBinding-00345`, `VUID-VkCopyDescriptorSet-srcArrayElement-00346`, `VUID-VkCopyDescriptorSet-dstBinding-00347`, `VUID-VkCopyDescriptorSet-dstArrayElement-00348`, `VUID-VkCopyDescriptorSet-dstBinding-02632`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run time: `VUID-VkWriteDescriptorSet-descriptorType-00324`, `VUID-VkWriteDescriptorSet-dstBinding-00315`, `VUID-VkWriteDescriptorSet-dstBinding-00316`, `VUID-VkWriteDescriptorSet-descriptorType-00319`, `VUID-VkWriteDescriptorSet-dstArrayElement-00321`, `VUID-VkWriteDescriptorSet-descriptorCount-00317`, `VUID-VkCopyDescriptorSet-srcBinding-00345`, `VUID-VkCopyDescriptorSet-srcArrayElement-00346`, `VUID-VkCopyDescriptorSet-dstBinding-00347`, `VUID-VkCopyDescriptorSet-dstArrayElement-00348`, `VUID-VkCopyDescriptorSet-dstBinding-02632`, `VUID-VkWriteDescriptorSet-descriptorCount-00318`, `VUID-VkWriteDescriptorSet-descriptorType-02752`, `VUID-VkCopyDescriptorSet-dstBinding-02753`, `VUID-VkCopyDescriptorSet-srcBinding-02223`, `VUID-VkCopyDescriptorSet-dstBinding-02224`, `VUID-VkCopyDescriptorSet-srcBinding-02225`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`, `VUID-VkWriteDescriptorSet-descriptorType-00325`, `VUID-VkWriteDescriptorSet-descriptorType-02996`, `VUID-VkWriteDescriptorSet-descriptorType-02997`, `VUID-VkWriteDescriptorSet-descriptorType-07683`, `VUID-VkWriteDescriptorSet-descriptorType-02994`, `VUID-VkWriteDescriptorSet-descriptorType-02995`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`, `VUID-VkDescriptorBufferInfo-buffer-02998`, `VUID-VkWriteDescriptorSet-descriptorType-00327`, `VUID-VkWriteDescriptorSet-descriptorType-00328`, `VUID-VkWriteDescriptorSet-descriptorType-00329`, `VUID-VkWriteDescriptorSet-descriptorType-00330`, `VUID-VkWriteDescriptorSet-descriptorType-00331`, `VUID-VkWriteDescriptorSet-descriptorType-00332`, `VUID-VkWriteDescriptorSet-descriptorType-00333`, `VUID-VkWriteDescriptorSet-descriptorType-00334`, `VUID-VkWriteDescriptorSet-descriptorType-00335`, `VUID-VkWriteDescriptorSet-descriptorType-00336`, `VUID-VkWriteDescriptorSet-descriptorType-00337`, `VUID-VkWriteDescriptorSet-descriptorType-00338`, `VUID-VkWriteDescriptorSet-descriptorType-00339`, `VUID-VkWriteDescriptorSet-descriptorType-04149`, `VUID-VkWriteDescriptorSet-descriptorType-04150`, `VUID-VkWriteDescriptorSet-descriptorType-04151`, `VUID-VkWriteDescriptorSet-descriptorType-04152`, `VUID-VkWriteDescriptorSet-descriptorType-07729`, `VUID-VkDescriptorImageInfo-imageView-01976`, `VUID-VkDescriptorImageInfo-imageView-06711`, `VUID-VkDescriptorImageInfo-imageView-06712`, `VUID-VkDescriptorImageInfo-sampler-01564`, `VUID-VkWriteDescriptorSet-descriptorType-02221`, `VUID-VkCopyDescriptorSet-srcSet-00349`, `VUID-VkCopyDescriptorSet-srcSet-01918`, `VUID-VkCopyDescriptorSet-srcSet-04886`, `VUID-VkCopyDescriptorSet-srcSet-01920`, `VUID-VkCopyDescriptorSet-srcSet-04888`, `VUID-vkUpdateDescriptorSets-None-03047`, `VUID-VkDescriptorImageInfo-imageLayout-00344`, `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn update_descriptor_sets_unchecked<'a>(
         &self,
@@ -3696,6 +3660,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11.
             let r = self.validate_queue_submit(submits, fence);
             r?;
         }
+        let _held = crate::hooks::queue_submit_gate(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.queue_submit_unchecked(submits, fence) }

@@ -2599,6 +2599,7 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), group_count_x, group_count_y, group_count_z) };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
         }
         Ok(())
     }
@@ -2687,6 +2688,7 @@ The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run 
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset) };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -3374,6 +3376,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
                     first_instance,
                 )
             };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
         }
         Ok(())
     }
@@ -3525,6 +3528,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
                     first_instance,
                 )
             };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
         }
         Ok(())
     }
@@ -3666,6 +3670,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -3803,6 +3808,7 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())

@@ -118,6 +118,7 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
                     group_count_z,
                 )
             };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
         }
         Ok(())
     }

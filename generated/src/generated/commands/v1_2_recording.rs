@@ -273,6 +273,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
                     stride,
                 )
             };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
             self.retain_with(buffer.address(), || buffer.retained());
             self.retain_with(count_buffer.address(), || count_buffer.retained());
         }
@@ -444,6 +445,7 @@ The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at ru
                     stride,
                 )
             };
+            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
             self.retain_with(buffer.address(), || buffer.retained());
             self.retain_with(count_buffer.address(), || count_buffer.retained());
         }

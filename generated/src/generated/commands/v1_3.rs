@@ -430,6 +430,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
             let r = self.validate_queue_submit2(submits, fence);
             r?;
         }
+        let _held = crate::hooks::queue_submit2_gate(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.queue_submit2_unchecked(submits, fence) }

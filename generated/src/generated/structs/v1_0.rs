@@ -715,13 +715,21 @@ The rules are on [`VkCopyDescriptorSet`'s reference page](https://registry.khron
 - `VUID-VkCopyDescriptorSet-dstBinding-00347`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkCopyDescriptorSet-dstArrayElement-00348`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkCopyDescriptorSet-dstBinding-02632`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkCopyDescriptorSet-srcSet-00349`: dynamic (checks the two ranges of a copy inside one set, as positions among the set's elements in binding order, do not overlap (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-VkCopyDescriptorSet-dstBinding-02753`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkCopyDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCopyDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkCopyDescriptorSet-srcSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-dstSet-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkCopyDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkCopyDescriptorSet-srcSet-01920`: dynamic (checks the two sets' pools were created alike with or without UPDATE_AFTER_BIND (recorded at each set's allocation))
+- `VUID-VkCopyDescriptorSet-srcSet-04888`: dynamic (checks the two sets' pools were created alike with or without UPDATE_AFTER_BIND (recorded at each set's allocation))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
+
+- 3: checked by the safe methods in every build (an inline uniform block's offset and size against 4), but no test breaks it: the safe copy takes its count as a number, and no test has two inline uniform block bindings to copy between yet
+- 2: checked by the safe methods in every build (the layouts' UPDATE_AFTER_BIND_POOL flags, recorded at their creation), but no test breaks it: lavapipe 22.3 offers update-after-bind for no descriptor type
+- 5: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyDescriptorSet<'a> {
@@ -795,9 +803,10 @@ The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.kh
 - `VUID-VkDescriptorBufferInfo-offset-00340`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkDescriptorBufferInfo-range-00341`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkDescriptorBufferInfo-range-00342`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
+- `VUID-VkDescriptorBufferInfo-buffer-02998`: dynamic (refuses a null buffer: the emitted API has no nullDescriptor feature)
 - `VUID-VkDescriptorBufferInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -831,9 +840,16 @@ impl<'a> DescriptorBufferInfo<'a> {
 
 The rules are on [`VkDescriptorImageInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorImageInfo.html). Settled by the wrappers:
 
+- `VUID-VkDescriptorImageInfo-imageView-06711`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkDescriptorImageInfo-imageView-06712`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkDescriptorImageInfo-imageView-01976`: dynamic (checks a view of a depth/stencil image names one of its aspects (the 1.3.239 layer reports it as UNASSIGNED-CoreValidation-DrawState-InvalidImageView, both aspects set))
+- `VUID-VkDescriptorImageInfo-imageLayout-00344`: dynamic (checked where each draw and dispatch reads the sets bound at its pipeline layout's set numbers (the image descriptors each set held when it was bound; an update after that leaves the recording invalid): each descriptor's layout against what the recording's earlier commands leave its view's subresources in, and otherwise needed at the recording's start, which its submission checks against what the earlier submissions leave; a descriptor naming an attachment of the render pass instance is refused, as the recorder does not follow subpass layouts (across command buffers the 1.3.239 layer states the mismatch as UNASSIGNED-CoreValidation-DrawState-InvalidImageLayout))
 - `VUID-VkDescriptorImageInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
+
+- 1: checked by the safe methods in every build (the image's recorded format and flags, the view's aspect), but no test breaks it: lavapipe 22.3 supports no multi-planar format
+- 5: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorImageInfo<'a> {
@@ -3749,21 +3765,48 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-dstBinding-00315`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-dstBinding-00316`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorCount-00317`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-descriptorCount-00318`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-descriptorType-00319`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-dstSet-00320`: static (the method takes the handle as a wrapper reference, never null and live while borrowed)
 - `VUID-VkWriteDescriptorSet-dstArrayElement-00321`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
+- `VUID-VkWriteDescriptorSet-descriptorType-02994`: static (texel buffer views are taken as a slice of wrappers, which always hold valid handles)
+- `VUID-VkWriteDescriptorSet-descriptorType-02995`: static (texel buffer views are taken as a slice of wrappers, which always hold valid handles)
 - `VUID-VkWriteDescriptorSet-descriptorType-00324`: dynamic (refuses a write whose descriptor type selects an array that is not set)
+- `VUID-VkWriteDescriptorSet-descriptorType-00325`: static (a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form))
+- `VUID-VkWriteDescriptorSet-descriptorType-02996`: static (a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form))
+- `VUID-VkWriteDescriptorSet-descriptorType-02997`: static (a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form))
+- `VUID-VkWriteDescriptorSet-descriptorType-07683`: static (a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form))
+- `VUID-VkWriteDescriptorSet-descriptorType-00327`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00328`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00329`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00330`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00331`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00332`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00334`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00335`: dynamic (checks each buffer descriptor's buffer (recorded usage, size and binding; for a texel buffer view, its buffer's usage) and its offset and range against the device's limits)
+- `VUID-VkWriteDescriptorSet-descriptorType-00336`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-07729`: dynamic (checks a view of a depth/stencil image names one of its aspects (the 1.3.239 layer reports it as UNASSIGNED-CoreValidation-DrawState-InvalidImageView, both aspects set))
+- `VUID-VkWriteDescriptorSet-descriptorType-00337`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-04149`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-04150`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-04151`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-04152`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-00338`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-00339`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
+- `VUID-VkWriteDescriptorSet-descriptorType-02752`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkWriteDescriptorSet-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkWriteDescriptorSet-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)
 - `VUID-VkWriteDescriptorSet-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
+- `VUID-VkWriteDescriptorSet-descriptorType-02221`: dynamic (checks an inline uniform block write chains a VkWriteDescriptorSetInlineUniformBlock whose dataSize is the write's count)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38.
+Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
+- 1: checked by the safe methods in every build (the range against maxStorageBufferRange), but no test breaks it: lavapipe's limit is larger than a test can allocate
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 36: explicit rule; the wrappers do not check it*/
+- 9: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct WriteDescriptorSet<'a> {
