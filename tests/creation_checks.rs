@@ -1283,12 +1283,10 @@ fn create_view(s: &Setup, i: Viewed, v: View) -> (tuff::Result<()>, Vec<String>)
         info = info.push_next(&mut list);
     }
     let allocator = s.device.naive_allocator();
-    // SAFETY: the images of these cases keep every rule of their creation.
-    let image = unsafe {
-        s.device
-            .create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal)
-    }
-    .expect("the viewed image");
+    let image = s
+        .device
+        .create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal)
+        .expect("the viewed image");
     let mut usage = tuff::ImageViewUsageCreateInfo::new().usage(v.usage.unwrap_or_default());
     let mut view = tuff::ImageViewCreateInfo::new(&image)
         .view_type(v.ty)
@@ -1643,10 +1641,9 @@ fn framebuffer_rules_are_refused_and_the_layer_agrees() {
             .array_layers(1)
             .samples(samples)
             .usage(usage);
-        // SAFETY: the images keep every rule of their creation.
-        let image =
-            unsafe { d.create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal) }
-                .expect("image");
+        let image = d
+            .create_image_in(&info, &allocator, tuff::MemoryLocation::DeviceLocal)
+            .expect("image");
         let aspect = if format == depth_format {
             vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
         } else {

@@ -893,10 +893,7 @@ fn sets_in_use_are_not_rewritten() {
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-        assert_eq!(
-            vuid(unsafe { s.queue.queue_submit(&submit, &fence) }),
-            invalid
-        );
+        assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), invalid);
         assert_silent(&s.messages);
         s.messages.abort_on_error(true);
         // SAFETY: the layer names the rule and skips the call.
@@ -930,9 +927,7 @@ fn sets_in_use_are_not_rewritten() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    // SAFETY: the batch waits on a timeline value the host signals below, and draws
-    // and dispatches with pipelines and sets made for each other.
-    unsafe { s.queue.queue_submit(&gated, &fence) }.expect("gated submit");
+    s.queue.queue_submit(&gated, &fence).expect("gated submit");
     let in_use = "VUID-vkUpdateDescriptorSets-None-03047";
     assert_eq!(vuid(d.update_descriptor_sets(&[write], &[])), in_use);
     assert_silent(&s.messages);
@@ -958,10 +953,7 @@ fn sets_in_use_are_not_rewritten() {
         .expect("an update after the wait");
     d.reset_fences(&[&fence]).expect("reset");
     let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-    assert_eq!(
-        vuid(unsafe { s.queue.queue_submit(&submit, &fence) }),
-        invalid
-    );
+    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), invalid);
     assert_silent(&s.messages);
 }
 
@@ -1218,7 +1210,7 @@ fn image_descriptors_are_read_in_their_layouts() {
     rec.end().expect("end");
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
-    assert_eq!(vuid(unsafe { s.queue.queue_submit(&submit, &fence) }), rule);
+    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), rule);
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
     // SAFETY: the layer names the rule (lavapipe reads the image whatever its layout).
@@ -1243,8 +1235,9 @@ fn image_descriptors_are_read_in_their_layouts() {
     rec.end().expect("end");
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
-    // SAFETY: the shader promise; every rule the submission lists holds.
-    unsafe { s.queue.queue_submit(&submit, &fence) }.expect("a dispatch of a GENERAL image");
+    s.queue
+        .queue_submit(&submit, &fence)
+        .expect("a dispatch of a GENERAL image");
     assert_eq!(
         d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
             .expect("wait"),

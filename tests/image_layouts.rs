@@ -536,10 +536,8 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(cbs);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-    }?;
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)?;
     let waited = s
         .device
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)

@@ -2346,11 +2346,9 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-    }
-    .expect("submit");
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
         .expect("wait");

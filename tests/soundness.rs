@@ -84,10 +84,8 @@ fn record_gated_fill(
 
 fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff::Result<()> {
     let handles = tuff::HandleSlice::new(cbs);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], fence)
-    }
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], fence)
 }
 
 fn wait(s: &Setup, fence: &tuff::Fence) {
@@ -242,16 +240,17 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let signals = tuff::HandleSlice::new(&[&signalled]);
-        unsafe {
-            s.queue.queue_submit(
+        s.queue
+            .queue_submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)],
                 &first,
             )
-        }
-        .expect("first submit");
-        unsafe { s.queue.queue_submit(&[], &second) }.expect("second submit, no command buffers");
+            .expect("first submit");
+        s.queue
+            .queue_submit(&[], &second)
+            .expect("second submit, no command buffers");
     }
     // The semaphore is in use by the pending batch; the second fence has no command
     // buffer to keep alive but its wait is still owed before it goes.
@@ -1072,10 +1071,9 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 rec.end().expect("end");
                 let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
-                    unsafe {
-                        queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-                    }
-                    .expect("submit");
+                    queue
+                        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+                        .expect("submit");
                     wait(s, &done);
                     s.device.reset_fences(&[&done]).expect("reset");
                 }
@@ -1255,59 +1253,50 @@ fn timeline_semaphores_are_used_only_with_their_values() {
 
     let done = fence(&s);
     let timelines = tuff::HandleSlice::new(&[&timeline]);
-    let no_values = unsafe {
-        s.queue.queue_submit(
-            &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
-            &done,
-        )
-    };
+    let no_values = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
+        &done,
+    );
     assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
     // A count without values, and values of another count.
     let mut counted = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_value_count(1);
-    let r = unsafe {
-        s.queue.queue_submit(
-            &[tuff::SubmitInfo::new()
-                .signal_semaphores(&timelines)
-                .push_next(&mut counted)],
-            &done,
-        )
-    };
+    let r = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new()
+            .signal_semaphores(&timelines)
+            .push_next(&mut counted)],
+        &done,
+    );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
-    let r = unsafe {
-        s.queue.queue_submit(
-            &[tuff::SubmitInfo::new()
-                .signal_semaphores(&timelines)
-                .push_next(&mut two)],
-            &done,
-        )
-    };
+    let r = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new()
+            .signal_semaphores(&timelines)
+            .push_next(&mut two)],
+        &done,
+    );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     // Waits on a timeline semaphore with values of another count.
     let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
     let mut two_waits = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1, 2]);
-    let r = unsafe {
-        s.queue.queue_submit(
-            &[tuff::SubmitInfo::new()
-                .wait_semaphores(&timelines, &stages)
-                .expect("one stage per semaphore")
-                .push_next(&mut two_waits)],
-            &done,
-        )
-    };
+    let r = s.queue.queue_submit(
+        &[tuff::SubmitInfo::new()
+            .wait_semaphores(&timelines, &stages)
+            .expect("one stage per semaphore")
+            .push_next(&mut two_waits)],
+        &done,
+    );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03240");
     assert_silent(&s.messages);
 
     let mut one = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
-    unsafe {
-        s.queue.queue_submit(
+    s.queue
+        .queue_submit(
             &[tuff::SubmitInfo::new()
                 .signal_semaphores(&timelines)
                 .push_next(&mut one)],
             &done,
         )
-    }
-    .expect("submit with its value");
+        .expect("submit with its value");
     let wait_one = tuff::SemaphoreWaitInfo::new()
         .semaphores(&timelines, &[1])
         .expect("one value per semaphore");
@@ -1519,16 +1508,15 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let signals = tuff::HandleSlice::new(&[&timeline]);
         let mut values = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
-        unsafe {
-            s.queue.queue_submit(
+        s.queue
+            .queue_submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)
                     .push_next(&mut values)],
                 &done,
             )
-        }
-        .expect("submit");
+            .expect("submit");
     }
     assert!(
         s.device.live_object_count() > before,
@@ -2389,14 +2377,12 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
             .expect("semaphore");
         let signals = tuff::HandleSlice::new(&[&signaled]);
         let first = fence(&s);
-        // SAFETY: an empty batch that signals an unsignaled binary semaphore.
-        unsafe {
-            s.queue.queue_submit(
+        s.queue
+            .queue_submit(
                 &[tuff::SubmitInfo::new().signal_semaphores(&signals)],
                 &first,
             )
-        }
-        .expect("signal");
+            .expect("signal");
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         cb.begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin")
@@ -2464,10 +2450,7 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
                 batch = batch.push_next(&mut group);
             }
             let batch = [batch];
-            assert_eq!(
-                vuid(unsafe { s.queue.queue_submit(&batch, &done) }),
-                expected
-            );
+            assert_eq!(vuid(s.queue.queue_submit(&batch, &done)), expected);
             s.messages.take();
             s.messages.abort_on_error(true);
             // SAFETY: the layer skips the submission, which breaks only the rule under
@@ -3202,7 +3185,7 @@ fn indices_and_chained_counts_match_what_they_index() {
     let batch = [tuff::SubmitInfo::new().push_next(&mut group)];
     let done = fence(&s);
     assert_eq!(
-        vuid(unsafe { s.queue.queue_submit(&batch, &done) }),
+        vuid(s.queue.queue_submit(&batch, &done)),
         "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
     );
     let set_layout = d

@@ -160,11 +160,9 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     rec = work.record(rec, &target, 16, None);
     rec.end().expect("end");
     let handles = tuff::HandleSlice::new(&[&cbs[0]]);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-    }
-    .expect("submit");
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
     let ColorTarget {
         image,
         memory: image_memory,
@@ -293,7 +291,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
         let submits = [tuff::SubmitInfo::new().command_buffers(&cb_handles)];
-        unsafe { s.queue.queue_submit(&submits, &fence) }.expect("submit");
+        s.queue.queue_submit(&submits, &fence).expect("submit");
         // Everything the submission uses goes while it may still run; the fence
         // keeps the command buffer, and through it the buffer and memory, alive.
         let _ = submits;
@@ -428,8 +426,8 @@ fn present_one_frame(
     let signals = tuff::HandleSlice::new(&[&rendered]);
     let cbs = tuff::HandleSlice::new(&[&cb]);
     let stages = [vk::PipelineStageFlags::TRANSFER];
-    unsafe {
-        s.queue.queue_submit(
+    s.queue
+        .queue_submit(
             &[tuff::SubmitInfo::new()
                 .wait_semaphores(&waits, &stages)
                 .expect("one stage per semaphore")
@@ -437,8 +435,7 @@ fn present_one_frame(
                 .signal_semaphores(&signals)],
             &fence,
         )
-    }
-    .expect("submit");
+        .expect("submit");
     let swapchains = tuff::HandleSlice::new(&[swapchain]);
     let indices = [index];
     let r = s
@@ -554,7 +551,8 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
         // The recreate path after a resize: the new swapchain retires the old one, and
         // both keep the surface alive.
         window.resize(80, 40);
-        let second = unsafe { first.recreate(&s.device, &surface, &swapchain_info(&s, &surface)) }
+        let second = first
+            .recreate(&s.device, &surface, &swapchain_info(&s, &surface))
             .expect("recreate");
         bag.extend(present_one_frame(&s, &second, &pool));
         bag.push(Box::new(first));
@@ -597,7 +595,7 @@ fn recreate_refuses_another_surface() {
         .create_swapchain_khr(&a, &swapchain_info(&s, &a))
         .expect("swapchain");
     assert!(!swapchain.presents_to(&b));
-    match unsafe { swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) } {
+    match swapchain.recreate(&s.device, &b, &swapchain_info(&s, &b)) {
         Err(tuff::Error::Validation { vuid, .. }) => {
             assert_eq!(vuid, "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933")
         }
@@ -628,11 +626,9 @@ fn pipelines_draw_and_dispatch() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-    }
-    .expect("submit");
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
         .expect("wait");
@@ -703,11 +699,9 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
-    }
-    .expect("submit");
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .expect("submit");
     drop(kept);
     let status = d
         .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
@@ -725,22 +719,20 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     let allocators: [(&str, &dyn tuff::runtime::Allocator); 2] = [("gpu", &gpu), ("naive", &naive)];
     for (name, allocator) in allocators {
         let info = |usage| tuff::BufferCreateInfo::new().size(256).usage(usage);
-        let source = unsafe {
-            d.create_buffer_in(
+        let source = d
+            .create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_SRC),
                 allocator,
                 tuff::MemoryLocation::Upload,
             )
-        }
-        .expect("source");
-        let target = unsafe {
-            d.create_buffer_in(
+            .expect("source");
+        let target = d
+            .create_buffer_in(
                 &info(vk::BufferUsageFlags::TRANSFER_DST),
                 allocator,
                 tuff::MemoryLocation::Readback,
             )
-        }
-        .expect("target");
+            .expect("target");
         assert!(source.memory().size() >= 256, "{name}");
         let words: Vec<u32> = (0..64).map(|i| i * 3 + 1).collect();
         source.memory().write(0, &words).expect("write");
@@ -776,15 +768,18 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
     }
     // A buffer made and filled in one call; empty data still makes a valid buffer.
     let usage = vk::BufferUsageFlags::INDEX_BUFFER;
-    let filled =
-        unsafe { d.create_buffer_with(usage, &[5u16, 6, 7], &gpu) }.expect("filled buffer");
+    let filled = d
+        .create_buffer_with(usage, &[5u16, 6, 7], &gpu)
+        .expect("filled buffer");
     assert_eq!(filled.memory().read::<u16>(0, 3).expect("read"), [5, 6, 7]);
     let empty: [u32; 0] = [];
-    let empty = unsafe { d.create_buffer_with(usage, &empty, &naive) }.expect("empty buffer");
+    let empty = d
+        .create_buffer_with(usage, &empty, &naive)
+        .expect("empty buffer");
     assert!(empty.memory().size() >= 1);
     // An image in device-local memory, and the refusals.
-    let image = unsafe {
-        d.create_image_in(
+    let image = d
+        .create_image_in(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
                 .format(vk::Format::D32_SFLOAT)
@@ -800,12 +795,13 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
             &gpu,
             tuff::MemoryLocation::DeviceLocal,
         )
-    }
-    .expect("image");
+        .expect("image");
     assert!(image.memory().size() >= 64 * 64 * 4);
-    let refusal = |info: tuff::BufferCreateInfo<'_>| match unsafe {
-        d.create_buffer_in(&info.size(64), &gpu, tuff::MemoryLocation::Upload)
-    } {
+    let refusal = |info: tuff::BufferCreateInfo<'_>| match d.create_buffer_in(
+        &info.size(64),
+        &gpu,
+        tuff::MemoryLocation::Upload,
+    ) {
         Err(tuff::Error::Validation { vuid, .. }) => vuid,
         Err(other) => panic!("expected a refusal, got {other}"),
         Ok(_) => panic!("expected a refusal, got a buffer"),
@@ -844,10 +840,10 @@ fn an_allocator_of_another_device_is_refused() {
     let info = tuff::BufferCreateInfo::new()
         .size(64)
         .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    match unsafe {
-        s.device
-            .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
-    } {
+    match s
+        .device
+        .create_buffer_in(&info, &foreign, tuff::MemoryLocation::Upload)
+    {
         Err(tuff::Error::Validation { vuid, .. }) => {
             assert_eq!(vuid, "VUID-vkBindBufferMemory-memory-parent")
         }
@@ -1050,7 +1046,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
             let info = tuff::BufferCreateInfo::new()
                 .size(64)
                 .usage(vk::BufferUsageFlags::TRANSFER_DST);
-            unsafe { d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback) }
+            d.create_buffer_in(&info, &gpu, tuff::MemoryLocation::Readback)
                 .expect("target")
         })
         .collect();
@@ -1096,14 +1092,14 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
             .iter()
             .map(|p| (p, vk::PipelineStageFlags::TRANSFER))
             .collect();
-        unsafe { frame.submit(&s.queue, &waits, &[&signal]) }.expect("submit");
+        frame.submit(&s.queue, &waits, &[&signal]).expect("submit");
         previous = Some(signal);
     }
     assert_eq!(order, [0, 1, 2, 0, 1, 2, 0]);
     // A frame submitted without a new recording is refused, and the ring stays on it.
     let frame = frames.next_frame().expect("next frame");
     assert_eq!(frame.index, 1);
-    let refused = unsafe { frame.submit(&s.queue, &[], &[]) };
+    let refused = frame.submit(&s.queue, &[], &[]);
     assert!(
         matches!(refused, Err(tuff::Error::Validation { vuid, .. })
             if vuid == "VUID-vkQueueSubmit-pCommandBuffers-00070"),
@@ -1116,7 +1112,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
         previous.as_ref().expect("a semaphore"),
         vk::PipelineStageFlags::TRANSFER,
     )];
-    unsafe { frame.submit(&s.queue, &waits, &[]) }.expect("submit");
+    frame.submit(&s.queue, &waits, &[]).expect("submit");
     drop(previous);
     frames.wait_all().expect("wait for all frames");
     let last: Vec<u32> = targets.iter().map(first).collect();
@@ -1378,11 +1374,9 @@ fn acquire_for_present(
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let cbs = tuff::HandleSlice::new(&[&cb]);
-    unsafe {
-        s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
-    }
-    .expect("submit");
+    s.queue
+        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        .expect("submit");
     assert_eq!(
         d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
             .expect("moved"),
@@ -1600,9 +1594,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    // SAFETY: the batch waits on a signaled binary semaphore and a timeline value
-    // the host signals below, and executes nothing.
-    unsafe { s.queue.queue_submit(&gated, &done) }.expect("gated submit");
+    s.queue.queue_submit(&gated, &done).expect("gated submit");
     // A second wait on it, with no signal between, is refused too.
     let unsignaled_wait = "VUID-vkQueueSubmit-pWaitSemaphores-03238";
     let one_wait = tuff::HandleSlice::new(&[&acquired]);
@@ -1611,9 +1603,8 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .wait_semaphores(&one_wait, &one_stage)
         .expect("one stage per wait")];
     let other = fence(unsignaled);
-    // SAFETY: the call is refused.
     assert_eq!(
-        refused(unsafe { s.queue.queue_submit(&second, &other) }),
+        refused(s.queue.queue_submit(&second, &other)),
         unsignaled_wait
     );
     layer_names(&s, unsignaled_wait, || {
@@ -1644,13 +1635,11 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     let twice = semaphore();
     let signals = tuff::HandleSlice::new(&[&twice]);
     let signal = [tuff::SubmitInfo::new().signal_semaphores(&signals)];
-    // SAFETY: an empty batch that signals an unsignaled binary semaphore.
-    unsafe { s.queue.queue_submit(&signal, &other) }.expect("signal");
+    s.queue.queue_submit(&signal, &other).expect("signal");
     let signaled_again = "VUID-vkQueueSubmit-pSignalSemaphores-00067";
     let third = fence(unsignaled);
-    // SAFETY: the call is refused.
     assert_eq!(
-        refused(unsafe { s.queue.queue_submit(&signal, &third) }),
+        refused(s.queue.queue_submit(&signal, &third)),
         signaled_again
     );
     // The 1.3.239 layer reports this rule under an unassigned name ("... was

@@ -177,11 +177,9 @@ impl Gpu {
         location: tuff::MemoryLocation,
     ) -> Result<tuff::Bound<tuff::Buffer>> {
         let info = tuff::BufferCreateInfo::new().size(size).usage(usage);
-        // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-        Ok(unsafe {
-            self.device
-                .create_buffer_in(&info, &self.allocator, location)
-        }?)
+        Ok(self
+            .device
+            .create_buffer_in(&info, &self.allocator, location)?)
     }
 
     /// A 2D image in device-local memory, which the image keeps.
@@ -200,13 +198,11 @@ impl Gpu {
             .samples(vk::SampleCountFlags::TYPE_1)
             .usage(usage);
         let local = tuff::MemoryLocation::DeviceLocal;
-        Ok(
-            // SAFETY: a 2D depth attachment in a format the scene checked the device supports,
-            // at the target's size.
-            unsafe { self.device.create_image_in(&info, &self.allocator, local) }?
-                .into_parts()
-                .0,
-        )
+        Ok(self
+            .device
+            .create_image_in(&info, &self.allocator, local)?
+            .into_parts()
+            .0)
     }
 
     /// A 2D view of the whole of `image`.

@@ -89,10 +89,7 @@ pub fn render<S: Scene>(
         let copy = last.then_some((&images[slot], &*readback));
         let framebuffer = &targets.framebuffers[slot];
         render::record_frame(&mut frame, &render_pass, framebuffer, &scene, &view, copy)?;
-        // SAFETY: the frame's commands were recorded for this queue's family, use no events or
-        // secondaries, and its semaphores are waited and signalled in order, one acquire or
-        // present each.
-        unsafe { frame.submit(&gpu.queue, &[], &[]) }?;
+        frame.submit(&gpu.queue, &[], &[])?;
     }
     ring.wait_all()?;
     let elapsed = start.elapsed();

@@ -275,9 +275,7 @@ impl<S: Scene> Live<S> {
             .clipped(vk::TRUE);
         let swapchain = match &self.swapchain {
             Some(old) => {
-                // SAFETY: the info comes from the surface's current capabilities and formats,
-                // and the surface supports presenting from the chosen queue family.
-                let new = unsafe { old.recreate(&gpu.device, &self.surface, &info) }?;
+                let new = old.recreate(&gpu.device, &self.surface, &info)?;
                 self.recreations += 1;
                 new
             }
@@ -352,10 +350,7 @@ impl<S: Scene> Live<S> {
         )?;
         let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
         let rendered = &self.rendered[index];
-        // SAFETY: the frame's commands were recorded for this queue's family, use no events or
-        // secondaries, and its semaphores are waited and signalled in order, one acquire or
-        // present each.
-        unsafe { frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered]) }?;
+        frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered])?;
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
         let signals = tuff::HandleSlice::new(&[rendered]);

@@ -20,8 +20,7 @@
 //! let info = tuff::BufferCreateInfo::new()
 //!     .size(12)
 //!     .usage(vk::BufferUsageFlags::VERTEX_BUFFER);
-//! // SAFETY: a small exclusive buffer with no flags and no chain.
-//! let vertices = unsafe { device.create_buffer_in(&info, &allocator, MemoryLocation::Upload) }?;
+//! let vertices = device.create_buffer_in(&info, &allocator, MemoryLocation::Upload)?;
 //! vertices.memory().write(0, &[0.0f32, -0.5, 0.5])?;
 //! # Ok(()) }
 //! ```
@@ -102,202 +101,208 @@ impl Device {
         NaiveAllocator::new(self.memory_owner())
     }
 
-    /// A buffer of `usage` holding `data`: made with [`Device::create_buffer_in`] in
-    /// host-visible memory ([`MemoryLocation::Upload`]) from `allocator`, then
-    /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
-    /// (`VUID-VkBufferCreateInfo-size-00912`).
-    ///
-    /// # Safety
-    ///
-    /// As [`Device::create_buffer_in`], for a create info of `usage` and the data's
-    /// size.
-    ///
-    /// ```no_run
-    /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// let allocator = device.gpu_allocator()?;
-    /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
-    /// // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-    /// let indices = unsafe { device.create_buffer_with(usage, &[0u32, 1, 2], &allocator) }?;
-    /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
-    /// # Ok(()) }
-    /// ```
-    pub unsafe fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
-        &self,
-        usage: vk::BufferUsageFlags,
-        data: &[T],
-        allocator: &A,
-    ) -> Result<Bound<Buffer>> {
-        let size = (core::mem::size_of_val(data) as u64).max(1);
-        let info = BufferCreateInfo::new().size(size).usage(usage);
-        // SAFETY: the caller upholds what `create_buffer_in` asks of the info.
-        let buffer = unsafe { self.create_buffer_in(&info, allocator, MemoryLocation::Upload) }?;
-        buffer.memory().write(0, data)?;
-        Ok(buffer)
+    crate::helpers::as_safe_as! { vkCreateBuffer,
+        /// A buffer of `usage` holding `data`: made with [`Device::create_buffer_in`] in
+        /// host-visible memory ([`MemoryLocation::Upload`]) from `allocator`, then
+        /// written. Empty `data` gives a one-byte buffer, as a buffer cannot be empty
+        /// (`VUID-VkBufferCreateInfo-size-00912`).
+        ///
+        /// # Safety
+        ///
+        /// As [`Device::create_buffer_in`] (safe with this crate's emitted API), for a
+        /// create info of `usage` and the data's size.
+        ///
+        /// ```no_run
+        /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+        /// let allocator = device.gpu_allocator()?;
+        /// let usage = tuff::vk::BufferUsageFlags::INDEX_BUFFER;
+        /// let indices = device.create_buffer_with(usage, &[0u32, 1, 2], &allocator)?;
+        /// assert_eq!(indices.memory().read::<u32>(0, 3)?, [0, 1, 2]);
+        /// # Ok(()) }
+        /// ```
+        pub fn create_buffer_with<A: Allocator + ?Sized, T: bytemuck::NoUninit>(
+            &self,
+            usage: vk::BufferUsageFlags,
+            data: &[T],
+            allocator: &A,
+        ) -> Result<Bound<Buffer>> {
+            let size = (core::mem::size_of_val(data) as u64).max(1);
+            let info = BufferCreateInfo::new().size(size).usage(usage);
+            #[allow(unused_unsafe)]
+            // SAFETY: where `create_buffer_in` is `unsafe`, so is this method, and its
+            // caller upholds what it asks of the info.
+            let buffer = unsafe { self.create_buffer_in(&info, allocator, MemoryLocation::Upload) }?;
+            buffer.memory().write(0, data)?;
+            Ok(buffer)
+        }
     }
 
-    /// Creates a buffer and binds memory from `allocator` at `location` to it.
-    ///
-    /// Fails with the rule's VUID when the buffer needs memory no allocator of the
-    /// runtime gives (sparse, protected, device-address or external memory) or when the
-    /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
-    /// fails.
-    ///
-    /// # Safety
-    ///
-    /// The caller upholds the rules [`Device::create_buffer`]'s `# Safety` section
-    /// lists for `info`, except those this method refuses above. With the emitted API
-    /// of this crate (core 1.0-1.3, WSI, debug utils) `create_buffer` is safe and the
-    /// list is empty; a crate generated from more of the registry, or a newer one,
-    /// may list rules, which is why this helper, written once for every
-    /// configuration, stays `unsafe`.
-    ///
-    /// ```no_run
-    /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// use tuff::{vk, MemoryLocation};
-    /// let info = tuff::BufferCreateInfo::new()
-    ///     .size(64)
-    ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-    /// // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-    /// let uniforms = unsafe { device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload) }?;
-    /// uniforms.memory().write(0, &[1.0f32; 16])?;
-    /// # Ok(()) }
-    /// ```
-    pub unsafe fn create_buffer_in<A: Allocator + ?Sized>(
-        &self,
-        info: &BufferCreateInfo<'_>,
-        allocator: &A,
-        location: MemoryLocation,
-    ) -> Result<Bound<Buffer>> {
-        let raw = info.as_raw();
-        let sparse = vk::BufferCreateFlags::SPARSE_BINDING
-            | vk::BufferCreateFlags::SPARSE_RESIDENCY
-            | vk::BufferCreateFlags::SPARSE_ALIASED;
-        refuse(
-            raw.flags.intersects(sparse),
-            "VUID-vkBindBufferMemory-buffer-01030",
-            "a sparse buffer is bound with vkQueueBindSparse, not to one allocation",
-        )?;
-        refuse(
-            raw.flags.contains(vk::BufferCreateFlags::PROTECTED),
-            "VUID-vkBindBufferMemory-None-01898",
-            "a protected buffer needs protected memory, which the allocators do not give",
-        )?;
-        refuse(
-            raw.usage
-                .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
-            "VUID-vkBindBufferMemory-bufferDeviceAddress-03339",
-            "a buffer with a device address needs memory allocated with \
-             VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
-        )?;
-        refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
-        // `create_buffer` is safe in the pinned configuration and `unsafe` in wider
-        // ones.
-        #[allow(unused_unsafe)]
-        // SAFETY: the caller upholds the rules `create_buffer` lists.
-        let buffer = unsafe { self.create_buffer(info) }?;
-        let requirements = self.get_buffer_memory_requirements(&buffer)?;
-        let allocation = allocator
-            .allocate(&AllocationRequest::new(requirements, location))
-            .map_err(alloc_error)?;
-        fits(self, &allocation, &requirements, BUFFER_RULES)?;
-        // SAFETY: the buffer is new and unbound, not sparse; the allocation is memory
-        // of this device of an allowed type, aligned, large enough, and not protected.
-        unsafe {
-            self.fns()
-                .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
-        }?;
-        self.live()
-            .buffer_bound(buffer.raw(), allocation.memory(), allocation.offset());
-        let memory = BoundMemory::new(allocation);
-        buffer.retain_memory(memory.cell.clone());
-        Ok(Bound {
-            resource: buffer,
-            memory,
-        })
+    crate::helpers::as_safe_as! { vkCreateBuffer,
+        /// Creates a buffer and binds memory from `allocator` at `location` to it.
+        ///
+        /// Fails with the rule's VUID when the buffer needs memory no allocator of the
+        /// runtime gives (sparse, protected, device-address or external memory) or when the
+        /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
+        /// fails.
+        ///
+        /// # Safety
+        ///
+        /// This method is `unsafe` exactly when [`Device::create_buffer`] is: with the
+        /// emitted API of this crate (core 1.0-1.3, WSI, debug utils) it is safe; a
+        /// crate generated from more of the registry, or a newer one, may leave it
+        /// rules, and the caller then upholds those its `# Safety` section lists for
+        /// `info`, except those this method refuses above.
+        ///
+        /// ```no_run
+        /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+        /// use tuff::{vk, MemoryLocation};
+        /// let info = tuff::BufferCreateInfo::new()
+        ///     .size(64)
+        ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
+        /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
+        /// uniforms.memory().write(0, &[1.0f32; 16])?;
+        /// # Ok(()) }
+        /// ```
+        pub fn create_buffer_in<A: Allocator + ?Sized>(
+            &self,
+            info: &BufferCreateInfo<'_>,
+            allocator: &A,
+            location: MemoryLocation,
+        ) -> Result<Bound<Buffer>> {
+            let raw = info.as_raw();
+            let sparse = vk::BufferCreateFlags::SPARSE_BINDING
+                | vk::BufferCreateFlags::SPARSE_RESIDENCY
+                | vk::BufferCreateFlags::SPARSE_ALIASED;
+            refuse(
+                raw.flags.intersects(sparse),
+                "VUID-vkBindBufferMemory-buffer-01030",
+                "a sparse buffer is bound with vkQueueBindSparse, not to one allocation",
+            )?;
+            refuse(
+                raw.flags.contains(vk::BufferCreateFlags::PROTECTED),
+                "VUID-vkBindBufferMemory-None-01898",
+                "a protected buffer needs protected memory, which the allocators do not give",
+            )?;
+            refuse(
+                raw.usage
+                    .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
+                "VUID-vkBindBufferMemory-bufferDeviceAddress-03339",
+                "a buffer with a device address needs memory allocated with \
+                 VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
+            )?;
+            refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
+            // `create_buffer` is safe in the pinned configuration and `unsafe` in wider
+            // ones.
+            #[allow(unused_unsafe)]
+            // SAFETY: where `create_buffer` is `unsafe`, so is this method, and its caller
+            // upholds the rules it lists.
+            let buffer = unsafe { self.create_buffer(info) }?;
+            let requirements = self.get_buffer_memory_requirements(&buffer)?;
+            let allocation = allocator
+                .allocate(&AllocationRequest::new(requirements, location))
+                .map_err(alloc_error)?;
+            fits(self, &allocation, &requirements, BUFFER_RULES)?;
+            // SAFETY: the buffer is new and unbound, not sparse; the allocation is memory
+            // of this device of an allowed type, aligned, large enough, and not protected.
+            unsafe {
+                self.fns()
+                    .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
+            }?;
+            self.live()
+                .buffer_bound(buffer.raw(), allocation.memory(), allocation.offset());
+            let memory = BoundMemory::new(allocation);
+            buffer.retain_memory(memory.cell.clone());
+            Ok(Bound {
+                resource: buffer,
+                memory,
+            })
+        }
     }
 
-    /// Creates an image and binds memory from `allocator` at `location` to it.
-    ///
-    /// Fails with the rule's VUID when the image needs memory no allocator of the
-    /// runtime gives (sparse, disjoint, protected or external memory) or when the
-    /// allocation does not fit the image, and with [`Error::Alloc`] when the allocator
-    /// fails.
-    ///
-    /// # Safety
-    ///
-    /// The caller upholds the rules [`Device::create_image`]'s `# Safety` section lists
-    /// for `info`, except those this method refuses above.
-    ///
-    /// ```no_run
-    /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// use tuff::{vk, MemoryLocation};
-    /// let info = tuff::ImageCreateInfo::new()
-    ///     .image_type(vk::ImageType::TYPE_2D)
-    ///     .format(vk::Format::D32_SFLOAT)
-    ///     .extent(vk::Extent3D { width: 64, height: 64, depth: 1 })
-    ///     .mip_levels(1)
-    ///     .array_layers(1)
-    ///     .samples(vk::SampleCountFlags::TYPE_1)
-    ///     .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT);
-    /// // SAFETY: a plain 2D depth image, exclusive, no flags and no chain, which
-    /// // every device supports at this size.
-    /// let depth = unsafe { device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal) }?;
-    /// # drop(depth); Ok(()) }
-    /// ```
-    pub unsafe fn create_image_in<A: Allocator + ?Sized>(
-        &self,
-        info: &ImageCreateInfo<'_>,
-        allocator: &A,
-        location: MemoryLocation,
-    ) -> Result<Bound<Image>> {
-        let raw = info.as_raw();
-        let sparse = vk::ImageCreateFlags::SPARSE_BINDING
-            | vk::ImageCreateFlags::SPARSE_RESIDENCY
-            | vk::ImageCreateFlags::SPARSE_ALIASED;
-        refuse(
-            raw.flags.intersects(sparse),
-            "VUID-vkBindImageMemory-image-01045",
-            "a sparse image is bound with vkQueueBindSparse, not to one allocation",
-        )?;
-        refuse(
-            raw.flags.contains(vk::ImageCreateFlags::DISJOINT),
-            "VUID-vkBindImageMemory-image-01608",
-            "a disjoint image binds each plane with vkBindImageMemory2",
-        )?;
-        refuse(
-            raw.flags.contains(vk::ImageCreateFlags::PROTECTED),
-            "VUID-vkBindImageMemory-None-01901",
-            "a protected image needs protected memory, which the allocators do not give",
-        )?;
-        refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
-        // `create_image` is safe in the pinned configuration and `unsafe` in wider
-        // ones.
-        #[allow(unused_unsafe)]
-        // SAFETY: the caller upholds the rules `create_image` lists.
-        let image = unsafe { self.create_image(info) }?;
-        let requirements = self.get_image_memory_requirements(&image)?;
-        let mut request = AllocationRequest::new(requirements, location);
-        request.linear = raw.tiling == vk::ImageTiling::LINEAR;
-        let allocation = allocator.allocate(&request).map_err(alloc_error)?;
-        fits(self, &allocation, &requirements, IMAGE_RULES)?;
-        // SAFETY: as for buffers: a new, unbound, non-sparse, non-disjoint image and
-        // fitting, unprotected memory of this device.
-        unsafe {
-            self.fns()
-                .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
-        }?;
-        self.live().image_bound(
-            image.raw(),
-            allocation.memory(),
-            allocation.offset(),
-            requirements.size,
-        );
-        let memory = BoundMemory::new(allocation);
-        image.retain_memory(memory.cell.clone());
-        Ok(Bound {
-            resource: image,
-            memory,
-        })
+    crate::helpers::as_safe_as! { vkCreateImage,
+        /// Creates an image and binds memory from `allocator` at `location` to it.
+        ///
+        /// Fails with the rule's VUID when the image needs memory no allocator of the
+        /// runtime gives (sparse, disjoint, protected or external memory) or when the
+        /// allocation does not fit the image, and with [`Error::Alloc`] when the allocator
+        /// fails.
+        ///
+        /// # Safety
+        ///
+        /// This method is `unsafe` exactly when [`Device::create_image`] is (it is safe
+        /// with this crate's emitted API); the caller then upholds the rules its
+        /// `# Safety` section lists for `info`, except those this method refuses above.
+        ///
+        /// ```no_run
+        /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+        /// use tuff::{vk, MemoryLocation};
+        /// let info = tuff::ImageCreateInfo::new()
+        ///     .image_type(vk::ImageType::TYPE_2D)
+        ///     .format(vk::Format::D32_SFLOAT)
+        ///     .extent(vk::Extent3D { width: 64, height: 64, depth: 1 })
+        ///     .mip_levels(1)
+        ///     .array_layers(1)
+        ///     .samples(vk::SampleCountFlags::TYPE_1)
+        ///     .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT);
+        /// let depth = device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal)?;
+        /// # drop(depth); Ok(()) }
+        /// ```
+        pub fn create_image_in<A: Allocator + ?Sized>(
+            &self,
+            info: &ImageCreateInfo<'_>,
+            allocator: &A,
+            location: MemoryLocation,
+        ) -> Result<Bound<Image>> {
+            let raw = info.as_raw();
+            let sparse = vk::ImageCreateFlags::SPARSE_BINDING
+                | vk::ImageCreateFlags::SPARSE_RESIDENCY
+                | vk::ImageCreateFlags::SPARSE_ALIASED;
+            refuse(
+                raw.flags.intersects(sparse),
+                "VUID-vkBindImageMemory-image-01045",
+                "a sparse image is bound with vkQueueBindSparse, not to one allocation",
+            )?;
+            refuse(
+                raw.flags.contains(vk::ImageCreateFlags::DISJOINT),
+                "VUID-vkBindImageMemory-image-01608",
+                "a disjoint image binds each plane with vkBindImageMemory2",
+            )?;
+            refuse(
+                raw.flags.contains(vk::ImageCreateFlags::PROTECTED),
+                "VUID-vkBindImageMemory-None-01901",
+                "a protected image needs protected memory, which the allocators do not give",
+            )?;
+            refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
+            // `create_image` is safe in the pinned configuration and `unsafe` in wider
+            // ones.
+            #[allow(unused_unsafe)]
+            // SAFETY: where `create_image` is `unsafe`, so is this method, and its caller
+            // upholds the rules it lists.
+            let image = unsafe { self.create_image(info) }?;
+            let requirements = self.get_image_memory_requirements(&image)?;
+            let mut request = AllocationRequest::new(requirements, location);
+            request.linear = raw.tiling == vk::ImageTiling::LINEAR;
+            let allocation = allocator.allocate(&request).map_err(alloc_error)?;
+            fits(self, &allocation, &requirements, IMAGE_RULES)?;
+            // SAFETY: as for buffers: a new, unbound, non-sparse, non-disjoint image and
+            // fitting, unprotected memory of this device.
+            unsafe {
+                self.fns()
+                    .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
+            }?;
+            self.live().image_bound(
+                image.raw(),
+                allocation.memory(),
+                allocation.offset(),
+                requirements.size,
+            );
+            let memory = BoundMemory::new(allocation);
+            image.retain_memory(memory.cell.clone());
+            Ok(Bound {
+                resource: image,
+                memory,
+            })
+        }
     }
 }
 

@@ -166,62 +166,72 @@ impl Frame<'_> {
         self.commands
     }
 
-    /// Submits the recorded command buffer to `queue`: it waits for each of `waits`
-    /// at its stages and signals `signals`. The ring moves on to the next frame.
-    ///
-    /// Each submission needs a recording of its own: fails with
-    /// `VUID-vkQueueSubmit-pCommandBuffers-00070` if the command buffer was not
-    /// recorded and ended since its last submission (a one-time-submit command buffer
-    /// is no longer executable once submitted).
-    ///
-    /// # Safety
-    ///
-    /// The caller upholds the rules [`Queue::queue_submit`]'s `# Safety` section
-    /// lists for a submission of this frame's command buffer with `waits` and
-    /// `signals` (what was recorded into it, and the semaphores' states).
-    pub unsafe fn submit(
-        self,
-        queue: &Queue,
-        waits: &[(&Semaphore, vk::PipelineStageFlags)],
-        signals: &[&Semaphore],
-    ) -> Result<()> {
-        if !self.commands.is_executable() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkQueueSubmit-pCommandBuffers-00070",
-                message: "the frame's command buffer was not recorded and ended before it \
-                          was submitted"
-                    .into(),
-            });
+    crate::helpers::as_safe_as! { vkQueueSubmit,
+        /// Submits the recorded command buffer to `queue`: it waits for each of `waits`
+        /// at its stages and signals `signals`. The ring moves on to the next frame.
+        ///
+        /// Each submission needs a recording of its own: fails with
+        /// `VUID-vkQueueSubmit-pCommandBuffers-00070` if the command buffer was not
+        /// recorded and ended since its last submission (a one-time-submit command buffer
+        /// is no longer executable once submitted).
+        ///
+        /// # Safety
+        ///
+        /// This method is `unsafe` exactly when [`Queue::queue_submit`] is (it is safe
+        /// with this crate's emitted API; a crate generated from more of the registry
+        /// may leave it rules); the caller then upholds the rules its `# Safety` section
+        /// lists for a submission of this frame's command buffer with `waits` and
+        /// `signals`.
+        pub fn submit(
+            self,
+            queue: &Queue,
+            waits: &[(&Semaphore, vk::PipelineStageFlags)],
+            signals: &[&Semaphore],
+        ) -> Result<()> {
+            if !self.commands.is_executable() {
+                return Err(Error::Validation {
+                    vuid: "VUID-vkQueueSubmit-pCommandBuffers-00070",
+                    message: "the frame's command buffer was not recorded and ended before it \
+                              was submitted"
+                        .into(),
+                });
+            }
+            // Once per frame: a few semaphores stay on the stack, as in `HandleSlice`.
+            let wait_semaphores: SmallVec<[&Semaphore; 4]> = waits.iter().map(|(s, _)| *s).collect();
+            let stages: SmallVec<[vk::PipelineStageFlags; 4]> =
+                waits.iter().map(|(_, st)| *st).collect();
+            let wait_semaphores = HandleSlice::new(&wait_semaphores);
+            let signal_semaphores = HandleSlice::new(signals);
+            let commands = HandleSlice::new(&[&*self.commands]);
+            let mut info = SubmitInfo::new().command_buffers(&commands);
+            if !waits.is_empty() {
+                info = info.wait_semaphores(&wait_semaphores, &stages)?;
+            }
+            if !signals.is_empty() {
+                info = info.signal_semaphores(&signal_semaphores);
+            }
+            let device = self.commands.device();
+            // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
+            device.reset_fences(&[self.fence])?;
+            // `queue_submit` is safe in the pinned configuration and may be `unsafe` in
+            // wider ones.
+            #[allow(unused_unsafe)]
+            // SAFETY: where `queue_submit` is `unsafe`, so is this method, and its caller
+            // upholds the rules of this submission.
+            let submitted = unsafe { queue.queue_submit(&[info], self.fence) };
+            if let Err(e) = submitted {
+                // An empty batch signals the fence once the queue's earlier work is done,
+                // so the next wait for this frame does not hang on a failed submission.
+                #[allow(unused_unsafe)]
+                // SAFETY: an empty batch has no command buffer or semaphore for a rule to
+                // be about.
+                let _ = unsafe { queue.queue_submit(&[], self.fence) };
+                return Err(e);
+            }
+            // The submission holds its semaphores; the frame needs a new recording.
+            self.commands.set_executable(false);
+            *self.next = (*self.next + 1) % self.count;
+            Ok(())
         }
-        // Once per frame: a few semaphores stay on the stack, as in `HandleSlice`.
-        let wait_semaphores: SmallVec<[&Semaphore; 4]> = waits.iter().map(|(s, _)| *s).collect();
-        let stages: SmallVec<[vk::PipelineStageFlags; 4]> =
-            waits.iter().map(|(_, st)| *st).collect();
-        let wait_semaphores = HandleSlice::new(&wait_semaphores);
-        let signal_semaphores = HandleSlice::new(signals);
-        let commands = HandleSlice::new(&[&*self.commands]);
-        let mut info = SubmitInfo::new().command_buffers(&commands);
-        if !waits.is_empty() {
-            info = info.wait_semaphores(&wait_semaphores, &stages)?;
-        }
-        if !signals.is_empty() {
-            info = info.signal_semaphores(&signal_semaphores);
-        }
-        let device = self.commands.device();
-        // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
-        device.reset_fences(&[self.fence])?;
-        // SAFETY: the caller upholds the rules of this submission.
-        if let Err(e) = unsafe { queue.queue_submit(&[info], self.fence) } {
-            // An empty batch signals the fence once the queue's earlier work is done,
-            // so the next wait for this frame does not hang on a failed submission.
-            // SAFETY: an empty batch has no command buffer or semaphore for a rule to
-            // be about.
-            let _ = unsafe { queue.queue_submit(&[], self.fence) };
-            return Err(e);
-        }
-        // The submission holds its semaphores; the frame needs a new recording.
-        self.commands.set_executable(false);
-        *self.next = (*self.next + 1) % self.count;
-        Ok(())
     }
 }

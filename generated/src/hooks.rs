@@ -129,7 +129,14 @@ pub(crate) fn queue_submit_checks(
         check_device_group_submit(i, b)?;
         check_group_indices(queue.parent(), i, b)?;
         check_wait_stages(queue, i, b)?;
+        check_pools(queue, i, b)?;
     }
+    submission::check_events(
+        queue.parent(),
+        queue.raw(),
+        &submit_command_buffers(submits),
+        "VUID-vkQueueSubmit-pCommandBuffers-00065",
+    )?;
     submission::check_binary_ops(
         queue.parent(),
         queue.raw(),
@@ -149,6 +156,62 @@ pub(crate) fn queue_submit_checks(
                 &submission::SUBMIT_TIMELINE,
             )
         }?;
+    }
+    submission::check_timeline_values(
+        queue.parent().live(),
+        &submission::submit_timeline_ops(queue.parent().live(), submits),
+        timeline_difference(queue.parent()),
+        submission::SUBMIT_TIMELINE_VALUES,
+    )
+}
+
+/// Refuses a batch whose command buffers come from a pool of another queue family
+/// than the queue's (00074), a protected batch on a queue that is not protected
+/// (06448), and command buffers whose pool's protection differs from the batch's
+/// (04120, 04148).
+fn check_pools(queue: &Queue, i: usize, batch: &SubmitInfo<'_>) -> Result<()> {
+    let device = queue.parent();
+    let live = device.live();
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let protected_info: Option<&vk::ProtectedSubmitInfo<'_>> =
+        unsafe { chained(batch.p_next, vk::StructureType::PROTECTED_SUBMIT_INFO) };
+    let protected = protected_info.is_some_and(|p| p.protected_submit == vk::TRUE);
+    if protected && !live.is_protected_queue(queue.raw()) {
+        refuse(
+            "VUID-vkQueueSubmit-queue-06448",
+            format!(
+                "pSubmits[{i}] is a protected submission, and the queue was not created protected"
+            ),
+        )?;
+    }
+    let family = live.queue_family(queue.raw());
+    // SAFETY: the safe struct stores the array with its length.
+    let cbs =
+        unsafe { crate::retention::raw_slice(batch.p_command_buffers, batch.command_buffer_count) };
+    for (j, raw) in cbs.iter().enumerate() {
+        let Some((pool_family, pool_protected)) =
+            device.command_buffer_uses(*raw).and_then(|u| u.pool())
+        else {
+            continue;
+        };
+        if family.is_some_and(|f| f != pool_family) {
+            refuse(
+                "VUID-vkQueueSubmit-pCommandBuffers-00074",
+                format!("pSubmits[{i}].pCommandBuffers[{j}] comes from a pool of queue family {pool_family}, not the queue's"),
+            )?;
+        }
+        if protected && !pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo-pNext-04148",
+                format!("pSubmits[{i}] is protected, and pCommandBuffers[{j}] is not a protected command buffer"),
+            )?;
+        }
+        if !protected && pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo-pNext-04120",
+                format!("pSubmits[{i}] is not protected, and pCommandBuffers[{j}] is a protected command buffer"),
+            )?;
+        }
     }
     Ok(())
 }
@@ -316,6 +379,8 @@ pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence
     let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
     let ops = submit_semaphore_ops(submits);
     submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let values = submission::submit_timeline_ops(device.live(), submits);
+    submission::record_timeline_values(device.live(), &values, &sub);
 }
 
 /// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
@@ -331,6 +396,28 @@ pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fen
     let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
     let ops = submit2_semaphore_ops(submits);
     submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let live = device.live();
+    let mut values = Vec::new();
+    for b in submits {
+        // SAFETY: the safe struct stores each array with its length.
+        let (waits, signals) = unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::retention::raw_slice(
+                    b.p_signal_semaphore_infos,
+                    b.signal_semaphore_info_count,
+                ),
+            )
+        };
+        let ops = waits
+            .iter()
+            .map(|w| (w, false))
+            .chain(signals.iter().map(|s| (s, true)))
+            .filter(|(i, _)| live.is_timeline(i.semaphore))
+            .map(|(i, signal)| (i.semaphore, i.value, signal));
+        values.extend(ops);
+    }
+    submission::record_timeline_values(live, &values, &sub);
 }
 
 /// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal
@@ -349,6 +436,22 @@ pub(crate) fn queue_bind_sparse_done(
     let sub = submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
     let ops = bind_sparse_semaphore_ops(bind_info);
     submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let mut values = Vec::new();
+    for b in bind_info {
+        // SAFETY: a safe struct's arrays and chain.
+        unsafe {
+            submission::timeline_ops(
+                device.live(),
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &mut values,
+            )
+        };
+    }
+    submission::record_timeline_values(device.live(), &values, &sub);
 }
 
 /// Refuses a fence whose queue operation may still be executing.
@@ -405,7 +508,29 @@ pub(crate) fn get_semaphore_counter_value_checks(
 
 /// A timeline value seen on the host: the batches that signal it are done.
 pub(crate) fn semaphore_value_seen(device: &Device, semaphore: &Semaphore, value: u64) {
-    device.live().ledger().reached(semaphore.raw(), value);
+    timeline_seen(device, semaphore.raw(), value, false);
+}
+
+/// The host saw (or set) a timeline semaphore's value: the batches that signal it
+/// are done, and the device knows the semaphore reached it.
+fn timeline_seen(device: &Device, semaphore: vk::Semaphore, value: u64, host_signal: bool) {
+    if let Some(t) = device.live().timelines().get_mut(&semaphore.as_raw()) {
+        t.seen(value, host_signal);
+    }
+    device.live().ledger().reached(semaphore, value);
+}
+
+/// After `vkSignalSemaphore`: the semaphore has the value.
+pub(crate) fn signal_semaphore_done(device: &Device, signal_info: &SemaphoreSignalInfo<'_>) {
+    timeline_seen(device, signal_info.semaphore, signal_info.value, true);
+}
+
+/// The physical device's `maxTimelineSemaphoreValueDifference`, read once per device
+/// (no limit is known below Vulkan 1.2, where the device has no timeline semaphores).
+fn timeline_difference(device: &Device) -> u64 {
+    device.live().timeline_difference(|| {
+        vulkan12_properties(device).map_or(u64::MAX, |p| p.max_timeline_semaphore_value_difference)
+    })
 }
 
 /// Refuses binary semaphores.
@@ -440,7 +565,7 @@ pub(crate) fn wait_semaphores_done(
     let values =
         unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
     for (s, v) in semaphores.iter().zip(values) {
-        device.live().ledger().reached(*s, *v);
+        timeline_seen(device, *s, *v, false);
     }
 }
 
@@ -1713,6 +1838,12 @@ pub(crate) fn queue2_got(
     queue: Queue,
     queue_info: &DeviceQueueInfo2<'_>,
 ) -> Queue {
+    if queue_info
+        .flags
+        .contains(vk::DeviceQueueCreateFlags::PROTECTED)
+    {
+        device.live().queue_protected(queue.raw());
+    }
     queue_got(device, queue, queue_info.queue_family_index)
 }
 
@@ -1722,8 +1853,8 @@ pub(crate) fn semaphore_created(
     semaphore: Semaphore,
     create_info: &SemaphoreCreateInfo<'_>,
 ) -> Semaphore {
-    if submission::creates_timeline(create_info) {
-        device.live().set_timeline(semaphore.raw());
+    if let Some(initial) = submission::timeline_initial(create_info) {
+        device.live().set_timeline(semaphore.raw(), initial);
     }
     semaphore
 }
@@ -3323,6 +3454,40 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
     {
         instance.samples = instance.samples.or(samples);
     }
+}
+
+/// The recording names `event` in an event command: its submission is checked
+/// against pending submissions to other queues that name it too.
+pub(crate) fn event_recorded<S: State>(recorder: &mut Recorder<'_, S>, event: &Event) {
+    let raw = event.raw().as_raw();
+    if !recorder.events.contains(&raw) {
+        recorder.events.push(raw);
+    }
+}
+
+/// After `vkCmdWaitEvents`: the events it names, and the layouts its barriers leave.
+pub(crate) fn wait_events_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    events: &[&Event],
+    image_memory_barriers: &[ImageMemoryBarrier<'_>],
+) {
+    for e in events {
+        event_recorded(recorder, e);
+    }
+    cmd_pipeline_barrier_done(recorder, image_memory_barriers);
+}
+
+/// After `vkCmdWaitEvents2`: the events it names, and the layouts its dependencies
+/// leave.
+pub(crate) fn wait_events2_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    events: &[&Event],
+    dependency_infos: &[DependencyInfo<'_>],
+) {
+    for e in events {
+        event_recorded(recorder, e);
+    }
+    dependency_done(recorder, dependency_infos);
 }
 
 /// The recorder remembers the layouts of the sets bound at their numbers.
@@ -5541,6 +5706,22 @@ pub(crate) fn render_pass_begun<S: State>(
         samples: None,
         dynamic: false,
     });
+}
+
+/// Refuses a render pass instance that suspends or resumes: which commands run
+/// between a suspended instance and the one that resumes it, across command buffers
+/// and batches, is not followed, so a submission could not check its rules.
+pub(crate) fn begin_rendering_checks<S: State>(
+    _recorder: &Recorder<'_, S>,
+    rendering_info: &RenderingInfo<'_>,
+) -> Result<()> {
+    let flags = vk::RenderingFlags::SUSPENDING | vk::RenderingFlags::RESUMING;
+    if rendering_info.flags.intersects(flags) {
+        return Err(Error::Misuse(
+            "the safe cmd_begin_rendering does not suspend or resume render pass instances (their submission rules are not followed); use cmd_begin_rendering_unchecked, and keep VUID-VkSubmitInfo-pCommandBuffers-06014 to 06016 and 06193",
+        ));
+    }
+    Ok(())
 }
 
 /// The recorder enters dynamic rendering (one subpass, the info's view mask).

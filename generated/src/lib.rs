@@ -39,6 +39,9 @@ mod formats;
 #[path = "generated/handles.rs"]
 #[rustfmt::skip]
 pub mod handles;
+#[path = "generated/helpers.rs"]
+#[rustfmt::skip]
+mod helpers;
 #[path = "generated/reach.rs"]
 #[rustfmt::skip]
 mod reach;

@@ -160,6 +160,8 @@ pub struct Recorder<'c, S: State> {
     /// The descriptor sets bound so far, each with its generation then: an update
     /// that changes it leaves the buffer invalid.
     pub(crate) sets: Vec<(u64, u64)>,
+    /// The events the recording's event commands name (set, reset, wait).
+    pub(crate) events: Vec<u64>,
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
@@ -283,6 +285,8 @@ impl CommandBuffer {
         }
         self.uses().began(info.flags);
         self.uses().set_recorder(true);
+        let pool = self.device().live().pool_family(self.parent().raw());
+        self.uses().set_pool(pool.map(|p| (p.index, p.protected)));
         let queue_flags = self.parent().queue_flags();
         // SAFETY: the safe info only chains structs pushed through `push_next`.
         let group = unsafe { crate::support::chain_nodes(info.p_next) }
@@ -315,6 +319,7 @@ impl CommandBuffer {
             layouts: Default::default(),
             pass_images: Vec::new(),
             sets: Vec::new(),
+            events: Vec::new(),
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
@@ -438,6 +443,7 @@ impl<'c, S: State> Recorder<'c, S> {
             layouts: self.layouts,
             pass_images: self.pass_images,
             sets: self.sets,
+            events: self.events,
             device_mask: self.device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,
@@ -464,6 +470,7 @@ impl<'c, S: State> Recorder<'c, S> {
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
         self.cb.uses().set_sets(self.sets);
+        self.cb.uses().set_events(self.events);
         Ok(())
     }
 }

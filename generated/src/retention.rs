@@ -130,7 +130,7 @@ pub(crate) struct Live {
     /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, read once.
     present_masks: Vutex<Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]>>,
     /// The device's timeline semaphores (the others are binary).
-    timelines: Vutex<std::collections::HashSet<u64>>,
+    timelines: Vutex<HashMap<u64, crate::submission::Timeline>>,
     /// The binary semaphores with a signal or wait submitted that may matter still
     /// (an unlisted one is unsignaled with nothing pending).
     binaries: Vutex<HashMap<u64, crate::submission::Binary>>,
@@ -199,7 +199,17 @@ pub(crate) struct Live {
     descriptor_gate: Vutex<()>,
     /// The buffer of each live buffer view.
     buffer_views: Vutex<HashMap<u64, vk::Buffer>>,
+    /// The queues got with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`.
+    protected_queues: Vutex<std::collections::HashSet<u64>>,
+    /// The physical device's `maxTimelineSemaphoreValueDifference`, read once.
+    timeline_difference: std::sync::OnceLock<u64>,
+    /// The submissions whose command buffers name each event, with their queues,
+    /// weakly; those known complete are pruned as new ones come.
+    event_uses: Vutex<HashMap<u64, EventSubmissions>>,
 }
+
+/// The submissions whose command buffers name one event, with their queues.
+type EventSubmissions = Vec<(vk::Queue, Vweak<crate::submission::Submission>)>;
 
 /// What the device knows of the command buffers that bound a descriptor set.
 #[derive(Default)]
@@ -541,7 +551,9 @@ impl Default for Live {
             conversions: Vutex::new(HashMap::default()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
-            timelines: Vutex::new(std::collections::HashSet::new()),
+            timelines: Vutex::new(HashMap::default()),
+            timeline_difference: std::sync::OnceLock::new(),
+            event_uses: Vutex::new(HashMap::default()),
             binaries: Vutex::new(HashMap::default()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),
@@ -577,6 +589,7 @@ impl Default for Live {
             set_generations: std::sync::atomic::AtomicU64::new(0),
             descriptor_gate: Vutex::new(()),
             buffer_views: Vutex::new(HashMap::default()),
+            protected_queues: Vutex::new(std::collections::HashSet::new()),
         }
     }
 }
@@ -656,9 +669,25 @@ impl Live {
         self.render_passes.lock().get(&raw.as_raw()).cloned()
     }
 
-    /// Records that a new semaphore is a timeline semaphore.
-    pub(crate) fn set_timeline(&self, raw: vk::Semaphore) {
-        self.timelines.lock().insert(raw.as_raw());
+    /// Records that a new semaphore is a timeline semaphore, with its initial value.
+    pub(crate) fn set_timeline(&self, raw: vk::Semaphore, initial: u64) {
+        self.timelines
+            .lock()
+            .insert(raw.as_raw(), crate::submission::Timeline::new(initial));
+    }
+
+    /// What the device knows of its timeline semaphores' values, for a command that
+    /// signals or waits on them to read and update.
+    pub(crate) fn timelines(
+        &self,
+    ) -> tuff_runtime::VutexGuard<'_, HashMap<u64, crate::submission::Timeline>> {
+        self.timelines.lock()
+    }
+
+    /// The physical device's `maxTimelineSemaphoreValueDifference`, read from `read`
+    /// the first time.
+    pub(crate) fn timeline_difference(&self, read: impl FnOnce() -> u64) -> u64 {
+        *self.timeline_difference.get_or_init(read)
     }
 
     /// The state of binary semaphores, for a submission command to read and update.
@@ -670,7 +699,7 @@ impl Live {
 
     /// Whether a live semaphore is a timeline semaphore.
     pub(crate) fn is_timeline(&self, raw: vk::Semaphore) -> bool {
-        self.timelines.lock().contains(&raw.as_raw())
+        self.timelines.lock().contains_key(&raw.as_raw())
     }
 
     /// How many listed objects are alive.
@@ -730,6 +759,7 @@ impl Live {
         }
         if unlisted && H::TYPE == vk::ObjectType::EVENT {
             self.device_only_events.lock().remove(&key.1);
+            self.event_uses.lock().remove(&key.1);
         }
         if unlisted && H::TYPE == vk::ObjectType::RENDER_PASS {
             let gone = self.render_passes.lock().remove(&key.1);
@@ -961,6 +991,43 @@ impl Live {
             .lock()
             .get(&raw.as_raw())
             .is_some_and(|u| u.pool_update_after_bind)
+    }
+
+    /// `sub`, a submission to `queue`, has command buffers that name `events`.
+    pub(crate) fn events_submitted(
+        &self,
+        events: &[u64],
+        queue: vk::Queue,
+        sub: &Vrc<crate::submission::Submission>,
+    ) {
+        if events.is_empty() {
+            return;
+        }
+        let mut uses = self.event_uses.lock();
+        for event in events {
+            let subs = uses.entry(*event).or_default();
+            subs.retain(|(_, w)| w.upgrade().is_some_and(|s| !s.is_complete()));
+            subs.push((queue, Vrc::downgrade(sub)));
+        }
+    }
+
+    /// The submissions to queues other than `queue` whose command buffers name an
+    /// event and that tuff has not seen complete.
+    pub(crate) fn event_submissions(
+        &self,
+        event: u64,
+        queue: vk::Queue,
+    ) -> Vec<Vrc<crate::submission::Submission>> {
+        self.event_uses
+            .lock()
+            .get(&event)
+            .map_or(Vec::new(), |subs| {
+                subs.iter()
+                    .filter(|(q, _)| *q != queue)
+                    .filter_map(|(_, w)| w.upgrade())
+                    .filter(|s| !s.is_complete())
+                    .collect()
+            })
     }
 
     /// Taken by descriptor updates and submissions (see the field).
@@ -1337,6 +1404,16 @@ impl Live {
     /// Records the queue family a queue of the device belongs to.
     pub(crate) fn queue_family_of(&self, queue: vk::Queue, family: u32) {
         self.queue_families.lock().insert(queue.as_raw(), family);
+    }
+
+    /// Records that a queue was got with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`.
+    pub(crate) fn queue_protected(&self, queue: vk::Queue) {
+        self.protected_queues.lock().insert(queue.as_raw());
+    }
+
+    /// Whether a queue was got with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`.
+    pub(crate) fn is_protected_queue(&self, queue: vk::Queue) -> bool {
+        self.protected_queues.lock().contains(&queue.as_raw())
     }
 
     /// The queue family of a queue got through the wrappers.

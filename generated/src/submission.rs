@@ -262,6 +262,11 @@ struct UsesState {
     layouts: Option<Vrc<crate::layouts::Recording>>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
+    /// The queue family of the buffer's pool and whether the pool is protected, as
+    /// the pool's creation recorded them (read at each begin).
+    pool: Option<(u32, bool)>,
+    /// The events the last recording's event commands name.
+    events: Vec<u64>,
 }
 
 impl Uses {
@@ -361,6 +366,7 @@ impl Uses {
             state.generation += 1;
             state.layouts = None;
             state.sets.clear();
+            state.events.clear();
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -411,17 +417,33 @@ impl Uses {
         self.state.lock().layouts.clone()
     }
 
+    /// Records the queue family of the buffer's pool and whether it is protected.
+    pub(crate) fn set_pool(&self, pool: Option<(u32, bool)>) {
+        self.state.lock().pool = pool;
+    }
+
+    /// The queue family of the buffer's pool and whether it is protected, if known.
+    pub(crate) fn pool(&self) -> Option<(u32, bool)> {
+        self.state.lock().pool
+    }
+
     /// The descriptor sets the recording that just ended bound (raw set, generation).
     pub(crate) fn set_sets(&self, sets: Vec<(u64, u64)>) {
         self.state.lock().sets = sets;
     }
 
-    /// Appends the descriptor sets this buffer's recording bound, and those of the
-    /// secondaries it executes, to `out`.
-    fn bound_sets(&self, out: &mut Vec<(u64, u64)>) {
+    /// The events the recording that just ended names.
+    pub(crate) fn set_events(&self, events: Vec<u64>) {
+        self.state.lock().events = events;
+    }
+
+    /// Appends the descriptor sets this buffer's recording bound and the events it
+    /// names, and those of the secondaries it executes, to `sets` and `events`.
+    fn used(&self, sets: &mut Vec<(u64, u64)>, events: &mut Vec<u64>) {
         let secondaries: Vec<Vrc<Uses>> = {
             let state = self.state.lock();
-            out.extend_from_slice(&state.sets);
+            sets.extend_from_slice(&state.sets);
+            events.extend_from_slice(&state.events);
             state
                 .secondaries
                 .iter()
@@ -429,7 +451,7 @@ impl Uses {
                 .collect()
         };
         for s in secondaries {
-            s.bound_sets(out);
+            s.used(sets, events);
         }
     }
 
@@ -642,18 +664,42 @@ pub(crate) fn check_layouts(device: &Device, cbs: &[vk::CommandBuffer]) -> Resul
     Ok(())
 }
 
-/// The descriptor sets that `cbs` and the secondaries they execute bound, each with
-/// the generation it had then.
-fn bound_sets(device: &Device, cbs: &[vk::CommandBuffer]) -> Vec<(u64, u64)> {
-    let mut sets = Vec::new();
+/// The descriptor sets that `cbs` and the secondaries they execute bound (each with
+/// the generation it had then), and the events their event commands name.
+fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (Vec<(u64, u64)>, Vec<u64>) {
+    let (mut sets, mut events) = (Vec::new(), Vec::new());
     for raw in cbs {
         if let Some(uses) = device.command_buffer_uses(*raw) {
-            uses.bound_sets(&mut sets);
+            uses.used(&mut sets, &mut events);
         }
     }
     sets.sort_unstable();
     sets.dedup();
-    sets
+    events.sort_unstable();
+    events.dedup();
+    (sets, events)
+}
+
+/// Refuses command buffers whose event commands name an event that a submission to
+/// another queue, which may still be executing, names too (`vuid` names the rule).
+pub(crate) fn check_events(
+    device: &Device,
+    queue: vk::Queue,
+    cbs: &[vk::CommandBuffer],
+    vuid: &'static str,
+) -> Result<()> {
+    let (_, events) = used(device, cbs);
+    for event in events {
+        for sub in device.live().event_submissions(event, queue) {
+            if !sub.poll(device) {
+                return Err(refuse(
+                    vuid,
+                    format!("event 0x{event:x} is named by a command of a submission to another queue that may still be executing"),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Takes the device's descriptor gate for a submission of `cbs` (held until its
@@ -667,7 +713,7 @@ pub(crate) fn sets_gate<'d>(
     executable: &'static str,
 ) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
     let gate = device.live().descriptor_gate();
-    if let Some(set) = device.live().stale_set(&bound_sets(device, cbs)) {
+    if let Some(set) = device.live().stale_set(&used(device, cbs).0) {
         return Err(refuse(
             executable,
             format!("a command buffer is invalid: descriptor set 0x{set:x}, which it binds, was updated since it was recorded (update sets before recording, or bindings with UPDATE_AFTER_BIND)"),
@@ -709,7 +755,9 @@ pub(crate) fn submitted(
         }
     }
     record_layouts(device, cbs);
-    device.live().sets_submitted(&bound_sets(device, cbs), &sub);
+    let (sets, events) = used(device, cbs);
+    device.live().sets_submitted(&sets, &sub);
+    device.live().events_submitted(&events, queue, &sub);
     if let Some(f) = fence {
         f.track(sub.clone());
     }
@@ -831,17 +879,236 @@ pub(crate) unsafe fn check_timeline_batch(
 }
 
 /// Whether a semaphore create info asks for a timeline semaphore.
-pub(crate) fn creates_timeline(info: &crate::structs::SemaphoreCreateInfo<'_>) -> bool {
+pub(crate) fn timeline_initial(info: &crate::structs::SemaphoreCreateInfo<'_>) -> Option<u64> {
     // SAFETY: the safe create info only chains structs pushed through `push_next`;
     // the sType says what the node is.
     unsafe { crate::support::chain_nodes(info.p_next) }
         .find(|n| n.s_type == vk::StructureType::SEMAPHORE_TYPE_CREATE_INFO)
-        .is_some_and(|n| {
+        .and_then(|n| {
             let t = unsafe {
                 &*(n as *const vk::BaseInStructure<'_>).cast::<vk::SemaphoreTypeCreateInfo<'_>>()
             };
-            t.semaphore_type == vk::SemaphoreType::TIMELINE
+            (t.semaphore_type == vk::SemaphoreType::TIMELINE).then_some(t.initial_value)
         })
+}
+
+/// What the device knows of a timeline semaphore's value: a value it has reached,
+/// and the operations submitted on it that may not have executed yet. Its value when
+/// an operation executes lies between the two.
+#[derive(Debug)]
+pub(crate) struct Timeline {
+    /// A value it is known to have reached (its initial value, one the host read,
+    /// waited for or signalled, or one a completed submission signalled).
+    known: u64,
+    /// The largest value any signal operation submitted, or the host, gives it.
+    max_signal: u64,
+    /// The wait (`false`) and signal (`true`) operations submitted and not known
+    /// complete, with their values.
+    pending: Vec<(u64, bool, Vweak<Submission>)>,
+}
+
+impl Timeline {
+    /// A new timeline semaphore's state.
+    pub(crate) fn new(initial: u64) -> Self {
+        Timeline {
+            known: initial,
+            max_signal: initial,
+            pending: Vec::new(),
+        }
+    }
+
+    /// Drops the operations of submissions known complete; their signals were
+    /// reached.
+    fn prune(&mut self) {
+        let mut known = self.known;
+        self.pending.retain(|(value, signal, sub)| {
+            let done = sub.upgrade().is_none_or(|s| s.is_complete());
+            if done && *signal {
+                known = known.max(*value);
+            }
+            !done
+        });
+        self.known = known;
+    }
+
+    /// The host saw the semaphore at `value` (or signalled it to `value`).
+    pub(crate) fn seen(&mut self, value: u64, host_signal: bool) {
+        self.known = self.known.max(value);
+        if host_signal {
+            self.max_signal = self.max_signal.max(value);
+        }
+    }
+}
+
+/// One timeline operation of a submission: the semaphore, its value, and whether
+/// it signals (`true`) or waits.
+pub(crate) type TimelineOp = (vk::Semaphore, u64, bool);
+
+/// The rules a timeline operation's value breaks: (a signal not above the value
+/// the semaphore has when it executes, a wait too far from the semaphore's values,
+/// a signal too far from them).
+pub(crate) type TimelineValueRules = (&'static str, &'static str, &'static str);
+
+/// The rules of `vkQueueSubmit`'s `VkTimelineSemaphoreSubmitInfo` values.
+pub(crate) const SUBMIT_TIMELINE_VALUES: TimelineValueRules = (
+    "VUID-VkSubmitInfo-pSignalSemaphores-03242",
+    "VUID-VkSubmitInfo-pWaitSemaphores-03243",
+    "VUID-VkSubmitInfo-pSignalSemaphores-03244",
+);
+
+/// Refuses timeline operations (in submission order) whose values the semaphore
+/// may not take: a signal must be above every value the semaphore has or is given
+/// before it executes, which is at most the largest value signalled or submitted to
+/// be signalled (a stricter bound than the rule's, which speaks of execution order,
+/// as the order in which queues execute is not known); every value must lie within
+/// `max_difference` of the semaphore's possible current values and of the values of
+/// its pending operations, including those earlier in the same call.
+pub(crate) fn check_timeline_values(
+    live: &crate::retention::Live,
+    ops: &[TimelineOp],
+    max_difference: u64,
+    rules: TimelineValueRules,
+) -> Result<()> {
+    if ops.is_empty() {
+        return Ok(());
+    }
+    let mut timelines = live.timelines();
+    for (i, (semaphore, value, signal)) in ops.iter().enumerate() {
+        let Some(t) = timelines.get_mut(&semaphore.as_raw()) else {
+            continue;
+        };
+        t.prune();
+        let earlier = ops[..i].iter().filter(|(s, ..)| s == semaphore);
+        let max_signal = earlier
+            .clone()
+            .filter(|(.., s)| *s)
+            .map(|(_, v, _)| *v)
+            .fold(t.max_signal, u64::max);
+        if *signal && *value <= max_signal {
+            return Err(refuse(
+                rules.0,
+                format!("timeline semaphore 0x{:x} is signalled to {value}, which is not above {max_signal}, a value it has or an earlier signal gives it", semaphore.as_raw()),
+            ));
+        }
+        let values = t
+            .pending
+            .iter()
+            .map(|(v, ..)| *v)
+            .chain(earlier.map(|(_, v, _)| *v))
+            .chain([t.known, max_signal]);
+        let (lo, hi) = values.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
+        if value.abs_diff(lo) > max_difference || value.abs_diff(hi) > max_difference {
+            return Err(refuse(
+                if *signal { rules.2 } else { rules.1 },
+                format!("timeline semaphore 0x{:x} is given {value}, more than maxTimelineSemaphoreValueDifference ({max_difference}) from a value it may have or that a pending operation gives it ({lo} to {hi})", semaphore.as_raw()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Records timeline operations that `sub` submitted.
+pub(crate) fn record_timeline_values(
+    live: &crate::retention::Live,
+    ops: &[TimelineOp],
+    sub: &Vrc<Submission>,
+) {
+    if ops.is_empty() {
+        return;
+    }
+    let mut timelines = live.timelines();
+    for (semaphore, value, signal) in ops {
+        if let Some(t) = timelines.get_mut(&semaphore.as_raw()) {
+            t.prune();
+            t.pending.push((*value, *signal, Vrc::downgrade(sub)));
+            if *signal {
+                t.max_signal = t.max_signal.max(*value);
+            }
+        }
+    }
+}
+
+/// The timeline operations of `vkQueueSubmit`'s batches, in order.
+pub(crate) fn submit_timeline_ops(
+    live: &crate::retention::Live,
+    submits: &[crate::structs::SubmitInfo<'_>],
+) -> Vec<TimelineOp> {
+    let mut ops = Vec::new();
+    for b in submits {
+        // SAFETY: the safe struct stores each array with its length and chains only
+        // structs pushed through `push_next`; the sType says what the node is.
+        unsafe {
+            timeline_ops(
+                live,
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &mut ops,
+            )
+        };
+    }
+    ops
+}
+
+/// Appends the timeline operations of one batch (waits, then signals) to `ops`,
+/// reading the values from its chained `VkTimelineSemaphoreSubmitInfo`.
+///
+/// # Safety
+///
+/// The arrays hold their counts of elements, and `next` is a valid chain.
+pub(crate) unsafe fn timeline_ops(
+    live: &crate::retention::Live,
+    waits: *const vk::Semaphore,
+    wait_count: u32,
+    signals: *const vk::Semaphore,
+    signal_count: u32,
+    next: *const core::ffi::c_void,
+    ops: &mut Vec<TimelineOp>,
+) {
+    // SAFETY: the caller's promise.
+    let (waits, signals) = unsafe {
+        (
+            crate::retention::raw_slice(waits, wait_count),
+            crate::retention::raw_slice(signals, signal_count),
+        )
+    };
+    if !waits.iter().chain(signals).any(|s| live.is_timeline(*s)) {
+        return;
+    }
+    // SAFETY: the caller's promise; the sType says what the node is.
+    let Some(info) = (unsafe { crate::support::chain_nodes(next) })
+        .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
+        .map(|n| unsafe {
+            &*(n as *const vk::BaseInStructure<'_>).cast::<vk::TimelineSemaphoreSubmitInfo<'_>>()
+        })
+    else {
+        return;
+    };
+    // SAFETY: a safe struct's arrays, stored with their counts.
+    let (wait_values, signal_values) = unsafe {
+        (
+            crate::retention::raw_slice(
+                info.p_wait_semaphore_values,
+                info.wait_semaphore_value_count,
+            ),
+            crate::retention::raw_slice(
+                info.p_signal_semaphore_values,
+                info.signal_semaphore_value_count,
+            ),
+        )
+    };
+    for (s, v) in waits.iter().zip(wait_values) {
+        if live.is_timeline(*s) {
+            ops.push((*s, *v, false));
+        }
+    }
+    for (s, v) in signals.iter().zip(signal_values) {
+        if live.is_timeline(*s) {
+            ops.push((*s, *v, true));
+        }
+    }
 }
 
 /// Refuses a semaphore of the wrong type for a command that takes only one type.

@@ -230,7 +230,7 @@ fn submits_tuff(b: &Bench, checked: bool) {
         let cbs = tuff::HandleSlice::new(&one);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         let r = if checked {
-            unsafe { b.s.queue.queue_submit(&submit, fence) }
+            b.s.queue.queue_submit(&submit, fence)
         } else {
             // SAFETY: as in `submits_ash`.
             unsafe { b.s.queue.queue_submit_unchecked(&submit, fence) }

@@ -93,13 +93,9 @@ impl Bezier {
             .iter()
             .map(|p| [p[0], p[1], p[2], 1.0])
             .collect();
-        let points =
-            // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-            unsafe { d.create_buffer_with(vk::BufferUsageFlags::STORAGE_BUFFER, &points, a) }?;
+        let points = d.create_buffer_with(vk::BufferUsageFlags::STORAGE_BUFFER, &points, a)?;
         let index_data: Vec<u32> = PATCHES.iter().flatten().map(|&i| u32::from(i)).collect();
-        let indices =
-            // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-            unsafe { d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a) }?;
+        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a)?;
         let info = [tuff::DescriptorBufferInfo::new()
             .buffer(Some(&points))
             .range(vk::WHOLE_SIZE)];

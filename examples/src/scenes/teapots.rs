@@ -93,12 +93,8 @@ impl Teapots {
             )?;
         }
         let (flat, index_data) = mesh_data();
-        let vertices =
-            // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-            unsafe { d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat, a) }?;
-        let indices =
-            // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-            unsafe { d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a) }?;
+        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &flat, a)?;
+        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &index_data, a)?;
         Ok(Teapots {
             layout_data: layout,
             pipeline,

@@ -57,9 +57,7 @@ impl Triangle {
                 depth: false,
             },
         )?;
-        let vertices =
-            // SAFETY: the emitted API's `create_buffer` lists no rule for its caller.
-            unsafe { d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a) }?;
+        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a)?;
         Ok(Triangle { pipeline, vertices })
     }
 }

@@ -9,6 +9,7 @@ pub mod explicit;
 pub mod features;
 pub mod formats;
 pub mod handles;
+pub mod helpers;
 pub mod reach;
 pub mod structs;
 pub mod sync;
@@ -277,6 +278,7 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
         ("reach.rs".to_owned(), reach::emit(cx)),
         ("features.rs".to_owned(), features::emit(cx.model)),
         ("formats.rs".to_owned(), formats::emit(cx.model)),
+        ("helpers.rs".to_owned(), helpers::emit(plans)),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

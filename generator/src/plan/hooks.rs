@@ -133,7 +133,13 @@ const fn unsafe_call(
 const FENCE: &str =
     "checks the fence is unsignalled and not in use by a queue operation that may still be executing";
 const CBS: &str = "checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions";
-const SECONDARY: &str = "checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet";
+const SECONDARY: &str = "checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it: a program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091, a rule `cmd_execute_commands` (an `unsafe` method) leaves to its caller";
+const UNPROVEN_POOL_FAMILY: &str = "checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family";
+const UNPROVEN_PROTECTED_BUFFERS: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation, against the batch's VkProtectedSubmitInfo), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected, and a protected batch is refused for its queue first";
+const UNPROVEN_OTHER_QUEUE_EVENTS: &str = "checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue";
+const UNPROVEN_TIMELINE_DIFFERENCE: &str = "checked by the safe methods in every build (against the semaphore's possible values, from the value the host last saw to the largest signalled, and the values of its pending operations), but no test breaks it: lavapipe's maxTimelineSemaphoreValueDifference is the largest 64-bit value";
+const TIMELINE_RISES: &str = "checks each timeline signal is above the largest value the semaphore was given (initial value, host signals, submitted signals, earlier batches of the call): a bound stricter than the rule's, as the order in which queues execute is not known";
+const PROTECTED_QUEUE: &str = "checks a protected batch's queue was got with VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT, which the device records";
 const TIMELINE_VALUES: &str =
     "checks each batch gives one value per timeline semaphore it waits on or signals";
 const LAYOUT: &str = "checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them)";
@@ -228,6 +234,7 @@ const PUSH: &str = "checks the range against the layout's push-constant ranges, 
 const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
+const NO_SUSPENSION: &str = "checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance";
 const IMAGE_INFO_WRAPPERS: &str = "a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form)";
 const TEXEL_VIEW_WRAPPERS: &str =
     "texel buffer views are taken as a slice of wrappers, which always hold valid handles";
@@ -514,6 +521,14 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkQueueSubmit-pSignalSemaphores-00067", How::Dynamic(BINARY_SIGNALED)),
             ("VUID-vkQueueSubmit-pWaitSemaphores-00069", How::User(SAME_AS_03238)),
             ("VUID-vkQueueSubmit-pWaitSemaphores-00068", How::User(ONE_WAITER)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00074", How::User(UNPROVEN_POOL_FAMILY)),
+            ("VUID-vkQueueSubmit-queue-06448", How::Dynamic(PROTECTED_QUEUE)),
+            ("VUID-VkSubmitInfo-pNext-04120", How::User(UNPROVEN_PROTECTED_BUFFERS)),
+            ("VUID-VkSubmitInfo-pNext-04148", How::User(UNPROVEN_PROTECTED_BUFFERS)),
+            ("VUID-vkQueueSubmit-pCommandBuffers-00065", How::User(UNPROVEN_OTHER_QUEUE_EVENTS)),
+            ("VUID-VkSubmitInfo-pSignalSemaphores-03242", How::Dynamic(TIMELINE_RISES)),
+            ("VUID-VkSubmitInfo-pWaitSemaphores-03243", How::User(UNPROVEN_TIMELINE_DIFFERENCE)),
+            ("VUID-VkSubmitInfo-pSignalSemaphores-03244", How::User(UNPROVEN_TIMELINE_DIFFERENCE)),
         ],
         ..NONE
     },
@@ -599,6 +614,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkSignalSemaphore",
         check: call("hooks::signal_semaphore_checks", &["self", "signal_info"]),
+        after: call("hooks::signal_semaphore_done", &["self", "signal_info"]),
         settles: &[(
             "VUID-VkSemaphoreSignalInfo-semaphore-03257",
             How::Dynamic(SEMAPHORE_TYPE),
@@ -1149,7 +1165,18 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdBeginRendering",
+        check: call("hooks::begin_rendering_checks", &["&self", "rendering_info"]),
         after: call("hooks::rendering_begun", &["&mut self", "rendering_info"]),
+        settles: &[
+            ("VUID-VkSubmitInfo-pCommandBuffers-06193", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo-pCommandBuffers-06014", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo-pCommandBuffers-06015", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo-pCommandBuffers-06016", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo2KHR-commandBuffer-06192", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo2KHR-commandBuffer-06010", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo2KHR-commandBuffer-06011", How::User(NO_SUSPENSION)),
+            ("VUID-VkSubmitInfo2KHR-commandBuffer-06012", How::User(NO_SUSPENSION)),
+        ],
         ..NONE
     },
     Special {
@@ -2136,7 +2163,10 @@ pub const SPECIALS: &[Special] = &[
             "hooks::wait_events_checks",
             &["self", "buffer_memory_barriers", "image_memory_barriers"],
         ),
-        after: call("hooks::cmd_pipeline_barrier_done", &["self", "image_memory_barriers"]),
+        after: call(
+            "hooks::wait_events_done",
+            &["self", "events", "image_memory_barriers"],
+        ),
         ..NONE
     },
     Special {
@@ -2149,7 +2179,27 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCmdWaitEvents2",
         check: call("hooks::dependency_checks", &["self", "dependency_infos"]),
-        after: call("hooks::dependency_done", &["self", "dependency_infos"]),
+        after: call("hooks::wait_events2_done", &["self", "events", "dependency_infos"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetEvent",
+        after: call("hooks::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetEvent",
+        after: call("hooks::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetEvent2",
+        after: call("hooks::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetEvent2",
+        after: call("hooks::event_recorded", &["self", "event"]),
         ..NONE
     },
     Special {

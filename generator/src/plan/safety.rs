@@ -42,6 +42,27 @@ pub const REVIEWED: &[Class] = &[
                  promise it once for every shader a pipeline can run",
         holds: |r| SHADER_TAILS.iter().any(|t| r.vuid.ends_with(t)) && r.item.starts_with("vkCmd"),
     },
+    Class {
+        name: "queue family ownership of a resource's contents",
+        reason: "the rule decides which queue family sees a buffer's or image's contents \
+                 as written (ownership transfers, exclusive ownership, the families of a \
+                 concurrent resource); the specification makes a breach leave those \
+                 contents undefined for the family that breaks it (Queue Family Ownership \
+                 Transfer: \"the contents of that resource are undefined\"), and no safe \
+                 method relies on a resource's contents for memory safety: a safe program \
+                 can write any bytes into host-visible memory, so every check that guards \
+                 memory stands on recorded state, never on what a buffer or image holds",
+        holds: |r| OWNERSHIP.contains(&r.vuid.as_str()),
+    },
+];
+
+/// The rules about queue family ownership and sharing that a submission's
+/// commands can break, by VUID.
+const OWNERSHIP: &[&str] = &[
+    "VUID-vkQueueSubmit-pSubmits-02207",
+    "VUID-vkQueueSubmit-pSubmits-02808",
+    "VUID-vkQueueSubmit-pSubmits-04626",
+    "VUID-vkQueueSubmit2-commandBuffer-03879",
 ];
 
 /// The VUID endings, shared by every draw and dispatch command, of rules that the
@@ -164,6 +185,17 @@ mod tests {
             None
         )));
         assert!(!(shader.holds)(&rule("VUID-VkX-None-07288", "VkX", None)));
+        let ownership = &REVIEWED[2];
+        assert!((ownership.holds)(&rule(
+            "VUID-vkQueueSubmit-pSubmits-02808",
+            "vkQueueSubmit",
+            None
+        )));
+        assert!(!(ownership.holds)(&rule(
+            "VUID-vkQueueSubmit-pCommandBuffers-00074",
+            "vkQueueSubmit",
+            None
+        )));
     }
 
     #[test]

@@ -3598,27 +3598,6 @@ The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time
     }
     /**`vkQueueSubmit`
 
-# Safety
-
-The caller upholds these 16 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkQueueSubmit-pCommandBuffers-00065`: Any calls to vkCmdSetEvent, vkCmdResetEvent or vkCmdWaitEvents that have been recorded into any of the command buffer elements of the `pCommandBuffers` member of any element of `pSubmits`, must not reference any VkEvent that is referenced by any of those commands in a command buffer that has been submitted to another queue and is still in the pending state
-- `VUID-vkQueueSubmit-pCommandBuffers-00073`: If any secondary command buffers recorded into any element of the `pCommandBuffers` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
-- `VUID-vkQueueSubmit-pCommandBuffers-00074`: Each element of the `pCommandBuffers` member of each element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
-- `VUID-vkQueueSubmit-pSubmits-02207`: If any element of `pSubmits->pCommandBuffers` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens-before the acquire operation
-- `VUID-vkQueueSubmit-pSubmits-02808`: Any resource created with `VK_SHARING_MODE_EXCLUSIVE` that is read by an operation specified by `pSubmits` must not be owned by any queue family other than the one which `queue` belongs to, at the time it is executed
-- `VUID-vkQueueSubmit-pSubmits-04626`: Any resource created with `VK_SHARING_MODE_CONCURRENT` that is accessed by an operation specified by `pSubmits` must have included the queue family of `queue` at resource creation time
-- `VUID-vkQueueSubmit-queue-06448`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, there must be no element of `pSubmits` that includes an VkProtectedSubmitInfo structure in its `pNext` chain with `protectedSubmit` equal to `VK_TRUE`
-- `VUID-VkSubmitInfo-pSignalSemaphores-03242`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
-- `VUID-VkSubmitInfo-pWaitSemaphores-03243`: For each element of `pWaitSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pWaitSemaphoreValues` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
-- `VUID-VkSubmitInfo-pSignalSemaphores-03244`: For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
-- `VUID-VkSubmitInfo-pNext-04120`: If the `pNext` chain of this structure does not include a `VkProtectedSubmitInfo` structure with `protectedSubmit` set to `VK_TRUE`, then each element of the `pCommandBuffers` array must be an unprotected command buffer
-- `VUID-VkSubmitInfo-pNext-04148`: If the `pNext` chain of this structure includes a `VkProtectedSubmitInfo` structure with `protectedSubmit` set to `VK_TRUE`, then each element of the `pCommandBuffers` array must be a protected command buffer
-- `VUID-VkSubmitInfo-pCommandBuffers-06193`: If `pCommandBuffers` contains any resumed render pass instances, they must be suspended by a render pass instance earlier in submission order within `pCommandBuffers`
-- `VUID-VkSubmitInfo-pCommandBuffers-06014`: If `pCommandBuffers` contains any suspended render pass instances, they must be resumed by a render pass instance later in submission order within `pCommandBuffers`
-- `VUID-VkSubmitInfo-pCommandBuffers-06015`: If `pCommandBuffers` contains any suspended render pass instances, there must be no action or synchronization commands executed in a primary or secondary command buffer between that render pass instance and the render pass instance that resumes it
-- `VUID-VkSubmitInfo-pCommandBuffers-06016`: If `pCommandBuffers` contains any suspended render pass instances, there must be no render pass instances between that render pass instance and the render pass instance that resumes it
-
 # Valid usage
 
 The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
@@ -3634,16 +3613,19 @@ The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org
 - `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkQueueSubmit-pWaitSemaphores-03238`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
+- `VUID-vkQueueSubmit-queue-06448`: dynamic (checks a protected batch's queue was got with VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT, which the device records)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
+Left to the caller (listed one by one in the crate's `validation.json`): 10.
 
-- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it: a program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091, a rule `cmd_execute_commands` (an `unsafe` method) leaves to its caller
 - 1: checked by the safe methods in every build (each stage against the queue family's flags and the specification's table of supported stages), but no test breaks it: lavapipe's only queue family supports every stage
+- 1: checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue
+- 1: checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family
 - 1: checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names (a timeline semaphore may be waited on before its signal is submitted, as the timeline rules allow)
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
-- 7: explicit rule; the wrappers do not check it*/
+- 4: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn queue_submit<'a>(
+    pub fn queue_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: &Fence,
@@ -3669,7 +3651,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, `VUID-vkQueueSubmit-pWaitSemaphores-03238`, `VUID-VkSubmitInfo-pWaitDstStageMask-00078`, `VUID-VkSubmitInfo-pWaitDstStageMask-04090`, `VUID-VkSubmitInfo-pWaitDstStageMask-04091`, `VUID-VkSubmitInfo-pWaitDstStageMask-03937`, `VUID-vkQueueSubmit-pWaitDstStageMask-00066`, `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`, `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`, `VUID-vkQueueSubmit-pSignalSemaphores-00067`, `VUID-vkQueueSubmit-pWaitSemaphores-00069`, `VUID-vkQueueSubmit-pWaitSemaphores-00068`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, `VUID-vkQueueSubmit-pWaitSemaphores-03238`, `VUID-VkSubmitInfo-pWaitDstStageMask-00078`, `VUID-VkSubmitInfo-pWaitDstStageMask-04090`, `VUID-VkSubmitInfo-pWaitDstStageMask-04091`, `VUID-VkSubmitInfo-pWaitDstStageMask-03937`, `VUID-vkQueueSubmit-pWaitDstStageMask-00066`, `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`, `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`, `VUID-vkQueueSubmit-pSignalSemaphores-00067`, `VUID-vkQueueSubmit-pWaitSemaphores-00069`, `VUID-vkQueueSubmit-pWaitSemaphores-00068`, `VUID-vkQueueSubmit-pCommandBuffers-00074`, `VUID-vkQueueSubmit-queue-06448`, `VUID-VkSubmitInfo-pNext-04120`, `VUID-VkSubmitInfo-pNext-04148`, `VUID-vkQueueSubmit-pCommandBuffers-00065`, `VUID-VkSubmitInfo-pSignalSemaphores-03242`, `VUID-VkSubmitInfo-pWaitSemaphores-03243`, `VUID-VkSubmitInfo-pSignalSemaphores-03244`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,

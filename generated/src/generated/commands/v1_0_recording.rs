@@ -1320,7 +1320,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
                     image_memory_barriers.as_ptr().cast(),
                 )
             };
-            crate::hooks::cmd_pipeline_barrier_done(self, image_memory_barriers);
+            crate::hooks::wait_events_done(self, events, image_memory_barriers);
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -2818,6 +2818,7 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
         let fp = self.device().fns().fp_v1_0().cmd_reset_event;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
+        crate::hooks::event_recorded(self, event);
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResetQueryPool`
@@ -3088,6 +3089,7 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
         let fp = self.device().fns().fp_v1_0().cmd_set_event;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
+        crate::hooks::event_recorded(self, event);
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdUpdateBuffer`

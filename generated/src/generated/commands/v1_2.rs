@@ -399,6 +399,7 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::hooks::signal_semaphore_done(self, signal_info);
         Ok(())
     }
     /**`vkWaitSemaphores`

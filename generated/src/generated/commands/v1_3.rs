@@ -372,24 +372,18 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 16 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
 - `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
 - `VUID-vkQueueSubmit2-stageMask-03870`: The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
-- `VUID-vkQueueSubmit2-commandBuffer-03877`: If any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
 - `VUID-vkQueueSubmit2-commandBuffer-03878`: The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
-- `VUID-vkQueueSubmit2-commandBuffer-03879`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the queue family identified by the acquire operation, with parameters matching the acquire operation as defined in the definition of such acquire operations, and which happens before the acquire operation
 - `VUID-vkQueueSubmit2-queue-06447`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
 - `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`: If `deviceMask` is not `0`, it must be a valid device mask
 - `VUID-VkSemaphoreSubmitInfo-device-03888`: If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
 - `VUID-VkSemaphoreSubmitInfo-device-03889`: If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
 - `VUID-VkSubmitInfo2-flags-03886`: If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
 - `VUID-VkSubmitInfo2-flags-03887`: If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06192`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any resumed render pass instances, they must be suspended by a render pass instance earlier in submission order within `pCommandBufferInfos`
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06010`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, they must be resumed by a render pass instance later in submission order within `pCommandBufferInfos`
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06011`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no action or synchronization commands between that render pass instance and the render pass instance that resumes it
-- `VUID-VkSubmitInfo2KHR-commandBuffer-06012`: If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no render pass instances between that render pass instance and the render pass instance that resumes it
 
 # Valid usage
 
@@ -408,7 +402,7 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
-- 1: checked (a secondary without SIMULTANEOUS_USE that is pending is refused), but a safe program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091 and which the recorder does not refuse yet
+- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it: a program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091, a rule `cmd_execute_commands` (an `unsafe` method) leaves to its caller
 - 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
 - 7: explicit rule; the wrappers do not check it*/

@@ -79,8 +79,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
+        let always: Result<()> = crate::hooks::begin_rendering_checks(
+            &self,
+            rendering_info,
+        );
         {
-            let r = self.validate_cmd_begin_rendering(rendering_info);
+            let r = always
+                .and_then(|()| self.validate_cmd_begin_rendering(rendering_info));
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -95,7 +100,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, `VUID-VkSubmitInfo-pCommandBuffers-06193`, `VUID-VkSubmitInfo-pCommandBuffers-06014`, `VUID-VkSubmitInfo-pCommandBuffers-06015`, `VUID-VkSubmitInfo-pCommandBuffers-06016`, `VUID-VkSubmitInfo2KHR-commandBuffer-06192`, `VUID-VkSubmitInfo2KHR-commandBuffer-06010`, `VUID-VkSubmitInfo2KHR-commandBuffer-06011`, `VUID-VkSubmitInfo2KHR-commandBuffer-06012`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_rendering_unchecked<'a>(
         mut self,
@@ -626,6 +631,7 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         let fp = self.device().fns().fp_v1_3().cmd_reset_event2;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
+        crate::hooks::event_recorded(self, event);
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResolveImage2`
@@ -812,6 +818,7 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
                 dependency_info as *const DependencyInfo<'a> as *const _,
             )
         };
+        crate::hooks::event_recorded(self, event);
         self.retain_with(event.address(), || event.retained());
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -1788,7 +1795,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
                     dependency_infos.as_ptr().cast(),
                 )
             };
-            crate::hooks::dependency_done(self, dependency_infos);
+            crate::hooks::wait_events2_done(self, events, dependency_infos);
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();

@@ -3586,8 +3586,14 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 - `VUID-VkSubmitInfo-pWaitSemaphores-03239`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 - `VUID-VkSubmitInfo-pNext-03240`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
 - `VUID-VkSubmitInfo-pNext-03241`: dynamic (checks each batch gives one value per timeline semaphore it waits on or signals)
+- `VUID-VkSubmitInfo-pSignalSemaphores-03242`: dynamic (checks each timeline signal is above the largest value the semaphore was given (initial value, host signals, submitted signals, earlier batches of the call): a bound stricter than the rule's, as the order in which queues execute is not known)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 19 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
+
+- 2: checked by the safe methods in every build (against the semaphore's possible values, from the value the host last saw to the largest signalled, and the values of its pending operations), but no test breaks it: lavapipe's maxTimelineSemaphoreValueDifference is the largest 64-bit value
+- 2: checked by the safe methods in every build (the pool's protected flag, recorded at its creation, against the batch's VkProtectedSubmitInfo), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected, and a protected batch is refused for its queue first
+- 4: checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
+- 10: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {

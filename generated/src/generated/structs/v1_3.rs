@@ -2375,7 +2375,10 @@ The rules are on [`VkSubmitInfo2`'s reference page](https://registry.khronos.org
 - `VUID-VkSubmitInfo2-pCommandBufferInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubmitInfo2-pSignalSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11.
+
+- 4: checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
+- 7: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo2<'a> {

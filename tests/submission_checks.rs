@@ -1,0 +1,154 @@
+//! Queue submissions: timeline values that only rise, protected batches only on
+//! protected queues, and no suspended render pass instance in a safe recording.
+//!
+//! Each case breaks one rule: tuff must refuse the safe call with the rule's VUID,
+//! and the validation layer, for the `_unchecked` twin (told to skip the call it
+//! reports), must name the same VUID.
+//!
+//! SAFETY of the `unsafe` blocks: the methods called are `unsafe` for rules their
+//! `# Safety` sections list, which these calls keep but for the one each case
+//! breaks on purpose, which tuff refuses and the layer skips.
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::{setup, vuid, Setup};
+use vulkan::assert_silent;
+
+/// Runs `unchecked` with the layer told to skip what it reports, and asserts it
+/// named `rule`.
+fn layer_names(s: &Setup, rule: &str, unchecked: impl FnOnce()) {
+    assert_silent(&s.messages);
+    s.messages.abort_on_error(true);
+    unchecked();
+    s.messages.abort_on_error(false);
+    let said = s.messages.take();
+    assert!(
+        said.iter().any(|m| m.contains(rule)),
+        "the layer did not name {rule}; it said {said:?}"
+    );
+}
+
+fn timeline(s: &Setup, initial: u64) -> tuff::Semaphore {
+    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+        .semaphore_type(vk::SemaphoreType::TIMELINE)
+        .initial_value(initial);
+    s.device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+        .expect("timeline semaphore")
+}
+
+/// A timeline signal must be above the value the semaphore has when it executes:
+/// below one the host signalled, or one an earlier submission signals, is refused.
+#[test]
+fn timeline_signals_rise() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let semaphore = timeline(&s, 0);
+    // SAFETY: a timeline semaphore, signalled above its current value.
+    unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&semaphore).value(5)) }
+        .expect("host signal");
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let signals = tuff::HandleSlice::new(&[&semaphore]);
+    let rule = "VUID-VkSubmitInfo-pSignalSemaphores-03242";
+    let mut below = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[3]);
+    let submit = [tuff::SubmitInfo::new()
+        .signal_semaphores(&signals)
+        .push_next(&mut below)];
+    // SAFETY: an empty batch; the call is refused.
+    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), rule);
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, &fence) };
+    });
+    // Above it: submitted; a second submission below that pending signal is refused
+    // too, though the semaphore's value is still 5 on the host.
+    let mut above = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[8]);
+    let submit = [tuff::SubmitInfo::new()
+        .signal_semaphores(&signals)
+        .push_next(&mut above)];
+    // SAFETY: an empty batch that signals above every value given so far.
+    s.queue
+        .queue_submit(&submit, &fence)
+        .expect("a signal above");
+    let other = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let mut between = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[7]);
+    let submit = [tuff::SubmitInfo::new()
+        .signal_semaphores(&signals)
+        .push_next(&mut between)];
+    assert_eq!(vuid(s.queue.queue_submit(&submit, &other)), rule);
+    assert_eq!(
+        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .expect("wait"),
+        vk::Result::SUCCESS
+    );
+    assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 8);
+    assert_silent(&s.messages);
+}
+
+/// A protected batch needs a queue created protected.
+#[test]
+fn protected_batches_need_protected_queues() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let fence = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let rule = "VUID-vkQueueSubmit-queue-06448";
+    let mut protected = tuff::ProtectedSubmitInfo::new().protected_submit(vk::TRUE);
+    let submit = [tuff::SubmitInfo::new().push_next(&mut protected)];
+    // SAFETY: an empty batch; the call is refused.
+    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), rule);
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, &fence) };
+    });
+}
+
+/// The safe recorder does not suspend or resume a render pass instance, whose
+/// submission rules it does not follow.
+#[test]
+fn render_pass_instances_are_not_suspended() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for flags in [vk::RenderingFlags::SUSPENDING, vk::RenderingFlags::RESUMING] {
+        let attachments = [tuff::RenderingAttachmentInfo::new()
+            .image_view(Some(&target.view))
+            .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+            .load_op(vk::AttachmentLoadOp::DONT_CARE)
+            .store_op(vk::AttachmentStoreOp::DONT_CARE)];
+        let info = tuff::RenderingInfo::new()
+            .flags(flags)
+            .render_area(vk::Rect2D {
+                offset: vk::Offset2D::default(),
+                extent: vk::Extent2D {
+                    width: 8,
+                    height: 8,
+                },
+            })
+            .layer_count(1)
+            .color_attachments(&attachments);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        // SAFETY: the begin is refused, and the recorder records nothing after it.
+        let rec = unsafe { rec.cmd_begin_rendering(&info) };
+        let rec = rec.cmd_end_rendering();
+        match rec.end() {
+            Err(tuff::Error::Misuse(_)) => {}
+            other => panic!("expected the suspending or resuming begin refused, got {other:?}"),
+        }
+    }
+    assert_silent(&s.messages);
+}
