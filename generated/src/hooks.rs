@@ -3356,20 +3356,40 @@ fn pipelines_created(
     device: &Device,
     pipelines: &[Pipeline],
     bind_point: vk::PipelineBindPoint,
-    layouts: impl Iterator<Item = (vk::PipelineLayout, u64, vk::SampleCountFlags)>,
+    records: impl Iterator<Item = (vk::PipelineLayout, PipelineRecord)>,
 ) {
-    for (p, (layout, vertex_bindings, samples)) in pipelines.iter().zip(layouts) {
+    for (p, (layout, record)) in pipelines.iter().zip(records) {
         if let Some(layout) = device.live().pipeline_layout(layout) {
             device.live().pipeline_created(
                 p.raw(),
                 PipelineRecord {
                     bind_point,
                     layout,
-                    vertex_bindings,
-                    samples,
+                    ..record
                 },
             );
         }
+    }
+}
+
+/// A pipeline's record before its layout is filled in.
+fn pipeline_record(
+    vertex_bindings: u64,
+    samples: vk::SampleCountFlags,
+    pass: Option<(Vrc<RenderPassRecord>, u32)>,
+    dynamic: u32,
+) -> PipelineRecord {
+    PipelineRecord {
+        bind_point: vk::PipelineBindPoint::GRAPHICS,
+        layout: Vrc::new(LayoutRecord {
+            push_ranges: Vec::new(),
+            set_dynamics: Vec::new(),
+            sets: Vec::new(),
+        }),
+        vertex_bindings,
+        samples,
+        pass,
+        dynamic,
     }
 }
 
@@ -3414,10 +3434,13 @@ pub(crate) fn compute_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos
-        .iter()
-        .map(|i| (i.as_raw().layout, 0, vk::SampleCountFlags::empty()));
-    pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, layouts);
+    let records = create_infos.iter().map(|i| {
+        (
+            i.as_raw().layout,
+            pipeline_record(0, vk::SampleCountFlags::empty(), None, 0),
+        )
+    });
+    pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, records);
     created
 }
 
@@ -3427,14 +3450,27 @@ pub(crate) fn graphics_pipelines_created(
     created: Vec<Pipeline>,
     create_infos: &[GraphicsPipelineCreateInfo<'_>],
 ) -> Vec<Pipeline> {
-    let layouts = create_infos.iter().map(|i| {
+    let records = create_infos.iter().map(|i| {
         let raw = i.as_raw();
         // SAFETY: the safe setter stores a reference that outlives the create info.
         let samples = unsafe { raw.p_multisample_state.as_ref() }
             .map_or(vk::SampleCountFlags::empty(), |m| m.rasterization_samples);
-        (raw.layout, vertex_bindings(device, raw), samples)
+        // SAFETY: as above, and the state's array with its count.
+        let dynamic = unsafe { raw.p_dynamic_state.as_ref() }.map_or(0, |d| {
+            unsafe { crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count) }
+                .iter()
+                .fold(0, |bits, s| bits | crate::recorder::dynamic_bit(*s))
+        });
+        let pass = device
+            .live()
+            .render_pass(raw.render_pass)
+            .map(|r| (r, raw.subpass));
+        (
+            raw.layout,
+            pipeline_record(vertex_bindings(device, raw), samples, pass, dynamic),
+        )
     });
-    pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, layouts);
+    pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, records);
     created
 }
 
@@ -3447,6 +3483,12 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
     if let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) {
         recorder.bound[i].pipeline = recorder.device().live().pipeline(pipeline.raw());
     }
+    if pipeline_bind_point == vk::PipelineBindPoint::GRAPHICS {
+        // A state static in the new pipeline must be set again before a later
+        // pipeline that has it dynamic draws.
+        let dynamic = recorder.bound[0].pipeline.as_ref().map_or(0, |p| p.dynamic);
+        recorder.dynamic = (recorder.dynamic.0 & dynamic, 0);
+    }
     // The first graphics pipeline of a subpass sets its sample count.
     let samples = recorder.bound[0].pipeline.as_ref().map(|p| p.samples);
     if let (Some(instance), vk::PipelineBindPoint::GRAPHICS) =
@@ -3454,6 +3496,112 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
     {
         instance.samples = instance.samples.or(samples);
     }
+}
+
+/// After `vkCmdBindVertexBuffers2`: the bindings bound, and with strides given, the
+/// vertex input binding stride state set.
+pub(crate) fn cmd_bind_vertex_buffers2_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    first_binding: u32,
+    count: usize,
+    strides: &[vk::DeviceSize],
+) {
+    cmd_bind_vertex_buffers_done(recorder, first_binding, count);
+    if !strides.is_empty() {
+        dynamic_state_set(
+            recorder,
+            crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE),
+        );
+    }
+}
+
+/// A dynamic state setting command: the states of `bits` are set.
+pub(crate) fn dynamic_state_set<S: State>(recorder: &mut Recorder<'_, S>, bits: u32) {
+    recorder.dynamic.0 |= bits;
+    recorder.dynamic.1 |= bits;
+}
+
+/// The rules of one draw command about the state it draws with.
+pub(crate) struct DrawRules {
+    /// The bound pipeline's render pass is compatible with the instance's.
+    pub render_pass: &'static str,
+    /// The bound pipeline's subpass is the instance's current one.
+    pub subpass: &'static str,
+    /// Every dynamic state of the bound pipeline is set.
+    pub dynamic_set: &'static str,
+    /// No state static in the bound pipeline was set since it was bound.
+    pub static_unset: &'static str,
+    /// Rules naming one dynamic state that must be set: (its bit, the rule).
+    pub named: [(u32, &'static str); 5],
+}
+
+/// The dynamic states whose rule a draw command names apart from the general one:
+/// primitive topology, vertex input binding stride, rasterizer discard enable,
+/// depth bias enable and primitive restart enable.
+pub(crate) const NAMED_STATES: [u32; 5] = {
+    use crate::recorder::dynamic_bit;
+    use vk::DynamicState as D;
+    [
+        dynamic_bit(D::PRIMITIVE_TOPOLOGY),
+        dynamic_bit(D::VERTEX_INPUT_BINDING_STRIDE),
+        dynamic_bit(D::RASTERIZER_DISCARD_ENABLE),
+        dynamic_bit(D::DEPTH_BIAS_ENABLE),
+        dynamic_bit(D::PRIMITIVE_RESTART_ENABLE),
+    ]
+};
+
+/// Refuses a draw whose bound graphics pipeline was made for another render pass
+/// or subpass than the instance's, one of whose dynamic states is not set (or was
+/// set before a pipeline bound since had it static), or after a command that set a
+/// state the pipeline has static.
+fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) -> Result<()> {
+    let Some(pipeline) = &recorder.bound[0].pipeline else {
+        return Ok(());
+    };
+    if let Some(instance) = &recorder.instance {
+        match (&pipeline.pass, &instance.record) {
+            (Some((made_for, subpass)), Some(current)) => {
+                if !Vrc::ptr_eq(made_for, current) && !made_for.compatible(current) {
+                    refuse(
+                        rules.render_pass,
+                        "the bound pipeline was created for a render pass that is not compatible with the render pass instance's".into(),
+                    )?;
+                }
+                if *subpass != instance.subpass {
+                    refuse(
+                        rules.subpass,
+                        format!("the bound pipeline was created for subpass {subpass}, and the render pass instance is in subpass {}", instance.subpass),
+                    )?;
+                }
+            }
+            (None, Some(_)) => refuse(
+                rules.render_pass,
+                "the bound pipeline was created for dynamic rendering, inside a render pass instance".into(),
+            )?,
+            _ => {}
+        }
+    }
+    let (valid, since_bind) = recorder.dynamic;
+    let missing = pipeline.dynamic & !valid;
+    if missing != 0 {
+        let vuid = rules
+            .named
+            .iter()
+            .find(|(bit, _)| missing & bit != 0)
+            .map_or(rules.dynamic_set, |(_, vuid)| vuid);
+        refuse(
+            vuid,
+            format!("dynamic state bit {} of the bound pipeline was not set since a pipeline with it static was bound (or at all)", missing.trailing_zeros()),
+        )?;
+    }
+    let stale = since_bind & !pipeline.dynamic;
+    if stale != 0 {
+        refuse(
+            rules.static_unset,
+            format!("dynamic state bit {} was set since the bound pipeline was bound, and the pipeline has it static", stale.trailing_zeros()),
+        )?;
+    }
+    Ok(())
 }
 
 /// The recording names `event` in an event command: its submission is checked
@@ -3604,7 +3752,11 @@ pub(crate) fn bound_pipeline_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: Option<&'static str>,
+    draw: Option<&DrawRules>,
 ) -> Result<()> {
+    if let Some(rules) = draw {
+        draw_state_checks(recorder, rules)?;
+    }
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
     };
@@ -3689,6 +3841,7 @@ pub(crate) fn cmd_bind_pipeline_checks<S: State>(
     // pipeline, unless the device can vary it.
     let first = recorder
         .instance
+        .as_ref()
         .filter(|i| i.no_attachments && record.bind_point == vk::PipelineBindPoint::GRAPHICS)
         .and_then(|i| i.samples);
     if let Some(samples) = first.filter(|&s| s != record.samples) {
@@ -3756,6 +3909,7 @@ pub(crate) fn indexed_draw_checks<S: State>(
     bound_vuid: &'static str,
     vertex_vuid: &'static str,
     range: Option<(u32, u32, &'static str)>,
+    draw: &DrawRules,
 ) -> Result<()> {
     bound_pipeline_checks(
         recorder,
@@ -3763,6 +3917,7 @@ pub(crate) fn indexed_draw_checks<S: State>(
         pipeline_vuid,
         sets_vuid,
         Some(vertex_vuid),
+        Some(draw),
     )?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
         return refuse(bound_vuid, "no index buffer is bound".into());
@@ -5705,6 +5860,7 @@ pub(crate) fn render_pass_begun<S: State>(
             .unwrap_or(false),
         samples: None,
         dynamic: false,
+        record,
     });
 }
 
@@ -5757,7 +5913,7 @@ pub(crate) fn next_subpass_checks<S: State>(
     recorder: &Recorder<'_, S>,
     vuid: &'static str,
 ) -> Result<()> {
-    match recorder.instance {
+    match &recorder.instance {
         Some(i) if i.subpasses != 0 && i.subpass + 1 >= i.subpasses => refuse(
             vuid,
             format!(
@@ -5772,10 +5928,10 @@ pub(crate) fn next_subpass_checks<S: State>(
 
 /// The recorder moves to the next subpass.
 pub(crate) fn next_subpass_done<S: State>(recorder: &mut Recorder<'_, S>) {
-    let Some(i) = recorder.instance else {
+    let Some(i) = recorder.instance.take() else {
         return;
     };
-    let record = recorder.device().live().render_pass(i.render_pass);
+    let record = i.record.clone();
     let next = i.subpass + 1;
     let view_mask = record
         .as_ref()
@@ -5829,7 +5985,7 @@ pub(crate) fn end_render_pass_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
     (last, queries): (&'static str, &'static str),
 ) -> Result<()> {
-    let Some(i) = recorder.instance else {
+    let Some(i) = &recorder.instance else {
         return Ok(());
     };
     let r = if i.subpasses != 0 && i.subpass + 1 != i.subpasses {
@@ -5951,7 +6107,7 @@ pub(crate) fn begin_query_checks<S: State>(
             ),
         )?;
     }
-    if let Some(i) = recorder.instance {
+    if let Some(i) = &recorder.instance {
         let views = i.view_mask.count_ones();
         if u64::from(query) + u64::from(views) > u64::from(record.count) {
             refuse(
@@ -5979,7 +6135,7 @@ pub(crate) fn begin_query_done<S: State>(
         .live()
         .query_pool(query_pool.raw())
         .map_or(vk::QueryType::from_raw(i32::MAX), |r| r.query_type);
-    let subpass = recorder.instance.map(|i| i.subpass);
+    let subpass = recorder.instance.as_ref().map(|i| i.subpass);
     recorder.queries.push(crate::recorder::ActiveQuery {
         pool: query_pool.raw(),
         query,
@@ -6006,7 +6162,7 @@ pub(crate) fn end_query_checks<S: State>(
                 ),
             )?;
         }
-        if let Some(i) = recorder.instance {
+        if let Some(i) = &recorder.instance {
             let views = i.view_mask.count_ones();
             if u64::from(query) + u64::from(views) > u64::from(record.count) {
                 refuse(
@@ -6031,7 +6187,10 @@ pub(crate) fn end_query_checks<S: State>(
             format!("All queries used by the command must be active (query {query} is not)"),
         );
     };
-    match (active.subpass, recorder.instance.map(|i| i.subpass)) {
+    match (
+        active.subpass,
+        recorder.instance.as_ref().map(|i| i.subpass),
+    ) {
         (Some(began), Some(now)) if began != now => refuse(
             "VUID-vkCmdEndQuery-None-07007",
             format!(

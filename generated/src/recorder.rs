@@ -77,7 +77,7 @@ impl Bound {
 }
 
 /// The render pass instance a recorder is inside, as its checks need it.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) struct PassInstance {
     /// The current subpass (0 in dynamic rendering).
     pub subpass: u32,
@@ -95,6 +95,23 @@ pub(crate) struct PassInstance {
     /// Whether the instance was begun with `vkCmdBeginRendering` (for a continuing
     /// secondary: whether it inherits dynamic rendering).
     pub dynamic: bool,
+    /// The render pass's record, which a draw's pipeline must be compatible with.
+    pub record: Option<Vrc<crate::retention::RenderPassRecord>>,
+}
+
+/// The dynamic states the recorder follows, one bit each: those of Vulkan 1.0
+/// (0 to 8) and 1.3 (9 to 23); any other state has no bit (0).
+pub(crate) const fn dynamic_bit(state: vk::DynamicState) -> u32 {
+    let n = state.as_raw();
+    let index = match n {
+        0..=8 => n,
+        1000267000..=1000267011 => 9 + n - 1000267000,
+        1000377001 => 21,
+        1000377002 => 22,
+        1000377004 => 23,
+        _ => return 0,
+    };
+    1 << index
 }
 
 /// A query begun in the recording and not yet ended.
@@ -162,6 +179,10 @@ pub struct Recorder<'c, S: State> {
     pub(crate) sets: Vec<(u64, u64)>,
     /// The events the recording's event commands name (set, reset, wait).
     pub(crate) events: Vec<u64>,
+    /// The dynamic states set and still valid (no graphics pipeline bound since with
+    /// the state static), and those set since the last graphics pipeline was bound,
+    /// as [`dynamic_bit`] bits.
+    pub(crate) dynamic: (u32, u32),
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
@@ -239,9 +260,11 @@ impl CommandBuffer {
             }
         }
         let mut rec = self.begin_in(info)?;
+        let record = inheritance.and_then(|i| rec.device().live().render_pass(i.render_pass));
         rec.instance = Some(PassInstance {
             subpass: inheritance.map_or(0, |i| i.subpass),
             dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
+            record,
             ..PassInstance::default()
         });
         Ok(rec.into_state())
@@ -320,6 +343,7 @@ impl CommandBuffer {
             pass_images: Vec::new(),
             sets: Vec::new(),
             events: Vec::new(),
+            dynamic: (0, 0),
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
@@ -444,6 +468,7 @@ impl<'c, S: State> Recorder<'c, S> {
             pass_images: self.pass_images,
             sets: self.sets,
             events: self.events,
+            dynamic: self.dynamic,
             device_mask: self.device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,

@@ -304,6 +304,24 @@ pub(crate) struct RenderPassRecord {
     pub dependency_stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
 }
 
+impl RenderPassRecord {
+    /// Whether two render passes are compatible: their attachments agree in format
+    /// and sample count, and their subpasses in the attachments they use, their
+    /// formats and view masks.
+    pub(crate) fn compatible(&self, other: &RenderPassRecord) -> bool {
+        self.attachments.len() == other.attachments.len()
+            && self
+                .attachments
+                .iter()
+                .zip(&other.attachments)
+                .all(|(a, b)| a.0 == b.0 && a.1 == b.1)
+            && self.view_masks == other.view_masks
+            && self.color_formats == other.color_formats
+            && self.depth_formats == other.depth_formats
+            && self.used == other.used
+    }
+}
+
 /// A render pass's dependency from a subpass to itself, which a pipeline barrier
 /// inside the subpass must fit in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -391,6 +409,11 @@ pub(crate) struct PipelineRecord {
     pub vertex_bindings: u64,
     /// Its rasterization sample count (empty for a compute pipeline).
     pub samples: vk::SampleCountFlags,
+    /// The render pass it was created for, with the subpass (none for a compute
+    /// pipeline, or one made for dynamic rendering).
+    pub pass: Option<(Vrc<RenderPassRecord>, u32)>,
+    /// Its dynamic states, as [`crate::recorder::dynamic_bit`] bits.
+    pub dynamic: u32,
 }
 
 /// One binding of a descriptor set layout.

@@ -402,7 +402,7 @@ pub(crate) fn check_pipeline_barrier<S: State>(
             )?;
         }
     }
-    match recorder.instance {
+    match &recorder.instance {
         None => {
             if dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
                 refuse(

@@ -385,6 +385,8 @@ pub(crate) fn execute_layouts_done<S: State>(
             recorder.layouts.then(&theirs);
         }
     }
+    // The primary's dynamic state is undefined after the secondaries ran.
+    recorder.dynamic = (0, 0);
 }
 
 /// The device remembers a framebuffer's attachments, whose layouts each render

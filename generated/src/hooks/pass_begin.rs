@@ -227,17 +227,7 @@ pub(crate) fn begin_render_pass_checks<S: State>(
         }
     }
     if let Some(made_with) = live.framebuffer_pass_record(raw.framebuffer) {
-        let compatible = made_with.attachments.len() == pass.attachments.len()
-            && made_with
-                .attachments
-                .iter()
-                .zip(&pass.attachments)
-                .all(|(a, b)| a.0 == b.0 && a.1 == b.1)
-            && made_with.view_masks == pass.view_masks
-            && made_with.color_formats == pass.color_formats
-            && made_with.depth_formats == pass.depth_formats
-            && made_with.used == pass.used;
-        if !compatible {
+        if !made_with.compatible(&pass) {
             refuse(
                 "VUID-VkRenderPassBeginInfo-renderPass-00904",
                 "the render pass is not compatible with the one the framebuffer was created with (its attachments' formats and sample counts, or its subpasses' attachments and view masks, differ)".into(),

@@ -133,7 +133,7 @@ const fn unsafe_call(
 const FENCE: &str =
     "checks the fence is unsignalled and not in use by a queue operation that may still be executing";
 const CBS: &str = "checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions";
-const SECONDARY: &str = "checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it: a program reaches that state only by recording the pending secondary into another primary, which breaks VUID-vkCmdExecuteCommands-pCommandBuffers-00091, a rule `cmd_execute_commands` (an `unsafe` method) leaves to its caller";
+const SECONDARY: &str = "checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state";
 const UNPROVEN_POOL_FAMILY: &str = "checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family";
 const UNPROVEN_PROTECTED_BUFFERS: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation, against the batch's VkProtectedSubmitInfo), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected, and a protected batch is refused for its queue first";
 const UNPROVEN_OTHER_QUEUE_EVENTS: &str = "checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue";
@@ -349,6 +349,8 @@ const LAYOUT_BINDINGS: &str = "checks the bindings against each other (each numb
 const SAMPLER_MODES: &str = "checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features";
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
 const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
+const PASS_COMPATIBLE: &str = "checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one)";
+const DYNAMIC_SET: &str = "checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound";
 const PIPELINE_BOUND: &str =
     "checks a pipeline is bound at the command's bind point, which the recorder tracks";
 const SETS_BOUND: &str = "checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known)";
@@ -386,6 +388,7 @@ macro_rules! bound {
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
                     "None",
+                    "None",
                 ],
             ),
             settles: &[
@@ -413,19 +416,55 @@ macro_rules! bound {
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
                     concat!("Some(\"VUID-", $command, "-None-04007\")"),
+                    concat!(
+                        "Some(",
+                        concat!(
+                            "&crate::hooks::DrawRules { render_pass: \"VUID-",
+                            $command,
+                            "-renderPass-02684\", ",
+                            "subpass: \"VUID-",
+                            $command,
+                            "-subpass-02685\", ",
+                            "dynamic_set: \"VUID-",
+                            $command,
+                            "-commandBuffer-02701\", ",
+                            "static_unset: \"VUID-",
+                            $command,
+                            "-None-02859\", ",
+                            "named: [(crate::hooks::NAMED_STATES[0], \"VUID-",
+                            $command,
+                            "-primitiveTopology-03420\"), ",
+                            "(crate::hooks::NAMED_STATES[1], \"VUID-",
+                            $command,
+                            "-pStrides-04884\"), ",
+                            "(crate::hooks::NAMED_STATES[2], \"VUID-",
+                            $command,
+                            "-None-04876\"), ",
+                            "(crate::hooks::NAMED_STATES[3], \"VUID-",
+                            $command,
+                            "-None-04877\"), ",
+                            "(crate::hooks::NAMED_STATES[4], \"VUID-",
+                            $command,
+                            "-None-04879\")] }"
+                        ),
+                        ")"
+                    ),
                 ],
             ),
-            settles: &[
-                (
-                    concat!("VUID-", $command, "-None-02700"),
-                    How::Dynamic(PIPELINE_BOUND),
-                ),
-                (concat!("VUID-", $command, "-None-02697"), $sets),
-                (
-                    concat!("VUID-", $command, "-None-04007"),
-                    How::Dynamic(VERTEX_BOUND),
-                ),
-            ],
+            settles: with_draw_state!(
+                $command,
+                [
+                    (
+                        concat!("VUID-", $command, "-None-02700"),
+                        How::Dynamic(PIPELINE_BOUND),
+                    ),
+                    (concat!("VUID-", $command, "-None-02697"), $sets),
+                    (
+                        concat!("VUID-", $command, "-None-04007"),
+                        How::Dynamic(VERTEX_BOUND),
+                    ),
+                ]
+            ),
             ..NONE
         }
     };
@@ -434,7 +473,7 @@ macro_rules! bound {
 /// An indexed draw: [`bound!`]'s checks, an index buffer bound, and for a direct draw
 /// the indices it reads inside it (`range`, Rust for an `Option` the hook takes).
 macro_rules! indexed {
-    ($command:literal, $range:literal, $settles:expr) => {
+    ($command:literal, $range:literal, [$($settles:expr),* $(,)?]) => {
         Special {
             command: $command,
             after: call(
@@ -450,11 +489,41 @@ macro_rules! indexed {
                     concat!("\"VUID-", $command, "-None-07312\""),
                     concat!("\"VUID-", $command, "-None-04007\""),
                     $range,
+                    concat!(
+                        "&crate::hooks::DrawRules { render_pass: \"VUID-", $command, "-renderPass-02684\", ",
+                        "subpass: \"VUID-", $command, "-subpass-02685\", ",
+                        "dynamic_set: \"VUID-", $command, "-commandBuffer-02701\", ",
+                        "static_unset: \"VUID-", $command, "-None-02859\", ",
+                        "named: [(crate::hooks::NAMED_STATES[0], \"VUID-", $command, "-primitiveTopology-03420\"), ",
+                        "(crate::hooks::NAMED_STATES[1], \"VUID-", $command, "-pStrides-04884\"), ",
+                        "(crate::hooks::NAMED_STATES[2], \"VUID-", $command, "-None-04876\"), ",
+                        "(crate::hooks::NAMED_STATES[3], \"VUID-", $command, "-None-04877\"), ",
+                        "(crate::hooks::NAMED_STATES[4], \"VUID-", $command, "-None-04879\")] }"
+                    ),
                 ],
             ),
-            settles: $settles,
+            settles: with_draw_state!($command, [$($settles),*]),
             ..NONE
         }
+    };
+}
+
+/// A draw's settlements: `$settles`, and those of the state it draws with (its
+/// pipeline's render pass and subpass, and its dynamic states).
+macro_rules! with_draw_state {
+    ($command:literal, [$($settles:expr),* $(,)?]) => {
+        &[
+            $($settles,)*
+            (concat!("VUID-", $command, "-renderPass-02684"), How::Dynamic(PASS_COMPATIBLE)),
+            (concat!("VUID-", $command, "-subpass-02685"), How::Dynamic(PASS_COMPATIBLE)),
+            (concat!("VUID-", $command, "-commandBuffer-02701"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-None-02859"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-primitiveTopology-03420"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-pStrides-04884"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-None-04876"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-None-04877"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-None-04879"), How::Dynamic(DYNAMIC_SET)),
+        ]
     };
 }
 
@@ -997,8 +1066,8 @@ pub const SPECIALS: &[Special] = &[
             &["self", "first_binding", "buffers", "offsets", "(sizes, strides)"],
         ),
         after: call(
-            "hooks::cmd_bind_vertex_buffers_done",
-            &["self", "first_binding", "buffers.len()"],
+            "hooks::cmd_bind_vertex_buffers2_done",
+            &["self", "first_binding", "buffers.len()", "strides"],
         ),
         settles: &[
             ("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", How::Dynamic(RANGE)),
@@ -1644,7 +1713,103 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCmdSetLineWidth",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthBias",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetBlendConstants",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthBounds",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetStencilCompareMask",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetStencilWriteMask",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetStencilReference",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetCullMode",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetFrontFace",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetPrimitiveTopology",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthTestEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthWriteEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthCompareOp",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthBoundsTestEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetStencilTestEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetStencilOp",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetRasterizerDiscardEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetDepthBiasEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE)"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetPrimitiveRestartEnable",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE)"]),
+        ..NONE
+    },
+    Special {
         command: "vkCmdSetViewport",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT)"]),
         check: call("hooks::cmd_set_viewport_checks", &["self", "first_viewport", "viewports"]),
         settles: &[
             ("VUID-vkCmdSetViewport-firstViewport-01223", How::Dynamic(VIEWPORTS)),
@@ -1655,6 +1820,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetScissor",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR)"]),
         check: call("hooks::cmd_set_scissor_checks", &["self", "first_scissor", "scissors"]),
         settles: &[
             ("VUID-vkCmdSetScissor-firstScissor-00592", How::Dynamic(VIEWPORTS)),
@@ -1668,6 +1834,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetViewportWithCount",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT)"]),
         check: call("hooks::cmd_set_viewport_with_count_checks", &["self", "viewports"]),
         settles: &[
             ("VUID-vkCmdSetViewportWithCount-viewportCount-03394", How::Dynamic(VIEWPORTS)),
@@ -1677,6 +1844,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetScissorWithCount",
+        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT)"]),
         check: call("hooks::cmd_set_scissor_with_count_checks", &["self", "scissors"]),
         settles: &[
             ("VUID-vkCmdSetScissorWithCount-scissorCount-03397", How::Dynamic(VIEWPORTS)),
@@ -1981,7 +2149,7 @@ pub const SPECIALS: &[Special] = &[
     indexed!(
         "vkCmdDrawIndexed",
         "Some((index_count, first_index, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\"))",
-        &[
+        [
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-07312", How::Dynamic(INDEX_BOUND)),
@@ -1993,7 +2161,7 @@ pub const SPECIALS: &[Special] = &[
     indexed!(
         "vkCmdDrawIndexedIndirect",
         "None",
-        &[
+        [
             ("VUID-vkCmdDrawIndexedIndirect-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-07312", How::Dynamic(INDEX_BOUND)),
@@ -2004,7 +2172,7 @@ pub const SPECIALS: &[Special] = &[
     indexed!(
         "vkCmdDrawIndexedIndirectCount",
         "None",
-        &[
+        [
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", How::Dynamic(INDEX_BOUND)),

@@ -811,6 +811,10 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
         let fp = self.device().fns().fp_v1_0().cmd_set_blend_constants;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), blend_constants) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS),
+        );
     }
     /**`vkCmdSetDepthBias`
 
@@ -868,6 +872,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
                 depth_bias_slope_factor,
             )
         };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS),
+        );
     }
     /**`vkCmdSetDepthBounds`
 
@@ -916,6 +924,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
         let fp = self.device().fns().fp_v1_0().cmd_set_depth_bounds;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), min_depth_bounds, max_depth_bounds) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS),
+        );
     }
     /**`vkCmdSetLineWidth`
 
@@ -950,6 +962,10 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
         let fp = self.device().fns().fp_v1_0().cmd_set_line_width;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), line_width) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH),
+        );
     }
     /**`vkCmdSetScissor`
 
@@ -1008,6 +1024,10 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
                     scissors.as_ptr().cast(),
                 )
             };
+            crate::hooks::dynamic_state_set(
+                self,
+                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR),
+            );
         }
         Ok(())
     }
@@ -1053,6 +1073,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_compare_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, compare_mask) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK),
+        );
     }
     /**`vkCmdSetStencilReference`
 
@@ -1096,6 +1120,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_reference;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, reference) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE),
+        );
     }
     /**`vkCmdSetStencilWriteMask`
 
@@ -1139,6 +1167,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_write_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, write_mask) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK),
+        );
     }
     /**`vkCmdSetViewport`
 
@@ -1194,6 +1226,10 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
                     viewports.as_ptr().cast(),
                 )
             };
+            crate::hooks::dynamic_state_set(
+                self,
+                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT),
+            );
         }
         Ok(())
     }
@@ -2571,6 +2607,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
             None,
+            None,
         )?;
         {
             let r = self
@@ -2663,6 +2700,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55 (exp
             vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
+            None,
             None,
         )?;
         {
@@ -3245,13 +3283,11 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 61 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 52 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDraw-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDraw-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDraw-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDraw-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDraw-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3259,8 +3295,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDraw-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDraw-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDraw-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDraw-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDraw-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDraw-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDraw-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -3288,9 +3322,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDraw-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDraw-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDraw-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDraw-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDraw-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDraw-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDraw-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDraw-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3306,8 +3337,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDraw-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDraw-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDraw-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDraw-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 
 # Valid usage
 
@@ -3315,14 +3344,23 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 
 - `VUID-vkCmdDraw-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDraw-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDraw-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDraw-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDraw-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDraw-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 189 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 180 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3337,6 +3375,24 @@ Left to the caller (listed one by one in the crate's `validation.json`): 189 (ex
             "VUID-vkCmdDraw-None-02700",
             "VUID-vkCmdDraw-None-02697",
             Some("VUID-vkCmdDraw-None-04007"),
+            Some(
+                &crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDraw-renderPass-02684",
+                    subpass: "VUID-vkCmdDraw-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDraw-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDraw-primitiveTopology-03420",
+                        ),
+                        (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
+                        (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
+                        (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
+                        (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
+                    ],
+                },
+            ),
         )?;
         {
             let r = self.validate_cmd_draw();
@@ -3357,7 +3413,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 189 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3386,13 +3442,11 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 61 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 52 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDrawIndexed-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDrawIndexed-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDrawIndexed-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3400,8 +3454,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndexed-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndexed-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDrawIndexed-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDrawIndexed-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDrawIndexed-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDrawIndexed-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -3429,9 +3481,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDrawIndexed-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDrawIndexed-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDrawIndexed-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexed-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexed-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexed-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexed-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3447,8 +3496,6 @@ The caller upholds these 61 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndexed-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexed-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDrawIndexed-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 
 # Valid usage
 
@@ -3456,6 +3503,10 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 
 - `VUID-vkCmdDrawIndexed-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexed-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDrawIndexed-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexed-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexed-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: dynamic (checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked))
@@ -3464,8 +3515,13 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexed-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 189 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 180 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3486,6 +3542,25 @@ Left to the caller (listed one by one in the crate's `validation.json`): 189 (ex
                 first_index,
                 "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825",
             )),
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDrawIndexed-renderPass-02684",
+                subpass: "VUID-vkCmdDrawIndexed-subpass-02685",
+                dynamic_set: "VUID-vkCmdDrawIndexed-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDrawIndexed-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDrawIndexed-primitiveTopology-03420",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[1],
+                        "VUID-vkCmdDrawIndexed-pStrides-04884",
+                    ),
+                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDrawIndexed-None-04876"),
+                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDrawIndexed-None-04877"),
+                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDrawIndexed-None-04879"),
+                ],
+            },
         )?;
         {
             let r = self.validate_cmd_draw_indexed();
@@ -3507,7 +3582,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 189 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3538,13 +3613,11 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 64 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 55 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDrawIndexedIndirect-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDrawIndexedIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3552,8 +3625,6 @@ The caller upholds these 64 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndexedIndirect-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDrawIndexedIndirect-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDrawIndexedIndirect-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -3584,9 +3655,6 @@ The caller upholds these 64 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDrawIndexedIndirect-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexedIndirect-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexedIndirect-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3602,8 +3670,6 @@ The caller upholds these 64 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 
 # Valid usage
 
@@ -3611,6 +3677,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -3624,11 +3694,16 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndexedIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 192.
+Left to the caller (listed one by one in the crate's `validation.json`): 183.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 191: explicit rule; the wrappers do not check it*/
+- 182: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3644,6 +3719,34 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192.
             "VUID-vkCmdDrawIndexedIndirect-None-07312",
             "VUID-vkCmdDrawIndexedIndirect-None-04007",
             None,
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDrawIndexedIndirect-renderPass-02684",
+                subpass: "VUID-vkCmdDrawIndexedIndirect-subpass-02685",
+                dynamic_set: "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDrawIndexedIndirect-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[1],
+                        "VUID-vkCmdDrawIndexedIndirect-pStrides-04884",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[2],
+                        "VUID-vkCmdDrawIndexedIndirect-None-04876",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[3],
+                        "VUID-vkCmdDrawIndexedIndirect-None-04877",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[4],
+                        "VUID-vkCmdDrawIndexedIndirect-None-04879",
+                    ),
+                ],
+            },
         )?;
         {
             let r = self.validate_cmd_draw_indexed_indirect(buffer, offset, draw_count);
@@ -3659,7 +3762,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 192.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3681,13 +3784,11 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 63 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 54 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDrawIndirect-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDrawIndirect-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDrawIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3695,8 +3796,6 @@ The caller upholds these 63 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndirect-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndirect-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDrawIndirect-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDrawIndirect-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDrawIndirect-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDrawIndirect-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -3726,9 +3825,6 @@ The caller upholds these 63 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDrawIndirect-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDrawIndirect-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDrawIndirect-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndirect-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndirect-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndirect-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirect-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3744,8 +3840,6 @@ The caller upholds these 63 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndirect-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirect-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDrawIndirect-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 
 # Valid usage
 
@@ -3753,6 +3847,10 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 
 - `VUID-vkCmdDrawIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDrawIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -3765,11 +3863,16 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 191.
+Left to the caller (listed one by one in the crate's `validation.json`): 182.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 190: explicit rule; the wrappers do not check it*/
+- 181: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -3784,6 +3887,36 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
             "VUID-vkCmdDrawIndirect-None-02700",
             "VUID-vkCmdDrawIndirect-None-02697",
             Some("VUID-vkCmdDrawIndirect-None-04007"),
+            Some(
+                &crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndirect-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndirect-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndirect-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndirect-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndirect-None-04879",
+                        ),
+                    ],
+                },
+            ),
         )?;
         {
             let r = self.validate_cmd_draw_indirect(buffer, offset, draw_count);
@@ -3797,7 +3930,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

@@ -108,13 +108,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 68 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 59 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDrawIndexedIndirectCount-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -122,8 +120,6 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDrawIndexedIndirectCount-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDrawIndexedIndirectCount-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -157,9 +153,6 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -175,8 +168,6 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04445`: If `drawIndirectCount` is not enabled this function must not be used
 
 # Valid usage
@@ -185,6 +176,10 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -201,8 +196,13 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 195 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 186 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -220,6 +220,34 @@ Left to the caller (listed one by one in the crate's `validation.json`): 195 (ex
             "VUID-vkCmdDrawIndexedIndirectCount-None-07312",
             "VUID-vkCmdDrawIndexedIndirectCount-None-04007",
             None,
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684",
+                subpass: "VUID-vkCmdDrawIndexedIndirectCount-subpass-02685",
+                dynamic_set: "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDrawIndexedIndirectCount-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[1],
+                        "VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[2],
+                        "VUID-vkCmdDrawIndexedIndirectCount-None-04876",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[3],
+                        "VUID-vkCmdDrawIndexedIndirectCount-None-04877",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[4],
+                        "VUID-vkCmdDrawIndexedIndirectCount-None-04879",
+                    ),
+                ],
+            },
         )?;
         {
             let r = self
@@ -248,7 +276,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 195 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -283,13 +311,11 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
 
 # Safety
 
-The caller upholds these 67 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 58 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirectCount-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
-- `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDrawIndirectCount-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDrawIndirectCount-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndirectCount-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndirectCount-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -297,8 +323,6 @@ The caller upholds these 67 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndirectCount-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
-- `VUID-vkCmdDrawIndirectCount-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
-- `VUID-vkCmdDrawIndirectCount-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
 - `VUID-vkCmdDrawIndirectCount-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
 - `VUID-vkCmdDrawIndirectCount-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
@@ -331,9 +355,6 @@ The caller upholds these 67 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
 - `VUID-vkCmdDrawIndirectCount-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
 - `VUID-vkCmdDrawIndirectCount-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
-- `VUID-vkCmdDrawIndirectCount-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndirectCount-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
-- `VUID-vkCmdDrawIndirectCount-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
 - `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndirectCount-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirectCount-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -349,8 +370,6 @@ The caller upholds these 67 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndirectCount-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirectCount-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
-- `VUID-vkCmdDrawIndirectCount-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
 - `VUID-vkCmdDrawIndirectCount-None-04445`: If `drawIndirectCount` is not enabled this function must not be used
 
 # Valid usage
@@ -359,6 +378,10 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 
 - `VUID-vkCmdDrawIndirectCount-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndirectCount-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
+- `VUID-vkCmdDrawIndirectCount-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
 - `VUID-vkCmdDrawIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
@@ -374,8 +397,13 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndirectCount-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 185 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -392,6 +420,36 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
             "VUID-vkCmdDrawIndirectCount-None-02700",
             "VUID-vkCmdDrawIndirectCount-None-02697",
             Some("VUID-vkCmdDrawIndirectCount-None-04007"),
+            Some(
+                &crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndirectCount-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndirectCount-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndirectCount-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndirectCount-None-04879",
+                        ),
+                    ],
+                },
+            ),
         )?;
         {
             let r = self
@@ -420,7 +478,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,

@@ -971,10 +971,11 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
                     },
                 )
             };
-            crate::hooks::cmd_bind_vertex_buffers_done(
+            crate::hooks::cmd_bind_vertex_buffers2_done(
                 self,
                 first_binding,
                 buffers.len(),
+                strides,
             );
         }
         Ok(())
@@ -1118,6 +1119,10 @@ The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time
         let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), cull_mode) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
+        );
     }
     /**`vkCmdSetDepthBiasEnable`
 
@@ -1156,6 +1161,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bias_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
+        );
     }
     /**`vkCmdSetDepthBoundsTestEnable`
 
@@ -1199,6 +1208,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_bounds_test_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bounds_test_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
+        );
     }
     /**`vkCmdSetDepthCompareOp`
 
@@ -1238,6 +1251,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_compare_op;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_compare_op) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
+        );
     }
     /**`vkCmdSetDepthTestEnable`
 
@@ -1276,6 +1293,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_test_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
+        );
     }
     /**`vkCmdSetDepthWriteEnable`
 
@@ -1314,6 +1335,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_write_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
+        );
     }
     /**`vkCmdSetFrontFace`
 
@@ -1350,6 +1375,10 @@ The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run tim
         let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), front_face) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
+        );
     }
     /**`vkCmdSetPrimitiveRestartEnable`
 
@@ -1393,6 +1422,10 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
         let fp = self.device().fns().fp_v1_3().cmd_set_primitive_restart_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), primitive_restart_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
+        );
     }
     /**`vkCmdSetPrimitiveTopology`
 
@@ -1435,6 +1468,10 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
         let fp = self.device().fns().fp_v1_3().cmd_set_primitive_topology;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), primitive_topology) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
+        );
     }
     /**`vkCmdSetRasterizerDiscardEnable`
 
@@ -1478,6 +1515,10 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
         let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), rasterizer_discard_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
+        );
     }
     /**`vkCmdSetScissorWithCount`
 
@@ -1523,6 +1564,10 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
+            crate::hooks::dynamic_state_set(
+                self,
+                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
+            );
         }
         Ok(())
     }
@@ -1597,6 +1642,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
         unsafe {
             fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
         };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
+        );
     }
     /**`vkCmdSetStencilTestEnable`
 
@@ -1635,6 +1684,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
         let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), stencil_test_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
+        );
     }
     /**`vkCmdSetViewportWithCount`
 
@@ -1680,6 +1733,10 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
+            crate::hooks::dynamic_state_set(
+                self,
+                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
+            );
         }
         Ok(())
     }

@@ -1,0 +1,359 @@
+//! Draws check the state they draw with: the bound pipeline's render pass and
+//! subpass against the render pass instance's, and its dynamic states against those
+//! the recording set (each set since a pipeline with it static was bound, none of
+//! its static ones set since it was bound).
+//!
+//! Each case records one draw, by each of the six draw commands, that breaks one
+//! rule: tuff must refuse the safe call with the rule's VUID, and the validation
+//! layer, for the `_unchecked` twin (told to skip the call it reports), must name
+//! the same VUID. No command buffer is submitted.
+//!
+//! SAFETY of the `unsafe` blocks: the draws are `unsafe` for rules their `# Safety`
+//! sections list, which these recordings keep but for the one each case breaks on
+//! purpose, which tuff refuses and the layer skips; the shaders are the repository's
+//! (the shader promise, see `tuff_setup::shader`).
+
+#[path = "common/pipelines.rs"]
+mod pipelines;
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::{setup, vuid, Setup};
+use vulkan::assert_silent;
+
+type D = vk::DynamicState;
+type Inside<'r> = tuff::Recorder<'r, tuff::InRenderPass>;
+const SIZE: u32 = 8;
+
+/// A one-color-attachment render pass of `format`, with `subpasses` subpasses that
+/// each write the attachment, one after the other.
+fn render_pass(s: &Setup, format: vk::Format, subpasses: u32) -> tuff::RenderPass {
+    let attachments = [vk::AttachmentDescription {
+        format,
+        samples: vk::SampleCountFlags::TYPE_1,
+        load_op: vk::AttachmentLoadOp::CLEAR,
+        store_op: vk::AttachmentStoreOp::STORE,
+        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+        initial_layout: vk::ImageLayout::UNDEFINED,
+        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        ..Default::default()
+    }];
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let subpass = tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color);
+    let subpass_list = vec![subpass; subpasses as usize];
+    let output = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+    let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+    let dependencies: Vec<vk::SubpassDependency> = (1..subpasses)
+        .map(|n| vk::SubpassDependency {
+            src_subpass: n - 1,
+            dst_subpass: n,
+            src_stage_mask: output,
+            dst_stage_mask: output,
+            src_access_mask: write,
+            dst_access_mask: write,
+            dependency_flags: vk::DependencyFlags::BY_REGION,
+        })
+        .collect();
+    s.device
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpass_list)
+                .dependencies(&dependencies),
+        )
+        .expect("render pass")
+}
+
+/// The test pipeline for subpass `subpass` of `pass`, with `dynamic` states.
+fn pipeline(
+    s: &Setup,
+    p: &pipelines::Pipelines,
+    pass: &tuff::RenderPass,
+    subpass: u32,
+    dynamic: &[D],
+) -> tuff::Pipeline {
+    let stages = pipelines::test_stages(&p.vert, &p.frag);
+    let states = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(dynamic);
+    let (mut made, _) = pipelines::with_graphics_info(&stages, &p.graphics_layout, pass, |info| {
+        let info = info.subpass(subpass).dynamic_state(Some(&states));
+        unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+    })
+    .expect("pipeline");
+    made.pop().expect("one pipeline")
+}
+
+/// One draw command, recorded checked (`false`) or unchecked (`true`).
+type Draw<'a> = Box<dyn Fn(&mut Inside<'_>, bool) -> tuff::Result<()> + 'a>;
+
+/// What a case records before its draw.
+type Prepare<'a> = Box<dyn Fn(&mut Inside<'_>) + 'a>;
+
+/// The six draw commands, each with its VUID prefix; an indexed one binds `index`
+/// first, an indirect one reads `args`.
+fn draws<'a>(index: &'a tuff::Buffer, args: &'a tuff::Buffer) -> Vec<(&'static str, Draw<'a>)> {
+    macro_rules! call {
+        ($rec:ident, $unchecked:ident, $f:ident, $g:ident ($($a:expr),*)) => {
+            if $unchecked {
+                unsafe { $rec.$g($($a),*) }
+            } else {
+                unsafe { $rec.$f($($a),*) }
+            }
+        };
+    }
+    let indexed = move |r: &mut Inside<'_>| {
+        r.cmd_bind_index_buffer(index, 0, vk::IndexType::UINT32)
+            .expect("index buffer");
+    };
+    vec![
+        (
+            "vkCmdDraw",
+            Box::new(|r, u| call!(r, u, cmd_draw, cmd_draw_unchecked(3, 1, 0, 0))),
+        ),
+        (
+            "vkCmdDrawIndexed",
+            Box::new(move |r, u| {
+                indexed(r);
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed,
+                    cmd_draw_indexed_unchecked(3, 1, 0, 0, 0)
+                )
+            }),
+        ),
+        (
+            "vkCmdDrawIndirect",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indirect,
+                    cmd_draw_indirect_unchecked(args, 0, 1, 16)
+                )
+            }),
+        ),
+        (
+            "vkCmdDrawIndexedIndirect",
+            Box::new(move |r, u| {
+                indexed(r);
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed_indirect,
+                    cmd_draw_indexed_indirect_unchecked(args, 0, 1, 20)
+                )
+            }),
+        ),
+        (
+            "vkCmdDrawIndirectCount",
+            Box::new(move |r, u| {
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indirect_count,
+                    cmd_draw_indirect_count_unchecked(args, 0, args, 64, 1, 16)
+                )
+            }),
+        ),
+        (
+            "vkCmdDrawIndexedIndirectCount",
+            Box::new(move |r, u| {
+                indexed(r);
+                call!(
+                    r,
+                    u,
+                    cmd_draw_indexed_indirect_count,
+                    cmd_draw_indexed_indirect_count_unchecked(args, 0, args, 64, 1, 20)
+                )
+            }),
+        ),
+    ]
+}
+
+fn area() -> vk::Rect2D {
+    vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: SIZE,
+            height: SIZE,
+        },
+    }
+}
+
+fn set_viewport(r: &mut Inside<'_>) {
+    let viewport = vk::Viewport {
+        width: SIZE as f32,
+        height: SIZE as f32,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    r.cmd_set_viewport(0, &[viewport]).expect("viewport");
+}
+
+fn set_scissor(r: &mut Inside<'_>) {
+    r.cmd_set_scissor(0, &[area()]).expect("scissor");
+}
+
+#[test]
+fn draws_check_their_pipeline_and_dynamic_state() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER
+        | vk::BufferUsageFlags::INDEX_BUFFER
+        | vk::BufferUsageFlags::VERTEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let two = render_pass(&s, rgba, 2);
+    let views = tuff::HandleSlice::new(&[&target.view]);
+    let two_framebuffer = s
+        .device
+        .create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&two)
+                .attachments(&views)
+                .width(SIZE)
+                .height(SIZE)
+                .layers(1),
+        )
+        .expect("framebuffer");
+    let other_format = render_pass(&s, vk::Format::R8_UNORM, 1);
+    let viewport_scissor = [D::VIEWPORT, D::SCISSOR];
+    let plain = pipeline(&s, &p, &target.render_pass, 0, &viewport_scissor);
+    let incompatible = pipeline(&s, &p, &other_format, 0, &viewport_scissor);
+    let second_subpass = pipeline(&s, &p, &two, 1, &viewport_scissor);
+    let named = [
+        (D::PRIMITIVE_TOPOLOGY, "primitiveTopology-03420"),
+        (D::VERTEX_INPUT_BINDING_STRIDE, "pStrides-04884"),
+        (D::RASTERIZER_DISCARD_ENABLE, "None-04876"),
+        (D::DEPTH_BIAS_ENABLE, "None-04877"),
+        (D::PRIMITIVE_RESTART_ENABLE, "None-04879"),
+    ];
+    let all_dynamic: Vec<D> = viewport_scissor
+        .iter()
+        .copied()
+        .chain(named.iter().map(|(d, _)| *d))
+        .collect();
+    let extended = pipeline(&s, &p, &target.render_pass, 0, &all_dynamic);
+    let set_named = |r: &mut Inside<'_>, state: D| match state {
+        D::PRIMITIVE_TOPOLOGY => r.cmd_set_primitive_topology(vk::PrimitiveTopology::TRIANGLE_LIST),
+        D::VERTEX_INPUT_BINDING_STRIDE => {
+            unsafe { r.cmd_bind_vertex_buffers2(0, &[&args], &[0], &[], &[16]) }
+                .expect("vertex buffer with its stride")
+        }
+        D::RASTERIZER_DISCARD_ENABLE => r.cmd_set_rasterizer_discard_enable(vk::FALSE),
+        D::DEPTH_BIAS_ENABLE => r.cmd_set_depth_bias_enable(vk::FALSE),
+        D::PRIMITIVE_RESTART_ENABLE => r.cmd_set_primitive_restart_enable(vk::FALSE),
+        _ => unreachable!("a named state"),
+    };
+
+    // (rule suffix, whether the instance is of the two-subpass render pass, what
+    // the case records before the draw)
+    let mut cases: Vec<(String, bool, Prepare<'_>)> = vec![
+        (
+            "renderPass-02684".into(),
+            false,
+            Box::new(|r| {
+                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &incompatible)
+                    .expect("bind");
+                set_viewport(r);
+                set_scissor(r);
+            }),
+        ),
+        (
+            "commandBuffer-02701".into(),
+            false,
+            Box::new(|r| {
+                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
+                    .expect("bind");
+                set_scissor(r);
+            }),
+        ),
+        (
+            "None-02859".into(),
+            false,
+            Box::new(|r| {
+                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
+                    .expect("bind");
+                set_viewport(r);
+                set_scissor(r);
+                r.cmd_set_line_width(1.0);
+            }),
+        ),
+    ];
+    for (missing, suffix) in named {
+        let (extended, set_named) = (&extended, &set_named);
+        cases.push((
+            suffix.into(),
+            false,
+            Box::new(move |r| {
+                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, extended)
+                    .expect("bind");
+                set_viewport(r);
+                set_scissor(r);
+                for (state, _) in named {
+                    if state != missing {
+                        set_named(r, state);
+                    }
+                }
+            }),
+        ));
+    }
+    cases.push((
+        "subpass-02685".into(),
+        true,
+        Box::new(|r| {
+            r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &second_subpass)
+                .expect("bind");
+            set_viewport(r);
+            set_scissor(r);
+        }),
+    ));
+
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let clear = [vk::ClearValue::default()];
+    for (command, draw) in draws(&args, &args) {
+        for (suffix, in_two, prepare) in &cases {
+            let rule = format!("VUID-{command}-{suffix}");
+            let (pass, framebuffer) = if *in_two {
+                (&two, &two_framebuffer)
+            } else {
+                (&target.render_pass, &target.framebuffer)
+            };
+            let begin = tuff::RenderPassBeginInfo::new(pass, framebuffer)
+                .render_area(area())
+                .clear_values(&clear);
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                prepare(&mut rec);
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    assert!(
+                        said.iter().any(|m| m.contains(&rule)),
+                        "the layer did not name {rule}; it said {said:?}"
+                    );
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
+    assert_silent(&s.messages);
+}
