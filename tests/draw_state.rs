@@ -21,7 +21,7 @@ mod tuff_setup;
 mod vulkan;
 
 use tuff::vk;
-use tuff_setup::{setup, vuid, Setup};
+use tuff_setup::{setup, setup_full_features, vuid, Setup};
 use vulkan::assert_silent;
 
 type D = vk::DynamicState;
@@ -92,14 +92,17 @@ fn pipeline(
 }
 
 /// One draw command, recorded checked (`false`) or unchecked (`true`).
-type Draw<'a> = Box<dyn Fn(&mut Inside<'_>, bool) -> tuff::Result<()> + 'a>;
+type Draw<'a, S> = Box<dyn Fn(&mut tuff::Recorder<'_, S>, bool) -> tuff::Result<()> + 'a>;
 
 /// What a case records before its draw.
 type Prepare<'a> = Box<dyn Fn(&mut Inside<'_>) + 'a>;
 
 /// The six draw commands, each with its VUID prefix; an indexed one binds `index`
 /// first, an indirect one reads `args`.
-fn draws<'a>(index: &'a tuff::Buffer, args: &'a tuff::Buffer) -> Vec<(&'static str, Draw<'a>)> {
+fn draws<'a, S: tuff::recorder::Inside + 'a>(
+    index: &'a tuff::Buffer,
+    args: &'a tuff::Buffer,
+) -> Vec<(&'static str, Draw<'a, S>)> {
     macro_rules! call {
         ($rec:ident, $unchecked:ident, $f:ident, $g:ident ($($a:expr),*)) => {
             if $unchecked {
@@ -109,7 +112,7 @@ fn draws<'a>(index: &'a tuff::Buffer, args: &'a tuff::Buffer) -> Vec<(&'static s
             }
         };
     }
-    let indexed = move |r: &mut Inside<'_>| {
+    let indexed = move |r: &mut tuff::Recorder<'_, S>| {
         r.cmd_bind_index_buffer(index, 0, vk::IndexType::UINT32)
             .expect("index buffer");
     };
@@ -321,7 +324,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
 
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let clear = [vk::ClearValue::default()];
-    for (command, draw) in draws(&args, &args) {
+    for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
         for (suffix, in_two, prepare) in &cases {
             let rule = format!("VUID-{command}-{suffix}");
             let (pass, framebuffer) = if *in_two {
@@ -347,6 +350,204 @@ fn draws_check_their_pipeline_and_dynamic_state() {
                         said.iter().any(|m| m.contains(&rule)),
                         "the layer did not name {rule}; it said {said:?}"
                     );
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
+    assert_silent(&s.messages);
+}
+
+/// A pipeline made for dynamic rendering with these formats and view mask (the
+/// test pipeline's create info for `pass`, with no render pass).
+fn rendering_pipeline(
+    s: &Setup,
+    p: &pipelines::Pipelines,
+    pass: &tuff::RenderPass,
+    view_mask: u32,
+    colors: &[vk::Format],
+    depth: vk::Format,
+    stencil: vk::Format,
+) -> tuff::Pipeline {
+    let stages = pipelines::test_stages(&p.vert, &p.frag);
+    let blend_attachments = vec![
+        vk::PipelineColorBlendAttachmentState {
+            color_write_mask: vk::ColorComponentFlags::RGBA,
+            ..Default::default()
+        };
+        colors.len()
+    ];
+    let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
+    let depth_stencil = tuff::PipelineDepthStencilStateCreateInfo::new();
+    let (mut made, _) = pipelines::with_graphics_info(&stages, &p.graphics_layout, pass, |info| {
+        let mut rendering = tuff::PipelineRenderingCreateInfo::new()
+            .view_mask(view_mask)
+            .color_attachment_formats(colors)
+            .depth_attachment_format(depth)
+            .stencil_attachment_format(stencil);
+        let info = info
+            .render_pass(None)
+            .color_blend_state(Some(&blend))
+            .depth_stencil_state(Some(&depth_stencil))
+            .push_next(&mut rendering);
+        unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+    })
+    .expect("pipeline");
+    made.pop().expect("one pipeline")
+}
+
+/// A color attachment of `view` (or none) for dynamic rendering.
+fn color_attachment(view: Option<&tuff::ImageView>) -> [tuff::RenderingAttachmentInfo<'_>; 1] {
+    [tuff::RenderingAttachmentInfo::new()
+        .image_view(view)
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::DONT_CARE)
+        .store_op(vk::AttachmentStoreOp::DONT_CARE)]
+}
+
+/// In dynamic rendering, a draw's pipeline must have been made for the instance's
+/// view mask and attachment formats (`UNDEFINED` where the instance has no view).
+#[test]
+fn dynamic_rendering_draws_check_their_pipeline_formats() {
+    let _serial = vulkan::serial();
+    let s = setup_full_features(true);
+    let d = &s.device;
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let ds_format = vk::Format::D32_SFLOAT_S8_UINT;
+    let ds_image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(ds_format)
+                .extent(vk::Extent3D {
+                    width: SIZE,
+                    height: SIZE,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
+        )
+        .expect("depth image");
+    let _ds_memory = s.bind_image(&ds_image);
+    let ds_view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&ds_image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(ds_format)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("depth view");
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let none = vk::Format::UNDEFINED;
+    let pass = &target.render_pass;
+    let make = |mask, colors: &[vk::Format], depth, stencil| {
+        rendering_pipeline(&s, &p, pass, mask, colors, depth, stencil)
+    };
+    let view_mask = make(1, &[rgba], none, none);
+    let two_colors = make(0, &[rgba, rgba], none, none);
+    let other_color = make(0, &[vk::Format::R8_UNORM], none, none);
+    let color = make(0, &[rgba], none, none);
+    let stencil_only = make(0, &[rgba], none, ds_format);
+    let depth_only = make(0, &[rgba], ds_format, none);
+
+    let with_view = color_attachment(Some(&target.view));
+    let without_view = color_attachment(None);
+    let ds_attachment = tuff::RenderingAttachmentInfo::new()
+        .image_view(Some(&ds_view))
+        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::DONT_CARE)
+        .store_op(vk::AttachmentStoreOp::DONT_CARE);
+    let info = |colors| {
+        tuff::RenderingInfo::new()
+            .render_area(area())
+            .layer_count(1)
+            .color_attachments(colors)
+    };
+    let color_only = info(&with_view);
+    let null_color = info(&without_view);
+    let depth_stencil = info(&with_view)
+        .depth_attachment(Some(&ds_attachment))
+        .stencil_attachment(Some(&ds_attachment));
+    // (rule suffix, the instance, the pipeline, whether the layer checks the rule)
+    let cases = [
+        ("viewMask-06178", &color_only, &view_mask, true),
+        ("colorAttachmentCount-06179", &color_only, &two_colors, true),
+        (
+            "colorAttachmentCount-06180",
+            &color_only,
+            &other_color,
+            true,
+        ),
+        ("colorAttachmentCount-07616", &null_color, &color, false),
+        (
+            "pDepthAttachment-06181",
+            &depth_stencil,
+            &stencil_only,
+            true,
+        ),
+        ("pDepthAttachment-07617", &color_only, &depth_only, false),
+        (
+            "pStencilAttachment-06182",
+            &depth_stencil,
+            &depth_only,
+            true,
+        ),
+        (
+            "pStencilAttachment-07618",
+            &color_only,
+            &stencil_only,
+            false,
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, draw) in draws::<tuff::InRendering>(&args, &args) {
+        for (suffix, rendering, pipeline, layer_checks) in &cases {
+            let rule = format!("VUID-{command}-{suffix}");
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = unsafe { rec.cmd_begin_rendering(rendering) };
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                    .expect("bind");
+                let viewport = vk::Viewport {
+                    width: SIZE as f32,
+                    height: SIZE as f32,
+                    max_depth: 1.0,
+                    ..Default::default()
+                };
+                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    if *layer_checks {
+                        assert!(
+                            said.iter().any(|m| m.contains(&rule)),
+                            "the layer did not name {rule}; it said {said:?}"
+                        );
+                    } else {
+                        // The 1.3.239 layer does not check the rules of attachments
+                        // without a view: tuff's error alone proves them (the command
+                        // buffer is never submitted).
+                        assert!(said.is_empty(), "the layer said {said:?}");
+                    }
                 } else {
                     assert_eq!(vuid(draw(&mut rec, false)), rule);
                     assert_silent(&s.messages);

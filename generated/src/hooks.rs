@@ -3378,6 +3378,7 @@ fn pipeline_record(
     samples: vk::SampleCountFlags,
     pass: Option<(Vrc<RenderPassRecord>, u32)>,
     dynamic: u32,
+    rendering: Option<Vrc<crate::retention::RenderingFormats>>,
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::GRAPHICS,
@@ -3390,6 +3391,7 @@ fn pipeline_record(
         samples,
         pass,
         dynamic,
+        rendering,
     }
 }
 
@@ -3437,7 +3439,7 @@ pub(crate) fn compute_pipelines_created(
     let records = create_infos.iter().map(|i| {
         (
             i.as_raw().layout,
-            pipeline_record(0, vk::SampleCountFlags::empty(), None, 0),
+            pipeline_record(0, vk::SampleCountFlags::empty(), None, 0, None),
         )
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, records);
@@ -3465,9 +3467,39 @@ pub(crate) fn graphics_pipelines_created(
             .live()
             .render_pass(raw.render_pass)
             .map(|r| (r, raw.subpass));
+        let rendering = (raw.render_pass == vk::RenderPass::null()).then(|| {
+            // SAFETY: the chain of a safe struct, and the type its sType names; the
+            // safe setter stores the formats with their count.
+            let info: Option<&vk::PipelineRenderingCreateInfo<'_>> = unsafe {
+                chained(
+                    raw.p_next,
+                    vk::StructureType::PIPELINE_RENDERING_CREATE_INFO,
+                )
+            };
+            Vrc::new(info.map_or_else(Default::default, |i| {
+                crate::retention::RenderingFormats {
+                    view_mask: i.view_mask,
+                    colors: unsafe {
+                        crate::retention::raw_slice(
+                            i.p_color_attachment_formats,
+                            i.color_attachment_count,
+                        )
+                    }
+                    .to_vec(),
+                    depth: i.depth_attachment_format,
+                    stencil: i.stencil_attachment_format,
+                }
+            }))
+        });
         (
             raw.layout,
-            pipeline_record(vertex_bindings(device, raw), samples, pass, dynamic),
+            pipeline_record(
+                vertex_bindings(device, raw),
+                samples,
+                pass,
+                dynamic,
+                rendering,
+            ),
         )
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, records);
@@ -3533,6 +3565,11 @@ pub(crate) struct DrawRules {
     pub static_unset: &'static str,
     /// Rules naming one dynamic state that must be set: (its bit, the rule).
     pub named: [(u32, &'static str); 5],
+    /// In dynamic rendering, what the bound pipeline was made for against the
+    /// instance: the view mask, the color attachment count, a color format, a
+    /// color format for an attachment with no view, the depth format, one for no
+    /// depth view, the stencil format, one for no stencil view.
+    pub rendering: [&'static str; 8],
 }
 
 /// The dynamic states whose rule a draw command names apart from the general one:
@@ -3581,6 +3618,15 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
             _ => {}
         }
     }
+    if let (Some(made_for), Some(current)) = (
+        &pipeline.rendering,
+        recorder
+            .instance
+            .as_ref()
+            .and_then(|i| i.rendering.as_ref()),
+    ) {
+        rendering_checks(made_for, current, &rules.rendering)?;
+    }
     let (valid, since_bind) = recorder.dynamic;
     let missing = pipeline.dynamic & !valid;
     if missing != 0 {
@@ -3600,6 +3646,66 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
             rules.static_unset,
             format!("dynamic state bit {} was set since the bound pipeline was bound, and the pipeline has it static", stale.trailing_zeros()),
         )?;
+    }
+    Ok(())
+}
+
+/// Refuses a pipeline made for other dynamic rendering than the instance's: its
+/// view mask, color attachment count or formats (`UNDEFINED` where the instance's
+/// attachment has no view), or depth or stencil format differ.
+fn rendering_checks(
+    made_for: &crate::retention::RenderingFormats,
+    current: &crate::retention::RenderingFormats,
+    rules: &[&'static str; 8],
+) -> Result<()> {
+    let undefined = vk::Format::UNDEFINED;
+    if made_for.view_mask != current.view_mask {
+        refuse(
+            rules[0],
+            format!("the bound pipeline was made for view mask {:#x}, and the render pass instance has {:#x}", made_for.view_mask, current.view_mask),
+        )?;
+    }
+    if made_for.colors.len() != current.colors.len() {
+        refuse(
+            rules[1],
+            format!("the bound pipeline was made for {} color attachments, and the render pass instance has {}", made_for.colors.len(), current.colors.len()),
+        )?;
+    }
+    for (i, (made, now)) in made_for.colors.iter().zip(&current.colors).enumerate() {
+        if *now == undefined && *made != undefined {
+            refuse(
+                rules[3],
+                format!("color attachment {i} has no view, and the bound pipeline was made for format {made:?} there"),
+            )?;
+        }
+        if *now != undefined && made != now {
+            refuse(
+                rules[2],
+                format!("color attachment {i} is of format {now:?}, and the bound pipeline was made for {made:?}"),
+            )?;
+        }
+    }
+    for (made, now, (defined_rule, undefined_rule), what) in [
+        (made_for.depth, current.depth, (rules[4], rules[5]), "depth"),
+        (
+            made_for.stencil,
+            current.stencil,
+            (rules[6], rules[7]),
+            "stencil",
+        ),
+    ] {
+        if now == undefined && made != undefined {
+            refuse(
+                undefined_rule,
+                format!("the {what} attachment has no view, and the bound pipeline was made for format {made:?}"),
+            )?;
+        }
+        if now != undefined && made != now {
+            refuse(
+                defined_rule,
+                format!("the {what} attachment is of format {now:?}, and the bound pipeline was made for {made:?}"),
+            )?;
+        }
     }
     Ok(())
 }
@@ -5861,6 +5967,7 @@ pub(crate) fn render_pass_begun<S: State>(
         samples: None,
         dynamic: false,
         record,
+        rendering: None,
     });
 }
 
@@ -5900,10 +6007,22 @@ pub(crate) fn rendering_begun<S: State>(
         .chain(depth)
         .chain(stencil)
         .all(|a| a.image_view == vk::ImageView::null());
+    let live = recorder.device().live();
+    let format = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
+        a.and_then(|a| live.view(a.image_view))
+            .map_or(vk::Format::UNDEFINED, |v| v.format)
+    };
+    let rendering = crate::retention::RenderingFormats {
+        view_mask: raw.view_mask,
+        colors: color.iter().map(|a| format(Some(a))).collect(),
+        depth: format(depth),
+        stencil: format(stencil),
+    };
     recorder.instance = Some(crate::recorder::PassInstance {
         view_mask: raw.view_mask,
         no_attachments,
         dynamic: true,
+        rendering: Some(Vrc::new(rendering)),
         ..Default::default()
     });
 }

@@ -97,6 +97,10 @@ pub(crate) struct PassInstance {
     pub dynamic: bool,
     /// The render pass's record, which a draw's pipeline must be compatible with.
     pub record: Option<Vrc<crate::retention::RenderPassRecord>>,
+    /// In dynamic rendering (begun in this recording, or the one a continuing
+    /// secondary inherits): its view mask and attachment formats, which a draw's
+    /// pipeline must have been made for.
+    pub rendering: Option<Vrc<crate::retention::RenderingFormats>>,
 }
 
 /// The dynamic states the recorder follows, one bit each: those of Vulkan 1.0
@@ -261,10 +265,40 @@ impl CommandBuffer {
         }
         let mut rec = self.begin_in(info)?;
         let record = inheritance.and_then(|i| rec.device().live().render_pass(i.render_pass));
+        let rendering = inheritance
+            .filter(|i| i.render_pass == vk::RenderPass::null())
+            .and_then(|i| {
+                // SAFETY: as above; the node's sType names the struct, and its safe
+                // setter stores the formats with their count.
+                unsafe { crate::support::chain_nodes(i.p_next) }
+                    .find(|n| {
+                        n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO
+                    })
+                    .map(|n| unsafe {
+                        &*(n as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::CommandBufferInheritanceRenderingInfo<'_>>()
+                    })
+            })
+            .map(|r| {
+                Vrc::new(crate::retention::RenderingFormats {
+                    view_mask: r.view_mask,
+                    // SAFETY: as above.
+                    colors: unsafe {
+                        crate::retention::raw_slice(
+                            r.p_color_attachment_formats,
+                            r.color_attachment_count,
+                        )
+                    }
+                    .to_vec(),
+                    depth: r.depth_attachment_format,
+                    stencil: r.stencil_attachment_format,
+                })
+            });
         rec.instance = Some(PassInstance {
             subpass: inheritance.map_or(0, |i| i.subpass),
             dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
             record,
+            rendering,
             ..PassInstance::default()
         });
         Ok(rec.into_state())

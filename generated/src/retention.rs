@@ -414,6 +414,24 @@ pub(crate) struct PipelineRecord {
     pub pass: Option<(Vrc<RenderPassRecord>, u32)>,
     /// Its dynamic states, as [`crate::recorder::dynamic_bit`] bits.
     pub dynamic: u32,
+    /// For a graphics pipeline made for dynamic rendering, the view mask and
+    /// attachment formats its chained `VkPipelineRenderingCreateInfo` gives.
+    pub rendering: Option<Vrc<RenderingFormats>>,
+}
+
+/// The view mask and attachment formats of dynamic rendering: those a pipeline was
+/// made for, or those of a render pass instance (`UNDEFINED` for an attachment with
+/// no image view).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct RenderingFormats {
+    /// The view mask.
+    pub view_mask: u32,
+    /// Each color attachment's format.
+    pub colors: Vec<vk::Format>,
+    /// The depth attachment's format.
+    pub depth: vk::Format,
+    /// The stencil attachment's format.
+    pub stencil: vk::Format,
 }
 
 /// One binding of a descriptor set layout.

@@ -350,6 +350,8 @@ const SAMPLER_MODES: &str = "checks the filters, address modes and a chained red
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
 const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
 const PASS_COMPATIBLE: &str = "checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one)";
+const RENDERING_FORMATS: &str = "checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats)";
+const NO_VIEW_FORMATS: &str = "checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone)";
 const DYNAMIC_SET: &str = "checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound";
 const PIPELINE_BOUND: &str =
     "checks a pipeline is bound at the command's bind point, which the recorder tracks";
@@ -445,7 +447,31 @@ macro_rules! bound {
                             "-None-04877\"), ",
                             "(crate::hooks::NAMED_STATES[4], \"VUID-",
                             $command,
-                            "-None-04879\")] }"
+                            "-None-04879\")], ",
+                            "rendering: [\"VUID-",
+                            $command,
+                            "-viewMask-06178\", ",
+                            "\"VUID-",
+                            $command,
+                            "-colorAttachmentCount-06179\", ",
+                            "\"VUID-",
+                            $command,
+                            "-colorAttachmentCount-06180\", ",
+                            "\"VUID-",
+                            $command,
+                            "-colorAttachmentCount-07616\", ",
+                            "\"VUID-",
+                            $command,
+                            "-pDepthAttachment-06181\", ",
+                            "\"VUID-",
+                            $command,
+                            "-pDepthAttachment-07617\", ",
+                            "\"VUID-",
+                            $command,
+                            "-pStencilAttachment-06182\", ",
+                            "\"VUID-",
+                            $command,
+                            "-pStencilAttachment-07618\"] }"
                         ),
                         ")"
                     ),
@@ -498,7 +524,15 @@ macro_rules! indexed {
                         "(crate::hooks::NAMED_STATES[1], \"VUID-", $command, "-pStrides-04884\"), ",
                         "(crate::hooks::NAMED_STATES[2], \"VUID-", $command, "-None-04876\"), ",
                         "(crate::hooks::NAMED_STATES[3], \"VUID-", $command, "-None-04877\"), ",
-                        "(crate::hooks::NAMED_STATES[4], \"VUID-", $command, "-None-04879\")] }"
+                        "(crate::hooks::NAMED_STATES[4], \"VUID-", $command, "-None-04879\")], ",
+                        "rendering: [\"VUID-", $command, "-viewMask-06178\", ",
+                        "\"VUID-", $command, "-colorAttachmentCount-06179\", ",
+                        "\"VUID-", $command, "-colorAttachmentCount-06180\", ",
+                        "\"VUID-", $command, "-colorAttachmentCount-07616\", ",
+                        "\"VUID-", $command, "-pDepthAttachment-06181\", ",
+                        "\"VUID-", $command, "-pDepthAttachment-07617\", ",
+                        "\"VUID-", $command, "-pStencilAttachment-06182\", ",
+                        "\"VUID-", $command, "-pStencilAttachment-07618\"] }"
                     ),
                 ],
             ),
@@ -523,6 +557,14 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-None-04876"), How::Dynamic(DYNAMIC_SET)),
             (concat!("VUID-", $command, "-None-04877"), How::Dynamic(DYNAMIC_SET)),
             (concat!("VUID-", $command, "-None-04879"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-viewMask-06178"), How::Dynamic(RENDERING_FORMATS)),
+            (concat!("VUID-", $command, "-colorAttachmentCount-06179"), How::Dynamic(RENDERING_FORMATS)),
+            (concat!("VUID-", $command, "-colorAttachmentCount-06180"), How::Dynamic(RENDERING_FORMATS)),
+            (concat!("VUID-", $command, "-colorAttachmentCount-07616"), How::Dynamic(NO_VIEW_FORMATS)),
+            (concat!("VUID-", $command, "-pDepthAttachment-06181"), How::Dynamic(RENDERING_FORMATS)),
+            (concat!("VUID-", $command, "-pDepthAttachment-07617"), How::Dynamic(NO_VIEW_FORMATS)),
+            (concat!("VUID-", $command, "-pStencilAttachment-06182"), How::Dynamic(RENDERING_FORMATS)),
+            (concat!("VUID-", $command, "-pStencilAttachment-07618"), How::Dynamic(NO_VIEW_FORMATS)),
         ]
     };
 }

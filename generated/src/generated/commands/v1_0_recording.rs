@@ -3283,7 +3283,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 52 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3325,14 +3325,6 @@ The caller upholds these 52 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDraw-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDraw-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDraw-viewMask-06178`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`viewMask` equal to VkRenderingInfo::`viewMask`
-- `VUID-vkCmdDraw-colorAttachmentCount-06179`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`colorAttachmentCount` equal to VkRenderingInfo::`colorAttachmentCount`
-- `VUID-vkCmdDraw-colorAttachmentCount-06180`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` not equal to VK_NULL_HANDLE must have been created with a VkFormat equal to the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound graphics pipeline
-- `VUID-vkCmdDraw-colorAttachmentCount-07616`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` equal to VK_NULL_HANDLE must have the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound pipeline equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDraw-pDepthAttachment-06181`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pDepthAttachment->imageView`
-- `VUID-vkCmdDraw-pDepthAttachment-07617`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDraw-pStencilAttachment-06182`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pStencilAttachment->imageView`
-- `VUID-vkCmdDraw-pStencilAttachment-07618`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
 - `VUID-vkCmdDraw-imageView-06174`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDraw-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDraw-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
@@ -3357,10 +3349,18 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-viewMask-06178`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDraw-colorAttachmentCount-06179`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDraw-colorAttachmentCount-06180`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDraw-colorAttachmentCount-07616`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDraw-pDepthAttachment-06181`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDraw-pDepthAttachment-07617`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDraw-pStencilAttachment-06182`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDraw-pStencilAttachment-07618`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 180 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 172 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3391,6 +3391,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 180 (ex
                         (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
                         (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
                     ],
+                    rendering: [
+                        "VUID-vkCmdDraw-viewMask-06178",
+                        "VUID-vkCmdDraw-colorAttachmentCount-06179",
+                        "VUID-vkCmdDraw-colorAttachmentCount-06180",
+                        "VUID-vkCmdDraw-colorAttachmentCount-07616",
+                        "VUID-vkCmdDraw-pDepthAttachment-06181",
+                        "VUID-vkCmdDraw-pDepthAttachment-07617",
+                        "VUID-vkCmdDraw-pStencilAttachment-06182",
+                        "VUID-vkCmdDraw-pStencilAttachment-07618",
+                    ],
                 },
             ),
         )?;
@@ -3413,7 +3423,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 180 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3442,7 +3452,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 52 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3484,14 +3494,6 @@ The caller upholds these 52 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexed-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexed-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndexed-viewMask-06178`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`viewMask` equal to VkRenderingInfo::`viewMask`
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`colorAttachmentCount` equal to VkRenderingInfo::`colorAttachmentCount`
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` not equal to VK_NULL_HANDLE must have been created with a VkFormat equal to the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound graphics pipeline
-- `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` equal to VK_NULL_HANDLE must have the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound pipeline equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pDepthAttachment->imageView`
-- `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pStencilAttachment->imageView`
-- `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
 - `VUID-vkCmdDrawIndexed-imageView-06174`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexed-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndexed-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
@@ -3518,10 +3520,18 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-viewMask-06178`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 180 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 172 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3560,6 +3570,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 180 (ex
                     (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDrawIndexed-None-04877"),
                     (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDrawIndexed-None-04879"),
                 ],
+                rendering: [
+                    "VUID-vkCmdDrawIndexed-viewMask-06178",
+                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-06179",
+                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-06180",
+                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-07616",
+                    "VUID-vkCmdDrawIndexed-pDepthAttachment-06181",
+                    "VUID-vkCmdDrawIndexed-pDepthAttachment-07617",
+                    "VUID-vkCmdDrawIndexed-pStencilAttachment-06182",
+                    "VUID-vkCmdDrawIndexed-pStencilAttachment-07618",
+                ],
             },
         )?;
         {
@@ -3582,7 +3602,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 180 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3613,7 +3633,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 55 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3658,14 +3678,6 @@ The caller upholds these 55 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`viewMask` equal to VkRenderingInfo::`viewMask`
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`colorAttachmentCount` equal to VkRenderingInfo::`colorAttachmentCount`
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` not equal to VK_NULL_HANDLE must have been created with a VkFormat equal to the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound graphics pipeline
-- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` equal to VK_NULL_HANDLE must have the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound pipeline equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pDepthAttachment->imageView`
-- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pStencilAttachment->imageView`
-- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06174`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndexedIndirect-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
@@ -3697,13 +3709,21 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 183.
+Left to the caller (listed one by one in the crate's `validation.json`): 175.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 182: explicit rule; the wrappers do not check it*/
+- 174: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3746,6 +3766,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 183.
                         "VUID-vkCmdDrawIndexedIndirect-None-04879",
                     ),
                 ],
+                rendering: [
+                    "VUID-vkCmdDrawIndexedIndirect-viewMask-06178",
+                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179",
+                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180",
+                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616",
+                    "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181",
+                    "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617",
+                    "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182",
+                    "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618",
+                ],
             },
         )?;
         {
@@ -3762,7 +3792,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 183.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3784,7 +3814,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 54 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3828,14 +3858,6 @@ The caller upholds these 54 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndirect-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirect-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
-- `VUID-vkCmdDrawIndirect-viewMask-06178`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`viewMask` equal to VkRenderingInfo::`viewMask`
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`colorAttachmentCount` equal to VkRenderingInfo::`colorAttachmentCount`
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` not equal to VK_NULL_HANDLE must have been created with a VkFormat equal to the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound graphics pipeline
-- `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` equal to VK_NULL_HANDLE must have the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound pipeline equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pDepthAttachment->imageView`
-- `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pStencilAttachment->imageView`
-- `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
 - `VUID-vkCmdDrawIndirect-imageView-06174`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndirect-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
 - `VUID-vkCmdDrawIndirect-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
@@ -3866,13 +3888,21 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-None-04879`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-viewMask-06178`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats))
+- `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`: dynamic (checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone))
 - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 182.
+Left to the caller (listed one by one in the crate's `validation.json`): 174.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 181: explicit rule; the wrappers do not check it*/
+- 173: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -3915,6 +3945,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 182.
                             "VUID-vkCmdDrawIndirect-None-04879",
                         ),
                     ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndirect-viewMask-06178",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndirect-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndirect-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
+                    ],
                 },
             ),
         )?;
@@ -3930,7 +3970,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 182.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,
