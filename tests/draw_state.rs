@@ -558,3 +558,97 @@ fn dynamic_rendering_draws_check_their_pipeline_formats() {
     }
     assert_silent(&s.messages);
 }
+
+/// A direct draw fetches its vertices inside the bound vertex buffers: past the
+/// buffer's end (or its bound offset leaves too little) is refused.
+#[test]
+fn direct_draws_fetch_inside_their_vertex_buffers() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
+    let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
+    let stages = pipelines::test_stages(&vert, &frag);
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    // Binding 0: 20-byte vertices, of which the shader reads a vec2 at 0 and a vec3
+    // at 8, so each vertex reaches 20 bytes past its start.
+    let binding = [vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 20,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }];
+    let attributes = [
+        vk::VertexInputAttributeDescription {
+            location: 0,
+            binding: 0,
+            format: vk::Format::R32G32_SFLOAT,
+            offset: 0,
+        },
+        vk::VertexInputAttributeDescription {
+            location: 1,
+            binding: 0,
+            format: vk::Format::R32G32B32_SFLOAT,
+            offset: 8,
+        },
+    ];
+    let input = tuff::PipelineVertexInputStateCreateInfo::new()
+        .vertex_binding_descriptions(&binding)
+        .vertex_attribute_descriptions(&attributes);
+    let (mut made, _) =
+        pipelines::with_graphics_info(&stages, &layout, &target.render_pass, |info| unsafe {
+            s.device
+                .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
+        })
+        .expect("vertex pipeline");
+    let pipeline = made.pop().expect("one pipeline");
+    let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let rule = "VUID-vkCmdDraw-None-02721";
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    // (bound offset, vertex count, first vertex, refused)
+    for (offset, count, first, refused) in [
+        (0, 3, 0, false),
+        (0, 4, 0, true),
+        (0, 2, 1, false),
+        (0, 2, 2, true),
+        (20, 2, 0, false),
+        (20, 3, 0, true),
+    ] {
+        for unchecked in [false, true] {
+            if unchecked && !refused {
+                continue;
+            }
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+                .expect("bind");
+            set_viewport(&mut rec);
+            set_scissor(&mut rec);
+            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[offset])
+                .expect("vertex buffer");
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = unsafe { rec.cmd_draw_unchecked(count, 1, first, 0) };
+                s.messages.abort_on_error(false);
+                // The 1.3.239 layer does not check vertex fetches: tuff's error
+                // alone proves the rule (the command buffer is never submitted).
+                let said = s.messages.take();
+                assert!(said.is_empty(), "the layer said {said:?}");
+            } else if refused {
+                assert_eq!(vuid(unsafe { rec.cmd_draw(count, 1, first, 0) }), rule);
+            } else {
+                unsafe { rec.cmd_draw(count, 1, first, 0) }.expect("a draw inside the buffer");
+            }
+            drop(rec);
+        }
+    }
+    assert_silent(&s.messages);
+}

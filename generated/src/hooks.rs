@@ -3374,7 +3374,7 @@ fn pipelines_created(
 
 /// A pipeline's record before its layout is filled in.
 fn pipeline_record(
-    vertex_bindings: u64,
+    (vertex_bindings, vertex_reads): (u64, Vec<crate::retention::VertexRead>),
     samples: vk::SampleCountFlags,
     pass: Option<(Vrc<RenderPassRecord>, u32)>,
     dynamic: u32,
@@ -3388,6 +3388,7 @@ fn pipeline_record(
             sets: Vec::new(),
         }),
         vertex_bindings,
+        vertex_reads,
         samples,
         pass,
         dynamic,
@@ -3398,7 +3399,10 @@ fn pipeline_record(
 /// The vertex-buffer bindings (the first 64) that a graphics pipeline's vertex
 /// shader reads: those of the attributes at locations its entry point declares as
 /// inputs.
-fn vertex_bindings(device: &Device, info: &vk::GraphicsPipelineCreateInfo<'_>) -> u64 {
+fn vertex_bindings(
+    device: &Device,
+    info: &vk::GraphicsPipelineCreateInfo<'_>,
+) -> (u64, Vec<crate::retention::VertexRead>) {
     // SAFETY: the safe struct stores every array with its length, and a stage's
     // module and name from wrappers and C strings that outlive the create info.
     let stages = unsafe { crate::retention::raw_slice(info.p_stages, info.stage_count) };
@@ -3406,28 +3410,57 @@ fn vertex_bindings(device: &Device, info: &vk::GraphicsPipelineCreateInfo<'_>) -
         .iter()
         .find(|s| s.stage == vk::ShaderStageFlags::VERTEX)
     else {
-        return 0;
+        return (0, Vec::new());
     };
     let Some(interface) = device.live().shader_module(vertex.module) else {
-        return 0;
+        return (0, Vec::new());
     };
     // SAFETY: as above.
     let name = unsafe { std::ffi::CStr::from_ptr(vertex.p_name) }.to_bytes();
     // SAFETY: as above.
     let Some(input) = (unsafe { info.p_vertex_input_state.as_ref() }) else {
-        return 0;
+        return (0, Vec::new());
     };
     // SAFETY: as above.
-    let attributes = unsafe {
-        crate::retention::raw_slice(
-            input.p_vertex_attribute_descriptions,
-            input.vertex_attribute_description_count,
+    let (attributes, bindings) = unsafe {
+        (
+            crate::retention::raw_slice(
+                input.p_vertex_attribute_descriptions,
+                input.vertex_attribute_description_count,
+            ),
+            crate::retention::raw_slice(
+                input.p_vertex_binding_descriptions,
+                input.vertex_binding_description_count,
+            ),
         )
     };
-    attributes
+    let read: Vec<_> = attributes
         .iter()
-        .filter(|a| a.binding < 64 && interface.reads_vertex_location(name, a.location))
-        .fold(0, |mask, a| mask | 1 << a.binding)
+        .filter(|a| interface.reads_vertex_location(name, a.location))
+        .collect();
+    let mask = read
+        .iter()
+        .filter(|a| a.binding < 64)
+        .fold(0, |mask, a| mask | 1 << a.binding);
+    // What each binding's read attributes reach, past the start of a vertex: an
+    // attribute of a format the registry does not describe reaches past any buffer.
+    let mut reads: Vec<crate::retention::VertexRead> = Vec::new();
+    for a in read {
+        let size = crate::formats::block(a.format, vk::ImageAspectFlags::COLOR)
+            .map_or(u64::MAX, |(bytes, _)| u64::from(bytes));
+        let end = u64::from(a.offset).saturating_add(size);
+        if let Some(r) = reads.iter_mut().find(|r| r.binding == a.binding) {
+            r.end = r.end.max(end);
+        } else if let Some(b) = bindings.iter().find(|b| b.binding == a.binding) {
+            reads.push(crate::retention::VertexRead {
+                binding: a.binding,
+                stride: b.stride,
+                instance: b.input_rate == vk::VertexInputRate::INSTANCE,
+                end,
+            });
+        }
+    }
+    (mask, reads)
 }
 
 /// [`pipelines_created`] for `vkCreateComputePipelines`.
@@ -3439,7 +3472,13 @@ pub(crate) fn compute_pipelines_created(
     let records = create_infos.iter().map(|i| {
         (
             i.as_raw().layout,
-            pipeline_record(0, vk::SampleCountFlags::empty(), None, 0, None),
+            pipeline_record(
+                (0, Vec::new()),
+                vk::SampleCountFlags::empty(),
+                None,
+                0,
+                None,
+            ),
         )
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, records);
@@ -3535,16 +3574,77 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
 pub(crate) fn cmd_bind_vertex_buffers2_done<S: State>(
     recorder: &mut Recorder<'_, S>,
     first_binding: u32,
-    count: usize,
-    strides: &[vk::DeviceSize],
+    buffers: &[&Buffer],
+    offsets: &[vk::DeviceSize],
+    (sizes, strides): (&[vk::DeviceSize], &[vk::DeviceSize]),
 ) {
-    cmd_bind_vertex_buffers_done(recorder, first_binding, count);
+    cmd_bind_vertex_buffers_done(recorder, first_binding, buffers, offsets, (sizes, strides));
     if !strides.is_empty() {
         dynamic_state_set(
             recorder,
             crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE),
         );
     }
+}
+
+/// The vertices and instances a direct draw fetches: (first vertex, vertex count,
+/// first instance, instance count, the rule they break past a vertex buffer).
+pub(crate) type Vertices = Option<(u32, u32, u32, u32, &'static str)>;
+
+/// A draw: a graphics pipeline and its sets and vertex buffers bound
+/// ([`bound_pipeline_checks`]), the state it draws with ([`draw_state_checks`]),
+/// and for a direct draw, the vertices it fetches inside the bound vertex buffers.
+pub(crate) fn draw_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline_vuid: &'static str,
+    sets_vuid: &'static str,
+    vertex_vuid: &'static str,
+    vertices: Vertices,
+    rules: &DrawRules,
+) -> Result<()> {
+    bound_pipeline_checks(
+        recorder,
+        vk::PipelineBindPoint::GRAPHICS,
+        pipeline_vuid,
+        sets_vuid,
+        Some(vertex_vuid),
+    )?;
+    draw_state_checks(recorder, rules)?;
+    let (Some((first_vertex, vertex_count, first_instance, instance_count, vuid)), Some(pipeline)) =
+        (vertices, &recorder.bound[0].pipeline)
+    else {
+        return Ok(());
+    };
+    let bound = &recorder.bound[0];
+    let dynamic_stride = pipeline.dynamic
+        & crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE)
+        != 0;
+    for read in &pipeline.vertex_reads {
+        let (first, count) = if read.instance {
+            (first_instance, instance_count)
+        } else {
+            (first_vertex, vertex_count)
+        };
+        if count == 0 {
+            continue;
+        }
+        let Some(Some(range)) = bound.vertex_ranges.get(read.binding as usize) else {
+            continue;
+        };
+        let stride = match (dynamic_stride, range.stride) {
+            (true, Some(stride)) => stride,
+            _ => u64::from(read.stride),
+        };
+        let last = u64::from(first) + u64::from(count) - 1;
+        let needed = last.saturating_mul(stride).saturating_add(read.end);
+        if needed > range.bytes {
+            refuse(
+                vuid,
+                format!("the draw fetches {needed} bytes from the vertex buffer bound at binding {}, which holds {} past its offset", read.binding, range.bytes),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// A dynamic state setting command: the states of `bits` are set.
@@ -3858,11 +3958,7 @@ pub(crate) fn bound_pipeline_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: Option<&'static str>,
-    draw: Option<&DrawRules>,
 ) -> Result<()> {
-    if let Some(rules) = draw {
-        draw_state_checks(recorder, rules)?;
-    }
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
     };
@@ -3905,12 +4001,39 @@ pub(crate) fn bound_pipeline_checks<S: State>(
 pub(crate) fn cmd_bind_vertex_buffers_done<S: State>(
     recorder: &mut Recorder<'_, S>,
     first_binding: u32,
-    count: usize,
+    buffers: &[&Buffer],
+    offsets: &[vk::DeviceSize],
+    (sizes, strides): (&[vk::DeviceSize], &[vk::DeviceSize]),
 ) {
-    for binding in (first_binding as usize)..(first_binding as usize).saturating_add(count) {
+    let ranges: SmallVec<[_; 4]> = {
+        let live = recorder.device().live();
+        buffers
+            .iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let size = live.buffer(b.raw()).map_or(0, |r| r.size);
+                let offset = offsets.get(i).copied().unwrap_or(0);
+                let bytes = match sizes.get(i) {
+                    Some(&s) if s != vk::WHOLE_SIZE => s,
+                    _ => size.saturating_sub(offset),
+                };
+                crate::recorder::VertexRange {
+                    bytes,
+                    stride: strides.get(i).copied(),
+                }
+            })
+            .collect()
+    };
+    let bound = &mut recorder.bound[0];
+    for (i, range) in ranges.into_iter().enumerate() {
+        let binding = first_binding as usize + i;
         if binding < 64 {
-            recorder.bound[0].vertex |= 1 << binding;
+            bound.vertex |= 1 << binding;
         }
+        if bound.vertex_ranges.len() <= binding {
+            bound.vertex_ranges.resize(binding + 1, None);
+        }
+        bound.vertex_ranges[binding] = Some(range);
     }
 }
 
@@ -4017,14 +4140,7 @@ pub(crate) fn indexed_draw_checks<S: State>(
     range: Option<(u32, u32, &'static str)>,
     draw: &DrawRules,
 ) -> Result<()> {
-    bound_pipeline_checks(
-        recorder,
-        vk::PipelineBindPoint::GRAPHICS,
-        pipeline_vuid,
-        sets_vuid,
-        Some(vertex_vuid),
-        Some(draw),
-    )?;
+    draw_checks(recorder, pipeline_vuid, sets_vuid, vertex_vuid, None, draw)?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
         return refuse(bound_vuid, "no index buffer is bound".into());
     };

@@ -63,6 +63,17 @@ pub(crate) struct Bound {
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
     pub vertex: u64,
+    /// Each binding's bound vertex buffer range, by binding.
+    pub vertex_ranges: Vec<Option<VertexRange>>,
+}
+
+/// The range of a bound vertex buffer.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct VertexRange {
+    /// The bytes past the bound offset (the bound size, if one was given).
+    pub bytes: u64,
+    /// The stride bound with it (`vkCmdBindVertexBuffers2`), if any.
+    pub stride: Option<u64>,
 }
 
 impl Bound {

@@ -407,6 +407,9 @@ pub(crate) struct PipelineRecord {
     /// The vertex-buffer bindings (the first 64) its vertex shader reads, one bit
     /// each.
     pub vertex_bindings: u64,
+    /// For each vertex binding its vertex shader reads: the stride, rate and how far
+    /// past a vertex's start the read attributes reach.
+    pub vertex_reads: Vec<VertexRead>,
     /// Its rasterization sample count (empty for a compute pipeline).
     pub samples: vk::SampleCountFlags,
     /// The render pass it was created for, with the subpass (none for a compute
@@ -417,6 +420,19 @@ pub(crate) struct PipelineRecord {
     /// For a graphics pipeline made for dynamic rendering, the view mask and
     /// attachment formats its chained `VkPipelineRenderingCreateInfo` gives.
     pub rendering: Option<Vrc<RenderingFormats>>,
+}
+
+/// A vertex binding a pipeline's vertex shader reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct VertexRead {
+    /// The binding.
+    pub binding: u32,
+    /// Its stride (unless the pipeline has it dynamic).
+    pub stride: u32,
+    /// Whether it advances per instance rather than per vertex.
+    pub instance: bool,
+    /// How many bytes past a vertex's start its read attributes reach.
+    pub end: u64,
 }
 
 /// The view mask and attachment formats of dynamic rendering: those a pipeline was

@@ -133,7 +133,7 @@ const fn unsafe_call(
 const FENCE: &str =
     "checks the fence is unsignalled and not in use by a queue operation that may still be executing";
 const CBS: &str = "checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions";
-const SECONDARY: &str = "checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state";
+const SECONDARY: &str = "checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state, and the layer warns at that execution already";
 const UNPROVEN_POOL_FAMILY: &str = "checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family";
 const UNPROVEN_PROTECTED_BUFFERS: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation, against the batch's VkProtectedSubmitInfo), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected, and a protected batch is refused for its queue first";
 const UNPROVEN_OTHER_QUEUE_EVENTS: &str = "checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue";
@@ -352,6 +352,9 @@ const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every bu
 const PASS_COMPATIBLE: &str = "checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one)";
 const RENDERING_FORMATS: &str = "checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), the view mask and attachment formats the bound pipeline was made for (its chained VkPipelineRenderingCreateInfo, recorded at its creation) against the instance's (its views' recorded formats)";
 const NO_VIEW_FORMATS: &str = "checks, in dynamic rendering (begun in the recording, or inherited by a continuing secondary), that the bound pipeline was made for no format (UNDEFINED) where the instance's attachment has no view (the 1.3.239 layer does not check it: proven by the error alone)";
+const VERTEX_WRAPPERS: &str =
+    "vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE";
+const VERTEX_RANGE: &str = "checks the vertices and instances a direct draw fetches, by the bound pipeline's vertex bindings (stride, rate, and the end of the attributes its vertex shader reads, recorded at its creation), lie inside the range of each bound vertex buffer (its recorded size past the bound offset, or the bound size); the 1.3.239 layer does not check it: proven by the error alone";
 const DYNAMIC_SET: &str = "checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound";
 const PIPELINE_BOUND: &str =
     "checks a pipeline is bound at the command's bind point, which the recorder tracks";
@@ -370,6 +373,65 @@ const INDEX_RANGE: &str = "checks the indices the draw reads lie inside the boun
 const RANGE: &str = "checks the offsets and sizes against the buffer's size, kept from its creation, and their alignment";
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
+
+/// The `DrawRules` of a draw command, as the Rust expression its hooks take.
+macro_rules! draw_rules {
+    ($command:literal) => {
+        concat!(
+            "&crate::hooks::DrawRules { render_pass: \"VUID-",
+            $command,
+            "-renderPass-02684\", ",
+            "subpass: \"VUID-",
+            $command,
+            "-subpass-02685\", ",
+            "dynamic_set: \"VUID-",
+            $command,
+            "-commandBuffer-02701\", ",
+            "static_unset: \"VUID-",
+            $command,
+            "-None-02859\", ",
+            "named: [(crate::hooks::NAMED_STATES[0], \"VUID-",
+            $command,
+            "-primitiveTopology-03420\"), ",
+            "(crate::hooks::NAMED_STATES[1], \"VUID-",
+            $command,
+            "-pStrides-04884\"), ",
+            "(crate::hooks::NAMED_STATES[2], \"VUID-",
+            $command,
+            "-None-04876\"), ",
+            "(crate::hooks::NAMED_STATES[3], \"VUID-",
+            $command,
+            "-None-04877\"), ",
+            "(crate::hooks::NAMED_STATES[4], \"VUID-",
+            $command,
+            "-None-04879\")], ",
+            "rendering: [\"VUID-",
+            $command,
+            "-viewMask-06178\", ",
+            "\"VUID-",
+            $command,
+            "-colorAttachmentCount-06179\", ",
+            "\"VUID-",
+            $command,
+            "-colorAttachmentCount-06180\", ",
+            "\"VUID-",
+            $command,
+            "-colorAttachmentCount-07616\", ",
+            "\"VUID-",
+            $command,
+            "-pDepthAttachment-06181\", ",
+            "\"VUID-",
+            $command,
+            "-pDepthAttachment-07617\", ",
+            "\"VUID-",
+            $command,
+            "-pStencilAttachment-06182\", ",
+            "\"VUID-",
+            $command,
+            "-pStencilAttachment-07618\"] }"
+        )
+    };
+}
 
 /// A draw or dispatch: a pipeline bound at its bind point, and a set bound at every
 /// set number of its layout; for a draw, a vertex buffer bound at every binding its
@@ -390,7 +452,6 @@ macro_rules! bound {
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
                     "None",
-                    "None",
                 ],
             ),
             settles: &[
@@ -403,7 +464,7 @@ macro_rules! bound {
             ..NONE
         }
     };
-    ($command:literal, GRAPHICS, $sets:expr) => {
+    ($command:literal, GRAPHICS, $sets:expr, $vertices:literal, [$($extra:expr),* $(,)?]) => {
         Special {
             command: $command,
             after: call(
@@ -411,75 +472,20 @@ macro_rules! bound {
                 &["self", "vk::PipelineBindPoint::GRAPHICS"],
             ),
             check: call(
-                "hooks::bound_pipeline_checks",
+                "hooks::draw_checks",
                 &[
                     "self",
-                    "vk::PipelineBindPoint::GRAPHICS",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    concat!("Some(\"VUID-", $command, "-None-04007\")"),
-                    concat!(
-                        "Some(",
-                        concat!(
-                            "&crate::hooks::DrawRules { render_pass: \"VUID-",
-                            $command,
-                            "-renderPass-02684\", ",
-                            "subpass: \"VUID-",
-                            $command,
-                            "-subpass-02685\", ",
-                            "dynamic_set: \"VUID-",
-                            $command,
-                            "-commandBuffer-02701\", ",
-                            "static_unset: \"VUID-",
-                            $command,
-                            "-None-02859\", ",
-                            "named: [(crate::hooks::NAMED_STATES[0], \"VUID-",
-                            $command,
-                            "-primitiveTopology-03420\"), ",
-                            "(crate::hooks::NAMED_STATES[1], \"VUID-",
-                            $command,
-                            "-pStrides-04884\"), ",
-                            "(crate::hooks::NAMED_STATES[2], \"VUID-",
-                            $command,
-                            "-None-04876\"), ",
-                            "(crate::hooks::NAMED_STATES[3], \"VUID-",
-                            $command,
-                            "-None-04877\"), ",
-                            "(crate::hooks::NAMED_STATES[4], \"VUID-",
-                            $command,
-                            "-None-04879\")], ",
-                            "rendering: [\"VUID-",
-                            $command,
-                            "-viewMask-06178\", ",
-                            "\"VUID-",
-                            $command,
-                            "-colorAttachmentCount-06179\", ",
-                            "\"VUID-",
-                            $command,
-                            "-colorAttachmentCount-06180\", ",
-                            "\"VUID-",
-                            $command,
-                            "-colorAttachmentCount-07616\", ",
-                            "\"VUID-",
-                            $command,
-                            "-pDepthAttachment-06181\", ",
-                            "\"VUID-",
-                            $command,
-                            "-pDepthAttachment-07617\", ",
-                            "\"VUID-",
-                            $command,
-                            "-pStencilAttachment-06182\", ",
-                            "\"VUID-",
-                            $command,
-                            "-pStencilAttachment-07618\"] }"
-                        ),
-                        ")"
-                    ),
+                    concat!("\"VUID-", $command, "-None-04007\""),
+                    $vertices,
+                    draw_rules!($command),
                 ],
             ),
             settles: with_draw_state!(
                 $command,
                 [
+                    $($extra,)*
                     (
                         concat!("VUID-", $command, "-None-02700"),
                         How::Dynamic(PIPELINE_BOUND),
@@ -515,25 +521,7 @@ macro_rules! indexed {
                     concat!("\"VUID-", $command, "-None-07312\""),
                     concat!("\"VUID-", $command, "-None-04007\""),
                     $range,
-                    concat!(
-                        "&crate::hooks::DrawRules { render_pass: \"VUID-", $command, "-renderPass-02684\", ",
-                        "subpass: \"VUID-", $command, "-subpass-02685\", ",
-                        "dynamic_set: \"VUID-", $command, "-commandBuffer-02701\", ",
-                        "static_unset: \"VUID-", $command, "-None-02859\", ",
-                        "named: [(crate::hooks::NAMED_STATES[0], \"VUID-", $command, "-primitiveTopology-03420\"), ",
-                        "(crate::hooks::NAMED_STATES[1], \"VUID-", $command, "-pStrides-04884\"), ",
-                        "(crate::hooks::NAMED_STATES[2], \"VUID-", $command, "-None-04876\"), ",
-                        "(crate::hooks::NAMED_STATES[3], \"VUID-", $command, "-None-04877\"), ",
-                        "(crate::hooks::NAMED_STATES[4], \"VUID-", $command, "-None-04879\")], ",
-                        "rendering: [\"VUID-", $command, "-viewMask-06178\", ",
-                        "\"VUID-", $command, "-colorAttachmentCount-06179\", ",
-                        "\"VUID-", $command, "-colorAttachmentCount-06180\", ",
-                        "\"VUID-", $command, "-colorAttachmentCount-07616\", ",
-                        "\"VUID-", $command, "-pDepthAttachment-06181\", ",
-                        "\"VUID-", $command, "-pDepthAttachment-07617\", ",
-                        "\"VUID-", $command, "-pStencilAttachment-06182\", ",
-                        "\"VUID-", $command, "-pStencilAttachment-07618\"] }"
-                    ),
+                    draw_rules!($command),
                 ],
             ),
             settles: with_draw_state!($command, [$($settles),*]),
@@ -557,6 +545,7 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-None-04876"), How::Dynamic(DYNAMIC_SET)),
             (concat!("VUID-", $command, "-None-04877"), How::Dynamic(DYNAMIC_SET)),
             (concat!("VUID-", $command, "-None-04879"), How::Dynamic(DYNAMIC_SET)),
+            (concat!("VUID-", $command, "-None-04008"), How::Static(VERTEX_WRAPPERS)),
             (concat!("VUID-", $command, "-viewMask-06178"), How::Dynamic(RENDERING_FORMATS)),
             (concat!("VUID-", $command, "-colorAttachmentCount-06179"), How::Dynamic(RENDERING_FORMATS)),
             (concat!("VUID-", $command, "-colorAttachmentCount-06180"), How::Dynamic(RENDERING_FORMATS)),
@@ -1091,7 +1080,7 @@ pub const SPECIALS: &[Special] = &[
         ),
         after: call(
             "hooks::cmd_bind_vertex_buffers_done",
-            &["self", "first_binding", "buffers.len()"],
+            &["self", "first_binding", "buffers", "offsets", "(&[], &[])"],
         ),
         settles: &[
             ("VUID-vkCmdBindVertexBuffers-pOffsets-00626", How::Dynamic(RANGE)),
@@ -1109,7 +1098,7 @@ pub const SPECIALS: &[Special] = &[
         ),
         after: call(
             "hooks::cmd_bind_vertex_buffers2_done",
-            &["self", "first_binding", "buffers.len()", "strides"],
+            &["self", "first_binding", "buffers", "offsets", "(sizes, strides)"],
         ),
         settles: &[
             ("VUID-vkCmdBindVertexBuffers2-pOffsets-03357", How::Dynamic(RANGE)),
@@ -2187,7 +2176,13 @@ pub const SPECIALS: &[Special] = &[
         ),
         ..NONE
     },
-    bound!("vkCmdDraw", GRAPHICS, How::Dynamic(SETS_BOUND)),
+    bound!(
+        "vkCmdDraw",
+        GRAPHICS,
+        How::Dynamic(SETS_BOUND),
+        "Some((first_vertex, vertex_count, first_instance, instance_count, \"VUID-vkCmdDraw-None-02721\"))",
+        [("VUID-vkCmdDraw-None-02721", How::Dynamic(VERTEX_RANGE))]
+    ),
     indexed!(
         "vkCmdDrawIndexed",
         "Some((index_count, first_index, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\"))",
@@ -2199,7 +2194,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
         ]
     ),
-    bound!("vkCmdDrawIndirect", GRAPHICS, How::Dynamic(SETS_BOUND)),
+    bound!("vkCmdDrawIndirect", GRAPHICS, How::Dynamic(SETS_BOUND), "None", []),
     indexed!(
         "vkCmdDrawIndexedIndirect",
         "None",
@@ -2210,7 +2205,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexedIndirect-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
-    bound!("vkCmdDrawIndirectCount", GRAPHICS, How::Dynamic(SETS_BOUND)),
+    bound!("vkCmdDrawIndirectCount", GRAPHICS, How::Dynamic(SETS_BOUND), "None", []),
     indexed!(
         "vkCmdDrawIndexedIndirectCount",
         "None",

@@ -3617,7 +3617,7 @@ The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10.
 
-- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state
+- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state, and the layer warns at that execution already
 - 1: checked by the safe methods in every build (each stage against the queue family's flags and the specification's table of supported stages), but no test breaks it: lavapipe's only queue family supports every stage
 - 1: checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue
 - 1: checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family

@@ -384,7 +384,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
             crate::hooks::cmd_bind_vertex_buffers_done(
                 self,
                 first_binding,
-                buffers.len(),
+                buffers,
+                offsets,
+                (&[], &[]),
             );
         }
         Ok(())
@@ -2607,7 +2609,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
             None,
-            None,
         )?;
         {
             let r = self
@@ -2700,7 +2701,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55 (exp
             vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
-            None,
             None,
         )?;
         {
@@ -3283,7 +3283,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3304,8 +3304,6 @@ The caller upholds these 44 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDraw-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDraw-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDraw-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
-- `VUID-vkCmdDraw-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDraw-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDraw-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDraw-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
@@ -3341,6 +3339,8 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDraw-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDraw-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDraw-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
+- `VUID-vkCmdDraw-None-02721`: dynamic (checks the vertices and instances a direct draw fetches, by the bound pipeline's vertex bindings (stride, rate, and the end of the attributes its vertex shader reads, recorded at its creation), lie inside the range of each bound vertex buffer (its recorded size past the bound offset, or the bound size); the 1.3.239 layer does not check it: proven by the error alone)
 - `VUID-vkCmdDraw-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDraw-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
@@ -3360,7 +3360,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 172 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 170 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3369,40 +3369,44 @@ Left to the caller (listed one by one in the crate's `validation.json`): 172 (ex
         first_vertex: u32,
         first_instance: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::draw_checks(
             self,
-            vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDraw-None-02700",
             "VUID-vkCmdDraw-None-02697",
-            Some("VUID-vkCmdDraw-None-04007"),
-            Some(
-                &crate::hooks::DrawRules {
-                    render_pass: "VUID-vkCmdDraw-renderPass-02684",
-                    subpass: "VUID-vkCmdDraw-subpass-02685",
-                    dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
-                    static_unset: "VUID-vkCmdDraw-None-02859",
-                    named: [
-                        (
-                            crate::hooks::NAMED_STATES[0],
-                            "VUID-vkCmdDraw-primitiveTopology-03420",
-                        ),
-                        (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
-                        (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
-                        (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
-                        (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
-                    ],
-                    rendering: [
-                        "VUID-vkCmdDraw-viewMask-06178",
-                        "VUID-vkCmdDraw-colorAttachmentCount-06179",
-                        "VUID-vkCmdDraw-colorAttachmentCount-06180",
-                        "VUID-vkCmdDraw-colorAttachmentCount-07616",
-                        "VUID-vkCmdDraw-pDepthAttachment-06181",
-                        "VUID-vkCmdDraw-pDepthAttachment-07617",
-                        "VUID-vkCmdDraw-pStencilAttachment-06182",
-                        "VUID-vkCmdDraw-pStencilAttachment-07618",
-                    ],
-                },
-            ),
+            "VUID-vkCmdDraw-None-04007",
+            Some((
+                first_vertex,
+                vertex_count,
+                first_instance,
+                instance_count,
+                "VUID-vkCmdDraw-None-02721",
+            )),
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDraw-renderPass-02684",
+                subpass: "VUID-vkCmdDraw-subpass-02685",
+                dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDraw-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDraw-primitiveTopology-03420",
+                    ),
+                    (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
+                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
+                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
+                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
+                ],
+                rendering: [
+                    "VUID-vkCmdDraw-viewMask-06178",
+                    "VUID-vkCmdDraw-colorAttachmentCount-06179",
+                    "VUID-vkCmdDraw-colorAttachmentCount-06180",
+                    "VUID-vkCmdDraw-colorAttachmentCount-07616",
+                    "VUID-vkCmdDraw-pDepthAttachment-06181",
+                    "VUID-vkCmdDraw-pDepthAttachment-07617",
+                    "VUID-vkCmdDraw-pStencilAttachment-06182",
+                    "VUID-vkCmdDraw-pStencilAttachment-07618",
+                ],
+            },
         )?;
         {
             let r = self.validate_cmd_draw();
@@ -3423,7 +3427,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 172 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3452,7 +3456,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3473,7 +3477,6 @@ The caller upholds these 44 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDrawIndexed-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDrawIndexed-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDrawIndexed-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndexed-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexed-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
@@ -3510,6 +3513,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexed-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexed-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndexed-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
 - `VUID-vkCmdDrawIndexed-None-07312`: dynamic (checks an index buffer is bound, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`: dynamic (checks the indices the draw reads lie inside the bound index buffer (whatever robustBufferAccess2 says, which is not tracked))
 - `VUID-vkCmdDrawIndexed-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -3531,7 +3535,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 172 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 171 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3602,7 +3606,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 172 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3633,7 +3637,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3654,7 +3658,6 @@ The caller upholds these 47 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDrawIndexedIndirect-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDrawIndexedIndirect-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndexedIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: If `robustBufferAccess2` is not enabled, (`indexSize` {times} (`firstIndex` + `indexCount`) + `offset`) must be less than or equal to the size of the bound index buffer, with `indexSize` being based on the type specified by `indexType`, where the index buffer, `indexType`, and `offset` are specified via `vkCmdBindIndexBuffer`
 - `VUID-vkCmdDrawIndexedIndirect-drawCount-00528`: If `drawCount` is greater than `1`, `stride` must be a multiple of `4` and must be greater than or equal to `sizeof`(`VkDrawIndexedIndirectCommand`)
@@ -3694,6 +3697,7 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndexedIndirect-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndexedIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndexedIndirect-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
@@ -3720,10 +3724,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 175.
+Left to the caller (listed one by one in the crate's `validation.json`): 174.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 174: explicit rule; the wrappers do not check it*/
+- 173: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3792,7 +3796,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 175.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3814,7 +3818,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3835,7 +3839,6 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDrawIndirect-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDrawIndirect-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDrawIndirect-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirect-drawCount-00476`: If `drawCount` is greater than `1`, `stride` must be a multiple of `4` and must be greater than or equal to `sizeof`(`VkDrawIndirectCommand`)
 - `VUID-vkCmdDrawIndirect-drawCount-00487`: If `drawCount` is equal to `1`, (`offset` + `sizeof`(VkDrawIndirectCommand)) must be less than or equal to the size of `buffer`
@@ -3874,6 +3877,7 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndirect-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
 - `VUID-vkCmdDrawIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndirect-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
@@ -3899,10 +3903,10 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 174.
+Left to the caller (listed one by one in the crate's `validation.json`): 173.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 173: explicit rule; the wrappers do not check it*/
+- 172: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -3911,52 +3915,41 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174.
         draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::draw_checks(
             self,
-            vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndirect-None-02700",
             "VUID-vkCmdDrawIndirect-None-02697",
-            Some("VUID-vkCmdDrawIndirect-None-04007"),
-            Some(
-                &crate::hooks::DrawRules {
-                    render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
-                    subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
-                    dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
-                    static_unset: "VUID-vkCmdDrawIndirect-None-02859",
-                    named: [
-                        (
-                            crate::hooks::NAMED_STATES[0],
-                            "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[1],
-                            "VUID-vkCmdDrawIndirect-pStrides-04884",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[2],
-                            "VUID-vkCmdDrawIndirect-None-04876",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[3],
-                            "VUID-vkCmdDrawIndirect-None-04877",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[4],
-                            "VUID-vkCmdDrawIndirect-None-04879",
-                        ),
-                    ],
-                    rendering: [
-                        "VUID-vkCmdDrawIndirect-viewMask-06178",
-                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06179",
-                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06180",
-                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-07616",
-                        "VUID-vkCmdDrawIndirect-pDepthAttachment-06181",
-                        "VUID-vkCmdDrawIndirect-pDepthAttachment-07617",
-                        "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
-                        "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
-                    ],
-                },
-            ),
+            "VUID-vkCmdDrawIndirect-None-04007",
+            None,
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
+                subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
+                dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDrawIndirect-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[1],
+                        "VUID-vkCmdDrawIndirect-pStrides-04884",
+                    ),
+                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDrawIndirect-None-04876"),
+                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDrawIndirect-None-04877"),
+                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDrawIndirect-None-04879"),
+                ],
+                rendering: [
+                    "VUID-vkCmdDrawIndirect-viewMask-06178",
+                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-06179",
+                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-06180",
+                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-07616",
+                    "VUID-vkCmdDrawIndirect-pDepthAttachment-06181",
+                    "VUID-vkCmdDrawIndirect-pDepthAttachment-07617",
+                    "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
+                    "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
+                ],
+            },
         )?;
         {
             let r = self.validate_cmd_draw_indirect(buffer, offset, draw_count);
@@ -3970,7 +3963,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

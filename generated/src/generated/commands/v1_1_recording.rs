@@ -70,7 +70,6 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63.
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
             None,
-            None,
         )?;
         {
             let r = self

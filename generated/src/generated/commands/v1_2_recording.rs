@@ -108,7 +108,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 51 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -129,7 +129,6 @@ The caller upholds these 51 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDrawIndexedIndirectCount-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
 - `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129`: (`countBufferOffset` + `sizeof`(uint32_t)) must be less than or equal to the size of `countBuffer`
@@ -173,6 +172,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndexedIndirectCount-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
@@ -202,7 +202,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 178 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 177 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -286,7 +286,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 178 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-None-04008`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -321,7 +321,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
 
 # Safety
 
-The caller upholds these 50 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -342,7 +342,6 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
 - `VUID-vkCmdDrawIndirectCount-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
 - `VUID-vkCmdDrawIndirectCount-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
-- `VUID-vkCmdDrawIndirectCount-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
 - `VUID-vkCmdDrawIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
 - `VUID-vkCmdDrawIndirectCount-countBufferOffset-04129`: (`countBufferOffset` + `sizeof`(uint32_t)) must be less than or equal to the size of `countBuffer`
@@ -385,6 +384,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirectCount-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirectCount-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
+- `VUID-vkCmdDrawIndirectCount-None-04008`: static (vertex buffers are bound as wrappers, which always hold valid handles, never VK_NULL_HANDLE)
 - `VUID-vkCmdDrawIndirectCount-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDrawIndirectCount-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDrawIndirectCount-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
@@ -413,7 +413,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 177 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 176 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -424,52 +424,50 @@ Left to the caller (listed one by one in the crate's `validation.json`): 177 (ex
         max_draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::draw_checks(
             self,
-            vk::PipelineBindPoint::GRAPHICS,
             "VUID-vkCmdDrawIndirectCount-None-02700",
             "VUID-vkCmdDrawIndirectCount-None-02697",
-            Some("VUID-vkCmdDrawIndirectCount-None-04007"),
-            Some(
-                &crate::hooks::DrawRules {
-                    render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
-                    subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
-                    dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
-                    static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
-                    named: [
-                        (
-                            crate::hooks::NAMED_STATES[0],
-                            "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[1],
-                            "VUID-vkCmdDrawIndirectCount-pStrides-04884",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[2],
-                            "VUID-vkCmdDrawIndirectCount-None-04876",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[3],
-                            "VUID-vkCmdDrawIndirectCount-None-04877",
-                        ),
-                        (
-                            crate::hooks::NAMED_STATES[4],
-                            "VUID-vkCmdDrawIndirectCount-None-04879",
-                        ),
-                    ],
-                    rendering: [
-                        "VUID-vkCmdDrawIndirectCount-viewMask-06178",
-                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179",
-                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180",
-                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616",
-                        "VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181",
-                        "VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617",
-                        "VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182",
-                        "VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618",
-                    ],
-                },
-            ),
+            "VUID-vkCmdDrawIndirectCount-None-04007",
+            None,
+            &crate::hooks::DrawRules {
+                render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
+                subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
+                dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
+                static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
+                named: [
+                    (
+                        crate::hooks::NAMED_STATES[0],
+                        "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[1],
+                        "VUID-vkCmdDrawIndirectCount-pStrides-04884",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[2],
+                        "VUID-vkCmdDrawIndirectCount-None-04876",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[3],
+                        "VUID-vkCmdDrawIndirectCount-None-04877",
+                    ),
+                    (
+                        crate::hooks::NAMED_STATES[4],
+                        "VUID-vkCmdDrawIndirectCount-None-04879",
+                    ),
+                ],
+                rendering: [
+                    "VUID-vkCmdDrawIndirectCount-viewMask-06178",
+                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179",
+                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180",
+                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616",
+                    "VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181",
+                    "VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617",
+                    "VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182",
+                    "VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618",
+                ],
+            },
         )?;
         {
             let r = self
@@ -498,7 +496,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 177 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-None-04008`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,

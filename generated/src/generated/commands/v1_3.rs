@@ -402,7 +402,7 @@ The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.or
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
-- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state
+- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state, and the layer warns at that execution already
 - 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
 - 7: explicit rule; the wrappers do not check it*/

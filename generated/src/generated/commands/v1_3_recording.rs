@@ -974,8 +974,9 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
             crate::hooks::cmd_bind_vertex_buffers2_done(
                 self,
                 first_binding,
-                buffers.len(),
-                strides,
+                buffers,
+                offsets,
+                (sizes, strides),
             );
         }
         Ok(())
