@@ -3619,6 +3619,9 @@ pub(crate) fn draw_checks<S: State>(
     let dynamic_stride = pipeline.dynamic
         & crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE)
         != 0;
+    if pipeline.vertex_reads.is_empty() {
+        return Ok(());
+    }
     for read in &pipeline.vertex_reads {
         let (first, count) = if read.instance {
             (first_instance, instance_count)
@@ -3691,6 +3694,7 @@ pub(crate) const NAMED_STATES: [u32; 5] = {
 /// or subpass than the instance's, one of whose dynamic states is not set (or was
 /// set before a pipeline bound since had it static), or after a command that set a
 /// state the pipeline has static.
+#[inline]
 fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) -> Result<()> {
     let Some(pipeline) = &recorder.bound[0].pipeline else {
         return Ok(());
@@ -3891,6 +3895,7 @@ const DESCRIPTOR_LAYOUT: &str = "VUID-VkDescriptorImageInfo-imageLayout-00344";
 /// The image descriptors a draw or dispatch at `bound` may read: those of the sets
 /// bound at every set number of the bound pipeline's layout (which of them the
 /// shaders read is not known).
+#[inline]
 fn used_images(
     bound: &crate::recorder::Bound,
 ) -> impl Iterator<Item = &crate::retention::ImageDescriptor> {
@@ -3911,8 +3916,14 @@ fn descriptor_layout_checks<S: State>(
     recorder: &Recorder<'_, S>,
     bound: &crate::recorder::Bound,
 ) -> Result<()> {
+    if bound.images.iter().all(Option::is_none) {
+        return Ok(());
+    }
+    // The images of the render pass instance's attachments (a render pass's, not
+    // dynamic rendering's, whose layouts the recording follows).
+    let in_pass = recorder.instance.as_ref().is_some_and(|i| !i.dynamic);
     for d in used_images(bound) {
-        if recorder.pass_images.contains(&d.image) {
+        if in_pass && recorder.pass_images.contains(&d.image) {
             return refuse(
                 DESCRIPTOR_LAYOUT,
                 format!("an image descriptor names image 0x{:x}, an attachment of the render pass instance, whose layout in each subpass is not followed", d.image.as_raw()),
@@ -3937,11 +3948,12 @@ pub(crate) fn descriptor_layouts_used<S: State>(
     };
     let bound = &recorder.bound[i];
     let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
-    let lists: SmallVec<[crate::retention::SetImages; 4]> =
-        bound.images.iter().take(n).flatten().cloned().collect();
-    if lists.is_empty() {
+    // Most draws read no image descriptor: nothing to collect.
+    if !bound.images.iter().take(n).any(Option::is_some) {
         return;
     }
+    let lists: SmallVec<[crate::retention::SetImages; 4]> =
+        bound.images.iter().take(n).flatten().cloned().collect();
     let (live, layouts) = recorder.layouts_mut();
     for d in lists.iter().flat_map(|l| l.iter().map(|(_, d)| d)) {
         layouts.require(live, d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT);

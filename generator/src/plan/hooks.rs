@@ -374,11 +374,13 @@ const RANGE: &str = "checks the offsets and sizes against the buffer's size, kep
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
-/// The `DrawRules` of a draw command, as the Rust expression its hooks take.
+/// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
+/// reference to a constant, so a draw passes a pointer rather than building the
+/// struct.
 macro_rules! draw_rules {
     ($command:literal) => {
         concat!(
-            "&crate::hooks::DrawRules { render_pass: \"VUID-",
+            "{ const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules { render_pass: \"VUID-",
             $command,
             "-renderPass-02684\", ",
             "subpass: \"VUID-",
@@ -428,7 +430,7 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"] }"
+            "-pStencilAttachment-07618\"] }; &RULES }"
         )
     };
 }

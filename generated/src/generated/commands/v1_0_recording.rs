@@ -3381,31 +3381,34 @@ Left to the caller (listed one by one in the crate's `validation.json`): 170 (ex
                 instance_count,
                 "VUID-vkCmdDraw-None-02721",
             )),
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDraw-renderPass-02684",
-                subpass: "VUID-vkCmdDraw-subpass-02685",
-                dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDraw-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDraw-primitiveTopology-03420",
-                    ),
-                    (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
-                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
-                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
-                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
-                ],
-                rendering: [
-                    "VUID-vkCmdDraw-viewMask-06178",
-                    "VUID-vkCmdDraw-colorAttachmentCount-06179",
-                    "VUID-vkCmdDraw-colorAttachmentCount-06180",
-                    "VUID-vkCmdDraw-colorAttachmentCount-07616",
-                    "VUID-vkCmdDraw-pDepthAttachment-06181",
-                    "VUID-vkCmdDraw-pDepthAttachment-07617",
-                    "VUID-vkCmdDraw-pStencilAttachment-06182",
-                    "VUID-vkCmdDraw-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDraw-renderPass-02684",
+                    subpass: "VUID-vkCmdDraw-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDraw-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDraw-primitiveTopology-03420",
+                        ),
+                        (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
+                        (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
+                        (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
+                        (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDraw-viewMask-06178",
+                        "VUID-vkCmdDraw-colorAttachmentCount-06179",
+                        "VUID-vkCmdDraw-colorAttachmentCount-06180",
+                        "VUID-vkCmdDraw-colorAttachmentCount-07616",
+                        "VUID-vkCmdDraw-pDepthAttachment-06181",
+                        "VUID-vkCmdDraw-pDepthAttachment-07617",
+                        "VUID-vkCmdDraw-pStencilAttachment-06182",
+                        "VUID-vkCmdDraw-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {
@@ -3556,34 +3559,46 @@ Left to the caller (listed one by one in the crate's `validation.json`): 171 (ex
                 first_index,
                 "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825",
             )),
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDrawIndexed-renderPass-02684",
-                subpass: "VUID-vkCmdDrawIndexed-subpass-02685",
-                dynamic_set: "VUID-vkCmdDrawIndexed-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDrawIndexed-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDrawIndexed-primitiveTopology-03420",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[1],
-                        "VUID-vkCmdDrawIndexed-pStrides-04884",
-                    ),
-                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDrawIndexed-None-04876"),
-                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDrawIndexed-None-04877"),
-                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDrawIndexed-None-04879"),
-                ],
-                rendering: [
-                    "VUID-vkCmdDrawIndexed-viewMask-06178",
-                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-06179",
-                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-06180",
-                    "VUID-vkCmdDrawIndexed-colorAttachmentCount-07616",
-                    "VUID-vkCmdDrawIndexed-pDepthAttachment-06181",
-                    "VUID-vkCmdDrawIndexed-pDepthAttachment-07617",
-                    "VUID-vkCmdDrawIndexed-pStencilAttachment-06182",
-                    "VUID-vkCmdDrawIndexed-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndexed-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndexed-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndexed-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndexed-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndexed-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndexed-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndexed-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndexed-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndexed-None-04879",
+                        ),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndexed-viewMask-06178",
+                        "VUID-vkCmdDrawIndexed-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndexed-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndexed-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndexed-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndexed-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndexed-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndexed-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {
@@ -3743,43 +3758,46 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174.
             "VUID-vkCmdDrawIndexedIndirect-None-07312",
             "VUID-vkCmdDrawIndexedIndirect-None-04007",
             None,
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDrawIndexedIndirect-renderPass-02684",
-                subpass: "VUID-vkCmdDrawIndexedIndirect-subpass-02685",
-                dynamic_set: "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDrawIndexedIndirect-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[1],
-                        "VUID-vkCmdDrawIndexedIndirect-pStrides-04884",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[2],
-                        "VUID-vkCmdDrawIndexedIndirect-None-04876",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[3],
-                        "VUID-vkCmdDrawIndexedIndirect-None-04877",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[4],
-                        "VUID-vkCmdDrawIndexedIndirect-None-04879",
-                    ),
-                ],
-                rendering: [
-                    "VUID-vkCmdDrawIndexedIndirect-viewMask-06178",
-                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179",
-                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180",
-                    "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616",
-                    "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181",
-                    "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617",
-                    "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182",
-                    "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndexedIndirect-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndexedIndirect-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndexedIndirect-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndexedIndirect-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndexedIndirect-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndexedIndirect-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndexedIndirect-None-04879",
+                        ),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndexedIndirect-viewMask-06178",
+                        "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {
@@ -3921,34 +3939,46 @@ Left to the caller (listed one by one in the crate's `validation.json`): 173.
             "VUID-vkCmdDrawIndirect-None-02697",
             "VUID-vkCmdDrawIndirect-None-04007",
             None,
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
-                subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
-                dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDrawIndirect-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[1],
-                        "VUID-vkCmdDrawIndirect-pStrides-04884",
-                    ),
-                    (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDrawIndirect-None-04876"),
-                    (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDrawIndirect-None-04877"),
-                    (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDrawIndirect-None-04879"),
-                ],
-                rendering: [
-                    "VUID-vkCmdDrawIndirect-viewMask-06178",
-                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-06179",
-                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-06180",
-                    "VUID-vkCmdDrawIndirect-colorAttachmentCount-07616",
-                    "VUID-vkCmdDrawIndirect-pDepthAttachment-06181",
-                    "VUID-vkCmdDrawIndirect-pDepthAttachment-07617",
-                    "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
-                    "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndirect-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndirect-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndirect-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndirect-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndirect-None-04879",
+                        ),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndirect-viewMask-06178",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndirect-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndirect-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndirect-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {

@@ -220,43 +220,46 @@ Left to the caller (listed one by one in the crate's `validation.json`): 177 (ex
             "VUID-vkCmdDrawIndexedIndirectCount-None-07312",
             "VUID-vkCmdDrawIndexedIndirectCount-None-04007",
             None,
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684",
-                subpass: "VUID-vkCmdDrawIndexedIndirectCount-subpass-02685",
-                dynamic_set: "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDrawIndexedIndirectCount-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[1],
-                        "VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[2],
-                        "VUID-vkCmdDrawIndexedIndirectCount-None-04876",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[3],
-                        "VUID-vkCmdDrawIndexedIndirectCount-None-04877",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[4],
-                        "VUID-vkCmdDrawIndexedIndirectCount-None-04879",
-                    ),
-                ],
-                rendering: [
-                    "VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178",
-                    "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179",
-                    "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180",
-                    "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616",
-                    "VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181",
-                    "VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617",
-                    "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182",
-                    "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndexedIndirectCount-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndexedIndirectCount-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndexedIndirectCount-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndexedIndirectCount-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndexedIndirectCount-None-04879",
+                        ),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178",
+                        "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {
@@ -430,43 +433,46 @@ Left to the caller (listed one by one in the crate's `validation.json`): 176 (ex
             "VUID-vkCmdDrawIndirectCount-None-02697",
             "VUID-vkCmdDrawIndirectCount-None-04007",
             None,
-            &crate::hooks::DrawRules {
-                render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
-                subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
-                dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
-                static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
-                named: [
-                    (
-                        crate::hooks::NAMED_STATES[0],
-                        "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[1],
-                        "VUID-vkCmdDrawIndirectCount-pStrides-04884",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[2],
-                        "VUID-vkCmdDrawIndirectCount-None-04876",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[3],
-                        "VUID-vkCmdDrawIndirectCount-None-04877",
-                    ),
-                    (
-                        crate::hooks::NAMED_STATES[4],
-                        "VUID-vkCmdDrawIndirectCount-None-04879",
-                    ),
-                ],
-                rendering: [
-                    "VUID-vkCmdDrawIndirectCount-viewMask-06178",
-                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179",
-                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180",
-                    "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616",
-                    "VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181",
-                    "VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617",
-                    "VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182",
-                    "VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618",
-                ],
+            {
+                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                    render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
+                    subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
+                    dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
+                    static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
+                    named: [
+                        (
+                            crate::hooks::NAMED_STATES[0],
+                            "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[1],
+                            "VUID-vkCmdDrawIndirectCount-pStrides-04884",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[2],
+                            "VUID-vkCmdDrawIndirectCount-None-04876",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[3],
+                            "VUID-vkCmdDrawIndirectCount-None-04877",
+                        ),
+                        (
+                            crate::hooks::NAMED_STATES[4],
+                            "VUID-vkCmdDrawIndirectCount-None-04879",
+                        ),
+                    ],
+                    rendering: [
+                        "VUID-vkCmdDrawIndirectCount-viewMask-06178",
+                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179",
+                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180",
+                        "VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616",
+                        "VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181",
+                        "VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617",
+                        "VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182",
+                        "VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618",
+                    ],
+                };
+                &RULES
             },
         )?;
         {
