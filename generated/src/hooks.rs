@@ -131,18 +131,6 @@ pub(crate) fn queue_submit_checks(
         check_wait_stages(queue, i, b)?;
         check_pools(queue, i, b)?;
     }
-    submission::check_events(
-        queue.parent(),
-        queue.raw(),
-        &submit_command_buffers(submits),
-        "VUID-vkQueueSubmit-pCommandBuffers-00065",
-    )?;
-    submission::check_binary_ops(
-        queue.parent(),
-        queue.raw(),
-        &submit_semaphore_ops(submits),
-        &submission::SUBMIT_BINARY,
-    )?;
     for b in submits {
         // SAFETY: `b` is a safe struct.
         unsafe {
@@ -157,12 +145,7 @@ pub(crate) fn queue_submit_checks(
             )
         }?;
     }
-    submission::check_timeline_values(
-        queue.parent().live(),
-        &submission::submit_timeline_ops(queue.parent().live(), submits),
-        timeline_difference(queue.parent()),
-        submission::SUBMIT_TIMELINE_VALUES,
-    )
+    Ok(())
 }
 
 /// Refuses a batch whose command buffers come from a pool of another queue family
@@ -222,11 +205,30 @@ pub(crate) fn queue_submit_gate<'q>(
     queue: &'q Queue,
     submits: &[SubmitInfo<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
-    submission::sets_gate(
-        queue.parent(),
-        &submit_command_buffers(submits),
-        submission::SUBMIT.executable,
-    )
+    let device = queue.parent();
+    let cbs = submit_command_buffers(submits);
+    let gate = submission::sets_gate(device, &cbs, submission::SUBMIT.executable)?;
+    // What other queues' submissions use and leave (events, semaphores) is checked
+    // under the gate, which every submission holds until it has recorded its own.
+    submission::check_events(
+        device,
+        queue.raw(),
+        &cbs,
+        "VUID-vkQueueSubmit-pCommandBuffers-00065",
+    )?;
+    submission::check_binary_ops(
+        device,
+        queue.raw(),
+        &submit_semaphore_ops(submits),
+        &submission::SUBMIT_BINARY,
+    )?;
+    submission::check_timeline_values(
+        device.live(),
+        &submission::submit_timeline_ops(device.live(), submits),
+        timeline_difference(device),
+        submission::SUBMIT_TIMELINE_VALUES,
+    )?;
+    Ok(gate)
 }
 
 /// As [`queue_submit_gate`], for `vkQueueSubmit2`.
@@ -234,11 +236,19 @@ pub(crate) fn queue_submit2_gate<'q>(
     queue: &'q Queue,
     submits: &[SubmitInfo2<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
-    submission::sets_gate(
-        queue.parent(),
+    let device = queue.parent();
+    let gate = submission::sets_gate(
+        device,
         &submit2_command_buffers(submits),
         submission::SUBMIT2.executable,
-    )
+    )?;
+    submission::check_binary_ops(
+        device,
+        queue.raw(),
+        &submit2_semaphore_ops(submits),
+        &submission::SUBMIT2_BINARY,
+    )?;
+    Ok(gate)
 }
 
 /// The device remembers the buffer of a new buffer view.
@@ -264,12 +274,6 @@ pub(crate) fn queue_submit2_checks(
         fence,
         &submit2_command_buffers(submits),
         &submission::SUBMIT2,
-    )?;
-    submission::check_binary_ops(
-        queue.parent(),
-        queue.raw(),
-        &submit2_semaphore_ops(submits),
-        &submission::SUBMIT2_BINARY,
     )
 }
 
@@ -4037,13 +4041,17 @@ pub(crate) fn cmd_bind_vertex_buffers_done<S: State>(
             .collect()
     };
     let bound = &mut recorder.bound[0];
-    for (i, range) in ranges.into_iter().enumerate() {
+    for (i, mut range) in ranges.into_iter().enumerate() {
         let binding = first_binding as usize + i;
         if binding < 64 {
             bound.vertex |= 1 << binding;
         }
         if bound.vertex_ranges.len() <= binding {
             bound.vertex_ranges.resize(binding + 1, None);
+        }
+        // A bind without strides leaves the binding's dynamic stride as it was.
+        if range.stride.is_none() {
+            range.stride = bound.vertex_ranges[binding].and_then(|r| r.stride);
         }
         bound.vertex_ranges[binding] = Some(range);
     }

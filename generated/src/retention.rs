@@ -193,9 +193,11 @@ pub(crate) struct Live {
     /// The last generation given to a descriptor set: a device-wide count, so a set
     /// handle that a pool reuses never meets a generation of the set it was before.
     set_generations: std::sync::atomic::AtomicU64,
-    /// Held by every descriptor update and by every submission from its checks to its
-    /// bookkeeping: the host access to a set is externally synchronized, and a set
-    /// is never updated between a submission's check of it and the submission.
+    /// Held by every descriptor update, and by every queue submission from its
+    /// checks of what other submissions use and leave (descriptor sets, events,
+    /// semaphores) to its record of its own: the host access to a set is externally
+    /// synchronized, and no update or submission on another queue runs between a
+    /// submission's checks and its bookkeeping.
     descriptor_gate: Vutex<()>,
     /// The buffer of each live buffer view.
     buffer_views: Vutex<HashMap<u64, vk::Buffer>>,
@@ -215,8 +217,9 @@ type EventSubmissions = Vec<(vk::Queue, Vweak<crate::submission::Submission>)>;
 #[derive(Default)]
 struct SetUse {
     /// Changed by every update that invalidates the command buffers that bound the
-    /// set (an update of a binding without `UPDATE_AFTER_BIND`): a command buffer
-    /// remembers the generation it bound, and a different one refuses its submission.
+    /// set (of a binding without `UPDATE_AFTER_BIND`, of image descriptors, or by a
+    /// template): a command buffer remembers the generation it bound, and a
+    /// different one refuses its submission.
     generation: u64,
     /// The submissions of command buffers that bound the set, weakly; those known
     /// complete are pruned as new ones come.
@@ -1787,6 +1790,30 @@ impl Live {
         Ok(())
     }
 
+    /// Where element `element` of binding `binding` of a set of `layout` lands: an
+    /// update runs on into the consecutive bindings (empty ones skipped), so the
+    /// slot it names is the binding and element it reaches. Without a record of the
+    /// layout, or past its bindings, the slot stays as named.
+    fn landing(layout: Option<&SetLayoutRecord>, binding: u32, element: u32) -> (u32, u32) {
+        let Some(layout) = layout else {
+            return (binding, element);
+        };
+        let Ok(first) = layout
+            .bindings
+            .binary_search_by_key(&binding, |b| b.binding)
+        else {
+            return (binding, element);
+        };
+        let mut e = u64::from(element);
+        for b in layout.bindings[first..].iter().filter(|b| b.count > 0) {
+            if e < u64::from(b.count) {
+                return (b.binding, e as u32);
+            }
+            e -= u64::from(b.count);
+        }
+        (binding, element)
+    }
+
     /// Keeps what `writes` put into their sets, and copies what `copies` copy.
     ///
     /// # Safety
@@ -1800,10 +1827,18 @@ impl Live {
         copies: &[vk::CopyDescriptorSet<'_>],
     ) {
         for w in writes {
+            let layout = self.set_layout_of(w.dst_set);
+            let land = |i: usize| {
+                Self::landing(
+                    layout.as_deref(),
+                    w.dst_binding,
+                    w.dst_array_element.saturating_add(i as u32),
+                )
+            };
             let mut slots = Vec::with_capacity(w.descriptor_count as usize);
             let images = (0..w.descriptor_count as usize)
                 .map(|i| {
-                    let slot = (w.dst_binding, w.dst_array_element + i as u32);
+                    let slot = land(i);
                     // SAFETY: as for the readers below.
                     let named = names_image_layout(w.descriptor_type)
                         .then(|| self.image_descriptor(&unsafe { read(w.p_image_info, i) }))
@@ -1822,40 +1857,51 @@ impl Live {
                     || unsafe { read(w.p_texel_buffer_view, i) },
                 );
                 for (k, o) in objects.into_iter().enumerate() {
-                    slots.push(((w.dst_binding, w.dst_array_element + i as u32, k as u8), o));
+                    let (binding, element) = land(i);
+                    slots.push(((binding, element, k as u8), o));
                 }
                 if is_dynamic(w.descriptor_type) {
                     // SAFETY: as for the reader above.
                     let b = unsafe { read(w.p_buffer_info, i) };
-                    self.dynamic_written(
-                        w.dst_set,
-                        (w.dst_binding, w.dst_array_element + i as u32),
-                        b,
-                    );
+                    self.dynamic_written(w.dst_set, land(i), b);
                 }
             }
             self.write(w.dst_set, slots);
         }
         for c in copies {
+            let (src_layout, dst_layout) =
+                (self.set_layout_of(c.src_set), self.set_layout_of(c.dst_set));
+            let from_slot = |i: u32| {
+                Self::landing(
+                    src_layout.as_deref(),
+                    c.src_binding,
+                    c.src_array_element.saturating_add(i),
+                )
+            };
+            let to_slot = |i: u32| {
+                Self::landing(
+                    dst_layout.as_deref(),
+                    c.dst_binding,
+                    c.dst_array_element.saturating_add(i),
+                )
+            };
             let mut slots = Vec::with_capacity(2 * c.descriptor_count as usize);
             {
                 let mut ranges = self.dynamic_ranges.lock();
                 let copied: Vec<((u32, u32), DynamicRange)> = (0..c.descriptor_count)
                     .filter_map(|i| {
-                        let from = (c.src_binding, c.src_array_element + i);
+                        let from = from_slot(i);
                         let r = ranges.get(&c.src_set.as_raw())?.get(&from)?;
-                        Some(((c.dst_binding, c.dst_array_element + i), *r))
+                        Some((to_slot(i), *r))
                     })
                     .collect();
                 if !copied.is_empty() {
                     ranges.entry(c.dst_set.as_raw()).or_default().extend(copied);
                 }
             }
-            let from: Vec<(u32, u32)> = (0..c.descriptor_count)
-                .map(|i| (c.src_binding, c.src_array_element + i))
-                .collect();
+            let from: Vec<(u32, u32)> = (0..c.descriptor_count).map(from_slot).collect();
             let images = (0..c.descriptor_count)
-                .map(|i| (c.dst_binding, c.dst_array_element + i))
+                .map(to_slot)
                 .zip(self.images_at(c.src_set, &from))
                 .collect();
             self.images_written(c.dst_set, images);
@@ -1864,9 +1910,11 @@ impl Live {
                 let src = sets.get(&c.src_set.as_raw());
                 for i in 0..c.descriptor_count {
                     for k in 0..2u8 {
-                        let from = (c.src_binding, c.src_array_element + i, k);
+                        let (b, e) = from_slot(i);
+                        let from = (b, e, k);
                         let object = src.and_then(|s| s.get(&from)).cloned();
-                        slots.push(((c.dst_binding, c.dst_array_element + i, k), object));
+                        let (b, e) = to_slot(i);
+                        slots.push(((b, e, k), object));
                     }
                 }
             }
@@ -1888,6 +1936,7 @@ impl Live {
     ) {
         let mut slots = Vec::new();
         let mut images = Vec::new();
+        let layout = self.set_layout_of(set);
         for e in entries {
             if e.descriptor_type == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
                 continue;
@@ -1902,7 +1951,12 @@ impl Live {
                         })
                     })
                     .flatten();
-                images.push(((e.dst_binding, e.dst_array_element + i as u32), named));
+                let slot = Self::landing(
+                    layout.as_deref(),
+                    e.dst_binding,
+                    e.dst_array_element.saturating_add(i as u32),
+                );
+                images.push((slot, named));
                 // SAFETY (each reader): the caller vouches that the entry's descriptors
                 // lie at its offset and stride, and only the kind the type selects is
                 // read. Template data need not be aligned, so it is read unaligned.
@@ -1913,12 +1967,12 @@ impl Live {
                     || unsafe { at.cast::<vk::BufferView>().read_unaligned() },
                 );
                 for (k, o) in objects.into_iter().enumerate() {
-                    slots.push(((e.dst_binding, e.dst_array_element + i as u32, k as u8), o));
+                    slots.push(((slot.0, slot.1, k as u8), o));
                 }
                 if is_dynamic(e.descriptor_type) {
                     // SAFETY: as for the readers above.
                     let b = unsafe { at.cast::<vk::DescriptorBufferInfo>().read_unaligned() };
-                    self.dynamic_written(set, (e.dst_binding, e.dst_array_element + i as u32), b);
+                    self.dynamic_written(set, slot, b);
                 }
             }
         }

@@ -983,7 +983,7 @@ pub(crate) fn check_timeline_values(
             .clone()
             .filter(|(.., s)| *s)
             .map(|(_, v, _)| *v)
-            .fold(t.max_signal, u64::max);
+            .fold(t.max_signal.max(t.known), u64::max);
         if *signal && *value <= max_signal {
             return Err(refuse(
                 rules.0,

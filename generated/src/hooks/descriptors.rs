@@ -28,9 +28,11 @@ fn raw_copies<'s>(copies: &'s [CopyDescriptorSet<'_>]) -> &'s [vk::CopyDescripto
     unsafe { core::slice::from_raw_parts(copies.as_ptr().cast(), copies.len()) }
 }
 
-/// Refuses a write whose descriptor type selects an array that is not set, and a
-/// write or copy outside its sets' bindings: drivers index their descriptor arrays
-/// with the binding, array element and count.
+/// Refuses a write whose descriptor type selects an array that is not set, a write
+/// or copy outside its sets' bindings (drivers index their descriptor arrays with
+/// the binding, array element and count), a descriptor whose objects are not of
+/// the device or do not fit its type, and a copy whose sets differ in how they may
+/// be updated.
 pub(crate) fn update_descriptor_sets_checks(
     device: &Device,
     descriptor_writes: &[WriteDescriptorSet<'_>],
@@ -229,15 +231,18 @@ pub(crate) fn update_descriptor_sets_done(
     let copies = raw_copies(descriptor_copies);
     let writes = raw_writes(descriptor_writes);
     let live = device.live();
-    for (set, _, invalidates) in written_sets(live, writes, copies) {
-        if invalidates {
-            live.set_invalidated(set);
-        }
-    }
+    let written = written_sets(live, writes, copies);
     // SAFETY: the setters of the safe structs keep every array that is set as long as
     // its count, and `update_descriptor_sets_checks` refused a write whose type
     // selects an array that is not set.
     unsafe { live.write_sets(writes, copies) };
+    // After the contents: a recorder that binds the set and reads the new
+    // generation also reads the new image descriptors.
+    for (set, _, invalidates) in written {
+        if invalidates {
+            live.set_invalidated(set);
+        }
+    }
 }
 
 /// The layouts a sampled image or combined image sampler descriptor may name (the
@@ -360,6 +365,7 @@ fn check_descriptors(
                         live,
                         w.descriptor_type,
                         info,
+                        samples,
                         &format!("{at}.pImageInfo[{j}]"),
                     )?;
                 }
@@ -444,6 +450,7 @@ fn check_image_descriptor(
     live: &Live,
     ty: vk::DescriptorType,
     info: &vk::DescriptorImageInfo,
+    samples: bool,
     at: &str,
 ) -> Result<()> {
     use vk::DescriptorType as T;
@@ -486,7 +493,8 @@ fn check_image_descriptor(
             format!("{at}.imageView of a depth/stencil image must have the depth or the stencil aspect, not both ({:?})", view.aspect),
         )?;
     }
-    if ty == T::COMBINED_IMAGE_SAMPLER && aspects.contains(vk::ImageAspectFlags::PLANE_0) {
+    if ty == T::COMBINED_IMAGE_SAMPLER && samples && aspects.contains(vk::ImageAspectFlags::PLANE_0)
+    {
         let planes = vk::ImageAspectFlags::PLANE_0
             | vk::ImageAspectFlags::PLANE_1
             | vk::ImageAspectFlags::PLANE_2;
@@ -735,7 +743,12 @@ fn written_sets(
             };
             let (mut guarded, mut invalidates) = (false, false);
             for b in touched(&layout, first, element, count) {
-                guarded |= !b.flags.intersects(while_pending);
+                // An image descriptor's layout is checked where a recording reads
+                // it, which a pending submission did before the rewrite: rewriting
+                // one under it is refused even where the binding allows updates
+                // while pending.
+                guarded |= !b.flags.intersects(while_pending)
+                    || crate::retention::names_image_layout(b.ty);
                 // A recording follows the layouts of the image descriptors its sets
                 // held when it bound them: rewriting one leaves it invalid even in a
                 // binding updatable after bind.

@@ -185,7 +185,10 @@ mod tests {
             None
         )));
         assert!(!(shader.holds)(&rule("VUID-VkX-None-07288", "VkX", None)));
-        let ownership = &REVIEWED[2];
+        let ownership = REVIEWED
+            .iter()
+            .find(|c| c.name.starts_with("queue family ownership"))
+            .expect("the ownership class");
         assert!((ownership.holds)(&rule(
             "VUID-vkQueueSubmit-pSubmits-02808",
             "vkQueueSubmit",

@@ -2855,7 +2855,7 @@ The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.kh
 - `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkUpdateDescriptorSets-None-03047`: dynamic (checks the submissions of the command buffers that bound each set the update writes (recorded at each submission, dropped once known complete) when it rewrites a binding without UPDATE_AFTER_BIND or UPDATE_UNUSED_WHILE_PENDING; an update also leaves the command buffers that bound the set invalid, and what it replaces stays alive until those submissions complete)
+- `VUID-vkUpdateDescriptorSets-None-03047`: dynamic (checks the submissions of the command buffers that bound each set the update writes (recorded at each submission, dropped once known complete) when it rewrites a binding without UPDATE_AFTER_BIND or UPDATE_UNUSED_WHILE_PENDING, or one of image descriptors (whose layouts the submission checked); an update also leaves the command buffers that bound the set invalid, and what it replaces stays alive until those submissions complete)
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: static (every descriptor update and every submission holds the device's descriptor gate, so no two of them touch a set at once)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
