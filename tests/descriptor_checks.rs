@@ -1245,3 +1245,143 @@ fn image_descriptors_are_read_in_their_layouts() {
     );
     assert_silent(&s.messages);
 }
+
+/// A storage image of 4x4 RGBA8 with transfer-destination usage, its memory and a
+/// view of it.
+fn storage_image(s: &Setup) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    let d = &s.device;
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(U::STORAGE | U::TRANSFER_DST),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    let view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("view");
+    (image, memory, view)
+}
+
+/// A write that runs on from one binding into the next puts its descriptors where
+/// they land: a copy from the binding it reached carries them (and what keeps their
+/// objects alive) into the destination set, whose dispatch then reads the copied
+/// image in the layout the descriptor states.
+#[test]
+fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let (_first_image, _first_memory, first_view) = storage_image(&s);
+    let (second_image, _second_memory, second_view) = storage_image(&s);
+    let (output, _output_memory) = {
+        let buffer = d
+            .create_buffer(
+                &tuff::BufferCreateInfo::new()
+                    .size(16)
+                    .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
+            )
+            .expect("buffer");
+        let reqs = d.get_buffer_memory_requirements(&buffer).expect("reqs");
+        let memory = d
+            .allocate_memory(
+                &tuff::MemoryAllocateInfo::new()
+                    .allocation_size(reqs.size)
+                    .memory_type_index(
+                        s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                    ),
+            )
+            .expect("memory");
+        d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
+        (buffer, memory)
+    };
+    let reader = image_reader(&s, &first_view, &output);
+    // Two consecutive storage-image bindings; a write of two descriptors at binding
+    // 0 puts the second view at binding 1.
+    let b = |n: u32| {
+        tuff::DescriptorSetLayoutBinding::new()
+            .binding(n)
+            .descriptor_type(T::STORAGE_IMAGE)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::COMPUTE)
+    };
+    let bindings = [b(0), b(1)];
+    let layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: T::STORAGE_IMAGE,
+        descriptor_count: 2,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("pool");
+    let source = one_set(&s, &pool, &layout);
+    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let infos = [
+        tuff::DescriptorImageInfo::new(&sampler, &first_view).image_layout(L::GENERAL),
+        tuff::DescriptorImageInfo::new(&sampler, &second_view).image_layout(L::GENERAL),
+    ];
+    d.update_descriptor_sets(&[image_write(&source, 0, T::STORAGE_IMAGE, &infos)], &[])
+        .expect("a write running on into binding 1");
+    let copy = tuff::CopyDescriptorSet::new(&source, &reader.set)
+        .src_binding(1)
+        .dst_binding(0)
+        .descriptor_count(1);
+    d.update_descriptor_sets(&[], &[copy]).expect("copy");
+    // The reader's set now names the second image, which the recording leaves a
+    // transfer destination: the dispatch is refused for it.
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(
+        &mut rec,
+        &second_image,
+        L::UNDEFINED,
+        L::TRANSFER_DST_OPTIMAL,
+    );
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+        .expect("pipeline");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::COMPUTE,
+        &reader.layout,
+        0,
+        &[&reader.set],
+        &[],
+    )
+    .expect("set");
+    assert_eq!(
+        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        "VUID-VkDescriptorImageInfo-imageLayout-00344"
+    );
+    drop(rec);
+    assert_silent(&s.messages);
+}
