@@ -251,6 +251,47 @@ pub(crate) fn queue_submit2_gate<'q>(
     Ok(gate)
 }
 
+/// Takes the device's gate for `vkQueueBindSparse` and checks its binary semaphore
+/// operations again under it, so no submission on another queue changes their
+/// states between this check and the bookkeeping of the call.
+pub(crate) fn queue_bind_sparse_gate<'q>(
+    queue: &'q Queue,
+    bind_info: &[BindSparseInfo<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let gate = queue.parent().live().descriptor_gate();
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &bind_sparse_semaphore_ops(bind_info),
+        &submission::BIND_SPARSE_BINARY,
+    )?;
+    Ok(gate)
+}
+
+/// As [`queue_bind_sparse_gate`], for `vkQueuePresentKHR`'s waits.
+#[cfg(feature = "khr_swapchain")]
+pub(crate) fn queue_present_khr_gate<'q>(
+    queue: &'q Queue,
+    present_info: &PresentInfoKHR<'_>,
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let gate = queue.parent().live().descriptor_gate();
+    // SAFETY: the safe struct stores the array with its length.
+    let waits = unsafe {
+        crate::retention::raw_slice(
+            present_info.p_wait_semaphores,
+            present_info.wait_semaphore_count,
+        )
+    };
+    let ops: Vec<submission::SemOp> = waits.iter().map(|s| submission::SemOp::Wait(*s)).collect();
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &ops,
+        &submission::PRESENT_BINARY,
+    )?;
+    Ok(gate)
+}
+
 /// The device remembers the buffer of a new buffer view.
 pub(crate) fn buffer_view_created(
     device: &Device,

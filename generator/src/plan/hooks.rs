@@ -658,6 +658,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkQueueBindSparse",
         check: call("hooks::queue_bind_sparse_checks", &["self", "bind_info", "fence"]),
+        hold: call("hooks::queue_bind_sparse_gate", &["self", "bind_info"]),
         after: call("hooks::queue_bind_sparse_done", &["self", "bind_info", "fence"]),
         required: &["fence"],
         settles: &[
@@ -763,6 +764,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkQueuePresentKHR",
         check: call("hooks::queue_present_khr_checks", &["self", "present_info"]),
+        hold: call("hooks::queue_present_khr_gate", &["self", "present_info"]),
         before: call("hooks::queue_present_khr_before", &["self", "present_info"]),
         settles: &[
             ("VUID-vkQueuePresentKHR-pWaitSemaphores-03267", How::Dynamic(SEMAPHORE_TYPE)),

@@ -346,6 +346,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
             let r = self.validate_queue_present_khr(present_info);
             r?;
         }
+        let _held = crate::hooks::queue_present_khr_gate(self, present_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.queue_present_khr_unchecked(present_info) }

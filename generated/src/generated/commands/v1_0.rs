@@ -3558,6 +3558,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
             let r = self.validate_queue_bind_sparse(bind_info, fence);
             r?;
         }
+        let _held = crate::hooks::queue_bind_sparse_gate(self, bind_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
