@@ -640,25 +640,11 @@ fn descriptors_of_another_device_are_refused() {
     let other = setup(true);
     let o = objects(&s);
     let d2 = &other.device;
-    let (foreign_buffer, _memory) = {
-        let buffer = d2
-            .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(
-                vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
-            ))
-            .expect("buffer");
-        let reqs = d2.get_buffer_memory_requirements(&buffer).expect("reqs");
-        let memory = d2
-            .allocate_memory(
-                &tuff::MemoryAllocateInfo::new()
-                    .allocation_size(reqs.size)
-                    .memory_type_index(
-                        other.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                    ),
-            )
-            .expect("memory");
-        d2.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
-        (buffer, memory)
-    };
+    let (foreign_buffer, _memory) = pipelines::host_buffer(
+        &other,
+        256,
+        vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
+    );
     let foreign_view = unsafe {
         d2.create_buffer_view(
             &tuff::BufferViewCreateInfo::new(&foreign_buffer)
@@ -1086,58 +1072,9 @@ fn image_descriptors_are_read_in_their_layouts() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 4,
-                    height: 4,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(U::STORAGE | U::TRANSFER_DST),
-        )
-        .expect("image");
-    let _image_memory = s.bind_image(&image);
-    let view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("view");
-    let (output, _output_memory) = {
-        let buffer = d
-            .create_buffer(
-                &tuff::BufferCreateInfo::new()
-                    .size(16)
-                    .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
-            )
-            .expect("buffer");
-        let reqs = d.get_buffer_memory_requirements(&buffer).expect("reqs");
-        let memory = d
-            .allocate_memory(
-                &tuff::MemoryAllocateInfo::new()
-                    .allocation_size(reqs.size)
-                    .memory_type_index(
-                        s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                    ),
-            )
-            .expect("memory");
-        d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
-        (buffer, memory)
-    };
+    let (image, _image_memory, view) = storage_image(&s);
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let reader = image_reader(&s, &view, &output);
     let rule = "VUID-VkDescriptorImageInfo-imageLayout-00344";
     let fence = d
@@ -1295,27 +1232,8 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
     let d = &s.device;
     let (_first_image, _first_memory, first_view) = storage_image(&s);
     let (second_image, _second_memory, second_view) = storage_image(&s);
-    let (output, _output_memory) = {
-        let buffer = d
-            .create_buffer(
-                &tuff::BufferCreateInfo::new()
-                    .size(16)
-                    .usage(vk::BufferUsageFlags::STORAGE_BUFFER),
-            )
-            .expect("buffer");
-        let reqs = d.get_buffer_memory_requirements(&buffer).expect("reqs");
-        let memory = d
-            .allocate_memory(
-                &tuff::MemoryAllocateInfo::new()
-                    .allocation_size(reqs.size)
-                    .memory_type_index(
-                        s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
-                    ),
-            )
-            .expect("memory");
-        d.bind_buffer_memory(&buffer, &memory, 0).expect("bind");
-        (buffer, memory)
-    };
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let reader = image_reader(&s, &first_view, &output);
     // Two consecutive storage-image bindings; a write of two descriptors at binding
     // 0 puts the second view at binding 1.

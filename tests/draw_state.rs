@@ -566,44 +566,12 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
-    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
-    let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
-    let stages = pipelines::test_stages(&vert, &frag);
     let layout = s
         .device
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("layout");
-    // Binding 0: 20-byte vertices, of which the shader reads a vec2 at 0 and a vec3
-    // at 8, so each vertex reaches 20 bytes past its start.
-    let binding = [vk::VertexInputBindingDescription {
-        binding: 0,
-        stride: 20,
-        input_rate: vk::VertexInputRate::VERTEX,
-    }];
-    let attributes = [
-        vk::VertexInputAttributeDescription {
-            location: 0,
-            binding: 0,
-            format: vk::Format::R32G32_SFLOAT,
-            offset: 0,
-        },
-        vk::VertexInputAttributeDescription {
-            location: 1,
-            binding: 0,
-            format: vk::Format::R32G32B32_SFLOAT,
-            offset: 8,
-        },
-    ];
-    let input = tuff::PipelineVertexInputStateCreateInfo::new()
-        .vertex_binding_descriptions(&binding)
-        .vertex_attribute_descriptions(&attributes);
-    let (mut made, _) =
-        pipelines::with_graphics_info(&stages, &layout, &target.render_pass, |info| unsafe {
-            s.device
-                .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
-        })
-        .expect("vertex pipeline");
-    let pipeline = made.pop().expect("one pipeline");
+    // Binding 0: 20-byte vertices, each reaching 20 bytes past its start.
+    let pipeline = pipelines::vertex_pipeline(&s, &layout, &target.render_pass);
     let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
     let clear = [vk::ClearValue::default()];
     let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)

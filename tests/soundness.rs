@@ -3436,43 +3436,12 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             height: 16,
         },
     };
-    // A pipeline whose vertex shader reads two attributes from binding 0.
-    let vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.vert.spv"));
-    let frag = tuff_setup::shader(&s, include_bytes!("../shaders/spv/triangle.frag.spv"));
-    let stages = pipelines::test_stages(&vert, &frag);
     let empty = s
         .device
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("layout");
-    let binding = [vk::VertexInputBindingDescription {
-        binding: 0,
-        stride: 20,
-        input_rate: vk::VertexInputRate::VERTEX,
-    }];
-    let attributes = [
-        vk::VertexInputAttributeDescription {
-            location: 0,
-            binding: 0,
-            format: vk::Format::R32G32_SFLOAT,
-            offset: 0,
-        },
-        vk::VertexInputAttributeDescription {
-            location: 1,
-            binding: 0,
-            format: vk::Format::R32G32B32_SFLOAT,
-            offset: 8,
-        },
-    ];
-    let input = tuff::PipelineVertexInputStateCreateInfo::new()
-        .vertex_binding_descriptions(&binding)
-        .vertex_attribute_descriptions(&attributes);
-    let (mut vertex_pipeline, _) =
-        pipelines::with_graphics_info(&stages, &empty, &target.render_pass, |info| unsafe {
-            s.device
-                .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
-        })
-        .expect("vertex pipeline");
-    let vertex_pipeline = vertex_pipeline.pop().expect("one pipeline");
+    // A pipeline whose vertex shader reads two attributes from binding 0.
+    let vertex_pipeline = pipelines::vertex_pipeline(&s, &empty, &target.render_pass);
     let (vertices, _vertex_memory) = host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
     // A pipeline whose vertex shader reads a storage buffer of set 0.
     let set_vert = tuff_setup::shader(&s, include_bytes!("../shaders/spv/bezier.vert.spv"));

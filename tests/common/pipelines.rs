@@ -147,6 +147,48 @@ pub fn with_graphics_info<R>(
         .subpass(0))
 }
 
+/// A pipeline of the triangle shaders for subpass 0 of `render_pass` (the test
+/// pipeline's state otherwise), whose vertex shader reads two attributes of binding
+/// 0's 20-byte vertices: a vec2 at 0 and a vec3 at 8, so a vertex reaches 20 bytes.
+pub fn vertex_pipeline(
+    s: &Setup,
+    layout: &tuff::PipelineLayout,
+    render_pass: &tuff::RenderPass,
+) -> tuff::Pipeline {
+    let module = |bytes| crate::tuff_setup::shader(s, bytes);
+    let vert = module(include_bytes!("../../shaders/spv/triangle.vert.spv"));
+    let frag = module(include_bytes!("../../shaders/spv/triangle.frag.spv"));
+    let stages = test_stages(&vert, &frag);
+    let binding = [vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 20,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }];
+    let attributes = [
+        vk::VertexInputAttributeDescription {
+            location: 0,
+            binding: 0,
+            format: vk::Format::R32G32_SFLOAT,
+            offset: 0,
+        },
+        vk::VertexInputAttributeDescription {
+            location: 1,
+            binding: 0,
+            format: vk::Format::R32G32B32_SFLOAT,
+            offset: 8,
+        },
+    ];
+    let input = tuff::PipelineVertexInputStateCreateInfo::new()
+        .vertex_binding_descriptions(&binding)
+        .vertex_attribute_descriptions(&attributes);
+    let (mut made, _) = with_graphics_info(&stages, layout, render_pass, |info| unsafe {
+        s.device
+            .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
+    })
+    .expect("vertex pipeline");
+    made.pop().expect("one pipeline")
+}
+
 /// Builds both pipelines for `target`'s render pass, and points the compute shader's
 /// descriptor set at its buffers through a descriptor update template.
 pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
