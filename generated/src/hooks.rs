@@ -3560,19 +3560,15 @@ pub(crate) fn graphics_pipelines_created(
                     vk::StructureType::PIPELINE_RENDERING_CREATE_INFO,
                 )
             };
-            Vrc::new(info.map_or_else(Default::default, |i| {
-                crate::retention::RenderingFormats {
-                    view_mask: i.view_mask,
-                    colors: unsafe {
-                        crate::retention::raw_slice(
-                            i.p_color_attachment_formats,
-                            i.color_attachment_count,
-                        )
-                    }
-                    .to_vec(),
-                    depth: i.depth_attachment_format,
-                    stencil: i.stencil_attachment_format,
-                }
+            // SAFETY: the safe setter stores the formats with their count.
+            Vrc::new(info.map_or_else(Default::default, |i| unsafe {
+                crate::retention::RenderingFormats::from_raw(
+                    i.view_mask,
+                    i.p_color_attachment_formats,
+                    i.color_attachment_count,
+                    i.depth_attachment_format,
+                    i.stencil_attachment_format,
+                )
             }))
         });
         (

@@ -291,18 +291,15 @@ impl CommandBuffer {
                     })
             })
             .map(|r| {
-                Vrc::new(crate::retention::RenderingFormats {
-                    view_mask: r.view_mask,
-                    // SAFETY: as above.
-                    colors: unsafe {
-                        crate::retention::raw_slice(
-                            r.p_color_attachment_formats,
-                            r.color_attachment_count,
-                        )
-                    }
-                    .to_vec(),
-                    depth: r.depth_attachment_format,
-                    stencil: r.stencil_attachment_format,
+                // SAFETY: as above.
+                Vrc::new(unsafe {
+                    crate::retention::RenderingFormats::from_raw(
+                        r.view_mask,
+                        r.p_color_attachment_formats,
+                        r.color_attachment_count,
+                        r.depth_attachment_format,
+                        r.stencil_attachment_format,
+                    )
                 })
             });
         rec.instance = Some(PassInstance {

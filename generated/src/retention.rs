@@ -425,6 +425,30 @@ pub(crate) struct PipelineRecord {
     pub rendering: Option<Vrc<RenderingFormats>>,
 }
 
+impl RenderingFormats {
+    /// The formats a `VkPipelineRenderingCreateInfo` or a
+    /// `VkCommandBufferInheritanceRenderingInfo` gives.
+    ///
+    /// # Safety
+    ///
+    /// `colors` points to `count` formats (a safe struct's array and its count).
+    pub(crate) unsafe fn from_raw(
+        view_mask: u32,
+        colors: *const vk::Format,
+        count: u32,
+        depth: vk::Format,
+        stencil: vk::Format,
+    ) -> Self {
+        RenderingFormats {
+            view_mask,
+            // SAFETY: the caller's promise.
+            colors: unsafe { raw_slice(colors, count) }.to_vec(),
+            depth,
+            stencil,
+        }
+    }
+}
+
 /// A vertex binding a pipeline's vertex shader reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct VertexRead {
