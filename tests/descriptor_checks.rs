@@ -955,6 +955,17 @@ struct ImageReader {
 }
 
 fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> ImageReader {
+    image_reader_with(s, view, output, None)
+}
+
+/// [`image_reader`], whose set also holds `sampled` at binding 2 as a sampled image
+/// in `SHADER_READ_ONLY_OPTIMAL` (the shader does not read it).
+fn image_reader_with(
+    s: &Setup,
+    view: &tuff::ImageView,
+    output: &tuff::Buffer,
+    sampled: Option<&tuff::ImageView>,
+) -> ImageReader {
     let d = &s.device;
     let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/image.comp.spv"));
     let b = |n: u32, ty: T| {
@@ -964,7 +975,11 @@ fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> Ima
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::COMPUTE)
     };
-    let bindings = [b(0, T::STORAGE_IMAGE), b(1, T::STORAGE_BUFFER)];
+    let bindings = [
+        b(0, T::STORAGE_IMAGE),
+        b(1, T::STORAGE_BUFFER),
+        b(2, T::SAMPLED_IMAGE),
+    ];
     let set_layout = d
         .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
@@ -994,6 +1009,10 @@ fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> Ima
             ty: T::STORAGE_BUFFER,
             descriptor_count: 1,
         },
+        vk::DescriptorPoolSize {
+            ty: T::SAMPLED_IMAGE,
+            descriptor_count: 1,
+        },
     ];
     let pool = d
         .create_descriptor_pool(
@@ -1014,6 +1033,11 @@ fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> Ima
         &[],
     )
     .expect("the reader's set");
+    if let Some(sampled) = sampled {
+        let images = image_info(&sampler, sampled, L::SHADER_READ_ONLY_OPTIMAL);
+        d.update_descriptor_sets(&[image_write(&set, 2, T::SAMPLED_IMAGE, &images)], &[])
+            .expect("the sampled image");
+    }
     ImageReader {
         _module: module,
         _set_layout: set_layout,
@@ -1183,9 +1207,94 @@ fn image_descriptors_are_read_in_their_layouts() {
     assert_silent(&s.messages);
 }
 
+/// A dispatch after a barrier that changes its image descriptor's layout is checked
+/// again, though the same state passed its checks before the barrier; and two
+/// descriptors that state different layouts for one subresource are refused at the
+/// first dispatch, as no layout can meet both.
+#[test]
+fn dispatches_see_the_layouts_of_their_moment() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (image, _image_memory, view) = storage_image_with(&s, U::SAMPLED);
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
+    let rule = "VUID-VkDescriptorImageInfo-imageLayout-00344";
+    let reader = image_reader(&s, &view, &output);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    transition(&mut rec, &image, L::UNDEFINED, L::GENERAL);
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+        .expect("pipeline");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::COMPUTE,
+        &reader.layout,
+        0,
+        &[&reader.set],
+        &[],
+    )
+    .expect("set");
+    // SAFETY: the shader promise (the repository's shader).
+    unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("a dispatch of a GENERAL image");
+    let after_read = tuff::ImageMemoryBarrier::new(&image)
+        .old_layout(L::GENERAL)
+        .new_layout(L::TRANSFER_DST_OPTIMAL)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .src_access_mask(vk::AccessFlags::SHADER_READ)
+        .dst_access_mask(vk::AccessFlags::SHADER_READ)
+        .subresource_range(vk::ImageSubresourceRange {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            base_mip_level: 0,
+            level_count: 1,
+            base_array_layer: 0,
+            layer_count: 1,
+        });
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::COMPUTE_SHADER,
+        vk::PipelineStageFlags::COMPUTE_SHADER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &[after_read],
+    )
+    .expect("barrier");
+    // SAFETY: as above; the dispatch is refused.
+    assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
+    drop(rec);
+
+    let both = image_reader_with(&s, &view, &output, Some(&view));
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &both.pipeline)
+        .expect("pipeline");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::COMPUTE,
+        &both.layout,
+        0,
+        &[&both.set],
+        &[],
+    )
+    .expect("set");
+    // SAFETY: as above; the dispatch is refused.
+    assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
+    drop(rec);
+    assert_silent(&s.messages);
+}
+
 /// A storage image of 4x4 RGBA8 with transfer-destination usage, its memory and a
 /// view of it.
 fn storage_image(s: &Setup) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    storage_image_with(s, U::empty())
+}
+
+/// [`storage_image`] with `usage` as well.
+fn storage_image_with(
+    s: &Setup,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
     let d = &s.device;
     let image = d
         .create_image(
@@ -1200,7 +1309,7 @@ fn storage_image(s: &Setup) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView
                 .mip_levels(1)
                 .array_layers(1)
                 .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(U::STORAGE | U::TRANSFER_DST),
+                .usage(U::STORAGE | U::TRANSFER_DST | usage),
         )
         .expect("image");
     let memory = s.bind_image(&image);

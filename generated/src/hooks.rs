@@ -3636,21 +3636,23 @@ pub(crate) type Vertices = Option<(u32, u32, u32, u32, &'static str)>;
 /// ([`bound_pipeline_checks`]), the state it draws with ([`draw_state_checks`]),
 /// and for a direct draw, the vertices it fetches inside the bound vertex buffers.
 pub(crate) fn draw_checks<S: State>(
-    recorder: &Recorder<'_, S>,
+    recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: &'static str,
     vertices: Vertices,
     rules: &DrawRules,
 ) -> Result<()> {
-    bound_pipeline_checks(
-        recorder,
-        vk::PipelineBindPoint::GRAPHICS,
-        pipeline_vuid,
-        sets_vuid,
-        Some(vertex_vuid),
-    )?;
-    draw_state_checks(recorder, rules)?;
+    recorder.verify_state(0, |recorder| {
+        bound_pipeline_checks(
+            recorder,
+            vk::PipelineBindPoint::GRAPHICS,
+            pipeline_vuid,
+            sets_vuid,
+            Some(vertex_vuid),
+        )?;
+        draw_state_checks(recorder, rules)
+    })?;
     let (Some((first_vertex, vertex_count, first_instance, instance_count, vuid)), Some(pipeline)) =
         (vertices, &recorder.bound[0].pipeline)
     else {
@@ -3963,7 +3965,18 @@ fn descriptor_layout_checks<S: State>(
     // The images of the render pass instance's attachments (a render pass's, not
     // dynamic rendering's, whose layouts the recording follows).
     let in_pass = recorder.instance.as_ref().is_some_and(|i| !i.dynamic);
-    for d in used_images(bound) {
+    for (k, d) in used_images(bound).enumerate() {
+        // Two descriptors that state different layouts for one subresource: one of
+        // them is wrong whatever the recording did before.
+        if let Some(other) = used_images(bound)
+            .take(k)
+            .find(|e| e.image == d.image && e.layout != d.layout && e.sel.overlaps(&d.sel))
+        {
+            return refuse(
+                DESCRIPTOR_LAYOUT,
+                format!("two image descriptors the bound sets hold name one subresource of image 0x{:x} in different layouts ({:?} and {:?})", d.image.as_raw(), other.layout, d.layout),
+            );
+        }
         if in_pass && recorder.pass_images.contains(&d.image) {
             return refuse(
                 DESCRIPTOR_LAYOUT,
@@ -4001,11 +4014,28 @@ pub(crate) fn descriptor_layouts_used<S: State>(
     }
 }
 
+/// A dispatch's state checks ([`bound_pipeline_checks`]), once per state.
+pub(crate) fn dispatch_checks<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    pipeline_vuid: &'static str,
+    sets_vuid: &'static str,
+) -> Result<()> {
+    recorder.verify_state(1, |recorder| {
+        bound_pipeline_checks(
+            recorder,
+            vk::PipelineBindPoint::COMPUTE,
+            pipeline_vuid,
+            sets_vuid,
+            None,
+        )
+    })
+}
+
 /// A draw or dispatch has a pipeline bound at its bind point (02700), and a set
 /// bound at every set number of that pipeline's layout, of the same set layout
 /// (02697). Which sets the shaders use is not known here, so every set of the layout
 /// must be bound: a program that leaves an unused set unbound is refused too.
-pub(crate) fn bound_pipeline_checks<S: State>(
+fn bound_pipeline_checks<S: State>(
     recorder: &Recorder<'_, S>,
     bind_point: vk::PipelineBindPoint,
     pipeline_vuid: &'static str,
@@ -4189,7 +4219,7 @@ pub(crate) fn cmd_bind_index_buffer_done<'b, S: State>(
 /// the rule), the indices it reads inside that buffer. Whether robustBufferAccess2 is
 /// enabled is not known here, so the range is checked whatever it is.
 pub(crate) fn indexed_draw_checks<S: State>(
-    recorder: &Recorder<'_, S>,
+    recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     bound_vuid: &'static str,

@@ -133,6 +133,22 @@ impl Sel {
         }
     }
 
+    /// Whether two selections of one image may share a subresource: their mip and
+    /// layer ranges overlap, and their aspects do (`COLOR` names every plane, so it
+    /// meets any aspect; a 3D image's view may name layers the image has not, so a
+    /// caller comparing views of one is told of overlap it may not have).
+    pub(crate) fn overlaps(&self, other: &Sel) -> bool {
+        let color = vk::ImageAspectFlags::COLOR;
+        let aspects = self.aspect.intersects(other.aspect)
+            || self.aspect.contains(color)
+            || other.aspect.contains(color);
+        aspects
+            && self.mips.0 < other.mips.1
+            && other.mips.0 < self.mips.1
+            && self.layers.0 < other.layers.1
+            && other.layers.0 < self.layers.1
+    }
+
     /// The subresources of one mip level a copy names.
     pub(crate) fn layers(r: &vk::ImageSubresourceLayers) -> Sel {
         Sel {

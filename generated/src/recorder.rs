@@ -198,6 +198,11 @@ pub struct Recorder<'c, S: State> {
     /// the state static), and those set since the last graphics pipeline was bound,
     /// as [`dynamic_bit`] bits.
     pub(crate) dynamic: (u32, u32),
+    /// The bind points (one bit each, as [`Bound::index`] numbers them) whose draw
+    /// or dispatch state checks passed with nothing they read changed since: a run
+    /// of draws on one state is checked once. Cleared by every recorded command but
+    /// the draws, dispatches and push constants, and by every change of state.
+    verified: u8,
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
@@ -386,6 +391,7 @@ impl CommandBuffer {
             sets: Vec::new(),
             events: Vec::new(),
             dynamic: (0, 0),
+            verified: 0,
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
@@ -419,6 +425,28 @@ impl<'c, S: State> Recorder<'c, S> {
 
     /// Takes the result of a command's checks: true when the command may be
     /// recorded, false when this or an earlier check failed.
+    /// A command that may change what draw and dispatch checks read was recorded.
+    #[inline]
+    pub(crate) fn state_changed(&mut self) {
+        self.verified = 0;
+    }
+
+    /// Runs `checks` of the state at bind point `index`, unless they passed with
+    /// nothing changed since.
+    #[inline]
+    pub(crate) fn verify_state(
+        &mut self,
+        index: usize,
+        checks: impl FnOnce(&Self) -> Result<()>,
+    ) -> Result<()> {
+        let bit = 1 << index;
+        if self.verified & bit == 0 {
+            checks(self)?;
+            self.verified |= bit;
+        }
+        Ok(())
+    }
+
     pub(crate) fn accept(&mut self, r: Result<()>) -> bool {
         if self.poisoned.is_some() {
             return false;
@@ -511,6 +539,7 @@ impl<'c, S: State> Recorder<'c, S> {
             sets: self.sets,
             events: self.events,
             dynamic: self.dynamic,
+            verified: 0,
             device_mask: self.device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,

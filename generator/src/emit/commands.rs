@@ -620,6 +620,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             ret_expr = hook(&c, &ret_expr);
         }
     }
+    // A command that moves the recorder to another state hands on a new one, which
+    // checks again anyway.
+    if plan.changes_draw_state
+        && !matches!(
+            plan.transition,
+            Some(Transition::Begin(_) | Transition::End(_))
+        )
+    {
+        post.push(quote!(self.state_changed();));
+    }
     let fp = quote!(fp);
     let success: Vec<String> = cmd
         .successcodes

@@ -75,6 +75,11 @@ pub struct Plan {
     /// must be as long, or (if optional) empty, when Vulkan gets NULL. Checked in
     /// every build, as a shorter one would be read past its end.
     pub same_len: Vec<SameLen>,
+    /// Whether recording the command may change what a draw's or dispatch's checks
+    /// read (bound objects, dynamic state, layouts, the render pass instance), so the
+    /// recorder must check the next one again: every recorded command but those of
+    /// [`super::hooks::KEEPS_DRAW_STATE`].
+    pub changes_draw_state: bool,
 }
 
 /// A slice parameter sized by another's count (C names).
@@ -358,12 +363,16 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             }
         }
     }
+    let changes_draw_state = receiver == "VkCommandBuffer"
+        && name.starts_with("vkCmd")
+        && !super::hooks::KEEPS_DRAW_STATE.contains(&name);
     Ok(Plan {
         name: name.to_owned(),
         receiver,
         params,
         transition: transition(name),
         same_len,
+        changes_draw_state,
     })
 }
 

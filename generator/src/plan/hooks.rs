@@ -447,13 +447,11 @@ macro_rules! bound {
                 &["self", "vk::PipelineBindPoint::COMPUTE"],
             ),
             check: call(
-                "hooks::bound_pipeline_checks",
+                "hooks::dispatch_checks",
                 &[
                     "self",
-                    "vk::PipelineBindPoint::COMPUTE",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    "None",
                 ],
             ),
             settles: &[
@@ -589,6 +587,24 @@ macro_rules! surface_query {
         }
     };
 }
+
+/// The recorded commands that leave unchanged everything a draw's or dispatch's
+/// state checks read: the draws and dispatches themselves (which only add layouts a
+/// later check of the same state finds met) and push constants (which only add
+/// bytes set). After any other command the recorder checks the next draw's or
+/// dispatch's state again; after these, a state already checked is not.
+pub const KEEPS_DRAW_STATE: &[&str] = &[
+    "vkCmdDraw",
+    "vkCmdDrawIndexed",
+    "vkCmdDrawIndirect",
+    "vkCmdDrawIndexedIndirect",
+    "vkCmdDrawIndirectCount",
+    "vkCmdDrawIndexedIndirectCount",
+    "vkCmdDispatch",
+    "vkCmdDispatchBase",
+    "vkCmdDispatchIndirect",
+    "vkCmdPushConstants",
+];
 
 /// Every special case, by command.
 pub const SPECIALS: &[Special] = &[

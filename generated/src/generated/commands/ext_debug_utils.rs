@@ -50,6 +50,7 @@ The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] chec
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
+            self.state_changed();
         }
         Ok(())
     }
@@ -99,6 +100,7 @@ The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw()) };
+            self.state_changed();
         }
         Ok(())
     }
@@ -148,6 +150,7 @@ The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] che
             unsafe {
                 fp(self.raw(), label_info as *const DebugUtilsLabelEXT<'a> as *const _)
             };
+            self.state_changed();
         }
         Ok(())
     }

@@ -65,6 +65,7 @@ The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: 
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
             crate::hooks::begin_query_done(self, query_pool, query);
+            self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }
         Ok(())
@@ -178,6 +179,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
                 first_set,
                 descriptor_sets,
             );
+            self.state_changed();
             self.retain_with(layout.address(), || layout.retained());
         }
         Ok(())
@@ -234,6 +236,7 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
             crate::hooks::cmd_bind_index_buffer_done(self, buffer, offset, index_type);
+            self.state_changed();
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -290,6 +293,7 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), pipeline_bind_point, pipeline.raw()) };
             crate::hooks::cmd_bind_pipeline_done(self, pipeline_bind_point, pipeline);
+            self.state_changed();
             self.retain_with(pipeline.address(), || pipeline.retained());
         }
         Ok(())
@@ -388,6 +392,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at ru
                 offsets,
                 (&[], &[]),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -448,6 +453,7 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), query) };
             crate::hooks::end_query_done(self, query_pool, query);
+            self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }
         Ok(())
@@ -553,6 +559,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
                 )
             };
             crate::hooks::execute_layouts_done(self, command_buffers);
+            self.state_changed();
         }
         Ok(())
     }
@@ -672,6 +679,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run t
                 )
             };
             crate::hooks::cmd_pipeline_barrier_done(self, image_memory_barriers);
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -817,6 +825,7 @@ The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at ru
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthBias`
 
@@ -878,6 +887,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run tim
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthBounds`
 
@@ -930,6 +940,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run t
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS),
         );
+        self.state_changed();
     }
     /**`vkCmdSetLineWidth`
 
@@ -968,6 +979,7 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH),
         );
+        self.state_changed();
     }
     /**`vkCmdSetScissor`
 
@@ -1030,6 +1042,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: 
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -1079,6 +1092,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks 
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK),
         );
+        self.state_changed();
     }
     /**`vkCmdSetStencilReference`
 
@@ -1126,6 +1140,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at 
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetStencilWriteMask`
 
@@ -1173,6 +1188,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK),
         );
+        self.state_changed();
     }
     /**`vkCmdSetViewport`
 
@@ -1232,6 +1248,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time:
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -1359,6 +1376,7 @@ The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: 
                 )
             };
             crate::hooks::wait_events_done(self, events, image_memory_barriers);
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -1451,6 +1469,7 @@ The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run ti
         let fp = self.device().fns().fp_v1_0().cmd_write_timestamp;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), pipeline_stage, query_pool.raw(), query) };
+        self.state_changed();
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }
@@ -1702,6 +1721,7 @@ The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `
                     regions,
                 ),
             );
+            self.state_changed();
             self.retain_with(src_image.address(), || src_image.retained());
             self.retain_with(dst_image.address(), || dst_image.retained());
         }
@@ -1798,6 +1818,7 @@ The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run 
                 self,
                 crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
             );
+            self.state_changed();
             self.retain_with(image.address(), || image.retained());
         }
         Ok(())
@@ -1907,6 +1928,7 @@ The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks
                 self,
                 crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges),
             );
+            self.state_changed();
             self.retain_with(image.address(), || image.retained());
         }
         Ok(())
@@ -1986,6 +2008,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: 
                     regions.as_ptr().cast(),
                 )
             };
+            self.state_changed();
             self.retain_with(src_buffer.address(), || src_buffer.retained());
             self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         }
@@ -2129,6 +2152,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at r
                     regions,
                 ),
             );
+            self.state_changed();
             self.retain_with(src_buffer.address(), || src_buffer.retained());
             self.retain_with(dst_image.address(), || dst_image.retained());
         }
@@ -2304,6 +2328,7 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
                     regions,
                 ),
             );
+            self.state_changed();
             self.retain_with(src_image.address(), || src_image.retained());
             self.retain_with(dst_image.address(), || dst_image.retained());
         }
@@ -2441,6 +2466,7 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at r
                     regions,
                 ),
             );
+            self.state_changed();
             self.retain_with(src_image.address(), || src_image.retained());
             self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         }
@@ -2546,6 +2572,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
                 flags,
             )
         };
+        self.state_changed();
         self.retain_with(query_pool.address(), || query_pool.retained());
         self.retain_with(dst_buffer.address(), || dst_buffer.retained());
     }
@@ -2603,12 +2630,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
         group_count_y: u32,
         group_count_z: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::dispatch_checks(
             self,
-            vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
-            None,
         )?;
         {
             let r = self
@@ -2696,12 +2721,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55 (exp
         buffer: &Buffer,
         offset: vk::DeviceSize,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::dispatch_checks(
             self,
-            vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
-            None,
         )?;
         {
             let r = self.validate_cmd_dispatch_indirect(buffer, offset);
@@ -2794,6 +2817,7 @@ The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: 
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), dst_buffer.raw(), dst_offset, size, data) };
+            self.state_changed();
             self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         }
         Ok(())
@@ -2857,6 +2881,7 @@ The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: 
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
         crate::hooks::event_recorded(self, event);
+        self.state_changed();
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResetQueryPool`
@@ -2921,6 +2946,7 @@ The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run t
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
+            self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }
         Ok(())
@@ -3066,6 +3092,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time
                     regions,
                 ),
             );
+            self.state_changed();
             self.retain_with(src_image.address(), || src_image.retained());
             self.retain_with(dst_image.address(), || dst_image.retained());
         }
@@ -3128,6 +3155,7 @@ The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `V
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
         crate::hooks::event_recorded(self, event);
+        self.state_changed();
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdUpdateBuffer`
@@ -3201,6 +3229,7 @@ The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time
                     data.as_ptr().cast(),
                 )
             };
+            self.state_changed();
             self.retain_with(dst_buffer.address(), || dst_buffer.retained());
         }
         Ok(())
@@ -3278,6 +3307,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
                 rects.as_ptr().cast(),
             )
         };
+        self.state_changed();
     }
     /**`vkCmdDraw`
 
@@ -4107,5 +4137,6 @@ The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time:
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), contents) };
         crate::hooks::next_subpass_done(self);
+        self.state_changed();
     }
 }

@@ -64,12 +64,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63.
         group_count_y: u32,
         group_count_z: u32,
     ) -> Result<()> {
-        crate::hooks::bound_pipeline_checks(
+        crate::hooks::dispatch_checks(
             self,
-            vk::PipelineBindPoint::COMPUTE,
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
-            None,
         )?;
         {
             let r = self
@@ -166,5 +164,6 @@ The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run ti
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), device_mask) };
+        self.state_changed();
     }
 }

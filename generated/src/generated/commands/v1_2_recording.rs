@@ -660,5 +660,6 @@ The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time
             )
         };
         crate::hooks::next_subpass_done(self);
+        self.state_changed();
     }
 }

@@ -206,6 +206,7 @@ The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: 
                 self,
                 crate::hooks::Names::BlitImage2(blit_image_info),
             );
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -277,6 +278,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
         unsafe {
             fp(self.raw(), copy_buffer_info as *const CopyBufferInfo2<'a> as *const _)
         };
+        self.state_changed();
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
@@ -355,6 +357,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at 
                 self,
                 crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
             );
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -477,6 +480,7 @@ The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: 
                 self,
                 crate::hooks::Names::CopyImage2(copy_image_info),
             );
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -553,6 +557,7 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
                 self,
                 crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
             );
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -632,6 +637,7 @@ The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time:
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
         crate::hooks::event_recorded(self, event);
+        self.state_changed();
         self.retain_with(event.address(), || event.retained());
     }
     /**`vkCmdResolveImage2`
@@ -711,6 +717,7 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
                 self,
                 crate::hooks::Names::ResolveImage2(resolve_image_info),
             );
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -819,6 +826,7 @@ The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `
             )
         };
         crate::hooks::event_recorded(self, event);
+        self.state_changed();
         self.retain_with(event.address(), || event.retained());
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
@@ -978,6 +986,7 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
                 offsets,
                 (sizes, strides),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -1068,6 +1077,7 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
                 fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
             };
             crate::hooks::dependency_done(self, core::slice::from_ref(dependency_info));
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -1124,6 +1134,7 @@ The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthBiasEnable`
 
@@ -1166,6 +1177,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthBoundsTestEnable`
 
@@ -1213,6 +1225,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthCompareOp`
 
@@ -1256,6 +1269,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at r
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthTestEnable`
 
@@ -1298,6 +1312,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetDepthWriteEnable`
 
@@ -1340,6 +1355,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetFrontFace`
 
@@ -1380,6 +1396,7 @@ The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run tim
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetPrimitiveRestartEnable`
 
@@ -1427,6 +1444,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetPrimitiveTopology`
 
@@ -1473,6 +1491,7 @@ The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
         );
+        self.state_changed();
     }
     /**`vkCmdSetRasterizerDiscardEnable`
 
@@ -1520,6 +1539,7 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetScissorWithCount`
 
@@ -1569,6 +1589,7 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -1647,6 +1668,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
         );
+        self.state_changed();
     }
     /**`vkCmdSetStencilTestEnable`
 
@@ -1689,6 +1711,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
         );
+        self.state_changed();
     }
     /**`vkCmdSetViewportWithCount`
 
@@ -1738,6 +1761,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
             );
+            self.state_changed();
         }
         Ok(())
     }
@@ -1854,6 +1878,7 @@ The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time:
                 )
             };
             crate::hooks::wait_events2_done(self, events, dependency_infos);
+            self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
                 let mut kept = Vec::new();
@@ -1934,6 +1959,7 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
         let fp = self.device().fns().fp_v1_3().cmd_write_timestamp2;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), stage, query_pool.raw(), query) };
+        self.state_changed();
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }
