@@ -524,11 +524,10 @@ fn swapchain_info<'a>(
 fn surfaces_and_swapchains_in_random_drop_orders() {
     let _serial = vulkan::serial();
     for seed in 0..4u64 {
-        let window = x11_window::X11Window::open(64, 48);
+        let window = tuff::runtime::Vrc::new(x11_window::X11Window::open(64, 48));
         let s = setup_with(true, Wsi::Xlib);
-        // `window` drops after every object made from the surface: the bag below
-        // empties first.
-        let surface = xlib_surface(&s, &window);
+        // The surface keeps the window alive: it goes into the bag with the rest.
+        let surface = s.instance.create_surface(window.clone()).expect("surface");
         let supported = s
             .physical
             .get_physical_device_surface_support_khr(s.family, &surface)
@@ -572,14 +571,71 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
         bag.push(Box::new(physical));
         bag.push(Box::new(device));
         bag.push(Box::new(instance));
+        bag.push(Box::new(window));
         shuffle(&mut bag, seed);
         while let Some(item) = bag.pop() {
             drop(item);
         }
         drop(messenger);
-        drop(window);
         assert_silent(&messages);
     }
+}
+
+/// A window whose handles are of a window system no surface extension of this
+/// build serves.
+struct WebWindow;
+
+impl raw_window_handle::HasWindowHandle for WebWindow {
+    fn window_handle(
+        &self,
+    ) -> Result<raw_window_handle::WindowHandle<'_>, raw_window_handle::HandleError> {
+        let raw = raw_window_handle::WebWindowHandle::new(1);
+        // SAFETY: a web handle holds an ID, no pointer.
+        Ok(unsafe { raw_window_handle::WindowHandle::borrow_raw(raw.into()) })
+    }
+}
+
+impl raw_window_handle::HasDisplayHandle for WebWindow {
+    fn display_handle(
+        &self,
+    ) -> Result<raw_window_handle::DisplayHandle<'_>, raw_window_handle::HandleError> {
+        Ok(raw_window_handle::DisplayHandle::web())
+    }
+}
+
+/// `create_surface` keeps the window alive as long as the surface, refuses a
+/// window of another window system, and an instance without the extension.
+#[test]
+fn surfaces_keep_their_windows() {
+    let _serial = vulkan::serial();
+    let window = tuff::runtime::Vrc::new(x11_window::X11Window::open(32, 32));
+    let s = setup_with(true, Wsi::Xlib);
+    let surface = s.instance.create_surface(window.clone()).expect("surface");
+    assert_eq!(tuff::runtime::Vrc::strong_count(&window), 2);
+    let supported = s
+        .physical
+        .get_physical_device_surface_support_khr(s.family, &surface)
+        .expect("surface support");
+    assert_eq!(supported, vk::TRUE);
+    drop(surface);
+    assert_eq!(tuff::runtime::Vrc::strong_count(&window), 1);
+    match s
+        .instance
+        .create_surface(tuff::runtime::Vrc::new(WebWindow))
+    {
+        Err(tuff::Error::Window(message)) => assert!(message.contains("Web"), "{message}"),
+        Err(e) => panic!("expected a window error, got {e}"),
+        Ok(_) => panic!("a surface was made for a web canvas"),
+    }
+    assert_silent(&s.messages);
+    let headless = setup_with(true, Wsi::None);
+    match headless.instance.create_surface(window.clone()) {
+        Err(tuff::Error::ExtensionNotEnabled(name)) => assert_eq!(name, "VK_KHR_xlib_surface"),
+        Err(e) => panic!("expected the extension to be missing, got {e}"),
+        Ok(_) => panic!("a surface was made without VK_KHR_xlib_surface"),
+    }
+    assert_eq!(tuff::runtime::Vrc::strong_count(&window), 1);
+    assert_silent(&headless.messages);
 }
 
 #[test]

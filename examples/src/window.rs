@@ -6,7 +6,6 @@ use crate::cli::Common;
 use crate::gpu::Gpu;
 use crate::render::{self, Framebuffers, Scene, View, FRAMES_IN_FLIGHT};
 use anyhow::{anyhow, bail, Context as _, Result};
-use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawDisplayHandle, RawWindowHandle};
 use std::time::Instant;
 use tuff::vk;
 use winit::application::ApplicationHandler;
@@ -82,7 +81,7 @@ struct Live<S> {
     render_pass: tuff::RenderPass,
     format: vk::SurfaceFormatKHR,
     surface: tuff::SurfaceKHR,
-    window: Window,
+    window: tuff::runtime::Vrc<Window>,
     /// The swapchain no longer matches the window.
     stale: bool,
     /// The window may have changed size: compare before the next frame.
@@ -118,24 +117,9 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
                     self.common.height.max(1),
                 )),
         )?;
-        let RawWindowHandle::Xlib(handle) = window.window_handle()?.as_raw() else {
-            bail!("the window is not an X11 (Xlib) window, the one kind this build supports");
-        };
-        let RawDisplayHandle::Xlib(display) = window.display_handle()?.as_raw() else {
-            bail!("the display is not an X11 (Xlib) display");
-        };
-        let display = display
-            .display
-            .ok_or_else(|| anyhow!("winit gave no Xlib display"))?;
-        // SAFETY: the display and window are winit's, alive while `window` is; `Live`
-        // drops the surface (and all made from it) before the window.
-        let surface = unsafe {
-            gpu.instance.create_xlib_surface_khr(
-                &tuff::XlibSurfaceCreateInfoKHR::new()
-                    .dpy(display.as_ptr().cast())
-                    .window(handle.window),
-            )
-        }?;
+        // The surface keeps the window alive, and its swapchains keep the surface.
+        let window = tuff::runtime::Vrc::new(window);
+        let surface = gpu.instance.create_surface(window.clone())?;
         if gpu
             .physical
             .get_physical_device_surface_support_khr(gpu.family, &surface)?

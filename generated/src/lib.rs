@@ -66,6 +66,8 @@ mod support;
 #[cfg(feature = "khr_swapchain")]
 mod swapchain;
 mod validation;
+#[cfg(feature = "khr_surface")]
+mod window;
 
 pub use allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
 pub use ash::vk;

@@ -37,6 +37,10 @@ pub enum Error {
     /// invalidate range could not be formed.
     #[error("mapped memory: {0}")]
     Map(tuff_runtime::MapError),
+    /// A window gave no handle a surface can be made from: it has none now, or its
+    /// window system has no surface extension in this build.
+    #[error("window: {0}")]
+    Window(String),
     /// The Vulkan loader could not be found or opened.
     #[error("cannot load the Vulkan loader: {0}")]
     Load(String),

@@ -11,6 +11,38 @@ pub struct X11Window {
     pub display: *mut xlib::Display,
     /// The window.
     pub window: xlib::Window,
+    /// The default screen the window is on.
+    screen: i32,
+}
+
+// SAFETY: the process calls XInitThreads before any other Xlib call (`open`), which
+// makes the connection's calls safe from any thread; the rest is the loaded library's
+// function table.
+unsafe impl Send for X11Window {}
+// SAFETY: as above.
+unsafe impl Sync for X11Window {}
+
+impl raw_window_handle::HasWindowHandle for X11Window {
+    fn window_handle(
+        &self,
+    ) -> Result<raw_window_handle::WindowHandle<'_>, raw_window_handle::HandleError> {
+        let raw = raw_window_handle::XlibWindowHandle::new(self.window);
+        // SAFETY: the window is destroyed only when `self` drops.
+        Ok(unsafe { raw_window_handle::WindowHandle::borrow_raw(raw.into()) })
+    }
+}
+
+impl raw_window_handle::HasDisplayHandle for X11Window {
+    fn display_handle(
+        &self,
+    ) -> Result<raw_window_handle::DisplayHandle<'_>, raw_window_handle::HandleError> {
+        let raw = raw_window_handle::XlibDisplayHandle::new(
+            std::ptr::NonNull::new(self.display.cast()),
+            self.screen,
+        );
+        // SAFETY: the display connection is closed only when `self` drops.
+        Ok(unsafe { raw_window_handle::DisplayHandle::borrow_raw(raw.into()) })
+    }
 }
 
 impl X11Window {
@@ -43,6 +75,7 @@ impl X11Window {
                 xlib,
                 display,
                 window,
+                screen,
             }
         }
     }

@@ -322,6 +322,7 @@ bytemuck = "1"
 smallvec = "1"
 rustc-hash = "2"
 thiserror = "2"
+raw-window-handle = "0.6"
 
 [features]
 default = []
