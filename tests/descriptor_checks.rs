@@ -955,19 +955,24 @@ struct ImageReader {
 }
 
 fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> ImageReader {
-    image_reader_with(s, view, output, None)
+    image_reader_with(s, view, output, None, IMAGE_COMP)
 }
 
-/// [`image_reader`], whose set also holds `sampled` at binding 2 as a sampled image
-/// in `SHADER_READ_ONLY_OPTIMAL` (the shader does not read it).
+/// The compute shader that reads a storage image at binding 0 into the buffer at 1.
+const IMAGE_COMP: &[u8] = include_bytes!("../shaders/spv/image.comp.spv");
+
+/// [`image_reader`] of the compute shader `code` (which reads binding 0 and writes
+/// binding 1), whose set also holds `sampled` at binding 2 as a sampled image in
+/// `SHADER_READ_ONLY_OPTIMAL` (the shader does not read it).
 fn image_reader_with(
     s: &Setup,
     view: &tuff::ImageView,
     output: &tuff::Buffer,
     sampled: Option<&tuff::ImageView>,
+    code: &[u8],
 ) -> ImageReader {
     let d = &s.device;
-    let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/image.comp.spv"));
+    let module = tuff_setup::shader(s, code);
     let b = |n: u32, ty: T| {
         tuff::DescriptorSetLayoutBinding::new()
             .binding(n)
@@ -1096,7 +1101,7 @@ fn image_descriptors_are_read_in_their_layouts() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let (image, _image_memory, view) = storage_image(&s);
+    let (image, _image_memory, view) = pipelines::storage_image(&s, U::empty());
     let (output, _output_memory) =
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let reader = image_reader(&s, &view, &output);
@@ -1215,7 +1220,7 @@ fn image_descriptors_are_read_in_their_layouts() {
 fn dispatches_see_the_layouts_of_their_moment() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let (image, _image_memory, view) = storage_image_with(&s, U::SAMPLED);
+    let (image, _image_memory, view) = pipelines::storage_image(&s, U::SAMPLED);
     let (output, _output_memory) =
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let rule = "VUID-VkDescriptorImageInfo-imageLayout-00344";
@@ -1264,7 +1269,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
     assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
     drop(rec);
 
-    let both = image_reader_with(&s, &view, &output, Some(&view));
+    let both = image_reader_with(&s, &view, &output, Some(&view), IMAGE_COMP);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
@@ -1284,52 +1289,6 @@ fn dispatches_see_the_layouts_of_their_moment() {
     assert_silent(&s.messages);
 }
 
-/// A storage image of 4x4 RGBA8 with transfer-destination usage, its memory and a
-/// view of it.
-fn storage_image(s: &Setup) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
-    storage_image_with(s, U::empty())
-}
-
-/// [`storage_image`] with `usage` as well.
-fn storage_image_with(
-    s: &Setup,
-    usage: vk::ImageUsageFlags,
-) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
-    let d = &s.device;
-    let image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 4,
-                    height: 4,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(U::STORAGE | U::TRANSFER_DST | usage),
-        )
-        .expect("image");
-    let memory = s.bind_image(&image);
-    let view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("view");
-    (image, memory, view)
-}
-
 /// A write that runs on from one binding into the next puts its descriptors where
 /// they land: a copy from the binding it reached carries them (and what keeps their
 /// objects alive) into the destination set, whose dispatch then reads the copied
@@ -1339,8 +1298,8 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let (_first_image, _first_memory, first_view) = storage_image(&s);
-    let (second_image, _second_memory, second_view) = storage_image(&s);
+    let (_first_image, _first_memory, first_view) = pipelines::storage_image(&s, U::empty());
+    let (second_image, _second_memory, second_view) = pipelines::storage_image(&s, U::empty());
     let (output, _output_memory) =
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let reader = image_reader(&s, &first_view, &output);
@@ -1410,5 +1369,92 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
         "VUID-VkDescriptorImageInfo-imageLayout-00344"
     );
     drop(rec);
+    assert_silent(&s.messages);
+}
+
+/// Each dispatch command reads its sets' image views with its shader's image types:
+/// a 2D view where the shader reads a 2D array image breaks the view type rule, a
+/// UNORM view where it reads unsigned integer texels the numeric format rule. tuff
+/// refuses the safe call, and the layer names the same rule for the unchecked one.
+#[test]
+fn dispatches_read_views_their_shaders_can_read() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_image, _image_memory, view) = pipelines::storage_image(&s, U::empty());
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
+    let (args, _args_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::INDIRECT_BUFFER);
+    let cases: [(&[u8], &str); 2] = [
+        (
+            include_bytes!("../shaders/spv/image_array.comp.spv"),
+            "viewType-07752",
+        ),
+        (
+            include_bytes!("../shaders/spv/image_uint.comp.spv"),
+            "format-07753",
+        ),
+    ];
+    type Dispatch =
+        fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
+    let commands: [(&str, Dispatch); 3] = [
+        ("vkCmdDispatch", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch(1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchBase", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchIndirect", |r, args, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
+            } else {
+                unsafe { r.cmd_dispatch_indirect(args, 0) }
+            }
+        }),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (code, suffix) in cases {
+        let reader = image_reader_with(&s, &view, &output, None, code);
+        for (command, dispatch) in commands {
+            let rule = format!("VUID-{command}-{suffix}");
+            for unchecked in [false, true] {
+                let mut rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+                    .expect("pipeline");
+                rec.cmd_bind_descriptor_sets(
+                    vk::PipelineBindPoint::COMPUTE,
+                    &reader.layout,
+                    0,
+                    &[&reader.set],
+                    &[],
+                )
+                .expect("set");
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = dispatch(&mut rec, &args, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    assert!(
+                        said.iter().any(|m| m.contains(&rule)),
+                        "the layer did not name {rule}; it said {said:?}"
+                    );
+                } else {
+                    assert_eq!(vuid(dispatch(&mut rec, &args, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
     assert_silent(&s.messages);
 }

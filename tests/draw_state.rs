@@ -620,3 +620,153 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
     }
     assert_silent(&s.messages);
 }
+
+/// A graphics pipeline whose fragment shader `code` reads a storage image at set 0
+/// binding 0, with its layout and a set that holds `view` there in `GENERAL`.
+struct ImageDraw {
+    _module: tuff::ShaderModule,
+    _set_layout: tuff::DescriptorSetLayout,
+    layout: tuff::PipelineLayout,
+    pipeline: tuff::Pipeline,
+    _pool: tuff::DescriptorPool,
+    set: tuff::DescriptorSet,
+}
+
+fn image_draw(
+    s: &Setup,
+    p: &pipelines::Pipelines,
+    pass: &tuff::RenderPass,
+    view: &tuff::ImageView,
+    code: &[u8],
+) -> ImageDraw {
+    let d = &s.device;
+    let module = tuff_setup::shader(s, code);
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("pipeline layout");
+    let stages = pipelines::test_stages(&p.vert, &module);
+    let (mut made, _) = pipelines::with_graphics_info(&stages, &layout, pass, |info| unsafe {
+        d.create_graphics_pipelines(None, &[info])
+    })
+    .expect("pipeline");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: vk::DescriptorType::STORAGE_IMAGE,
+        descriptor_count: 1,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("pool");
+    let layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        )
+        .expect("set")
+        .pop()
+        .expect("one set");
+    // A storage image descriptor reads no sampler; the struct takes one.
+    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let images =
+        [tuff::DescriptorImageInfo::new(&sampler, view).image_layout(vk::ImageLayout::GENERAL)];
+    d.update_descriptor_sets(
+        &[tuff::WriteDescriptorSet::new(&set)
+            .dst_binding(0)
+            .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+            .image_info(&images)],
+        &[],
+    )
+    .expect("the storage image");
+    ImageDraw {
+        _module: module,
+        _set_layout: set_layout,
+        layout,
+        pipeline: made.pop().expect("one pipeline"),
+        _pool: pool,
+        set,
+    }
+}
+
+/// Each draw command reads its sets' image views with its shaders' image types: a
+/// 2D view where the fragment shader reads a 2D array image breaks the view type
+/// rule, a UNORM view where it reads unsigned integer texels the numeric format
+/// rule.
+#[test]
+fn draws_read_views_their_shaders_can_read() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let (_image, _image_memory, view) = pipelines::storage_image(&s, vk::ImageUsageFlags::empty());
+    let cases: [(&[u8], &str); 2] = [
+        (
+            include_bytes!("../shaders/spv/image_array.frag.spv"),
+            "viewType-07752",
+        ),
+        (
+            include_bytes!("../shaders/spv/image_uint.frag.spv"),
+            "format-07753",
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    for (code, suffix) in cases {
+        let reader = image_draw(&s, &p, &target.render_pass, &view, code);
+        for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
+            let rule = format!("VUID-{command}-{suffix}");
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &reader.pipeline)
+                    .expect("bind");
+                rec.cmd_bind_descriptor_sets(
+                    vk::PipelineBindPoint::GRAPHICS,
+                    &reader.layout,
+                    0,
+                    &[&reader.set],
+                    &[],
+                )
+                .expect("set");
+                set_viewport(&mut rec);
+                set_scissor(&mut rec);
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    assert!(
+                        said.iter().any(|m| m.contains(&rule)),
+                        "the layer did not name {rule}; it said {said:?}"
+                    );
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
+    assert_silent(&s.messages);
+}

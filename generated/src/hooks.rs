@@ -3417,6 +3417,29 @@ fn pipelines_created(
     }
 }
 
+/// The image variables that the modules of a pipeline's stages declare (every one,
+/// as which of them the entry points use is not read).
+fn stage_images<'a>(
+    device: &Device,
+    stages: impl Iterator<Item = &'a vk::PipelineShaderStageCreateInfo<'a>>,
+) -> Vrc<[(u32, u32, crate::spirv::ImageShape)]> {
+    let live = device.live();
+    let mut images = Vec::new();
+    for stage in stages {
+        if let Some(interface) = live.shader_module(stage.module) {
+            images.extend(
+                interface
+                    .resources
+                    .iter()
+                    .filter_map(|r| Some((r.set, r.binding, r.image?))),
+            );
+        }
+    }
+    images.sort_unstable_by_key(|(set, binding, _)| (*set, *binding));
+    images.dedup();
+    images.into()
+}
+
 /// A pipeline's record before its layout is filled in.
 fn pipeline_record(
     (vertex_bindings, vertex_reads): (u64, Vec<crate::retention::VertexRead>),
@@ -3424,6 +3447,7 @@ fn pipeline_record(
     pass: Option<(Vrc<RenderPassRecord>, u32)>,
     dynamic: u32,
     rendering: Option<Vrc<crate::retention::RenderingFormats>>,
+    images: Vrc<[(u32, u32, crate::spirv::ImageShape)]>,
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::GRAPHICS,
@@ -3438,6 +3462,7 @@ fn pipeline_record(
         pass,
         dynamic,
         rendering,
+        images,
     }
 }
 
@@ -3523,6 +3548,7 @@ pub(crate) fn compute_pipelines_created(
                 None,
                 0,
                 None,
+                stage_images(device, std::iter::once(&i.as_raw().stage)),
             ),
         )
     });
@@ -3579,6 +3605,11 @@ pub(crate) fn graphics_pipelines_created(
                 pass,
                 dynamic,
                 rendering,
+                // SAFETY: the safe struct stores its stages with their count.
+                stage_images(
+                    device,
+                    unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
+                ),
             ),
         )
     });
@@ -3650,6 +3681,7 @@ pub(crate) fn draw_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             Some(vertex_vuid),
+            &rules.images,
         )?;
         draw_state_checks(recorder, rules)
     })?;
@@ -3716,7 +3748,14 @@ pub(crate) struct DrawRules {
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
     pub rendering: [&'static str; 8],
+    /// The image views its shaders' image variables read ([`ImageRules`]).
+    pub images: ImageRules,
 }
+
+/// The rules of a draw or dispatch about the image views its shaders read: the
+/// view type for the image type's `Dim` and `Arrayed`, and the format's numeric type
+/// for its sampled type.
+pub(crate) type ImageRules = [&'static str; 2];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -4019,6 +4058,7 @@ pub(crate) fn dispatch_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
+    images: &ImageRules,
 ) -> Result<()> {
     recorder.verify_state(1, |recorder| {
         bound_pipeline_checks(
@@ -4027,6 +4067,7 @@ pub(crate) fn dispatch_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             None,
+            images,
         )
     })
 }
@@ -4041,6 +4082,7 @@ fn bound_pipeline_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: Option<&'static str>,
+    images: &ImageRules,
 ) -> Result<()> {
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
@@ -4076,7 +4118,53 @@ fn bound_pipeline_checks<S: State>(
             ),
         )?;
     }
+    bound_view_checks(bound, pipeline, images)?;
     descriptor_layout_checks(recorder, bound)
+}
+
+/// Refuses a draw or dispatch whose sets hold an image view that an image variable
+/// of its pipeline's shaders cannot read: a view type other than the one the
+/// variable's `Dim` and `Arrayed` name, or a format whose texels read as another
+/// numeric type than the variable's sampled type (float against integer). Every
+/// image variable the modules declare counts, as which ones the entry points use is
+/// not read.
+fn bound_view_checks(
+    bound: &crate::recorder::Bound,
+    pipeline: &PipelineRecord,
+    rules: &ImageRules,
+) -> Result<()> {
+    for &(set, binding, shape) in pipeline.images.iter() {
+        let Some(Some(images)) = bound.images.get(set as usize) else {
+            continue;
+        };
+        for ((_, element), d) in images.iter().filter(|((b, _), _)| *b == binding) {
+            let at = || format!("set {set} binding {binding} element {element}");
+            if let Some(wanted) = shape.view_type() {
+                if d.view_type != wanted {
+                    refuse(
+                        rules[0],
+                        format!("{}: the shader's image type (Dim {}, Arrayed {}) reads a view of type {wanted:?}, and the descriptor's view is of type {:?}", at(), shape.dim, u32::from(shape.arrayed), d.view_type),
+                    )?;
+                }
+            }
+            let aspect = d.sel.aspect;
+            let texels = if aspect == vk::ImageAspectFlags::STENCIL {
+                2
+            } else if aspect == vk::ImageAspectFlags::DEPTH {
+                1
+            } else {
+                crate::formats::color_numeric(d.format).unwrap_or(0)
+            };
+            if shape.numeric != 0 && texels != 0 && shape.numeric != texels {
+                let name = |n: u32| if n == 1 { "a float" } else { "an integer" };
+                refuse(
+                    rules[1],
+                    format!("{}: the shader's image type has {} sampled type, and the view's format {:?} reads as {} type", at(), name(shape.numeric), d.format, name(texels)),
+                )?;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The recorder remembers the vertex-buffer bindings bound (the first 64, the ones

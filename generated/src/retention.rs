@@ -241,6 +241,10 @@ pub(crate) struct ImageDescriptor {
     pub sel: crate::layouts::Sel,
     /// The descriptor's `imageLayout`.
     pub layout: vk::ImageLayout,
+    /// The view's type.
+    pub view_type: vk::ImageViewType,
+    /// The view's format.
+    pub format: vk::Format,
 }
 
 /// The image descriptors of a set, by (binding, array element) as written.
@@ -423,6 +427,8 @@ pub(crate) struct PipelineRecord {
     /// For a graphics pipeline made for dynamic rendering, the view mask and
     /// attachment formats its chained `VkPipelineRenderingCreateInfo` gives.
     pub rendering: Option<Vrc<RenderingFormats>>,
+    /// The image variables its stages' modules declare: set, binding and image type.
+    pub images: Vrc<[(u32, u32, crate::spirv::ImageShape)]>,
 }
 
 impl RenderingFormats {
@@ -966,6 +972,8 @@ impl Live {
                 layers,
             },
             layout: info.image_layout,
+            view_type: view.view_type,
+            format: view.format,
         })
     }
 

@@ -148,6 +148,38 @@ impl ResourceKind {
     }
 }
 
+/// The type of an image variable (`OpTypeImage`, alone or in an
+/// `OpTypeSampledImage`), as far as a view bound to it must match it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct ImageShape {
+    /// `Dim`: 0 1D, 1 2D, 2 3D, 3 Cube, 4 Rect, 5 Buffer, 6 SubpassData.
+    pub dim: u32,
+    /// `Arrayed`.
+    pub arrayed: bool,
+    /// The sampled type, as [`crate::formats::color_numeric`] numbers them: 1
+    /// `OpTypeFloat`, 2 `OpTypeInt`, 0 anything else.
+    pub numeric: u32,
+}
+
+impl ImageShape {
+    /// The view type a view read through the variable must have (the
+    /// specification's Instruction/Sampler/Image View Validation), for the `Dim`s a
+    /// view type names.
+    pub(crate) fn view_type(self) -> Option<ash::vk::ImageViewType> {
+        use ash::vk::ImageViewType as V;
+        Some(match (self.dim, self.arrayed) {
+            (0, false) => V::TYPE_1D,
+            (0, true) => V::TYPE_1D_ARRAY,
+            (1, false) => V::TYPE_2D,
+            (1, true) => V::TYPE_2D_ARRAY,
+            (2, false) => V::TYPE_3D,
+            (3, false) => V::CUBE,
+            (3, true) => V::CUBE_ARRAY,
+            _ => return None,
+        })
+    }
+}
+
 /// A resource variable a module declares: its set, binding, kind and array size (0
 /// for a runtime-sized array).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -160,6 +192,8 @@ pub(crate) struct Resource {
     pub kind: ResourceKind,
     /// Descriptors the variable spans: 1, an array's length, or 0 for a runtime array.
     pub count: u32,
+    /// For an image variable, its image type.
+    pub image: Option<ImageShape>,
 }
 
 /// What a module's shaders need from a pipeline layout: every resource variable it
@@ -348,6 +382,29 @@ impl Module {
         }
     }
 
+    /// The image type of a variable whose type under any arrays is `element`.
+    fn image_shape(&self, element: u32) -> Option<ImageShape> {
+        let image = match self.ty(element)? {
+            (OP_TYPE_SAMPLED_IMAGE, [image, ..]) => *image,
+            (OP_TYPE_IMAGE, _) => element,
+            _ => return None,
+        };
+        // Operands: sampled type, Dim, Depth, Arrayed, MS, Sampled, format.
+        let Some((OP_TYPE_IMAGE, [sampled, dim, _, arrayed, ..])) = self.ty(image) else {
+            return None;
+        };
+        let numeric = match self.ty(*sampled) {
+            Some((OP_TYPE_FLOAT, _)) => 1,
+            Some((OP_TYPE_INT, _)) => 2,
+            _ => 0,
+        };
+        Some(ImageShape {
+            dim: *dim,
+            arrayed: *arrayed == 1,
+            numeric,
+        })
+    }
+
     /// The bytes a push-constant block of struct type `id` spans.
     fn block_range(&self, id: u32) -> (u32, u32) {
         let Some((OP_TYPE_STRUCT, members)) = self.ty(id) else {
@@ -472,6 +529,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             binding,
             kind: m.kind(storage, element),
             count,
+            image: m.image_shape(element),
         });
     }
     out
@@ -518,6 +576,23 @@ mod tests {
             ]
         );
         assert_eq!(comp.push_constants, None);
+        assert!(comp.resources.iter().all(|r| r.image.is_none()));
+        let image = interface(&words(include_bytes!("../../shaders/spv/image.comp.spv")));
+        let shape = image
+            .resources
+            .iter()
+            .find(|r| r.binding == 0)
+            .and_then(|r| r.image)
+            .expect("the storage image");
+        assert_eq!(
+            shape,
+            ImageShape {
+                dim: 1,
+                arrayed: false,
+                numeric: 1
+            }
+        );
+        assert_eq!(shape.view_type(), Some(ash::vk::ImageViewType::TYPE_2D));
         let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
         assert!(frag.resources.is_empty());
         // The test fragment shader pushes one vec4.

@@ -495,3 +495,44 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         .expect("one set");
     UniformSet { set, pool, layout }
 }
+
+/// A storage image of 4x4 RGBA8 with storage and transfer-destination usage and
+/// `usage` as well, its memory and a 2D view of it.
+pub fn storage_image(
+    s: &Setup,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    let d = &s.device;
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::TRANSFER_DST | usage),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    let view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("view");
+    (image, memory, view)
+}

@@ -398,6 +398,67 @@ pub(crate) fn plane_format(format: vk::Format, plane: usize) -> Option<vk::Forma
     };
     Some(vk::Format::from_raw(raw as i32))
 }
+/// The SPIR-V sampled type the texels of a color format read as: 1 for a
+/// float type (`UNORM`, `SNORM`, `SFLOAT`, `SRGB`, ...), 2 for an integer type
+/// (`UINT`, `SINT`); `None` for a depth/stencil format or one the registry
+/// does not describe.
+pub(crate) fn color_numeric(format: vk::Format) -> Option<u32> {
+    Some(
+        match format.as_raw() {
+            1..=12 => 1,
+            13..=14 => 2,
+            15..=19 => 1,
+            20..=21 => 2,
+            22..=26 => 1,
+            27..=28 => 2,
+            29..=33 => 1,
+            34..=35 => 2,
+            36..=40 => 1,
+            41..=42 => 2,
+            43..=47 => 1,
+            48..=49 => 2,
+            50..=54 => 1,
+            55..=56 => 2,
+            57..=61 => 1,
+            62..=63 => 2,
+            64..=67 => 1,
+            68..=69 => 2,
+            70..=73 => 1,
+            74..=75 => 2,
+            76..=80 => 1,
+            81..=82 => 2,
+            83..=87 => 1,
+            88..=89 => 2,
+            90..=94 => 1,
+            95..=96 => 2,
+            97 => 1,
+            98..=99 => 2,
+            100 => 1,
+            101..=102 => 2,
+            103 => 1,
+            104..=105 => 2,
+            106 => 1,
+            107..=108 => 2,
+            109 => 1,
+            110..=111 => 2,
+            112 => 1,
+            113..=114 => 2,
+            115 => 1,
+            116..=117 => 2,
+            118 => 1,
+            119..=120 => 2,
+            121..=123 => 1,
+            131..=184 => 1,
+            1000054000..=1000054007 => 1,
+            1000066000..=1000066013 => 1,
+            1000156000..=1000156033 => 1,
+            1000330000..=1000330003 => 1,
+            1000340000..=1000340001 => 1,
+            1000464000 => 2,
+            _ => return None,
+        },
+    )
+}
 /// For a format that needs a sampler Y'CbCr conversion, its chroma
 /// subsampling (420, 422 or 444, vk.xml's `chroma`); `None` for any other.
 pub(crate) fn chroma(format: vk::Format) -> Option<u32> {

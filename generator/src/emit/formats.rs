@@ -137,6 +137,17 @@ pub(super) fn emit(model: &Model) -> TokenStream {
             .map(|i| i as u32)
     });
     let chroma_arms = value_arms(model, |f| f.chroma.as_deref()?.parse().ok());
+    // The SPIR-V sampled type a color format's texels read as (the specification's
+    // Interpretation of Numeric Format): 1 for OpTypeFloat, 2 for OpTypeInt.
+    let numeric_arms = value_arms(model, |f| {
+        if !f.color() {
+            return None;
+        }
+        match f.numeric.first()?.as_str() {
+            "UINT" | "SINT" => Some(2),
+            _ => Some(1),
+        }
+    });
     let number = |name: &str| {
         model
             .enum_numbers
@@ -206,6 +217,17 @@ pub(super) fn emit(model: &Model) -> TokenStream {
                 _ => return None,
             };
             Some(vk::Format::from_raw(raw as i32))
+        }
+
+        /// The SPIR-V sampled type the texels of a color format read as: 1 for a
+        /// float type (`UNORM`, `SNORM`, `SFLOAT`, `SRGB`, ...), 2 for an integer type
+        /// (`UINT`, `SINT`); `None` for a depth/stencil format or one the registry
+        /// does not describe.
+        pub(crate) fn color_numeric(format: vk::Format) -> Option<u32> {
+            Some(match format.as_raw() {
+                #(#numeric_arms)*
+                _ => return None,
+            })
         }
 
         /// For a format that needs a sampler Y'CbCr conversion, its chroma

@@ -374,6 +374,9 @@ const RANGE: &str = "checks the offsets and sizes against the buffer's size, kep
 const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and that memory is bound to it (or it is sparse)";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
+const IMAGE_VIEW_TYPE: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read)";
+const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
+
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
 /// reference to a constant, so a draw passes a pointer rather than building the
 /// struct.
@@ -430,7 +433,25 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"] }; &RULES }"
+            "-pStencilAttachment-07618\"], images: [\"VUID-",
+            $command,
+            "-viewType-07752\", \"VUID-",
+            $command,
+            "-format-07753\"] }; &RULES }"
+        )
+    };
+}
+
+/// The `ImageRules` of a draw or dispatch command, as the Rust expression its hooks
+/// take.
+macro_rules! image_rules {
+    ($command:literal) => {
+        concat!(
+            "&[\"VUID-",
+            $command,
+            "-viewType-07752\", \"VUID-",
+            $command,
+            "-format-07753\"]"
         )
     };
 }
@@ -452,6 +473,7 @@ macro_rules! bound {
                     "self",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
+                    image_rules!($command),
                 ],
             ),
             settles: &[
@@ -460,6 +482,8 @@ macro_rules! bound {
                     How::Dynamic(PIPELINE_BOUND),
                 ),
                 (concat!("VUID-", $command, "-None-02697"), $sets),
+                (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
+                (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
             ],
             ..NONE
         }
@@ -554,6 +578,8 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-pDepthAttachment-07617"), How::Dynamic(NO_VIEW_FORMATS)),
             (concat!("VUID-", $command, "-pStencilAttachment-06182"), How::Dynamic(RENDERING_FORMATS)),
             (concat!("VUID-", $command, "-pStencilAttachment-07618"), How::Dynamic(NO_VIEW_FORMATS)),
+            (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
+            (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
         ]
     };
 }

@@ -346,12 +346,19 @@ fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
     }
     let mut components = Vec::new();
     let mut bits = Vec::new();
+    let mut numeric = Vec::new();
     let mut plane_formats = Vec::new();
     for child in f.children {
         match child {
-            vk::FormatChild::Component { name, bits: b, .. } => {
+            vk::FormatChild::Component {
+                name,
+                bits: b,
+                numericFormat,
+                ..
+            } => {
                 components.push(name);
                 bits.push(b);
+                numeric.push(numericFormat);
             }
             vk::FormatChild::Plane { compatible, .. } => plane_formats.push(compatible),
             _ => {}
@@ -365,6 +372,7 @@ fn convert_format(f: vk::Format) -> crate::registry::FormatDef {
         planes: plane_formats.len() as u8,
         plane_formats,
         bits,
+        numeric,
         class: f.class,
         chroma: f.chroma,
     }

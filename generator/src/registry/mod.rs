@@ -53,6 +53,8 @@ pub struct FormatDef {
     pub plane_formats: Vec<String>,
     /// Each component's bit width as written (`8`, `24`, `compressed`), in order.
     pub bits: Vec<String>,
+    /// Each component's `numericFormat` (`UNORM`, `UINT`, `SFLOAT`, ...), in order.
+    pub numeric: Vec<String>,
     /// `class`: formats of one class are compatible (views, copies).
     pub class: String,
     /// `chroma` (`420`, `422`, `444`): the format needs a sampler Y'CbCr conversion.

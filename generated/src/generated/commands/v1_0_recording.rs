@@ -2580,7 +2580,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 
 # Safety
 
-The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatch-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatch-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2590,8 +2590,6 @@ The caller upholds these 24 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatch-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDispatch-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDispatch-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDispatch-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDispatch-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDispatch-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDispatch-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDispatch-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
@@ -2613,6 +2611,8 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 
 - `VUID-vkCmdDispatch-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatch-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatch-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDispatch-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatch-groupCountX-00386`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-vkCmdDispatch-groupCountY-00387`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-vkCmdDispatch-groupCountZ-00388`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
@@ -2622,7 +2622,7 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 54 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch(
         &mut self,
@@ -2634,6 +2634,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
             self,
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
+            &["VUID-vkCmdDispatch-viewType-07752", "VUID-vkCmdDispatch-format-07753"],
         )?;
         {
             let r = self
@@ -2650,7 +2651,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,
@@ -2670,7 +2671,7 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 22 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2680,8 +2681,6 @@ The caller upholds these 24 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDispatchIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDispatchIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDispatchIndirect-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDispatchIndirect-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDispatchIndirect-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
@@ -2703,6 +2702,8 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 
 - `VUID-vkCmdDispatchIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatchIndirect-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDispatchIndirect-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatchIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-vkCmdDispatchIndirect-buffer-02709`: dynamic (checks the rule as written (recogniser: object created with usage bits))
 - `VUID-vkCmdDispatchIndirect-offset-02710`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
@@ -2714,7 +2715,7 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 55 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 53 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -2725,6 +2726,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55 (exp
             self,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
+            &[
+                "VUID-vkCmdDispatchIndirect-viewType-07752",
+                "VUID-vkCmdDispatchIndirect-format-07753",
+            ],
         )?;
         {
             let r = self.validate_cmd_dispatch_indirect(buffer, offset);
@@ -2738,7 +2743,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,
@@ -3313,7 +3318,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3321,8 +3326,6 @@ The caller upholds these 42 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDraw-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDraw-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDraw-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDraw-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDraw-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDraw-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDraw-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
@@ -3366,6 +3369,8 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDraw-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDraw-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDraw-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDraw-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDraw-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDraw-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
@@ -3390,7 +3395,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 170 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 168 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3437,6 +3442,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 170 (ex
                         "VUID-vkCmdDraw-pStencilAttachment-06182",
                         "VUID-vkCmdDraw-pStencilAttachment-07618",
                     ],
+                    images: [
+                        "VUID-vkCmdDraw-viewType-07752",
+                        "VUID-vkCmdDraw-format-07753",
+                    ],
                 };
                 &RULES
             },
@@ -3460,7 +3469,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 170 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3489,7 +3498,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3497,8 +3506,6 @@ The caller upholds these 43 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDrawIndexed-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDrawIndexed-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndexed-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndexed-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDrawIndexed-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
@@ -3543,6 +3550,8 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexed-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDrawIndexed-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDrawIndexed-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexed-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexed-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
@@ -3568,7 +3577,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 171 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 169 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3627,6 +3636,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 171 (ex
                         "VUID-vkCmdDrawIndexed-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndexed-pStencilAttachment-07618",
                     ],
+                    images: [
+                        "VUID-vkCmdDrawIndexed-viewType-07752",
+                        "VUID-vkCmdDrawIndexed-format-07753",
+                    ],
                 };
                 &RULES
             },
@@ -3651,7 +3664,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 171 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3682,7 +3695,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 44 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3690,8 +3703,6 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDrawIndexedIndirect-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDrawIndexedIndirect-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndexedIndirect-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDrawIndexedIndirect-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
@@ -3739,6 +3750,8 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndexedIndirect-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDrawIndexedIndirect-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndexedIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
@@ -3769,10 +3782,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 174.
+Left to the caller (listed one by one in the crate's `validation.json`): 172.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 173: explicit rule; the wrappers do not check it*/
+- 171: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3826,6 +3839,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174.
                         "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618",
                     ],
+                    images: [
+                        "VUID-vkCmdDrawIndexedIndirect-viewType-07752",
+                        "VUID-vkCmdDrawIndexedIndirect-format-07753",
+                    ],
                 };
                 &RULES
             },
@@ -3844,7 +3861,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3866,7 +3883,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3874,8 +3891,6 @@ The caller upholds these 45 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDrawIndirect-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDrawIndirect-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDrawIndirect-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDrawIndirect-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDrawIndirect-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
@@ -3922,6 +3937,8 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-None-02859`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
+- `VUID-vkCmdDrawIndirect-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDrawIndirect-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDrawIndirect-renderPass-02684`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirect-subpass-02685`: dynamic (checks the bound pipeline's render pass and subpass, recorded at its creation, against the render pass instance's and its current subpass (a pipeline made for dynamic rendering is refused inside one))
 - `VUID-vkCmdDrawIndirect-None-04007`: dynamic (checks a vertex buffer is bound at every binding that an attribute the vertex shader reads comes from (the pipeline records them from its vertex input state and the shader's input locations; the recorder tracks the bindings bound))
@@ -3951,10 +3968,10 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 173.
+Left to the caller (listed one by one in the crate's `validation.json`): 171.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 172: explicit rule; the wrappers do not check it*/
+- 170: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -4007,6 +4024,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 173.
                         "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
                     ],
+                    images: [
+                        "VUID-vkCmdDrawIndirect-viewType-07752",
+                        "VUID-vkCmdDrawIndirect-format-07753",
+                    ],
                 };
                 &RULES
             },
@@ -4023,7 +4044,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 173.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 26 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -17,8 +17,6 @@ The caller upholds these 28 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchBase-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDispatchBase-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDispatchBase-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDispatchBase-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
-- `VUID-vkCmdDispatchBase-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
 - `VUID-vkCmdDispatchBase-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
 - `VUID-vkCmdDispatchBase-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX`
@@ -44,16 +42,18 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 
 - `VUID-vkCmdDispatchBase-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchBase-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatchBase-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
+- `VUID-vkCmdDispatchBase-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 63.
+Left to the caller (listed one by one in the crate's `validation.json`): 61.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 60: explicit rule; the wrappers do not check it*/
+- 58: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -68,6 +68,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63.
             self,
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
+            &[
+                "VUID-vkCmdDispatchBase-viewType-07752",
+                "VUID-vkCmdDispatchBase-format-07753",
+            ],
         )?;
         {
             let r = self
@@ -91,7 +95,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 63.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
