@@ -955,19 +955,20 @@ struct ImageReader {
 }
 
 fn image_reader(s: &Setup, view: &tuff::ImageView, output: &tuff::Buffer) -> ImageReader {
-    image_reader_with(s, view, output, None, IMAGE_COMP)
+    image_reader_with(s, view, Some(output), None, IMAGE_COMP)
 }
 
 /// The compute shader that reads a storage image at binding 0 into the buffer at 1.
 const IMAGE_COMP: &[u8] = include_bytes!("../shaders/spv/image.comp.spv");
 
 /// [`image_reader`] of the compute shader `code` (which reads binding 0 and writes
-/// binding 1), whose set also holds `sampled` at binding 2 as a sampled image in
-/// `SHADER_READ_ONLY_OPTIMAL` (the shader does not read it).
+/// binding 1, left unwritten without `output`), whose set also holds `sampled` at
+/// binding 2 as a sampled image in `SHADER_READ_ONLY_OPTIMAL` (the shader does not
+/// read it).
 fn image_reader_with(
     s: &Setup,
     view: &tuff::ImageView,
-    output: &tuff::Buffer,
+    output: Option<&tuff::Buffer>,
     sampled: Option<&tuff::ImageView>,
     code: &[u8],
 ) -> ImageReader {
@@ -1029,15 +1030,13 @@ fn image_reader_with(
     let set = one_set(s, &pool, &set_layout);
     let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let images = image_info(&sampler, view, L::GENERAL);
-    let buffers = buffer_info(Some(output), 0, vk::WHOLE_SIZE);
-    d.update_descriptor_sets(
-        &[
-            image_write(&set, 0, T::STORAGE_IMAGE, &images),
-            buffer_write(&set, 1, T::STORAGE_BUFFER, &buffers),
-        ],
-        &[],
-    )
-    .expect("the reader's set");
+    d.update_descriptor_sets(&[image_write(&set, 0, T::STORAGE_IMAGE, &images)], &[])
+        .expect("the reader's image");
+    if let Some(output) = output {
+        let buffers = buffer_info(Some(output), 0, vk::WHOLE_SIZE);
+        d.update_descriptor_sets(&[buffer_write(&set, 1, T::STORAGE_BUFFER, &buffers)], &[])
+            .expect("the reader's buffer");
+    }
     if let Some(sampled) = sampled {
         let images = image_info(&sampler, sampled, L::SHADER_READ_ONLY_OPTIMAL);
         d.update_descriptor_sets(&[image_write(&set, 2, T::SAMPLED_IMAGE, &images)], &[])
@@ -1269,7 +1268,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
     assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
     drop(rec);
 
-    let both = image_reader_with(&s, &view, &output, Some(&view), IMAGE_COMP);
+    let both = image_reader_with(&s, &view, Some(&output), Some(&view), IMAGE_COMP);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
@@ -1374,8 +1373,10 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
 
 /// Each dispatch command reads its sets' image views with its shader's image types:
 /// a 2D view where the shader reads a 2D array image breaks the view type rule, a
-/// UNORM view where it reads unsigned integer texels the numeric format rule. tuff
-/// refuses the safe call, and the layer names the same rule for the unchecked one.
+/// UNORM view where it reads unsigned integer texels the numeric format rule; a set
+/// whose output buffer was never written breaks the rule that the descriptors a
+/// shader reads are valid. tuff refuses the safe call, and the layer names the same
+/// rule for the unchecked one.
 #[test]
 fn dispatches_read_views_their_shaders_can_read() {
     let _serial = vulkan::serial();
@@ -1385,15 +1386,18 @@ fn dispatches_read_views_their_shaders_can_read() {
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let (args, _args_memory) =
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::INDIRECT_BUFFER);
-    let cases: [(&[u8], &str); 2] = [
+    let cases: [(&[u8], Option<&tuff::Buffer>, &str); 3] = [
         (
             include_bytes!("../shaders/spv/image_array.comp.spv"),
+            Some(&output),
             "viewType-07752",
         ),
         (
             include_bytes!("../shaders/spv/image_uint.comp.spv"),
+            Some(&output),
             "format-07753",
         ),
+        (IMAGE_COMP, None, "None-02699"),
     ];
     type Dispatch =
         fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
@@ -1421,8 +1425,8 @@ fn dispatches_read_views_their_shaders_can_read() {
         }),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    for (code, suffix) in cases {
-        let reader = image_reader_with(&s, &view, &output, None, code);
+    for (code, output, suffix) in cases {
+        let reader = image_reader_with(&s, &view, output, None, code);
         for (command, dispatch) in commands {
             let rule = format!("VUID-{command}-{suffix}");
             for unchecked in [false, true] {
@@ -1456,5 +1460,44 @@ fn dispatches_read_views_their_shaders_can_read() {
             }
         }
     }
+    assert_silent(&s.messages);
+}
+
+/// A copy of a descriptor that was never written leaves its destination unwritten:
+/// a dispatch that reads it is refused, though the slot was written before.
+#[test]
+fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_image, _image_memory, view) = pipelines::storage_image(&s, U::empty());
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
+    let reader = image_reader(&s, &view, &output);
+    let unwritten = image_reader_with(&s, &view, None, None, IMAGE_COMP);
+    let copy = tuff::CopyDescriptorSet::new(&unwritten.set, &reader.set)
+        .src_binding(1)
+        .dst_binding(1)
+        .descriptor_count(1);
+    s.device.update_descriptor_sets(&[], &[copy]).expect("copy");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+        .expect("pipeline");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::COMPUTE,
+        &reader.layout,
+        0,
+        &[&reader.set],
+        &[],
+    )
+    .expect("set");
+    // SAFETY: the shader promise; the dispatch is refused.
+    assert_eq!(
+        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        "VUID-vkCmdDispatch-None-02699"
+    );
+    drop(rec);
     assert_silent(&s.messages);
 }

@@ -636,7 +636,7 @@ fn image_draw(
     s: &Setup,
     p: &pipelines::Pipelines,
     pass: &tuff::RenderPass,
-    view: &tuff::ImageView,
+    view: Option<&tuff::ImageView>,
     code: &[u8],
 ) -> ImageDraw {
     let d = &s.device;
@@ -682,16 +682,19 @@ fn image_draw(
         .expect("one set");
     // A storage image descriptor reads no sampler; the struct takes one.
     let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
-    let images =
-        [tuff::DescriptorImageInfo::new(&sampler, view).image_layout(vk::ImageLayout::GENERAL)];
-    d.update_descriptor_sets(
-        &[tuff::WriteDescriptorSet::new(&set)
-            .dst_binding(0)
-            .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
-            .image_info(&images)],
-        &[],
-    )
-    .expect("the storage image");
+    if let Some(view) = view {
+        let images = [
+            tuff::DescriptorImageInfo::new(&sampler, view).image_layout(vk::ImageLayout::GENERAL)
+        ];
+        d.update_descriptor_sets(
+            &[tuff::WriteDescriptorSet::new(&set)
+                .dst_binding(0)
+                .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+                .image_info(&images)],
+            &[],
+        )
+        .expect("the storage image");
+    }
     ImageDraw {
         _module: module,
         _set_layout: set_layout,
@@ -705,7 +708,8 @@ fn image_draw(
 /// Each draw command reads its sets' image views with its shaders' image types: a
 /// 2D view where the fragment shader reads a 2D array image breaks the view type
 /// rule, a UNORM view where it reads unsigned integer texels the numeric format
-/// rule.
+/// rule; and a set whose storage image was never written breaks the rule that the
+/// descriptors a shader reads are valid.
 #[test]
 fn draws_read_views_their_shaders_can_read() {
     let _serial = vulkan::serial();
@@ -715,14 +719,21 @@ fn draws_read_views_their_shaders_can_read() {
     let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
     let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
     let (_image, _image_memory, view) = pipelines::storage_image(&s, vk::ImageUsageFlags::empty());
-    let cases: [(&[u8], &str); 2] = [
+    let cases: [(&[u8], Option<&tuff::ImageView>, &str); 3] = [
         (
             include_bytes!("../shaders/spv/image_array.frag.spv"),
+            Some(&view),
             "viewType-07752",
         ),
         (
             include_bytes!("../shaders/spv/image_uint.frag.spv"),
+            Some(&view),
             "format-07753",
+        ),
+        (
+            include_bytes!("../shaders/spv/image_array.frag.spv"),
+            None,
+            "None-02699",
         ),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -730,8 +741,8 @@ fn draws_read_views_their_shaders_can_read() {
     let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
         .render_area(area())
         .clear_values(&clear);
-    for (code, suffix) in cases {
-        let reader = image_draw(&s, &p, &target.render_pass, &view, code);
+    for (code, view, suffix) in cases {
+        let reader = image_draw(&s, &p, &target.render_pass, view, code);
         for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
             let rule = format!("VUID-{command}-{suffix}");
             for unchecked in [false, true] {

@@ -3417,27 +3417,22 @@ fn pipelines_created(
     }
 }
 
-/// The image variables that the modules of a pipeline's stages declare (every one,
-/// as which of them the entry points use is not read).
-fn stage_images<'a>(
+/// The resource variables that the modules of a pipeline's stages declare (every
+/// one, as which of them the entry points use is not read), by set and binding.
+fn stage_resources<'a>(
     device: &Device,
     stages: impl Iterator<Item = &'a vk::PipelineShaderStageCreateInfo<'a>>,
-) -> Vrc<[(u32, u32, crate::spirv::ImageShape)]> {
+) -> Vrc<[crate::spirv::Resource]> {
     let live = device.live();
-    let mut images = Vec::new();
+    let mut resources = Vec::new();
     for stage in stages {
         if let Some(interface) = live.shader_module(stage.module) {
-            images.extend(
-                interface
-                    .resources
-                    .iter()
-                    .filter_map(|r| Some((r.set, r.binding, r.image?))),
-            );
+            resources.extend_from_slice(&interface.resources);
         }
     }
-    images.sort_unstable_by_key(|(set, binding, _)| (*set, *binding));
-    images.dedup();
-    images.into()
+    resources.sort_unstable_by_key(|r| (r.set, r.binding));
+    resources.dedup();
+    resources.into()
 }
 
 /// A pipeline's record before its layout is filled in.
@@ -3447,7 +3442,7 @@ fn pipeline_record(
     pass: Option<(Vrc<RenderPassRecord>, u32)>,
     dynamic: u32,
     rendering: Option<Vrc<crate::retention::RenderingFormats>>,
-    images: Vrc<[(u32, u32, crate::spirv::ImageShape)]>,
+    resources: Vrc<[crate::spirv::Resource]>,
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::GRAPHICS,
@@ -3462,7 +3457,7 @@ fn pipeline_record(
         pass,
         dynamic,
         rendering,
-        images,
+        resources,
     }
 }
 
@@ -3548,7 +3543,7 @@ pub(crate) fn compute_pipelines_created(
                 None,
                 0,
                 None,
-                stage_images(device, std::iter::once(&i.as_raw().stage)),
+                stage_resources(device, std::iter::once(&i.as_raw().stage)),
             ),
         )
     });
@@ -3606,7 +3601,7 @@ pub(crate) fn graphics_pipelines_created(
                 dynamic,
                 rendering,
                 // SAFETY: the safe struct stores its stages with their count.
-                stage_images(
+                stage_resources(
                     device,
                     unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
                 ),
@@ -3681,7 +3676,7 @@ pub(crate) fn draw_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             Some(vertex_vuid),
-            &rules.images,
+            &rules.descriptors,
         )?;
         draw_state_checks(recorder, rules)
     })?;
@@ -3748,14 +3743,14 @@ pub(crate) struct DrawRules {
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
     pub rendering: [&'static str; 8],
-    /// The image views its shaders' image variables read ([`ImageRules`]).
-    pub images: ImageRules,
+    /// The descriptors its shaders read ([`DescriptorRules`]).
+    pub descriptors: DescriptorRules,
 }
 
-/// The rules of a draw or dispatch about the image views its shaders read: the
-/// view type for the image type's `Dim` and `Arrayed`, and the format's numeric type
-/// for its sampled type.
-pub(crate) type ImageRules = [&'static str; 2];
+/// The rules of a draw or dispatch about the descriptors its shaders read: an image
+/// view's type for the image type's `Dim` and `Arrayed`, its format's numeric type
+/// for the sampled type, and every descriptor written.
+pub(crate) type DescriptorRules = [&'static str; 3];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -3955,14 +3950,16 @@ pub(crate) fn cmd_bind_descriptor_sets_done<S: State>(
             .collect()
     };
     let bound_points = &mut recorder.bound[i];
-    for (n, (raw, layout, (generation, images))) in bound.into_iter().enumerate() {
+    for (n, (raw, layout, (generation, images, written))) in bound.into_iter().enumerate() {
         let n = first_set as usize + n;
         if bound_points.sets.len() <= n {
             bound_points.sets.resize(n + 1, None);
             bound_points.images.resize(n + 1, None);
+            bound_points.written.resize(n + 1, Default::default());
         }
         bound_points.sets[n] = layout;
         bound_points.images[n] = images;
+        bound_points.written[n] = written;
         // A run of binds of one set (with new dynamic offsets) is remembered once.
         if descriptor_sets.len() > 1 || last != Some(raw.as_raw()) {
             recorder.sets.push((raw.as_raw(), generation));
@@ -3988,6 +3985,51 @@ fn used_images(
         .take(n)
         .flatten()
         .flat_map(|images| images.iter().map(|(_, d)| d))
+}
+
+/// Refuses a draw or dispatch that reads resource `r` where the set bound at its
+/// set number has a descriptor of the binding that was never written.
+fn written_checks(
+    bound: &crate::recorder::Bound,
+    r: &crate::spirv::Resource,
+    vuid: &'static str,
+) -> Result<()> {
+    let (Some(Some(layout)), Some(written)) = (
+        bound.sets.get(r.set as usize),
+        bound.written.get(r.set as usize),
+    ) else {
+        return Ok(());
+    };
+    let Some(b) = layout.bindings.iter().find(|b| b.binding == r.binding) else {
+        return Ok(());
+    };
+    let partly = b
+        .flags
+        .contains(vk::DescriptorBindingFlags::PARTIALLY_BOUND);
+    // A sampler binding with immutable samplers holds its samplers from the start.
+    let fixed = b.immutable && b.ty == vk::DescriptorType::SAMPLER;
+    if partly || fixed {
+        return Ok(());
+    }
+    // The variable's descriptors (a runtime array's: the binding's), or an inline
+    // uniform block's bytes.
+    let count = if r.count == 0 || b.ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
+        b.count
+    } else {
+        r.count.min(b.count)
+    };
+    if let Some(element) = (0..count).find(|e| written.binary_search(&(r.binding, *e)).is_err()) {
+        let what = if b.ty == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
+            "byte"
+        } else {
+            "element"
+        };
+        return refuse(
+            vuid,
+            format!("set {} binding {} {what} {element}, which the pipeline's shaders declare, was never written (when the set was bound)", r.set, r.binding),
+        );
+    }
+    Ok(())
 }
 
 /// Refuses a draw or dispatch whose sets hold an image descriptor whose layout is
@@ -4058,7 +4100,7 @@ pub(crate) fn dispatch_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
-    images: &ImageRules,
+    descriptors: &DescriptorRules,
 ) -> Result<()> {
     recorder.verify_state(1, |recorder| {
         bound_pipeline_checks(
@@ -4067,7 +4109,7 @@ pub(crate) fn dispatch_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             None,
-            images,
+            descriptors,
         )
     })
 }
@@ -4082,7 +4124,7 @@ fn bound_pipeline_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: Option<&'static str>,
-    images: &ImageRules,
+    descriptors: &DescriptorRules,
 ) -> Result<()> {
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
@@ -4118,22 +4160,30 @@ fn bound_pipeline_checks<S: State>(
             ),
         )?;
     }
-    bound_view_checks(bound, pipeline, images)?;
+    bound_descriptor_checks(bound, pipeline, descriptors)?;
     descriptor_layout_checks(recorder, bound)
 }
 
-/// Refuses a draw or dispatch whose sets hold an image view that an image variable
-/// of its pipeline's shaders cannot read: a view type other than the one the
-/// variable's `Dim` and `Arrayed` name, or a format whose texels read as another
-/// numeric type than the variable's sampled type (float against integer). Every
-/// image variable the modules declare counts, as which ones the entry points use is
-/// not read.
-fn bound_view_checks(
+/// Refuses a draw or dispatch whose sets hold, at a binding a resource variable of
+/// its pipeline's shaders reads, a descriptor never written (or whose slot a copy of
+/// an unwritten one emptied), or an image view that an image variable cannot read: a
+/// view type other than the one the variable's `Dim` and `Arrayed` name, or a
+/// format whose texels read as another numeric type than the variable's sampled
+/// type (float against integer). Every variable the modules declare counts, as
+/// which ones the entry points use is not read; a binding with
+/// `PARTIALLY_BOUND` leaves its descriptors to the shader promise (a shader that
+/// reads one that was not written reads past what the pipeline gave it).
+fn bound_descriptor_checks(
     bound: &crate::recorder::Bound,
     pipeline: &PipelineRecord,
-    rules: &ImageRules,
+    rules: &DescriptorRules,
 ) -> Result<()> {
-    for &(set, binding, shape) in pipeline.images.iter() {
+    for r in pipeline.resources.iter() {
+        written_checks(bound, r, rules[2])?;
+        let Some(shape) = r.image else {
+            continue;
+        };
+        let (set, binding) = (r.set, r.binding);
         let Some(Some(images)) = bound.images.get(set as usize) else {
             continue;
         };

@@ -59,6 +59,8 @@ pub(crate) struct Bound {
     /// an update after that leaves the recording invalid, so they stay what a draw
     /// or dispatch reads.
     pub images: Vec<Option<crate::retention::SetImages>>,
+    /// The written slots of the sets bound when they were bound, by set number.
+    pub written: Vec<crate::retention::SetWritten>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.

@@ -229,7 +229,14 @@ struct SetUse {
     /// The image descriptors the set holds (none: `None`), replaced as a whole by
     /// each update, so a recorder that bound the set keeps the list it saw.
     images: Option<SetImages>,
+    /// The slots an update wrote (and no copy of an unwritten slot undid since),
+    /// replaced as a whole by each update like `images`.
+    written: SetWritten,
 }
+
+/// The slots (binding, array element) of a set that hold a written descriptor
+/// (an inline uniform block's: each byte written), sorted.
+pub(crate) type SetWritten = Vrc<Vec<(u32, u32)>>;
 
 /// An image descriptor a set holds: the subresources its view reaches, and the
 /// layout the descriptor says they are in when a command accesses it.
@@ -427,8 +434,8 @@ pub(crate) struct PipelineRecord {
     /// For a graphics pipeline made for dynamic rendering, the view mask and
     /// attachment formats its chained `VkPipelineRenderingCreateInfo` gives.
     pub rendering: Option<Vrc<RenderingFormats>>,
-    /// The image variables its stages' modules declare: set, binding and image type.
-    pub images: Vrc<[(u32, u32, crate::spirv::ImageShape)]>,
+    /// The resource variables its stages' modules declare, by set and binding.
+    pub resources: Vrc<[crate::spirv::Resource]>,
 }
 
 impl RenderingFormats {
@@ -943,12 +950,50 @@ impl Live {
     }
 
     /// The generation of a descriptor set now, what a command buffer that binds it
-    /// remembers, and the image descriptors it holds.
-    pub(crate) fn set_bound(&self, raw: vk::DescriptorSet) -> (u64, Option<SetImages>) {
+    /// remembers, the image descriptors it holds and the slots written.
+    pub(crate) fn set_bound(&self, raw: vk::DescriptorSet) -> (u64, Option<SetImages>, SetWritten) {
+        self.set_uses.lock().get(&raw.as_raw()).map_or_else(
+            || (0, None, SetWritten::default()),
+            |u| (u.generation, u.images.clone(), u.written.clone()),
+        )
+    }
+
+    /// Whether slot `slot` of `set` holds a written descriptor.
+    fn slot_written(&self, set: vk::DescriptorSet, slot: (u32, u32)) -> bool {
         self.set_uses
             .lock()
-            .get(&raw.as_raw())
-            .map_or((0, None), |u| (u.generation, u.images.clone()))
+            .get(&set.as_raw())
+            .is_some_and(|u| u.written.binary_search(&slot).is_ok())
+    }
+
+    /// A set's slots are now written (`true`) or hold a copy of an unwritten slot.
+    /// A slot that loses its descriptor leaves the command buffers that bound the
+    /// set invalid whatever the binding's flags, as their draws were checked with
+    /// it written.
+    fn slots_written(&self, set: vk::DescriptorSet, updates: &[((u32, u32), bool)]) {
+        let undone = {
+            let mut uses = self.set_uses.lock();
+            let Some(u) = uses.get_mut(&set.as_raw()) else {
+                return;
+            };
+            let mut written = (*u.written).clone();
+            let mut undone = false;
+            for &(slot, now) in updates {
+                match (written.binary_search(&slot), now) {
+                    (Err(at), true) => written.insert(at, slot),
+                    (Ok(at), false) => {
+                        written.remove(at);
+                        undone = true;
+                    }
+                    _ => {}
+                }
+            }
+            u.written = Vrc::new(written);
+            undone
+        };
+        if undone {
+            self.set_invalidated(set);
+        }
     }
 
     /// The image descriptor of `info`: the subresources its view reaches (none for a
@@ -1879,6 +1924,10 @@ impl Live {
                 })
                 .collect();
             self.images_written(w.dst_set, images);
+            let written: Vec<_> = (0..w.descriptor_count as usize)
+                .map(|i| (land(i), true))
+                .collect();
+            self.slots_written(w.dst_set, &written);
             for i in 0..w.descriptor_count as usize {
                 // SAFETY (each reader): the caller vouches for `descriptor_count`
                 // elements of the array the type selects, and only that one is read.
@@ -1932,6 +1981,10 @@ impl Live {
                 }
             }
             let from: Vec<(u32, u32)> = (0..c.descriptor_count).map(from_slot).collect();
+            let written: Vec<_> = (0..c.descriptor_count)
+                .map(|i| (to_slot(i), self.slot_written(c.src_set, from_slot(i))))
+                .collect();
+            self.slots_written(c.dst_set, &written);
             let images = (0..c.descriptor_count)
                 .map(to_slot)
                 .zip(self.images_at(c.src_set, &from))
@@ -1968,9 +2021,19 @@ impl Live {
     ) {
         let mut slots = Vec::new();
         let mut images = Vec::new();
+        let mut written = Vec::new();
         let layout = self.set_layout_of(set);
         for e in entries {
             if e.descriptor_type == vk::DescriptorType::INLINE_UNIFORM_BLOCK {
+                // The entry's bytes are the block's, from its offset on.
+                written.extend((0..e.descriptor_count).map(|i| {
+                    let slot = Self::landing(
+                        layout.as_deref(),
+                        e.dst_binding,
+                        e.dst_array_element.saturating_add(i),
+                    );
+                    (slot, true)
+                }));
                 continue;
             }
             for i in 0..e.descriptor_count as usize {
@@ -1989,6 +2052,7 @@ impl Live {
                     e.dst_array_element.saturating_add(i as u32),
                 );
                 images.push((slot, named));
+                written.push((slot, true));
                 // SAFETY (each reader): the caller vouches that the entry's descriptors
                 // lie at its offset and stride, and only the kind the type selects is
                 // read. Template data need not be aligned, so it is read unaligned.
@@ -2009,6 +2073,7 @@ impl Live {
             }
         }
         self.images_written(set, images);
+        self.slots_written(set, &written);
         self.write(set, slots);
     }
 

@@ -270,7 +270,7 @@ pub fn unchained(ext: &str, head: &str) -> bool {
 
 /// The shader promise: the one place where a program vouches for code tuff cannot
 /// check, so that the pipelines and commands that run it can stay safe.
-pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images, its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them.";
+pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images (of a binding created with `PARTIALLY_BOUND`, only descriptors that were written), its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them; when a draw or dispatch is recorded: every descriptor of the bindings its variables read was written (but for `PARTIALLY_BOUND` bindings), and each image view there has the view type and numeric format its image variable reads.";
 const STAGE_MODULE: &str = "checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver)";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
@@ -375,6 +375,7 @@ const BUFFER_USE: &str = "checks the buffer's usage, kept from its creation, and
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
 const IMAGE_VIEW_TYPE: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read)";
+const DESCRIPTORS_WRITTEN: &str = "checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -433,25 +434,29 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"], images: [\"VUID-",
+            "-pStencilAttachment-07618\"], descriptors: [\"VUID-",
             $command,
             "-viewType-07752\", \"VUID-",
             $command,
-            "-format-07753\"] }; &RULES }"
+            "-format-07753\", \"VUID-",
+            $command,
+            "-None-02699\"] }; &RULES }"
         )
     };
 }
 
-/// The `ImageRules` of a draw or dispatch command, as the Rust expression its hooks
-/// take.
-macro_rules! image_rules {
+/// The `DescriptorRules` of a draw or dispatch command, as the Rust expression its
+/// hooks take.
+macro_rules! descriptor_rules {
     ($command:literal) => {
         concat!(
             "&[\"VUID-",
             $command,
             "-viewType-07752\", \"VUID-",
             $command,
-            "-format-07753\"]"
+            "-format-07753\", \"VUID-",
+            $command,
+            "-None-02699\"]"
         )
     };
 }
@@ -473,7 +478,7 @@ macro_rules! bound {
                     "self",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    image_rules!($command),
+                    descriptor_rules!($command),
                 ],
             ),
             settles: &[
@@ -484,6 +489,7 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-None-02697"), $sets),
                 (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
                 (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
+                (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
             ],
             ..NONE
         }
@@ -580,6 +586,7 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-pStencilAttachment-07618"), How::Dynamic(NO_VIEW_FORMATS)),
             (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
             (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
+            (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
         ]
     };
 }
