@@ -1501,3 +1501,108 @@ fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
     drop(rec);
     assert_silent(&s.messages);
 }
+
+/// Each dispatch command reads the push constants its shader declares: before any
+/// push, or with part of the block pushed, tuff refuses the safe call (the test
+/// device does not enable maintenance4; the 1.3.239 layer does not check the rule).
+#[test]
+fn dispatches_read_pushed_constants() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
+    let (args, _args_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::INDIRECT_BUFFER);
+    let module = tuff_setup::shader(&s, include_bytes!("../shaders/spv/push.comp.spv"));
+    let set_layout = storage_layout(&s);
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::COMPUTE,
+        offset: 0,
+        size: 16,
+    }];
+    let layout = d
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(&push),
+        )
+        .expect("pipeline layout");
+    let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&module));
+    // SAFETY: the shader promise (the repository's shader).
+    let (mut pipelines, _) = unsafe {
+        d.create_compute_pipelines(
+            None,
+            &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
+        )
+    }
+    .expect("compute pipeline");
+    let pipeline = pipelines.pop().expect("one pipeline");
+    let pool = storage_pool(&s, 1, vk::DescriptorPoolCreateFlags::empty());
+    let set = one_set(&s, &pool, &set_layout);
+    let buffers = buffer_info(Some(&output), 0, vk::WHOLE_SIZE);
+    d.update_descriptor_sets(&[buffer_write(&set, 0, T::STORAGE_BUFFER, &buffers)], &[])
+        .expect("the output");
+    type Dispatch =
+        fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
+    let commands: [(&str, Dispatch); 3] = [
+        ("vkCmdDispatch", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch(1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchBase", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchIndirect", |r, args, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
+            } else {
+                unsafe { r.cmd_dispatch_indirect(args, 0) }
+            }
+        }),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, dispatch) in commands {
+        let rule = format!("VUID-{command}-maintenance4-06425");
+        for unchecked in [false, true] {
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)
+                .expect("pipeline");
+            rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])
+                .expect("set");
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = dispatch(&mut rec, &args, true);
+                s.messages.abort_on_error(false);
+                // The 1.3.239 layer does not check the rule: tuff's error alone proves
+                // it (the values read are undefined, no memory is touched).
+                let said = s.messages.take();
+                assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
+            } else {
+                assert_eq!(vuid(dispatch(&mut rec, &args, false)), rule);
+                assert_silent(&s.messages);
+                // Half the block pushed is not enough; all of it is.
+                rec.cmd_push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 0, &[0u8; 8])
+                    .expect("push");
+                assert_eq!(vuid(dispatch(&mut rec, &args, false)), rule);
+                rec.cmd_push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 8, &[0u8; 8])
+                    .expect("push");
+                dispatch(&mut rec, &args, false).expect("a dispatch with its push constants");
+            }
+            drop(rec);
+        }
+    }
+    assert_silent(&s.messages);
+}

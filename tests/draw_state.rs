@@ -341,6 +341,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
                     .expect("begin");
                 let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
                 prepare(&mut rec);
+                pipelines::push_color(&mut rec, &p);
                 if unchecked {
                     s.messages.abort_on_error(true);
                     let _ = draw(&mut rec, true);
@@ -777,6 +778,69 @@ fn draws_read_views_their_shaders_can_read() {
                 }
                 drop(rec);
             }
+        }
+    }
+    assert_silent(&s.messages);
+}
+
+/// Each draw command reads the push constants its fragment shader declares: before
+/// any push, tuff refuses the safe call (the test device does not enable
+/// maintenance4; the 1.3.239 layer does not check the rule). A push with a
+/// layout of other push-constant ranges leaves the earlier bytes undefined, so a draw
+/// after it is refused again though the same state passed before.
+#[test]
+fn draws_read_pushed_constants() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let other_ranges = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::VERTEX,
+        offset: 0,
+        size: 4,
+    }];
+    let other = s
+        .device
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&other_ranges),
+        )
+        .expect("layout");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
+        let rule = format!("VUID-{command}-maintenance4-06425");
+        for unchecked in [false, true] {
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+                .expect("bind");
+            set_viewport(&mut rec);
+            set_scissor(&mut rec);
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = draw(&mut rec, true);
+                s.messages.abort_on_error(false);
+                // The 1.3.239 layer does not check the rule: tuff's error alone proves
+                // it (the values read are undefined, no memory is touched).
+                let said = s.messages.take();
+                assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), rule);
+                assert_silent(&s.messages);
+                pipelines::push_color(&mut rec, &p);
+                draw(&mut rec, false).expect("a draw with its push constants");
+                rec.cmd_push_constants(&other, vk::ShaderStageFlags::VERTEX, 0, &[0u8; 4])
+                    .expect("push with another layout");
+                assert_eq!(vuid(draw(&mut rec, false)), rule);
+            }
+            drop(rec);
         }
     }
     assert_silent(&s.messages);

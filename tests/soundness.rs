@@ -3520,6 +3520,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             .expect("bind");
         rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
         rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
+        pipelines::push_color(&mut rec, &p);
         let no_index: [(&str, &DrawCall<'_>); 3] = [
             ("VUID-vkCmdDrawIndexed-None-07312", &draws[1].1),
             ("VUID-vkCmdDrawIndexedIndirect-None-07312", &draws[3].1),

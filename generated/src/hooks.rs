@@ -3422,17 +3422,21 @@ fn pipelines_created(
 fn stage_resources<'a>(
     device: &Device,
     stages: impl Iterator<Item = &'a vk::PipelineShaderStageCreateInfo<'a>>,
-) -> Vrc<[crate::spirv::Resource]> {
+) -> (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>) {
     let live = device.live();
     let mut resources = Vec::new();
+    let mut push: Option<(u32, u32)> = None;
     for stage in stages {
         if let Some(interface) = live.shader_module(stage.module) {
             resources.extend_from_slice(&interface.resources);
+            if let Some((start, end)) = interface.push_constants {
+                push = Some(push.map_or((start, end), |(s, e)| (s.min(start), e.max(end))));
+            }
         }
     }
     resources.sort_unstable_by_key(|r| (r.set, r.binding));
     resources.dedup();
-    resources.into()
+    (resources.into(), push)
 }
 
 /// A pipeline's record before its layout is filled in.
@@ -3442,7 +3446,7 @@ fn pipeline_record(
     pass: Option<(Vrc<RenderPassRecord>, u32)>,
     dynamic: u32,
     rendering: Option<Vrc<crate::retention::RenderingFormats>>,
-    resources: Vrc<[crate::spirv::Resource]>,
+    (resources, push): (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>),
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::GRAPHICS,
@@ -3458,6 +3462,7 @@ fn pipeline_record(
         dynamic,
         rendering,
         resources,
+        push,
     }
 }
 
@@ -3676,7 +3681,7 @@ pub(crate) fn draw_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             Some(vertex_vuid),
-            &rules.descriptors,
+            &rules.shader,
         )?;
         draw_state_checks(recorder, rules)
     })?;
@@ -3743,14 +3748,14 @@ pub(crate) struct DrawRules {
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
     pub rendering: [&'static str; 8],
-    /// The descriptors its shaders read ([`DescriptorRules`]).
-    pub descriptors: DescriptorRules,
+    /// What its shaders read ([`ShaderRules`]).
+    pub shader: ShaderRules,
 }
 
-/// The rules of a draw or dispatch about the descriptors its shaders read: an image
-/// view's type for the image type's `Dim` and `Arrayed`, its format's numeric type
-/// for the sampled type, and every descriptor written.
-pub(crate) type DescriptorRules = [&'static str; 3];
+/// The rules of a draw or dispatch about what its shaders read: an image view's
+/// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
+/// sampled type, every descriptor written, and the push constants set.
+pub(crate) type ShaderRules = [&'static str; 4];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -3987,6 +3992,74 @@ fn used_images(
         .flat_map(|images| images.iter().map(|(_, d)| d))
 }
 
+/// Refuses a draw or dispatch whose pipeline's shaders read push constants that were
+/// not all pushed, with a layout compatible for push constants with the pipeline's,
+/// unless the device enabled `maintenance4` (which lets them read undefined values).
+fn push_constant_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline: &PipelineRecord,
+    vuid: &'static str,
+) -> Result<()> {
+    let Some((start, end)) = pipeline.push else {
+        return Ok(());
+    };
+    if start >= end
+        || recorder
+            .device()
+            .live()
+            .with_features(|f| f.v13.maintenance4)
+            == vk::TRUE
+    {
+        return Ok(());
+    }
+    let pushed = recorder.pushed.as_ref();
+    let compatible = pushed.is_some_and(|p| p.layout.same_push_ranges(&pipeline.layout));
+    if !compatible {
+        return refuse(
+            vuid,
+            format!("the bound pipeline's shaders read push constants (bytes {start} to {end}), and none were pushed with a layout of the same push-constant ranges"),
+        );
+    }
+    if let Some(byte) = (start..end).find(|b| !pushed.is_some_and(|p| p.has(*b))) {
+        return refuse(
+            vuid,
+            format!("the bound pipeline's shaders read push constants (bytes {start} to {end}), and byte {byte} was not pushed"),
+        );
+    }
+    Ok(())
+}
+
+/// After `vkCmdPushConstants`: its bytes are set, for the layouts compatible for
+/// push constants with `layout`; a push with a layout of other ranges leaves the
+/// earlier bytes undefined.
+pub(crate) fn cmd_push_constants_done<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    layout: &PipelineLayout,
+    offset: u32,
+    values: &[u8],
+) {
+    let key = (layout.raw(), offset, values.len());
+    if recorder.pushed.as_ref().is_some_and(|p| p.last == key) {
+        return;
+    }
+    let Ok(record) = recorder.layout_record(layout) else {
+        return;
+    };
+    let compatible = recorder
+        .pushed
+        .as_ref()
+        .is_some_and(|p| Vrc::ptr_eq(&p.layout, &record) || p.layout.same_push_ranges(&record));
+    if !compatible {
+        recorder.pushed = Some(crate::recorder::Pushed::new(record));
+        // Draws checked with the earlier bytes set are checked again.
+        recorder.state_changed();
+    }
+    if let Some(p) = recorder.pushed.as_mut() {
+        p.set(offset, values.len() as u32);
+        p.last = key;
+    }
+}
+
 /// Refuses a draw or dispatch that reads resource `r` where the set bound at its
 /// set number has a descriptor of the binding that was never written.
 fn written_checks(
@@ -4100,7 +4173,7 @@ pub(crate) fn dispatch_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
-    descriptors: &DescriptorRules,
+    shader: &ShaderRules,
 ) -> Result<()> {
     recorder.verify_state(1, |recorder| {
         bound_pipeline_checks(
@@ -4109,7 +4182,7 @@ pub(crate) fn dispatch_checks<S: State>(
             pipeline_vuid,
             sets_vuid,
             None,
-            descriptors,
+            shader,
         )
     })
 }
@@ -4124,7 +4197,7 @@ fn bound_pipeline_checks<S: State>(
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
     vertex_vuid: Option<&'static str>,
-    descriptors: &DescriptorRules,
+    shader: &ShaderRules,
 ) -> Result<()> {
     let Some(bound) = crate::recorder::Bound::index(bind_point).map(|i| &recorder.bound[i]) else {
         return Ok(());
@@ -4160,7 +4233,8 @@ fn bound_pipeline_checks<S: State>(
             ),
         )?;
     }
-    bound_descriptor_checks(bound, pipeline, descriptors)?;
+    bound_descriptor_checks(bound, pipeline, shader)?;
+    push_constant_checks(recorder, pipeline, shader[3])?;
     descriptor_layout_checks(recorder, bound)
 }
 
@@ -4176,7 +4250,7 @@ fn bound_pipeline_checks<S: State>(
 fn bound_descriptor_checks(
     bound: &crate::recorder::Bound,
     pipeline: &PipelineRecord,
-    rules: &DescriptorRules,
+    rules: &ShaderRules,
 ) -> Result<()> {
     for r in pipeline.resources.iter() {
         written_checks(bound, r, rules[2])?;

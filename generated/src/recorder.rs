@@ -89,6 +89,48 @@ impl Bound {
     }
 }
 
+/// The push constants a recording set, as the checks of its draws and dispatches
+/// need them.
+pub(crate) struct Pushed {
+    /// The layout they were pushed with: they are the values of every layout with
+    /// the same push-constant ranges (compatible for push constants).
+    pub layout: Vrc<crate::retention::LayoutRecord>,
+    /// The bytes set, one bit each.
+    bytes: Vec<u64>,
+    /// The last push (layout, offset, size): a repeat of it sets nothing new.
+    pub last: (vk::PipelineLayout, u32, usize),
+}
+
+impl Pushed {
+    /// No bytes pushed yet with `layout`.
+    pub(crate) fn new(layout: Vrc<crate::retention::LayoutRecord>) -> Self {
+        Pushed {
+            layout,
+            bytes: Vec::new(),
+            last: (vk::PipelineLayout::null(), 0, 0),
+        }
+    }
+
+    /// Bytes `offset..offset + size` are set.
+    pub(crate) fn set(&mut self, offset: u32, size: u32) {
+        let end = offset.saturating_add(size) as usize;
+        if self.bytes.len() * 64 < end {
+            self.bytes.resize(end.div_ceil(64), 0);
+        }
+        for b in offset as usize..end {
+            self.bytes[b / 64] |= 1 << (b % 64);
+        }
+    }
+
+    /// Whether byte `b` is set.
+    pub(crate) fn has(&self, b: u32) -> bool {
+        let b = b as usize;
+        self.bytes
+            .get(b / 64)
+            .is_some_and(|w| w & (1 << (b % 64)) != 0)
+    }
+}
+
 /// The render pass instance a recorder is inside, as its checks need it.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct PassInstance {
@@ -200,6 +242,8 @@ pub struct Recorder<'c, S: State> {
     /// the state static), and those set since the last graphics pipeline was bound,
     /// as [`dynamic_bit`] bits.
     pub(crate) dynamic: (u32, u32),
+    /// The push constants set so far.
+    pub(crate) pushed: Option<Pushed>,
     /// The bind points (one bit each, as [`Bound::index`] numbers them) whose draw
     /// or dispatch state checks passed with nothing they read changed since: a run
     /// of draws on one state is checked once. Cleared by every recorded command but
@@ -393,6 +437,7 @@ impl CommandBuffer {
             sets: Vec::new(),
             events: Vec::new(),
             dynamic: (0, 0),
+            pushed: None,
             verified: 0,
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
@@ -541,6 +586,7 @@ impl<'c, S: State> Recorder<'c, S> {
             sets: self.sets,
             events: self.events,
             dynamic: self.dynamic,
+            pushed: self.pushed,
             verified: 0,
             device_mask: self.device_mask,
             alive: self.alive,

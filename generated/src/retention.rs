@@ -410,6 +410,20 @@ pub(crate) struct LayoutRecord {
     pub sets: Vec<Vrc<SetLayoutRecord>>,
 }
 
+impl LayoutRecord {
+    /// Whether two layouts are compatible for push constants: created with
+    /// identical push-constant ranges.
+    pub(crate) fn same_push_ranges(&self, other: &LayoutRecord) -> bool {
+        let key = |r: &vk::PushConstantRange| (r.stage_flags, r.offset, r.size);
+        self.push_ranges.len() == other.push_ranges.len()
+            && self
+                .push_ranges
+                .iter()
+                .zip(&other.push_ranges)
+                .all(|(a, b)| key(a) == key(b))
+    }
+}
+
 /// A live pipeline's bind point and layout, which the recorder checks draws and
 /// dispatches against.
 #[derive(Clone, Debug)]
@@ -436,6 +450,9 @@ pub(crate) struct PipelineRecord {
     pub rendering: Option<Vrc<RenderingFormats>>,
     /// The resource variables its stages' modules declare, by set and binding.
     pub resources: Vrc<[crate::spirv::Resource]>,
+    /// The bytes `start..end` of the push-constant blocks its stages' modules
+    /// declare, if any does.
+    pub push: Option<(u32, u32)>,
 }
 
 impl RenderingFormats {

@@ -536,3 +536,15 @@ pub fn storage_image(
         .expect("view");
     (image, memory, view)
 }
+
+/// Pushes the test fragment shader's color (16 bytes) with the test graphics layout,
+/// which draws with the test graphics pipeline need.
+pub fn push_color<S: tuff::State>(rec: &mut tuff::Recorder<'_, S>, p: &Pipelines) {
+    rec.cmd_push_constants(
+        &p.graphics_layout,
+        vk::ShaderStageFlags::FRAGMENT,
+        0,
+        &[0u8; 16],
+    )
+    .expect("push constants");
+}

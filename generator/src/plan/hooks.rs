@@ -376,6 +376,7 @@ const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size V
 
 const IMAGE_VIEW_TYPE: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read)";
 const DESCRIPTORS_WRITTEN: &str = "checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts";
+const PUSH_CONSTANTS_SET: &str = "checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it)";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -434,20 +435,22 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"], descriptors: [\"VUID-",
+            "-pStencilAttachment-07618\"], shader: [\"VUID-",
             $command,
             "-viewType-07752\", \"VUID-",
             $command,
             "-format-07753\", \"VUID-",
             $command,
-            "-None-02699\"] }; &RULES }"
+            "-None-02699\", \"VUID-",
+            $command,
+            "-maintenance4-06425\"] }; &RULES }"
         )
     };
 }
 
-/// The `DescriptorRules` of a draw or dispatch command, as the Rust expression its
+/// The `ShaderRules` of a draw or dispatch command, as the Rust expression its
 /// hooks take.
-macro_rules! descriptor_rules {
+macro_rules! shader_rules {
     ($command:literal) => {
         concat!(
             "&[\"VUID-",
@@ -456,7 +459,9 @@ macro_rules! descriptor_rules {
             $command,
             "-format-07753\", \"VUID-",
             $command,
-            "-None-02699\"]"
+            "-None-02699\", \"VUID-",
+            $command,
+            "-maintenance4-06425\"]"
         )
     };
 }
@@ -478,7 +483,7 @@ macro_rules! bound {
                     "self",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    descriptor_rules!($command),
+                    shader_rules!($command),
                 ],
             ),
             settles: &[
@@ -490,6 +495,7 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
                 (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
                 (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
+                (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
             ],
             ..NONE
         }
@@ -587,6 +593,7 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-viewType-07752"), How::Dynamic(IMAGE_VIEW_TYPE)),
             (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
             (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
+            (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
         ]
     };
 }
@@ -1704,6 +1711,10 @@ pub const SPECIALS: &[Special] = &[
         check: call(
             "hooks::cmd_push_constants_checks",
             &["self", "layout", "stage_flags", "offset", "values"],
+        ),
+        after: call(
+            "hooks::cmd_push_constants_done",
+            &["self", "layout", "offset", "values"],
         ),
         settles: &[
             ("VUID-vkCmdPushConstants-offset-01795", How::Dynamic(PUSH)),

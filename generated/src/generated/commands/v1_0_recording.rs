@@ -782,6 +782,7 @@ The caller upholds the rules that [`Self::cmd_push_constants`] checks at run tim
                     values.as_ptr().cast(),
                 )
             };
+            crate::hooks::cmd_push_constants_done(self, layout, offset, values);
             self.retain_with(layout.address(), || layout.retained());
         }
         Ok(())
@@ -2580,7 +2581,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatch-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatch-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2597,7 +2598,6 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatch-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatch-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatch-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatch-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDispatch-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDispatch-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
 - `VUID-vkCmdDispatch-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
@@ -2620,9 +2620,10 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatch-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatch-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDispatch-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatch-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 53 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 52 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch(
         &mut self,
@@ -2638,6 +2639,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 53 (exp
                 "VUID-vkCmdDispatch-viewType-07752",
                 "VUID-vkCmdDispatch-format-07753",
                 "VUID-vkCmdDispatch-None-02699",
+                "VUID-vkCmdDispatch-maintenance4-06425",
             ],
         )?;
         {
@@ -2655,7 +2657,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 53 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,
@@ -2675,7 +2677,7 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2693,7 +2695,6 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchIndirect-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDispatchIndirect-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDispatchIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDispatchIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
@@ -2717,9 +2718,10 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDispatchIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDispatchIndirect-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchIndirect-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 52 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 51 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -2734,6 +2736,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 52 (exp
                 "VUID-vkCmdDispatchIndirect-viewType-07752",
                 "VUID-vkCmdDispatchIndirect-format-07753",
                 "VUID-vkCmdDispatchIndirect-None-02699",
+                "VUID-vkCmdDispatchIndirect-maintenance4-06425",
             ],
         )?;
         {
@@ -2748,7 +2751,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 52 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,
@@ -3323,7 +3326,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3347,7 +3350,6 @@ The caller upholds these 39 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDraw-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDraw-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDraw-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDraw-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDraw-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
 - `VUID-vkCmdDraw-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
@@ -3385,6 +3387,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDraw-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDraw-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDraw-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDraw-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3400,7 +3403,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 167 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 166 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3447,10 +3450,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 167 (ex
                         "VUID-vkCmdDraw-pStencilAttachment-06182",
                         "VUID-vkCmdDraw-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDraw-viewType-07752",
                         "VUID-vkCmdDraw-format-07753",
                         "VUID-vkCmdDraw-None-02699",
+                        "VUID-vkCmdDraw-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -3475,7 +3479,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 167 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3504,7 +3508,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 40 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 39 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3529,7 +3533,6 @@ The caller upholds these 40 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndexed-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDrawIndexed-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDrawIndexed-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
 - `VUID-vkCmdDrawIndexed-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
@@ -3568,6 +3571,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexed-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDrawIndexed-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndexed-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDrawIndexed-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3583,7 +3587,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 168 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 167 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3642,10 +3646,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 168 (ex
                         "VUID-vkCmdDrawIndexed-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndexed-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDrawIndexed-viewType-07752",
                         "VUID-vkCmdDrawIndexed-format-07753",
                         "VUID-vkCmdDrawIndexed-None-02699",
+                        "VUID-vkCmdDrawIndexed-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -3671,7 +3676,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 168 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3702,7 +3707,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3731,7 +3736,6 @@ The caller upholds these 43 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndexedIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
@@ -3774,6 +3778,7 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndexedIndirect-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDrawIndexedIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3789,10 +3794,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 171.
+Left to the caller (listed one by one in the crate's `validation.json`): 170.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 170: explicit rule; the wrappers do not check it*/
+- 169: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3846,10 +3851,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 171.
                         "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDrawIndexedIndirect-viewType-07752",
                         "VUID-vkCmdDrawIndexedIndirect-format-07753",
                         "VUID-vkCmdDrawIndexedIndirect-None-02699",
+                        "VUID-vkCmdDrawIndexedIndirect-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -3869,7 +3875,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 171.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3891,7 +3897,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 42 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3919,7 +3925,6 @@ The caller upholds these 42 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndirect-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDrawIndirect-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDrawIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
@@ -3961,6 +3966,7 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirect-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirect-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndirect-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndirect-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDrawIndirect-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3976,10 +3982,10 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 170.
+Left to the caller (listed one by one in the crate's `validation.json`): 169.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 169: explicit rule; the wrappers do not check it*/
+- 168: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -4032,10 +4038,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 170.
                         "VUID-vkCmdDrawIndirect-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndirect-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDrawIndirect-viewType-07752",
                         "VUID-vkCmdDrawIndirect-format-07753",
                         "VUID-vkCmdDrawIndirect-None-02699",
+                        "VUID-vkCmdDrawIndirect-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -4053,7 +4060,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 170.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -28,7 +28,6 @@ The caller upholds these 25 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchBase-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchBase-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDispatchBase-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDispatchBase-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
 - `VUID-vkCmdDispatchBase-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
@@ -48,12 +47,13 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDispatchBase-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchBase-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 60.
+Left to the caller (listed one by one in the crate's `validation.json`): 59.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 57: explicit rule; the wrappers do not check it*/
+- 56: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -72,6 +72,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 60.
                 "VUID-vkCmdDispatchBase-viewType-07752",
                 "VUID-vkCmdDispatchBase-format-07753",
                 "VUID-vkCmdDispatchBase-None-02699",
+                "VUID-vkCmdDispatchBase-maintenance4-06425",
             ],
         )?;
         {
@@ -96,7 +97,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 60.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,

@@ -108,7 +108,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -140,7 +140,6 @@ The caller upholds these 47 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndexedIndirectCount-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
@@ -187,6 +186,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -202,7 +202,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 174 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 173 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -258,10 +258,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174 (ex
                         "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDrawIndexedIndirectCount-viewType-07752",
                         "VUID-vkCmdDrawIndexedIndirectCount-format-07753",
                         "VUID-vkCmdDrawIndexedIndirectCount-None-02699",
+                        "VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -294,7 +295,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 174 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-None-04008`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndexedIndirectCount-format-07753`, `VUID-vkCmdDrawIndexedIndirectCount-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-None-04008`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndexedIndirectCount-format-07753`, `VUID-vkCmdDrawIndexedIndirectCount-None-02699`, `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
         &mut self,
@@ -329,7 +330,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] chec
 
 # Safety
 
-The caller upholds these 46 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -360,7 +361,6 @@ The caller upholds these 46 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndirectCount-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
@@ -406,6 +406,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDrawIndirectCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+- `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndirectCount-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 - `VUID-vkCmdDrawIndirectCount-None-04876`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirectCount-None-04877`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -421,7 +422,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 173 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 172 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -476,10 +477,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 173 (ex
                         "VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182",
                         "VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618",
                     ],
-                    descriptors: [
+                    shader: [
                         "VUID-vkCmdDrawIndirectCount-viewType-07752",
                         "VUID-vkCmdDrawIndirectCount-format-07753",
                         "VUID-vkCmdDrawIndirectCount-None-02699",
+                        "VUID-vkCmdDrawIndirectCount-maintenance4-06425",
                     ],
                 };
                 &RULES
@@ -512,7 +514,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 173 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-None-04008`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndirectCount-format-07753`, `VUID-vkCmdDrawIndirectCount-None-02699`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-None-04008`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndirectCount-format-07753`, `VUID-vkCmdDrawIndirectCount-None-02699`, `VUID-vkCmdDrawIndirectCount-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_count_unchecked(
         &mut self,
