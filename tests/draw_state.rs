@@ -845,3 +845,111 @@ fn draws_read_pushed_constants() {
     }
     assert_silent(&s.messages);
 }
+
+/// Each draw command checks the viewport and scissor counts it draws with where its
+/// pipeline has them dynamic with their counts: against the count the pipeline has
+/// static (03417, 03418), or against each other (03419).
+#[test]
+fn draws_use_the_viewport_and_scissor_counts_they_set() {
+    let _serial = vulkan::serial();
+    // Two viewports need multiViewport.
+    let s = setup_full_features(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let viewport = vk::Viewport {
+        width: SIZE as f32,
+        height: SIZE as f32,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let made = |counts: (u32, u32), dynamic: &[D]| {
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let viewports = tuff::PipelineViewportStateCreateInfo::new()
+            .viewport_count(counts.0)
+            .scissor_count(counts.1);
+        let states = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(dynamic);
+        let (mut made, _) = pipelines::with_graphics_info(
+            &stages,
+            &p.graphics_layout,
+            &target.render_pass,
+            |info| {
+                let info = info
+                    .viewport_state(Some(&viewports))
+                    .dynamic_state(Some(&states));
+                unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+            },
+        )
+        .expect("pipeline");
+        made.pop().expect("one pipeline")
+    };
+    let viewport_with_count = made((0, 2), &[D::VIEWPORT_WITH_COUNT, D::SCISSOR]);
+    let scissor_with_count = made((2, 0), &[D::VIEWPORT, D::SCISSOR_WITH_COUNT]);
+    let both = made((0, 0), &[D::VIEWPORT_WITH_COUNT, D::SCISSOR_WITH_COUNT]);
+    let cases: [(&str, &tuff::Pipeline, Prepare<'_>); 3] = [
+        (
+            "viewportCount-03417",
+            &viewport_with_count,
+            Box::new(|r| {
+                r.cmd_set_viewport_with_count(&[viewport])
+                    .expect("viewports");
+                r.cmd_set_scissor(0, &[area(), area()]).expect("scissors");
+            }),
+        ),
+        (
+            "scissorCount-03418",
+            &scissor_with_count,
+            Box::new(|r| {
+                r.cmd_set_viewport(0, &[viewport, viewport])
+                    .expect("viewports");
+                r.cmd_set_scissor_with_count(&[area()]).expect("scissors");
+            }),
+        ),
+        (
+            "viewportCount-03419",
+            &both,
+            Box::new(|r| {
+                r.cmd_set_viewport_with_count(&[viewport])
+                    .expect("viewports");
+                r.cmd_set_scissor_with_count(&[area(), area()])
+                    .expect("scissors");
+            }),
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
+        for (suffix, pipeline, prepare) in &cases {
+            let rule = format!("VUID-{command}-{suffix}");
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                    .expect("bind");
+                prepare(&mut rec);
+                pipelines::push_color(&mut rec, &p);
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    assert!(
+                        said.iter().any(|m| m.contains(&rule)),
+                        "the layer did not name {rule}; it said {said:?}"
+                    );
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
+    assert_silent(&s.messages);
+}

@@ -3447,6 +3447,7 @@ fn pipeline_record(
     dynamic: u32,
     rendering: Option<Vrc<crate::retention::RenderingFormats>>,
     (resources, push): (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>),
+    viewports: (u32, u32),
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::GRAPHICS,
@@ -3463,6 +3464,7 @@ fn pipeline_record(
         rendering,
         resources,
         push,
+        viewports,
     }
 }
 
@@ -3549,6 +3551,7 @@ pub(crate) fn compute_pipelines_created(
                 0,
                 None,
                 stage_resources(device, std::iter::once(&i.as_raw().stage)),
+                (0, 0),
             ),
         )
     });
@@ -3610,6 +3613,9 @@ pub(crate) fn graphics_pipelines_created(
                     device,
                     unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
                 ),
+                // SAFETY: the safe setter stores a reference that outlives the info.
+                unsafe { raw.p_viewport_state.as_ref() }
+                    .map_or((0, 0), |v| (v.viewport_count, v.scissor_count)),
             ),
         )
     });
@@ -3725,6 +3731,22 @@ pub(crate) fn draw_checks<S: State>(
     Ok(())
 }
 
+/// `vkCmdSetViewportWithCount` (`bits` its state) or `vkCmdSetScissorWithCount`:
+/// the state is set, with `count` viewports or scissors.
+pub(crate) fn viewport_count_set<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    count: usize,
+    bits: u32,
+) {
+    let count = u32::try_from(count).unwrap_or(u32::MAX);
+    if bits == crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT) {
+        recorder.counts.0 = Some(count);
+    } else {
+        recorder.counts.1 = Some(count);
+    }
+    dynamic_state_set(recorder, bits);
+}
+
 /// A dynamic state setting command: the states of `bits` are set.
 pub(crate) fn dynamic_state_set<S: State>(recorder: &mut Recorder<'_, S>, bits: u32) {
     recorder.dynamic.0 |= bits;
@@ -3748,6 +3770,10 @@ pub(crate) struct DrawRules {
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
     pub rendering: [&'static str; 8],
+    /// The viewport and scissor counts set with their counts: the viewport count
+    /// against the pipeline's scissor count, the scissor count against its viewport
+    /// count, and both against each other.
+    pub counts: [&'static str; 3],
     /// What its shaders read ([`ShaderRules`]).
     pub shader: ShaderRules,
 }
@@ -3833,7 +3859,38 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
             format!("dynamic state bit {} was set since the bound pipeline was bound, and the pipeline has it static", stale.trailing_zeros()),
         )?;
     }
-    Ok(())
+    count_checks(recorder.counts, pipeline, &rules.counts)
+}
+
+/// Refuses a draw whose viewport and scissor counts, where the bound pipeline has
+/// them dynamic with their counts, differ from each other or from the count the
+/// pipeline has static.
+fn count_checks(
+    (viewports, scissors): (Option<u32>, Option<u32>),
+    pipeline: &PipelineRecord,
+    rules: &[&'static str; 3],
+) -> Result<()> {
+    use crate::recorder::dynamic_bit;
+    let with = |state| pipeline.dynamic & dynamic_bit(state) != 0;
+    let (static_viewports, static_scissors) = pipeline.viewports;
+    match (
+        with(vk::DynamicState::VIEWPORT_WITH_COUNT),
+        with(vk::DynamicState::SCISSOR_WITH_COUNT),
+    ) {
+        (true, false) if viewports != Some(static_scissors) => refuse(
+            rules[0],
+            format!("the viewport count set ({viewports:?}) is not the bound pipeline's scissor count ({static_scissors})"),
+        ),
+        (false, true) if scissors != Some(static_viewports) => refuse(
+            rules[1],
+            format!("the scissor count set ({scissors:?}) is not the bound pipeline's viewport count ({static_viewports})"),
+        ),
+        (true, true) if viewports.is_none() || viewports != scissors => refuse(
+            rules[2],
+            format!("the viewport count set ({viewports:?}) is not the scissor count set ({scissors:?})"),
+        ),
+        _ => Ok(()),
+    }
 }
 
 /// Refuses a pipeline made for other dynamic rendering than the instance's: its

@@ -244,6 +244,9 @@ pub struct Recorder<'c, S: State> {
     pub(crate) dynamic: (u32, u32),
     /// The push constants set so far.
     pub(crate) pushed: Option<Pushed>,
+    /// The counts last given to `vkCmdSetViewportWithCount` and
+    /// `vkCmdSetScissorWithCount`.
+    pub(crate) counts: (Option<u32>, Option<u32>),
     /// The bind points (one bit each, as [`Bound::index`] numbers them) whose draw
     /// or dispatch state checks passed with nothing they read changed since: a run
     /// of draws on one state is checked once. Cleared by every recorded command but
@@ -438,6 +441,7 @@ impl CommandBuffer {
             events: Vec::new(),
             dynamic: (0, 0),
             pushed: None,
+            counts: (None, None),
             verified: 0,
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
@@ -587,6 +591,7 @@ impl<'c, S: State> Recorder<'c, S> {
             events: self.events,
             dynamic: self.dynamic,
             pushed: self.pushed,
+            counts: self.counts,
             verified: 0,
             device_mask: self.device_mask,
             alive: self.alive,

@@ -453,6 +453,8 @@ pub(crate) struct PipelineRecord {
     /// The bytes `start..end` of the push-constant blocks its stages' modules
     /// declare, if any does.
     pub push: Option<(u32, u32)>,
+    /// Its viewport state's viewport and scissor counts (0 without one).
+    pub viewports: (u32, u32),
 }
 
 impl RenderingFormats {

@@ -377,6 +377,7 @@ const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size V
 const IMAGE_VIEW_TYPE: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read)";
 const DESCRIPTORS_WRITTEN: &str = "checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts";
 const PUSH_CONSTANTS_SET: &str = "checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it)";
+const WITH_COUNT: &str = "checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -435,7 +436,13 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"], shader: [\"VUID-",
+            "-pStencilAttachment-07618\"], counts: [\"VUID-",
+            $command,
+            "-viewportCount-03417\", \"VUID-",
+            $command,
+            "-scissorCount-03418\", \"VUID-",
+            $command,
+            "-viewportCount-03419\"], shader: [\"VUID-",
             $command,
             "-viewType-07752\", \"VUID-",
             $command,
@@ -594,6 +601,9 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
             (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
             (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
+            (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
+            (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
+            (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),
         ]
     };
 }
@@ -1929,7 +1939,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetViewportWithCount",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT)"]),
+        after: call("hooks::viewport_count_set", &["self", "viewports.len()", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT)"]),
         check: call("hooks::cmd_set_viewport_with_count_checks", &["self", "viewports"]),
         settles: &[
             ("VUID-vkCmdSetViewportWithCount-viewportCount-03394", How::Dynamic(VIEWPORTS)),
@@ -1939,7 +1949,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetScissorWithCount",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT)"]),
+        after: call("hooks::viewport_count_set", &["self", "scissors.len()", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT)"]),
         check: call("hooks::cmd_set_scissor_with_count_checks", &["self", "scissors"]),
         settles: &[
             ("VUID-vkCmdSetScissorWithCount-scissorCount-03397", How::Dynamic(VIEWPORTS)),

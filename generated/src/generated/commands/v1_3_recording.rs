@@ -1585,8 +1585,9 @@ The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
-            crate::hooks::dynamic_state_set(
+            crate::hooks::viewport_count_set(
                 self,
+                scissors.len(),
                 crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
             );
             self.state_changed();
@@ -1757,8 +1758,9 @@ The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks a
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
-            crate::hooks::dynamic_state_set(
+            crate::hooks::viewport_count_set(
                 self,
+                viewports.len(),
                 crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
             );
             self.state_changed();
