@@ -953,3 +953,77 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
     }
     assert_silent(&s.messages);
 }
+
+/// A direct draw in a multiview render pass instance draws no instance past
+/// maxMultiviewInstanceIndex (lavapipe's is below the last 32-bit first instance):
+/// tuff refuses the safe call (the 1.3.239 layer does not check the rule).
+#[test]
+fn multiview_draws_stay_under_the_instance_limit() {
+    let _serial = vulkan::serial();
+    let s = setup_full_features(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let (index, _memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::INDEX_BUFFER);
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let none = vk::Format::UNDEFINED;
+    let pipeline = rendering_pipeline(&s, &p, &target.render_pass, 1, &[rgba], none, none);
+    let with_view = color_attachment(Some(&target.view));
+    let rendering = tuff::RenderingInfo::new()
+        .render_area(area())
+        .layer_count(1)
+        .view_mask(1)
+        .color_attachments(&with_view);
+    type Direct = fn(&mut tuff::Recorder<'_, tuff::InRendering>, bool) -> tuff::Result<()>;
+    let commands: [(&str, Direct); 2] = [
+        ("vkCmdDraw", |r, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_draw_unchecked(3, 1, 0, u32::MAX) }
+            } else {
+                unsafe { r.cmd_draw(3, 1, 0, u32::MAX) }
+            }
+        }),
+        ("vkCmdDrawIndexed", |r, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_draw_indexed_unchecked(3, 1, 0, 0, u32::MAX) }
+            } else {
+                unsafe { r.cmd_draw_indexed(3, 1, 0, 0, u32::MAX) }
+            }
+        }),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, draw) in commands {
+        let rule = format!("VUID-{command}-maxMultiviewInstanceIndex-02688");
+        for unchecked in [false, true] {
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+                .expect("bind");
+            rec.cmd_bind_index_buffer(&index, 0, vk::IndexType::UINT32)
+                .expect("index buffer");
+            let viewport = vk::Viewport {
+                width: SIZE as f32,
+                height: SIZE as f32,
+                max_depth: 1.0,
+                ..Default::default()
+            };
+            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+            rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = draw(&mut rec, true);
+                s.messages.abort_on_error(false);
+                // The 1.3.239 layer does not check the rule: tuff's error alone
+                // proves it (the command buffer is never submitted).
+                let said = s.messages.take();
+                assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), rule);
+                assert_silent(&s.messages);
+            }
+            drop(rec);
+        }
+    }
+    assert_silent(&s.messages);
+}

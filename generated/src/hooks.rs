@@ -3666,8 +3666,48 @@ pub(crate) fn cmd_bind_vertex_buffers2_done<S: State>(
 }
 
 /// The vertices and instances a direct draw fetches: (first vertex, vertex count,
-/// first instance, instance count, the rule they break past a vertex buffer).
-pub(crate) type Vertices = Option<(u32, u32, u32, u32, &'static str)>;
+/// first instance, instance count, the rule they break past a vertex buffer, the
+/// rule of the last instance index in a multiview render pass instance).
+pub(crate) type Vertices = Option<(u32, u32, u32, u32, &'static str, &'static str)>;
+
+/// Refuses a draw in a render pass instance with a view mask whose last instance
+/// index is past `maxMultiviewInstanceIndex`.
+fn multiview_instances<S: State>(
+    recorder: &Recorder<'_, S>,
+    first_instance: u32,
+    instance_count: u32,
+    vuid: &'static str,
+) -> Result<()> {
+    let multiview = recorder.instance.as_ref().is_some_and(|i| i.view_mask != 0);
+    if !multiview || instance_count == 0 {
+        return Ok(());
+    }
+    let device = recorder.device();
+    let max = device.live().max_multiview_instance(|| {
+        let physical = device.parent();
+        let instance = physical.parent();
+        instance.exts().version(1).then(|| {
+            let mut multiview = vk::PhysicalDeviceMultiviewProperties::default();
+            let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut multiview);
+            // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is
+            // local.
+            unsafe {
+                instance
+                    .fns()
+                    .get_physical_device_properties2(physical.raw(), &mut p2)
+            };
+            multiview.max_multiview_instance_index
+        })
+    });
+    let last = u64::from(first_instance) + u64::from(instance_count) - 1;
+    match max {
+        Some(max) if last > u64::from(max) => refuse(
+            vuid,
+            format!("the draw's last instance index ({last}) is past maxMultiviewInstanceIndex ({max}) in a multiview render pass instance"),
+        ),
+        _ => Ok(()),
+    }
+}
 
 /// A draw: a graphics pipeline and its sets and vertex buffers bound
 /// ([`bound_pipeline_checks`]), the state it draws with ([`draw_state_checks`]),
@@ -3691,9 +3731,13 @@ pub(crate) fn draw_checks<S: State>(
         )?;
         draw_state_checks(recorder, rules)
     })?;
-    let (Some((first_vertex, vertex_count, first_instance, instance_count, vuid)), Some(pipeline)) =
-        (vertices, &recorder.bound[0].pipeline)
+    let Some((first_vertex, vertex_count, first_instance, instance_count, vuid, multiview)) =
+        vertices
     else {
+        return Ok(());
+    };
+    multiview_instances(recorder, first_instance, instance_count, multiview)?;
+    let Some(pipeline) = &recorder.bound[0].pipeline else {
         return Ok(());
     };
     let bound = &recorder.bound[0];
@@ -4493,16 +4537,17 @@ pub(crate) fn indexed_draw_checks<S: State>(
     sets_vuid: &'static str,
     bound_vuid: &'static str,
     vertex_vuid: &'static str,
-    range: Option<(u32, u32, &'static str)>,
+    range: Option<(u32, u32, u32, u32, &'static str, &'static str)>,
     draw: &DrawRules,
 ) -> Result<()> {
     draw_checks(recorder, pipeline_vuid, sets_vuid, vertex_vuid, None, draw)?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
         return refuse(bound_vuid, "no index buffer is bound".into());
     };
-    let Some((count, first, vuid)) = range else {
+    let Some((count, first, first_instance, instance_count, vuid, multiview)) = range else {
         return Ok(());
     };
+    multiview_instances(recorder, first_instance, instance_count, multiview)?;
     let index_size: u64 = match ty {
         vk::IndexType::UINT16 => 2,
         vk::IndexType::UINT32 => 4,

@@ -174,6 +174,9 @@ pub(crate) struct Live {
     sets_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// The physical device's limits, read once.
     limits: std::sync::OnceLock<vk::PhysicalDeviceLimits>,
+    /// `maxMultiviewInstanceIndex`, read the first time a draw in a multiview
+    /// render pass instance needs it.
+    max_multiview_instance: std::sync::OnceLock<Option<u32>>,
     /// The physical device's `maxBufferSize`, read once (none below Vulkan 1.3).
     max_buffer_size: std::sync::OnceLock<Option<u64>>,
     /// The core features the device was created with.
@@ -696,6 +699,7 @@ impl Default for Live {
             set_layouts: Vutex::new(HashMap::default()),
             sets_layouts: Vutex::new(HashMap::default()),
             limits: std::sync::OnceLock::new(),
+            max_multiview_instance: std::sync::OnceLock::new(),
             max_buffer_size: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
             queue_infos: std::sync::OnceLock::new(),
@@ -1306,6 +1310,12 @@ impl Live {
         read: impl FnOnce() -> vk::PhysicalDeviceLimits,
     ) -> &vk::PhysicalDeviceLimits {
         self.limits.get_or_init(read)
+    }
+
+    /// The physical device's `maxMultiviewInstanceIndex`, read from `read` the
+    /// first time.
+    pub(crate) fn max_multiview_instance(&self, read: impl FnOnce() -> Option<u32>) -> Option<u32> {
+        *self.max_multiview_instance.get_or_init(read)
     }
 
     /// The physical device's `maxBufferSize`, read from `read` the first time.

@@ -378,6 +378,7 @@ const IMAGE_VIEW_TYPE: &str = "checks, once per change of the bound state, each 
 const DESCRIPTORS_WRITTEN: &str = "checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts";
 const PUSH_CONSTANTS_SET: &str = "checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it)";
 const WITH_COUNT: &str = "checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state";
+const MULTIVIEW_INSTANCES: &str = "checks, in a render pass instance with a view mask, the draw's last instance index against maxMultiviewInstanceIndex, read once from the physical device (the 1.3.239 layer does not check it: the error alone proves it)";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -2254,18 +2255,22 @@ pub const SPECIALS: &[Special] = &[
         "vkCmdDraw",
         GRAPHICS,
         How::Dynamic(SETS_BOUND),
-        "Some((first_vertex, vertex_count, first_instance, instance_count, \"VUID-vkCmdDraw-None-02721\"))",
-        [("VUID-vkCmdDraw-None-02721", How::Dynamic(VERTEX_RANGE))]
+        "Some((first_vertex, vertex_count, first_instance, instance_count, \"VUID-vkCmdDraw-None-02721\", \"VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688\"))",
+        [
+            ("VUID-vkCmdDraw-None-02721", How::Dynamic(VERTEX_RANGE)),
+            ("VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688", How::Dynamic(MULTIVIEW_INSTANCES)),
+        ]
     ),
     indexed!(
         "vkCmdDrawIndexed",
-        "Some((index_count, first_index, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\"))",
+        "Some((index_count, first_index, first_instance, instance_count, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\", \"VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688\"))",
         [
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-04007", How::Dynamic(VERTEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
+            ("VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688", How::Dynamic(MULTIVIEW_INSTANCES)),
         ]
     ),
     bound!("vkCmdDrawIndirect", GRAPHICS, How::Dynamic(SETS_BOUND), "None", []),

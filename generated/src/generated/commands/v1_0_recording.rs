@@ -3326,7 +3326,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3355,7 +3355,6 @@ The caller upholds these 35 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDraw-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDraw-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
-- `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
 - `VUID-vkCmdDraw-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDraw-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDraw-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3386,6 +3385,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDraw-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDraw-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
+- `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`: dynamic (checks, in a render pass instance with a view mask, the draw's last instance index against maxMultiviewInstanceIndex, read once from the physical device (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDraw-viewportCount-03417`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
 - `VUID-vkCmdDraw-scissorCount-03418`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
 - `VUID-vkCmdDraw-viewportCount-03419`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
@@ -3403,7 +3403,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 163 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 162 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3423,6 +3423,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 163 (ex
                 first_instance,
                 instance_count,
                 "VUID-vkCmdDraw-None-02721",
+                "VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688",
             )),
             {
                 const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
@@ -3484,7 +3485,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 163 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3513,7 +3514,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3543,7 +3544,6 @@ The caller upholds these 36 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDrawIndexed-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDrawIndexed-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
-- `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
 - `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
 - `VUID-vkCmdDrawIndexed-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
 - `VUID-vkCmdDrawIndexed-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
@@ -3575,6 +3575,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdDrawIndexed-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndexed-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
+- `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`: dynamic (checks, in a render pass instance with a view mask, the draw's last instance index against maxMultiviewInstanceIndex, read once from the physical device (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDrawIndexed-viewportCount-03417`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
 - `VUID-vkCmdDrawIndexed-scissorCount-03418`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
 - `VUID-vkCmdDrawIndexed-viewportCount-03419`: dynamic (checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state)
@@ -3592,7 +3593,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 164 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 163 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3611,7 +3612,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 164 (ex
             Some((
                 index_count,
                 first_index,
+                first_instance,
+                instance_count,
                 "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825",
+                "VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688",
             )),
             {
                 const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
@@ -3686,7 +3690,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 164 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
