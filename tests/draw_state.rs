@@ -373,6 +373,28 @@ fn rendering_pipeline(
     depth: vk::Format,
     stencil: vk::Format,
 ) -> tuff::Pipeline {
+    let depth_stencil = tuff::PipelineDepthStencilStateCreateInfo::new();
+    rendering_pipeline_with(
+        s,
+        p,
+        pass,
+        view_mask,
+        colors,
+        (depth, stencil),
+        &depth_stencil,
+    )
+}
+
+/// [`rendering_pipeline`] with the depth/stencil state `depth_stencil`.
+fn rendering_pipeline_with(
+    s: &Setup,
+    p: &pipelines::Pipelines,
+    pass: &tuff::RenderPass,
+    view_mask: u32,
+    colors: &[vk::Format],
+    (depth, stencil): (vk::Format, vk::Format),
+    depth_stencil: &tuff::PipelineDepthStencilStateCreateInfo<'_>,
+) -> tuff::Pipeline {
     let stages = pipelines::test_stages(&p.vert, &p.frag);
     let blend_attachments = vec![
         vk::PipelineColorBlendAttachmentState {
@@ -382,7 +404,6 @@ fn rendering_pipeline(
         colors.len()
     ];
     let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
-    let depth_stencil = tuff::PipelineDepthStencilStateCreateInfo::new();
     let (mut made, _) = pipelines::with_graphics_info(&stages, &p.graphics_layout, pass, |info| {
         let mut rendering = tuff::PipelineRenderingCreateInfo::new()
             .view_mask(view_mask)
@@ -392,7 +413,7 @@ fn rendering_pipeline(
         let info = info
             .render_pass(None)
             .color_blend_state(Some(&blend))
-            .depth_stencil_state(Some(&depth_stencil))
+            .depth_stencil_state(Some(depth_stencil))
             .push_next(&mut rendering);
         unsafe { s.device.create_graphics_pipelines(None, &[info]) }
     })
@@ -415,43 +436,11 @@ fn color_attachment(view: Option<&tuff::ImageView>) -> [tuff::RenderingAttachmen
 fn dynamic_rendering_draws_check_their_pipeline_formats() {
     let _serial = vulkan::serial();
     let s = setup_full_features(true);
-    let d = &s.device;
     let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(&s, &target);
     let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
     let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
-    let ds_format = vk::Format::D32_SFLOAT_S8_UINT;
-    let ds_image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(ds_format)
-                .extent(vk::Extent3D {
-                    width: SIZE,
-                    height: SIZE,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
-        )
-        .expect("depth image");
-    let _ds_memory = s.bind_image(&ds_image);
-    let ds_view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&ds_image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(ds_format)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("depth view");
+    let (ds_format, _ds_image, _ds_memory, ds_view) = depth_stencil_view(&s);
     let rgba = vk::Format::R8G8B8A8_UNORM;
     let none = vk::Format::UNDEFINED;
     let pass = &target.render_pass;
@@ -1023,6 +1012,319 @@ fn multiview_draws_stay_under_the_instance_limit() {
                 assert_silent(&s.messages);
             }
             drop(rec);
+        }
+    }
+    assert_silent(&s.messages);
+}
+
+/// A D32_SFLOAT_S8_UINT depth/stencil attachment image of the test size, its memory
+/// and a view of both aspects.
+fn depth_stencil_view(s: &Setup) -> (vk::Format, tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    let d = &s.device;
+    let format = vk::Format::D32_SFLOAT_S8_UINT;
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(format)
+                .extent(vk::Extent3D {
+                    width: SIZE,
+                    height: SIZE,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT),
+        )
+        .expect("depth image");
+    let memory = s.bind_image(&image);
+    let view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(format)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("depth view");
+    (format, image, memory, view)
+}
+
+/// Depth/stencil states that write depth, and that write stencil.
+fn writing_states() -> [tuff::PipelineDepthStencilStateCreateInfo<'static>; 2] {
+    let writes = vk::StencilOpState {
+        fail_op: vk::StencilOp::REPLACE,
+        pass_op: vk::StencilOp::REPLACE,
+        depth_fail_op: vk::StencilOp::REPLACE,
+        compare_op: vk::CompareOp::ALWAYS,
+        compare_mask: !0,
+        write_mask: !0,
+        reference: 1,
+    };
+    [
+        tuff::PipelineDepthStencilStateCreateInfo::new()
+            .depth_test_enable(vk::TRUE)
+            .depth_write_enable(vk::TRUE)
+            .depth_compare_op(vk::CompareOp::ALWAYS),
+        tuff::PipelineDepthStencilStateCreateInfo::new()
+            .stencil_test_enable(vk::TRUE)
+            .front(writes)
+            .back(writes),
+    ]
+}
+
+/// A draw that writes depth or stencil where the render pass instance has that
+/// aspect of its depth/stencil attachment in a read-only layout is refused: in a
+/// render pass (06886, 06887) and in dynamic rendering, by the layout the
+/// attachment info names (06172 to 06177, which the 1.3.239 layer does not check).
+#[test]
+fn draws_do_not_write_read_only_depth_or_stencil() {
+    let _serial = vulkan::serial();
+    // Separate depth and stencil layouts need separateDepthStencilLayouts.
+    let s = setup_full_features(true);
+    let d = &s.device;
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let (ds_format, _ds_image, _ds_memory, ds_view) = depth_stencil_view(&s);
+    let rgba = vk::Format::R8G8B8A8_UNORM;
+    let [depth_writes, stencil_writes] = writing_states();
+    let viewport = vk::Viewport {
+        width: SIZE as f32,
+        height: SIZE as f32,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    type L = vk::ImageLayout;
+    let read_only = L::DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+
+    // A render pass whose subpass reads its depth/stencil attachment only.
+    let attachments = [
+        vk::AttachmentDescription {
+            format: rgba,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::DONT_CARE,
+            store_op: vk::AttachmentStoreOp::DONT_CARE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: L::UNDEFINED,
+            final_layout: L::COLOR_ATTACHMENT_OPTIMAL,
+            ..Default::default()
+        },
+        vk::AttachmentDescription {
+            format: ds_format,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::DONT_CARE,
+            store_op: vk::AttachmentStoreOp::DONT_CARE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: read_only,
+            final_layout: read_only,
+            ..Default::default()
+        },
+    ];
+    let color = [vk::AttachmentReference {
+        attachment: 0,
+        layout: L::COLOR_ATTACHMENT_OPTIMAL,
+    }];
+    let depth = vk::AttachmentReference {
+        attachment: 1,
+        layout: read_only,
+    };
+    let subpass = [tuff::SubpassDescription::new()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&color)
+        .depth_stencil_attachment(Some(&depth))];
+    let pass = d
+        .create_render_pass(
+            &tuff::RenderPassCreateInfo::new()
+                .attachments(&attachments)
+                .subpasses(&subpass),
+        )
+        .expect("render pass");
+    let views = tuff::HandleSlice::new(&[&target.view, &ds_view]);
+    let framebuffer = d
+        .create_framebuffer(
+            &tuff::FramebufferCreateInfo::new(&pass)
+                .attachments(&views)
+                .width(SIZE)
+                .height(SIZE)
+                .layers(1),
+        )
+        .expect("framebuffer");
+    let pass_pipeline = |state: &tuff::PipelineDepthStencilStateCreateInfo<'_>| {
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let (mut made, _) =
+            pipelines::with_graphics_info(&stages, &p.graphics_layout, &pass, |info| {
+                let info = info.depth_stencil_state(Some(state));
+                unsafe { d.create_graphics_pipelines(None, &[info]) }
+            })
+            .expect("pipeline");
+        made.pop().expect("one pipeline")
+    };
+    let pass_cases = [
+        ("None-06886", pass_pipeline(&depth_writes)),
+        ("None-06887", pass_pipeline(&stencil_writes)),
+    ];
+    let clear = [vk::ClearValue::default(); 2];
+    let begin = tuff::RenderPassBeginInfo::new(&pass, &framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
+        for (suffix, pipeline) in &pass_cases {
+            let rule = format!("VUID-{command}-{suffix}");
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                    .expect("bind");
+                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    let said = s.messages.take();
+                    assert!(
+                        said.iter().any(|m| m.contains(&rule)),
+                        "the layer did not name {rule}; it said {said:?}"
+                    );
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
+        }
+    }
+
+    // Where the pipeline has depth writes dynamic, the value set decides.
+    let dynamic_states = [D::VIEWPORT, D::SCISSOR, D::DEPTH_WRITE_ENABLE];
+    let dynamic_write = {
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let states = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
+        let (mut made, _) =
+            pipelines::with_graphics_info(&stages, &p.graphics_layout, &pass, |info| {
+                let info = info
+                    .depth_stencil_state(Some(&depth_writes))
+                    .dynamic_state(Some(&states));
+                unsafe { d.create_graphics_pipelines(None, &[info]) }
+            })
+            .expect("pipeline");
+        made.pop().expect("one pipeline")
+    };
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_write)
+        .expect("bind");
+    rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+    rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+    rec.cmd_set_depth_write_enable(vk::FALSE);
+    unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with depth writes off");
+    rec.cmd_set_depth_write_enable(vk::TRUE);
+    assert_eq!(
+        vuid(unsafe { rec.cmd_draw(3, 1, 0, 0) }),
+        "VUID-vkCmdDraw-None-06886"
+    );
+    drop(rec);
+
+    // Dynamic rendering: the rule follows the layout of the attachment info (the
+    // 1.3.239 layer checks none of them).
+    let rendering_with = |state| {
+        rendering_pipeline_with(
+            &s,
+            &p,
+            &target.render_pass,
+            0,
+            &[rgba],
+            (ds_format, ds_format),
+            state,
+        )
+    };
+    let depth_pipeline = rendering_with(&depth_writes);
+    let stencil_pipeline = rendering_with(&stencil_writes);
+    let with_view = color_attachment(Some(&target.view));
+    // (rule suffix, depth layout, stencil layout, the pipeline)
+    let rendering_cases = [
+        ("imageView-06172", read_only, read_only, &depth_pipeline),
+        ("imageView-06173", read_only, read_only, &stencil_pipeline),
+        (
+            "imageView-06174",
+            L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL,
+            L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL,
+            &depth_pipeline,
+        ),
+        (
+            "imageView-06175",
+            L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL,
+            L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL,
+            &stencil_pipeline,
+        ),
+        (
+            "imageView-06176",
+            L::DEPTH_READ_ONLY_OPTIMAL,
+            L::STENCIL_ATTACHMENT_OPTIMAL,
+            &depth_pipeline,
+        ),
+        (
+            "imageView-06177",
+            L::DEPTH_ATTACHMENT_OPTIMAL,
+            L::STENCIL_READ_ONLY_OPTIMAL,
+            &stencil_pipeline,
+        ),
+    ];
+    for (command, draw) in draws::<tuff::InRendering>(&args, &args) {
+        for (suffix, depth_layout, stencil_layout, pipeline) in &rendering_cases {
+            let rule = format!("VUID-{command}-{suffix}");
+            let attachment = |layout| {
+                tuff::RenderingAttachmentInfo::new()
+                    .image_view(Some(&ds_view))
+                    .image_layout(layout)
+                    .load_op(vk::AttachmentLoadOp::DONT_CARE)
+                    .store_op(vk::AttachmentStoreOp::DONT_CARE)
+            };
+            let (depth, stencil) = (attachment(*depth_layout), attachment(*stencil_layout));
+            let rendering = tuff::RenderingInfo::new()
+                .render_area(area())
+                .layer_count(1)
+                .color_attachments(&with_view)
+                .depth_attachment(Some(&depth))
+                .stencil_attachment(Some(&stencil));
+            for unchecked in [false, true] {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                    .expect("bind");
+                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                if unchecked {
+                    s.messages.abort_on_error(true);
+                    let _ = draw(&mut rec, true);
+                    s.messages.abort_on_error(false);
+                    // The 1.3.239 layer does not check these rules: tuff's error
+                    // alone proves them (the command buffer is never submitted).
+                    let said = s.messages.take();
+                    assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
+                } else {
+                    assert_eq!(vuid(draw(&mut rec, false)), rule);
+                    assert_silent(&s.messages);
+                }
+                drop(rec);
+            }
         }
     }
     assert_silent(&s.messages);

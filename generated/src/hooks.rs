@@ -3439,32 +3439,63 @@ fn stage_resources<'a>(
     (resources.into(), push)
 }
 
-/// A pipeline's record before its layout is filled in.
+/// The depth/stencil state of a pipeline that writes neither aspect (a compute
+/// pipeline's).
+const NO_DEPTH_STENCIL_WRITES: crate::recorder::DepthStencil = crate::recorder::DepthStencil {
+    depth_test: false,
+    depth_write: false,
+    stencil_test: false,
+    ops: [[vk::StencilOp::KEEP; 3]; 2],
+    masks: [0; 2],
+    discard: true,
+};
+
+/// A graphics pipeline's static depth/stencil and rasterizer discard state (no
+/// depth/stencil state: neither test).
+fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::recorder::DepthStencil {
+    // SAFETY: the safe setters store references that outlive the create info.
+    let (ds, raster) = unsafe {
+        (
+            raw.p_depth_stencil_state.as_ref(),
+            raw.p_rasterization_state.as_ref(),
+        )
+    };
+    let ops = |s: &vk::StencilOpState| [s.fail_op, s.pass_op, s.depth_fail_op];
+    crate::recorder::DepthStencil {
+        depth_test: ds.is_some_and(|d| d.depth_test_enable != vk::FALSE),
+        depth_write: ds.is_some_and(|d| d.depth_write_enable != vk::FALSE),
+        stencil_test: ds.is_some_and(|d| d.stencil_test_enable != vk::FALSE),
+        ops: ds.map_or([[vk::StencilOp::KEEP; 3]; 2], |d| {
+            [ops(&d.front), ops(&d.back)]
+        }),
+        masks: ds.map_or([0; 2], |d| [d.front.write_mask, d.back.write_mask]),
+        discard: raster.is_some_and(|r| r.rasterizer_discard_enable != vk::FALSE),
+    }
+}
+
+/// A pipeline's record before its bind point and layout are filled in: what a
+/// compute pipeline has, the resources and push constants its stages' modules
+/// declare; a graphics pipeline's adds its fixed-function state.
 fn pipeline_record(
-    (vertex_bindings, vertex_reads): (u64, Vec<crate::retention::VertexRead>),
-    samples: vk::SampleCountFlags,
-    pass: Option<(Vrc<RenderPassRecord>, u32)>,
-    dynamic: u32,
-    rendering: Option<Vrc<crate::retention::RenderingFormats>>,
     (resources, push): (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>),
-    viewports: (u32, u32),
 ) -> PipelineRecord {
     PipelineRecord {
-        bind_point: vk::PipelineBindPoint::GRAPHICS,
+        bind_point: vk::PipelineBindPoint::COMPUTE,
         layout: Vrc::new(LayoutRecord {
             push_ranges: Vec::new(),
             set_dynamics: Vec::new(),
             sets: Vec::new(),
         }),
-        vertex_bindings,
-        vertex_reads,
-        samples,
-        pass,
-        dynamic,
-        rendering,
+        vertex_bindings: 0,
+        vertex_reads: Vec::new(),
+        samples: vk::SampleCountFlags::empty(),
+        pass: None,
+        dynamic: 0,
+        rendering: None,
         resources,
         push,
-        viewports,
+        viewports: (0, 0),
+        depth_stencil: NO_DEPTH_STENCIL_WRITES,
     }
 }
 
@@ -3544,15 +3575,7 @@ pub(crate) fn compute_pipelines_created(
     let records = create_infos.iter().map(|i| {
         (
             i.as_raw().layout,
-            pipeline_record(
-                (0, Vec::new()),
-                vk::SampleCountFlags::empty(),
-                None,
-                0,
-                None,
-                stage_resources(device, std::iter::once(&i.as_raw().stage)),
-                (0, 0),
-            ),
+            pipeline_record(stage_resources(device, std::iter::once(&i.as_raw().stage))),
         )
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, records);
@@ -3600,24 +3623,27 @@ pub(crate) fn graphics_pipelines_created(
                 )
             }))
         });
-        (
-            raw.layout,
-            pipeline_record(
-                vertex_bindings(device, raw),
+        (raw.layout, {
+            let (vertex_bindings, vertex_reads) = vertex_bindings(device, raw);
+            PipelineRecord {
+                vertex_bindings,
+                vertex_reads,
                 samples,
                 pass,
                 dynamic,
                 rendering,
+                // SAFETY: the safe setter stores a reference that outlives the
+                // info.
+                viewports: unsafe { raw.p_viewport_state.as_ref() }
+                    .map_or((0, 0), |v| (v.viewport_count, v.scissor_count)),
+                depth_stencil: static_depth_stencil(raw),
                 // SAFETY: the safe struct stores its stages with their count.
-                stage_resources(
+                ..pipeline_record(stage_resources(
                     device,
                     unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
-                ),
-                // SAFETY: the safe setter stores a reference that outlives the info.
-                unsafe { raw.p_viewport_state.as_ref() }
-                    .map_or((0, 0), |v| (v.viewport_count, v.scissor_count)),
-            ),
-        )
+                ))
+            }
+        })
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::GRAPHICS, records);
     created
@@ -3791,6 +3817,18 @@ pub(crate) fn viewport_count_set<S: State>(
     dynamic_state_set(recorder, bits);
 }
 
+/// A command that sets a dynamic depth, stencil or rasterizer discard value (`bits`
+/// its state): the value is kept for the checks of draws that write the
+/// depth/stencil attachment.
+pub(crate) fn depth_stencil_set<S: State>(
+    recorder: &mut Recorder<'_, S>,
+    value: crate::recorder::Set,
+    bits: u32,
+) {
+    recorder.depth_stencil.set(value);
+    dynamic_state_set(recorder, bits);
+}
+
 /// A dynamic state setting command: the states of `bits` are set.
 pub(crate) fn dynamic_state_set<S: State>(recorder: &mut Recorder<'_, S>, bits: u32) {
     recorder.dynamic.0 |= bits;
@@ -3814,6 +3852,13 @@ pub(crate) struct DrawRules {
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
     pub rendering: [&'static str; 8],
+    /// Depth and stencil writes against read-only attachment layouts: in any
+    /// instance (depth, stencil), then in dynamic rendering by the layout the
+    /// attachment info names (depth and stencil in `DEPTH_STENCIL_READ_ONLY_OPTIMAL`,
+    /// in `DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` and
+    /// `DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, in `DEPTH_READ_ONLY_OPTIMAL` and
+    /// `STENCIL_READ_ONLY_OPTIMAL`).
+    pub read_only: [&'static str; 8],
     /// The viewport and scissor counts set with their counts: the viewport count
     /// against the pipeline's scissor count, the scissor count against its viewport
     /// count, and both against each other.
@@ -3903,7 +3948,94 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
             format!("dynamic state bit {} was set since the bound pipeline was bound, and the pipeline has it static", stale.trailing_zeros()),
         )?;
     }
-    count_checks(recorder.counts, pipeline, &rules.counts)
+    count_checks(recorder.counts, pipeline, &rules.counts)?;
+    read_only_checks(recorder, pipeline, &rules.read_only)
+}
+
+/// Refuses a draw that writes depth or stencil where the instance's depth/stencil
+/// attachment has that aspect in a read-only layout (or where its layouts are not
+/// known).
+fn read_only_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline: &PipelineRecord,
+    rules: &[&'static str; 8],
+) -> Result<()> {
+    use crate::recorder::dynamic_bit;
+    use vk::DynamicState as D;
+    let Some(instance) = &recorder.instance else {
+        return Ok(());
+    };
+    // The values the draw uses: the recording's where the pipeline has them dynamic.
+    let mut values = pipeline.depth_stencil;
+    let now = recorder.depth_stencil;
+    let dynamic = |state| pipeline.dynamic & dynamic_bit(state) != 0;
+    if dynamic(D::DEPTH_TEST_ENABLE) {
+        values.depth_test = now.depth_test;
+    }
+    if dynamic(D::DEPTH_WRITE_ENABLE) {
+        values.depth_write = now.depth_write;
+    }
+    if dynamic(D::STENCIL_TEST_ENABLE) {
+        values.stencil_test = now.stencil_test;
+    }
+    if dynamic(D::STENCIL_OP) {
+        values.ops = now.ops;
+    }
+    if dynamic(D::STENCIL_WRITE_MASK) {
+        values.masks = now.masks;
+    }
+    if dynamic(D::RASTERIZER_DISCARD_ENABLE) {
+        values.discard = now.discard;
+    }
+    let (depth, stencil) = (values.writes_depth(), values.writes_stencil());
+    if !depth && !stencil {
+        return Ok(());
+    }
+    let Some((depth_layout, stencil_layout)) = instance.depth_stencil_layouts() else {
+        return refuse(
+            if depth { rules[0] } else { rules[1] },
+            "the draw writes the depth/stencil attachment, whose layouts are not known here (a secondary that continues dynamic rendering: its inheritance info does not give them)".into(),
+        );
+    };
+    type L = vk::ImageLayout;
+    let dynamic_rendering = instance.dynamic;
+    if let (true, Some(layout)) = (depth, depth_layout) {
+        let rule = match layout {
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[2]),
+            L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL if dynamic_rendering => Some(rules[4]),
+            L::DEPTH_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[6]),
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+            | L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
+            | L::DEPTH_READ_ONLY_OPTIMAL
+            | L::READ_ONLY_OPTIMAL => Some(rules[0]),
+            _ => None,
+        };
+        if let Some(rule) = rule {
+            refuse(
+                rule,
+                format!("the draw writes depth (depth test and writes enabled), and the depth/stencil attachment's depth aspect is in {layout:?}"),
+            )?;
+        }
+    }
+    if let (true, Some(layout)) = (stencil, stencil_layout) {
+        let rule = match layout {
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[3]),
+            L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[5]),
+            L::STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[7]),
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+            | L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL
+            | L::STENCIL_READ_ONLY_OPTIMAL
+            | L::READ_ONLY_OPTIMAL => Some(rules[1]),
+            _ => None,
+        };
+        if let Some(rule) = rule {
+            refuse(
+                rule,
+                format!("the draw may write stencil (stencil test enabled, a face with a write mask and an operation other than KEEP), and the depth/stencil attachment's stencil aspect is in {layout:?}"),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// Refuses a draw whose viewport and scissor counts, where the bound pipeline has
@@ -6405,6 +6537,7 @@ pub(crate) fn render_pass_created(
             no_attachments,
             color_formats,
             depth_formats,
+            depth_layouts: render_pass::subpass_depth_layouts(create_info),
             layouts: render_pass::attachment_layouts(create_info),
             used: render_pass::used_attachments(create_info),
             self_dependencies: render_pass::self_dependencies(create_info),
@@ -6439,6 +6572,7 @@ pub(crate) fn render_pass2_created(
             no_attachments,
             color_formats,
             depth_formats,
+            depth_layouts: render_pass::subpass_depth_layouts2(create_info),
             layouts: render_pass::attachment_layouts2(create_info),
             used: render_pass::used_attachments2(create_info),
             self_dependencies: render_pass::self_dependencies2(create_info),
@@ -6485,6 +6619,7 @@ pub(crate) fn render_pass_begun<S: State>(
         dynamic: false,
         record,
         rendering: None,
+        rendering_layouts: None,
     });
 }
 
@@ -6535,11 +6670,16 @@ pub(crate) fn rendering_begun<S: State>(
         depth: format(depth),
         stencil: format(stencil),
     };
+    let layout = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
+        a.filter(|a| a.image_view != vk::ImageView::null())
+            .map(|a| a.image_layout)
+    };
     recorder.instance = Some(crate::recorder::PassInstance {
         view_mask: raw.view_mask,
         no_attachments,
         dynamic: true,
         rendering: Some(Vrc::new(rendering)),
+        rendering_layouts: Some((layout(depth), layout(stencil))),
         ..Default::default()
     });
 }

@@ -131,6 +131,102 @@ impl Pushed {
     }
 }
 
+/// A dynamic depth, stencil or rasterizer discard value a recording set.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Set {
+    /// `vkCmdSetDepthTestEnable`.
+    DepthTest(vk::Bool32),
+    /// `vkCmdSetDepthWriteEnable`.
+    DepthWrite(vk::Bool32),
+    /// `vkCmdSetStencilTestEnable`.
+    StencilTest(vk::Bool32),
+    /// `vkCmdSetStencilOp`: the faces, and the fail, pass and depth-fail operations.
+    StencilOp(vk::StencilFaceFlags, [vk::StencilOp; 3]),
+    /// `vkCmdSetStencilWriteMask`.
+    WriteMask(vk::StencilFaceFlags, u32),
+    /// `vkCmdSetRasterizerDiscardEnable`.
+    Discard(vk::Bool32),
+}
+
+/// The state that decides whether a draw writes its depth/stencil attachment: a
+/// pipeline's static values, or the values a recording set.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DepthStencil {
+    /// Depth test enabled.
+    pub depth_test: bool,
+    /// Depth writes enabled.
+    pub depth_write: bool,
+    /// Stencil test enabled.
+    pub stencil_test: bool,
+    /// The fail, pass and depth-fail operations of the front and back faces.
+    pub ops: [[vk::StencilOp; 3]; 2],
+    /// The front and back write masks.
+    pub masks: [u32; 2],
+    /// Rasterizer discard enabled.
+    pub discard: bool,
+}
+
+impl Default for DepthStencil {
+    /// Values that write both aspects: what a check assumes of a value not set.
+    fn default() -> Self {
+        DepthStencil {
+            depth_test: true,
+            depth_write: true,
+            stencil_test: true,
+            ops: [[vk::StencilOp::REPLACE; 3]; 2],
+            masks: [!0; 2],
+            discard: false,
+        }
+    }
+}
+
+impl DepthStencil {
+    /// Takes a value a recording set.
+    pub(crate) fn set(&mut self, value: Set) {
+        let faces = |f: vk::StencilFaceFlags| {
+            [
+                f.contains(vk::StencilFaceFlags::FRONT),
+                f.contains(vk::StencilFaceFlags::BACK),
+            ]
+        };
+        match value {
+            Set::DepthTest(on) => self.depth_test = on != vk::FALSE,
+            Set::DepthWrite(on) => self.depth_write = on != vk::FALSE,
+            Set::StencilTest(on) => self.stencil_test = on != vk::FALSE,
+            Set::Discard(on) => self.discard = on != vk::FALSE,
+            Set::StencilOp(f, ops) => {
+                for (i, on) in faces(f).into_iter().enumerate() {
+                    if on {
+                        self.ops[i] = ops;
+                    }
+                }
+            }
+            Set::WriteMask(f, mask) => {
+                for (i, on) in faces(f).into_iter().enumerate() {
+                    if on {
+                        self.masks[i] = mask;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether a draw with these values writes depth.
+    pub(crate) fn writes_depth(&self) -> bool {
+        !self.discard && self.depth_test && self.depth_write
+    }
+
+    /// Whether a draw with these values may write stencil: the test enabled, and a
+    /// face with a write mask and an operation other than `KEEP`.
+    pub(crate) fn writes_stencil(&self) -> bool {
+        !self.discard
+            && self.stencil_test
+            && (0..2).any(|i| {
+                self.masks[i] != 0 && self.ops[i].iter().any(|o| *o != vk::StencilOp::KEEP)
+            })
+    }
+}
+
 /// The render pass instance a recorder is inside, as its checks need it.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct PassInstance {
@@ -156,6 +252,26 @@ pub(crate) struct PassInstance {
     /// secondary inherits): its view mask and attachment formats, which a draw's
     /// pipeline must have been made for.
     pub rendering: Option<Vrc<crate::retention::RenderingFormats>>,
+    /// In dynamic rendering begun in this recording: the layouts of its depth and
+    /// stencil attachments that have a view (`None` in a continuing secondary,
+    /// whose inheritance info does not give them).
+    pub rendering_layouts: Option<(Option<vk::ImageLayout>, Option<vk::ImageLayout>)>,
+}
+
+impl PassInstance {
+    /// The layouts of the current subpass's depth/stencil attachment (depth aspect,
+    /// stencil aspect; `None` for an aspect it has not), or `None` where they are
+    /// not known.
+    pub(crate) fn depth_stencil_layouts(
+        &self,
+    ) -> Option<(Option<vk::ImageLayout>, Option<vk::ImageLayout>)> {
+        if self.dynamic {
+            return self.rendering_layouts;
+        }
+        let record = self.record.as_ref()?;
+        let layouts = record.depth_layouts.get(self.subpass as usize)?;
+        Some(layouts.map_or((None, None), |(d, s)| (Some(d), Some(s))))
+    }
 }
 
 /// The dynamic states the recorder follows, one bit each: those of Vulkan 1.0
@@ -244,6 +360,8 @@ pub struct Recorder<'c, S: State> {
     pub(crate) dynamic: (u32, u32),
     /// The push constants set so far.
     pub(crate) pushed: Option<Pushed>,
+    /// The depth, stencil and rasterizer discard values the recording set.
+    pub(crate) depth_stencil: DepthStencil,
     /// The counts last given to `vkCmdSetViewportWithCount` and
     /// `vkCmdSetScissorWithCount`.
     pub(crate) counts: (Option<u32>, Option<u32>),
@@ -442,6 +560,7 @@ impl CommandBuffer {
             dynamic: (0, 0),
             pushed: None,
             counts: (None, None),
+            depth_stencil: DepthStencil::default(),
             verified: 0,
             device_mask: group.unwrap_or(all),
             _state: PhantomData,
@@ -592,6 +711,7 @@ impl<'c, S: State> Recorder<'c, S> {
             dynamic: self.dynamic,
             pushed: self.pushed,
             counts: self.counts,
+            depth_stencil: self.depth_stencil,
             verified: 0,
             device_mask: self.device_mask,
             alive: self.alive,

@@ -298,6 +298,9 @@ pub(crate) struct RenderPassRecord {
     pub color_formats: Vec<Vec<vk::Format>>,
     /// Each subpass's depth/stencil attachment's format, if it uses one.
     pub depth_formats: Vec<Option<vk::Format>>,
+    /// Each subpass's depth/stencil reference's layouts (depth aspect, stencil
+    /// aspect), if it uses one.
+    pub depth_layouts: Vec<Option<(vk::ImageLayout, vk::ImageLayout)>>,
     /// Each attachment's initial and final layouts, and those of its stencil
     /// aspect (the same unless a `VkAttachmentDescriptionStencilLayout` says
     /// otherwise).
@@ -458,6 +461,8 @@ pub(crate) struct PipelineRecord {
     pub push: Option<(u32, u32)>,
     /// Its viewport state's viewport and scissor counts (0 without one).
     pub viewports: (u32, u32),
+    /// Its depth/stencil and rasterizer discard state, where static.
+    pub depth_stencil: crate::recorder::DepthStencil,
 }
 
 impl RenderingFormats {

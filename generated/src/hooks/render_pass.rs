@@ -12,6 +12,9 @@ use super::*;
 struct Ref {
     attachment: u32,
     layout: vk::ImageLayout,
+    /// The stencil aspect's layout (a chained `VkAttachmentReferenceStencilLayout`'s,
+    /// or `layout`).
+    stencil_layout: vk::ImageLayout,
     aspect_mask: vk::ImageAspectFlags,
 }
 
@@ -130,6 +133,7 @@ impl Pass {
             let plain = |r: &vk::AttachmentReference| Ref {
                 attachment: r.attachment,
                 layout: r.layout,
+                stencil_layout: r.layout,
                 aspect_mask: vk::ImageAspectFlags::empty(),
             };
             let subpasses = crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count)
@@ -172,10 +176,18 @@ impl Pass {
                 .iter()
                 .map(|a| (a.format, a.samples))
                 .collect();
-            let plain = |r: &vk::AttachmentReference2<'_>| Ref {
-                attachment: r.attachment,
-                layout: r.layout,
-                aspect_mask: r.aspect_mask,
+            let plain = |r: &vk::AttachmentReference2<'_>| {
+                // The chain of a safe struct, and the type its sType names.
+                let stencil: Option<&vk::AttachmentReferenceStencilLayout<'_>> = super::chained(
+                    r.p_next,
+                    vk::StructureType::ATTACHMENT_REFERENCE_STENCIL_LAYOUT,
+                );
+                Ref {
+                    attachment: r.attachment,
+                    layout: r.layout,
+                    stencil_layout: stencil.map_or(r.layout, |s| s.stencil_layout),
+                    aspect_mask: r.aspect_mask,
+                }
             };
             let subpasses = crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count)
                 .iter()
@@ -292,6 +304,18 @@ impl Pass {
             .map(|s| s.depth.filter(Ref::used).map(|r| format(&r)))
             .collect();
         (colors, depths)
+    }
+
+    /// Each subpass's depth/stencil reference's layouts, if it uses one.
+    fn depth_layouts(&self) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
+        self.subpasses
+            .iter()
+            .map(|s| {
+                s.depth
+                    .filter(Ref::used)
+                    .map(|r| (r.layout, r.stencil_layout))
+            })
+            .collect()
     }
 
     fn vuid(&self, rule: Rule) -> &'static str {
@@ -633,6 +657,20 @@ pub(crate) fn subpass_formats(
     create_info: &RenderPassCreateInfo<'_>,
 ) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
     Pass::of(create_info).formats()
+}
+
+/// Each subpass's depth/stencil layouts, for `vkCreateRenderPass`'s record.
+pub(crate) fn subpass_depth_layouts(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
+    Pass::of(create_info).depth_layouts()
+}
+
+/// [`subpass_depth_layouts`] for `vkCreateRenderPass2`.
+pub(crate) fn subpass_depth_layouts2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
+    Pass::of2(create_info).depth_layouts()
 }
 
 /// Each attachment's format, samples and roles, for `vkCreateRenderPass`'s record.

@@ -379,6 +379,8 @@ const DESCRIPTORS_WRITTEN: &str = "checks, once per change of the bound state, t
 const PUSH_CONSTANTS_SET: &str = "checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it)";
 const WITH_COUNT: &str = "checks, once per change of the bound state, the viewport and scissor counts the recording last set with vkCmdSetViewportWithCount and vkCmdSetScissorWithCount against each other, or against the count the bound pipeline has static, as the device recorded it from its viewport state";
 const MULTIVIEW_INSTANCES: &str = "checks, in a render pass instance with a view mask, the draw's last instance index against maxMultiviewInstanceIndex, read once from the physical device (the 1.3.239 layer does not check it: the error alone proves it)";
+const READ_ONLY_WRITES: &str = "checks, once per change of the bound state, whether the draw writes depth (depth test and writes enabled) or stencil (stencil test enabled, a face with a write mask and an operation other than KEEP), from the bound pipeline's depth/stencil and rasterization state or the values the recording set where it has them dynamic, against the layouts of the instance's depth/stencil attachment (the subpass's reference, with its stencil layout, or the vkCmdBeginRendering attachment infos); in a secondary that continues dynamic rendering, whose layouts the inheritance info does not give, a draw that writes either is refused";
+const READ_ONLY_RENDERING: &str = "checks, as for the rule of any render pass instance (None-06886 and -06887), a draw that writes depth or stencil against the layout the vkCmdBeginRendering attachment info names (the 1.3.239 layer does not check it: the error alone proves it)";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -437,7 +439,23 @@ macro_rules! draw_rules {
             "-pStencilAttachment-06182\", ",
             "\"VUID-",
             $command,
-            "-pStencilAttachment-07618\"], counts: [\"VUID-",
+            "-pStencilAttachment-07618\"], read_only: [\"VUID-",
+            $command,
+            "-None-06886\", \"VUID-",
+            $command,
+            "-None-06887\", \"VUID-",
+            $command,
+            "-imageView-06172\", \"VUID-",
+            $command,
+            "-imageView-06173\", \"VUID-",
+            $command,
+            "-imageView-06174\", \"VUID-",
+            $command,
+            "-imageView-06175\", \"VUID-",
+            $command,
+            "-imageView-06176\", \"VUID-",
+            $command,
+            "-imageView-06177\"], counts: [\"VUID-",
             $command,
             "-viewportCount-03417\", \"VUID-",
             $command,
@@ -605,6 +623,14 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),
+            (concat!("VUID-", $command, "-None-06886"), How::Dynamic(READ_ONLY_WRITES)),
+            (concat!("VUID-", $command, "-None-06887"), How::Dynamic(READ_ONLY_WRITES)),
+            (concat!("VUID-", $command, "-imageView-06172"), How::Dynamic(READ_ONLY_RENDERING)),
+            (concat!("VUID-", $command, "-imageView-06173"), How::Dynamic(READ_ONLY_RENDERING)),
+            (concat!("VUID-", $command, "-imageView-06174"), How::Dynamic(READ_ONLY_RENDERING)),
+            (concat!("VUID-", $command, "-imageView-06175"), How::Dynamic(READ_ONLY_RENDERING)),
+            (concat!("VUID-", $command, "-imageView-06176"), How::Dynamic(READ_ONLY_RENDERING)),
+            (concat!("VUID-", $command, "-imageView-06177"), How::Dynamic(READ_ONLY_RENDERING)),
         ]
     };
 }
@@ -1845,7 +1871,7 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetStencilWriteMask",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::WriteMask(face_mask, write_mask)", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK)"]),
         ..NONE
     },
     Special {
@@ -1870,12 +1896,12 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetDepthTestEnable",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::DepthTest(depth_test_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthWriteEnable",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::DepthWrite(depth_write_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE)"]),
         ..NONE
     },
     Special {
@@ -1890,17 +1916,17 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetStencilTestEnable",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::StencilTest(stencil_test_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilOp",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::StencilOp(face_mask, [fail_op, pass_op, depth_fail_op])", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetRasterizerDiscardEnable",
-        after: call("hooks::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)"]),
+        after: call("hooks::depth_stencil_set", &["self", "crate::recorder::Set::Discard(rasterizer_discard_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)"]),
         ..NONE
     },
     Special {

@@ -1308,8 +1308,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_test_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::hooks::depth_stencil_set(
             self,
+            crate::recorder::Set::DepthTest(depth_test_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
         );
         self.state_changed();
@@ -1351,8 +1352,9 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_write_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::hooks::depth_stencil_set(
             self,
+            crate::recorder::Set::DepthWrite(depth_write_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
         );
         self.state_changed();
@@ -1535,8 +1537,9 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
         let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), rasterizer_discard_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::hooks::depth_stencil_set(
             self,
+            crate::recorder::Set::Discard(rasterizer_discard_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
         );
         self.state_changed();
@@ -1665,8 +1668,12 @@ The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run tim
         unsafe {
             fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
         };
-        crate::hooks::dynamic_state_set(
+        crate::hooks::depth_stencil_set(
             self,
+            crate::recorder::Set::StencilOp(
+                face_mask,
+                [fail_op, pass_op, depth_fail_op],
+            ),
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
         );
         self.state_changed();
@@ -1708,8 +1715,9 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
         let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), stencil_test_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::hooks::depth_stencil_set(
             self,
+            crate::recorder::Set::StencilTest(stencil_test_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
         );
         self.state_changed();
