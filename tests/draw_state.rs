@@ -1329,3 +1329,83 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     }
     assert_silent(&s.messages);
 }
+
+/// Each draw command rasterizes the sample count of the instance's attachments: a
+/// pipeline of 4 samples in dynamic rendering into a single-sampled view is refused
+/// by tuff, and the layer names the rule for the unchecked draw (by its sibling for
+/// dynamic rendering, 06188).
+#[test]
+fn draws_rasterize_their_attachments_samples() {
+    let _serial = vulkan::serial();
+    let s = setup_full_features(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
+    let rgba = [vk::Format::R8G8B8A8_UNORM];
+    let four = {
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_4);
+        let (mut made, _) = pipelines::with_graphics_info(
+            &stages,
+            &p.graphics_layout,
+            &target.render_pass,
+            |info| {
+                let mut rendering =
+                    tuff::PipelineRenderingCreateInfo::new().color_attachment_formats(&rgba);
+                let info = info
+                    .render_pass(None)
+                    .multisample_state(Some(&multisample))
+                    .push_next(&mut rendering);
+                unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+            },
+        )
+        .expect("pipeline");
+        made.pop().expect("one pipeline")
+    };
+    let with_view = color_attachment(Some(&target.view));
+    let rendering = tuff::RenderingInfo::new()
+        .render_area(area())
+        .layer_count(1)
+        .color_attachments(&with_view);
+    let viewport = vk::Viewport {
+        width: SIZE as f32,
+        height: SIZE as f32,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, draw) in draws::<tuff::InRendering>(&args, &args) {
+        let rule = format!("VUID-{command}-rasterizationSamples-04740");
+        // The 1.3.239 layer states the case in dynamic rendering by the sibling rule
+        // of pipelines made with an attachment sample count info.
+        let sibling = format!("VUID-{command}-colorAttachmentCount-06188");
+        for unchecked in [false, true] {
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
+                .expect("bind");
+            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+            rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = draw(&mut rec, true);
+                s.messages.abort_on_error(false);
+                let said = s.messages.take();
+                assert!(
+                    said.iter()
+                        .any(|m| m.contains(&rule) || m.contains(&sibling)),
+                    "the layer did not name {rule}; it said {said:?}"
+                );
+            } else {
+                assert_eq!(vuid(draw(&mut rec, false)), rule);
+                assert_silent(&s.messages);
+            }
+            drop(rec);
+        }
+    }
+    assert_silent(&s.messages);
+}

@@ -3858,7 +3858,8 @@ pub(crate) struct DrawRules {
     /// in `DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` and
     /// `DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, in `DEPTH_READ_ONLY_OPTIMAL` and
     /// `STENCIL_READ_ONLY_OPTIMAL`).
-    pub read_only: [&'static str; 8],
+    /// Then the pipeline's rasterization samples against the attachments'.
+    pub read_only: [&'static str; 9],
     /// The viewport and scissor counts set with their counts: the viewport count
     /// against the pipeline's scissor count, the scissor count against its viewport
     /// count, and both against each other.
@@ -3952,20 +3953,14 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
     read_only_checks(recorder, pipeline, &rules.read_only)
 }
 
-/// Refuses a draw that writes depth or stencil where the instance's depth/stencil
-/// attachment has that aspect in a read-only layout (or where its layouts are not
-/// known).
-fn read_only_checks<S: State>(
+/// The depth, stencil and rasterizer discard values a draw uses: the bound
+/// pipeline's, or the recording's where the pipeline has them dynamic.
+fn draw_values<S: State>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
-    rules: &[&'static str; 8],
-) -> Result<()> {
+) -> crate::recorder::DepthStencil {
     use crate::recorder::dynamic_bit;
     use vk::DynamicState as D;
-    let Some(instance) = &recorder.instance else {
-        return Ok(());
-    };
-    // The values the draw uses: the recording's where the pipeline has them dynamic.
     let mut values = pipeline.depth_stencil;
     let now = recorder.depth_stencil;
     let dynamic = |state| pipeline.dynamic & dynamic_bit(state) != 0;
@@ -3986,6 +3981,33 @@ fn read_only_checks<S: State>(
     }
     if dynamic(D::RASTERIZER_DISCARD_ENABLE) {
         values.discard = now.discard;
+    }
+    values
+}
+
+/// Refuses a draw that rasterizes another sample count than the instance's
+/// attachments have, or writes depth or stencil where the instance's depth/stencil
+/// attachment has that aspect in a read-only layout (or where its layouts are not
+/// known).
+fn read_only_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    pipeline: &PipelineRecord,
+    rules: &[&'static str; 9],
+) -> Result<()> {
+    let Some(instance) = &recorder.instance else {
+        return Ok(());
+    };
+    let values = draw_values(recorder, pipeline);
+    if !values.discard {
+        if let (Some(samples), false) = (instance.attachment_samples(), pipeline.samples.is_empty())
+        {
+            if samples != pipeline.samples {
+                refuse(
+                    rules[8],
+                    format!("the bound pipeline rasterizes {:?} samples, and the render pass instance's attachments have {samples:?}", pipeline.samples),
+                )?;
+            }
+        }
     }
     let (depth, stencil) = (values.writes_depth(), values.writes_stencil());
     if !depth && !stencil {
@@ -6538,6 +6560,7 @@ pub(crate) fn render_pass_created(
             color_formats,
             depth_formats,
             depth_layouts: render_pass::subpass_depth_layouts(create_info),
+            subpass_samples: render_pass::subpass_samples(create_info),
             layouts: render_pass::attachment_layouts(create_info),
             used: render_pass::used_attachments(create_info),
             self_dependencies: render_pass::self_dependencies(create_info),
@@ -6573,6 +6596,7 @@ pub(crate) fn render_pass2_created(
             color_formats,
             depth_formats,
             depth_layouts: render_pass::subpass_depth_layouts2(create_info),
+            subpass_samples: render_pass::subpass_samples2(create_info),
             layouts: render_pass::attachment_layouts2(create_info),
             used: render_pass::used_attachments2(create_info),
             self_dependencies: render_pass::self_dependencies2(create_info),
@@ -6620,6 +6644,7 @@ pub(crate) fn render_pass_begun<S: State>(
         record,
         rendering: None,
         rendering_layouts: None,
+        rendering_samples: None,
     });
 }
 
@@ -6674,12 +6699,21 @@ pub(crate) fn rendering_begun<S: State>(
         a.filter(|a| a.image_view != vk::ImageView::null())
             .map(|a| a.image_layout)
     };
+    // The sample count of the first attachment with a view (they must agree).
+    let samples = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .filter_map(|a| live.view(a.image_view))
+        .find_map(|v| live.image(v.image))
+        .map(|i| i.samples);
     recorder.instance = Some(crate::recorder::PassInstance {
         view_mask: raw.view_mask,
         no_attachments,
         dynamic: true,
         rendering: Some(Vrc::new(rendering)),
         rendering_layouts: Some((layout(depth), layout(stencil))),
+        rendering_samples: samples,
         ..Default::default()
     });
 }

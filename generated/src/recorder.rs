@@ -256,9 +256,27 @@ pub(crate) struct PassInstance {
     /// stencil attachments that have a view (`None` in a continuing secondary,
     /// whose inheritance info does not give them).
     pub rendering_layouts: Option<(Option<vk::ImageLayout>, Option<vk::ImageLayout>)>,
+    /// In dynamic rendering: the sample count of its attachments (the images of
+    /// their views, in this recording; the inheritance info's rasterization samples
+    /// in a continuing secondary), if it has any.
+    pub rendering_samples: Option<vk::SampleCountFlags>,
 }
 
 impl PassInstance {
+    /// The sample count of the current subpass's color and depth/stencil
+    /// attachments, if it uses any and it is known.
+    pub(crate) fn attachment_samples(&self) -> Option<vk::SampleCountFlags> {
+        if self.dynamic {
+            return self.rendering_samples;
+        }
+        self.record
+            .as_ref()?
+            .subpass_samples
+            .get(self.subpass as usize)
+            .copied()
+            .flatten()
+    }
+
     /// The layouts of the current subpass's depth/stencil attachment (depth aspect,
     /// stencil aspect; `None` for an aspect it has not), or `None` where they are
     /// not known.
@@ -448,7 +466,7 @@ impl CommandBuffer {
         }
         let mut rec = self.begin_in(info)?;
         let record = inheritance.and_then(|i| rec.device().live().render_pass(i.render_pass));
-        let rendering = inheritance
+        let inherited = inheritance
             .filter(|i| i.render_pass == vk::RenderPass::null())
             .and_then(|i| {
                 // SAFETY: as above; the node's sType names the struct, and its safe
@@ -461,24 +479,28 @@ impl CommandBuffer {
                         &*(n as *const vk::BaseInStructure<'_>)
                             .cast::<vk::CommandBufferInheritanceRenderingInfo<'_>>()
                     })
-            })
-            .map(|r| {
-                // SAFETY: as above.
-                Vrc::new(unsafe {
-                    crate::retention::RenderingFormats::from_raw(
-                        r.view_mask,
-                        r.p_color_attachment_formats,
-                        r.color_attachment_count,
-                        r.depth_attachment_format,
-                        r.stencil_attachment_format,
-                    )
-                })
             });
+        let rendering_samples = inherited
+            .map(|r| r.rasterization_samples)
+            .filter(|s| !s.is_empty());
+        let rendering = inherited.map(|r| {
+            // SAFETY: as above.
+            Vrc::new(unsafe {
+                crate::retention::RenderingFormats::from_raw(
+                    r.view_mask,
+                    r.p_color_attachment_formats,
+                    r.color_attachment_count,
+                    r.depth_attachment_format,
+                    r.stencil_attachment_format,
+                )
+            })
+        });
         rec.instance = Some(PassInstance {
             subpass: inheritance.map_or(0, |i| i.subpass),
             dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
             record,
             rendering,
+            rendering_samples,
             ..PassInstance::default()
         });
         Ok(rec.into_state())

@@ -298,6 +298,9 @@ pub(crate) struct RenderPassRecord {
     pub color_formats: Vec<Vec<vk::Format>>,
     /// Each subpass's depth/stencil attachment's format, if it uses one.
     pub depth_formats: Vec<Option<vk::Format>>,
+    /// Each subpass's color and depth/stencil attachments' sample count, if it uses
+    /// any (its creation checks they agree).
+    pub subpass_samples: Vec<Option<vk::SampleCountFlags>>,
     /// Each subpass's depth/stencil reference's layouts (depth aspect, stencil
     /// aspect), if it uses one.
     pub depth_layouts: Vec<Option<(vk::ImageLayout, vk::ImageLayout)>>,

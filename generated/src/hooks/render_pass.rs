@@ -306,6 +306,22 @@ impl Pass {
         (colors, depths)
     }
 
+    /// Each subpass's color and depth/stencil attachments' sample count, if it uses
+    /// any.
+    fn samples(&self) -> Vec<Option<vk::SampleCountFlags>> {
+        self.subpasses
+            .iter()
+            .map(|s| {
+                s.colors
+                    .iter()
+                    .chain(&s.depth)
+                    .filter(|r| r.used())
+                    .find_map(|r| self.attachments.get(r.attachment as usize))
+                    .map(|a| a.1)
+            })
+            .collect()
+    }
+
     /// Each subpass's depth/stencil reference's layouts, if it uses one.
     fn depth_layouts(&self) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
         self.subpasses
@@ -664,6 +680,20 @@ pub(crate) fn subpass_depth_layouts(
     create_info: &RenderPassCreateInfo<'_>,
 ) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
     Pass::of(create_info).depth_layouts()
+}
+
+/// Each subpass's attachments' sample count, for `vkCreateRenderPass`'s record.
+pub(crate) fn subpass_samples(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<Option<vk::SampleCountFlags>> {
+    Pass::of(create_info).samples()
+}
+
+/// [`subpass_samples`] for `vkCreateRenderPass2`.
+pub(crate) fn subpass_samples2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<Option<vk::SampleCountFlags>> {
+    Pass::of2(create_info).samples()
 }
 
 /// [`subpass_depth_layouts`] for `vkCreateRenderPass2`.
