@@ -1375,7 +1375,8 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
 /// a 2D view where the shader reads a 2D array image breaks the view type rule, a
 /// UNORM view where it reads unsigned integer texels the numeric format rule; a set
 /// whose output buffer was never written breaks the rule that the descriptors a
-/// shader reads are valid. tuff refuses the safe call, and the layer names the same
+/// shader reads are valid; atomics on a view whose format has none (RGBA8_UINT) the
+/// atomic rule. tuff refuses the safe call, and the layer names the same
 /// rule for the unchecked one.
 #[test]
 fn dispatches_read_views_their_shaders_can_read() {
@@ -1386,18 +1387,29 @@ fn dispatches_read_views_their_shaders_can_read() {
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
     let (args, _args_memory) =
         pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::INDIRECT_BUFFER);
-    let cases: [(&[u8], Option<&tuff::Buffer>, &str); 3] = [
+    // An unsigned integer view whose format has no atomics, for the atomic shader.
+    let (_uint_image, _uint_memory, uint_view) =
+        pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, U::empty());
+    let cases: [(&[u8], &tuff::ImageView, Option<&tuff::Buffer>, &str); 4] = [
         (
             include_bytes!("../shaders/spv/image_array.comp.spv"),
+            &view,
             Some(&output),
             "viewType-07752",
         ),
         (
             include_bytes!("../shaders/spv/image_uint.comp.spv"),
+            &view,
             Some(&output),
             "format-07753",
         ),
-        (IMAGE_COMP, None, "None-02699"),
+        (IMAGE_COMP, &view, None, "None-02699"),
+        (
+            include_bytes!("../shaders/spv/atomic.comp.spv"),
+            &uint_view,
+            Some(&output),
+            "None-02691",
+        ),
     ];
     type Dispatch =
         fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
@@ -1425,8 +1437,8 @@ fn dispatches_read_views_their_shaders_can_read() {
         }),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    for (code, output, suffix) in cases {
-        let reader = image_reader_with(&s, &view, output, None, code);
+    for (code, view, output, suffix) in cases {
+        let reader = image_reader_with(&s, view, output, None, code);
         for (command, dispatch) in commands {
             let rule = format!("VUID-{command}-{suffix}");
             for unchecked in [false, true] {

@@ -698,18 +698,23 @@ fn image_draw(
 /// Each draw command reads its sets' image views with its shaders' image types: a
 /// 2D view where the fragment shader reads a 2D array image breaks the view type
 /// rule, a UNORM view where it reads unsigned integer texels the numeric format
-/// rule; and a set whose storage image was never written breaks the rule that the
-/// descriptors a shader reads are valid.
+/// rule; a set whose storage image was never written breaks the rule that the
+/// descriptors a shader reads are valid; and atomics on a view whose format has
+/// none (RGBA8_UINT) the atomic rule.
 #[test]
 fn draws_read_views_their_shaders_can_read() {
     let _serial = vulkan::serial();
-    let s = setup(true);
+    // Atomics in a fragment shader need fragmentStoresAndAtomics.
+    let s = setup_full_features(true);
     let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(&s, &target);
     let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
     let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
     let (_image, _image_memory, view) = pipelines::storage_image(&s, vk::ImageUsageFlags::empty());
-    let cases: [(&[u8], Option<&tuff::ImageView>, &str); 3] = [
+    // An unsigned integer view whose format has no atomics, for the atomic shader.
+    let (_uint_image, _uint_memory, uint_view) =
+        pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, vk::ImageUsageFlags::empty());
+    let cases: [(&[u8], Option<&tuff::ImageView>, &str); 4] = [
         (
             include_bytes!("../shaders/spv/image_array.frag.spv"),
             Some(&view),
@@ -724,6 +729,11 @@ fn draws_read_views_their_shaders_can_read() {
             include_bytes!("../shaders/spv/image_array.frag.spv"),
             None,
             "None-02699",
+        ),
+        (
+            include_bytes!("../shaders/spv/atomic.frag.spv"),
+            Some(&uint_view),
+            "None-02691",
         ),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);

@@ -3870,8 +3870,9 @@ pub(crate) struct DrawRules {
 
 /// The rules of a draw or dispatch about what its shaders read: an image view's
 /// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
-/// sampled type, every descriptor written, and the push constants set.
-pub(crate) type ShaderRules = [&'static str; 4];
+/// sampled type, every descriptor written, the push constants set, and atomic
+/// operations only on image views whose format supports them.
+pub(crate) type ShaderRules = [&'static str; 5];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -4315,6 +4316,34 @@ pub(crate) fn cmd_push_constants_done<S: State>(
     }
 }
 
+/// Refuses a draw or dispatch whose shaders use atomic operations on the image view
+/// of `d`, where the view's format features (for its image's tiling) lack
+/// `STORAGE_IMAGE_ATOMIC`.
+fn atomic_checks(
+    device: &Device,
+    d: &crate::retention::ImageDescriptor,
+    at: &dyn Fn() -> String,
+    vuid: &'static str,
+) -> Result<()> {
+    let live = device.live();
+    let tiling = live
+        .image(d.image)
+        .map_or(vk::ImageTiling::OPTIMAL, |i| i.tiling);
+    let props = live.format_properties(device.parent(), d.format)?;
+    let features = if tiling == vk::ImageTiling::LINEAR {
+        props.linear_tiling_features
+    } else {
+        props.optimal_tiling_features
+    };
+    if !features.contains(vk::FormatFeatureFlags::STORAGE_IMAGE_ATOMIC) {
+        return refuse(
+            vuid,
+            format!("{}: the shader uses atomic operations on the image view, and the {tiling:?} features of its format {:?} lack STORAGE_IMAGE_ATOMIC", at(), d.format),
+        );
+    }
+    Ok(())
+}
+
 /// Refuses a draw or dispatch that reads resource `r` where the set bound at its
 /// set number has a descriptor of the binding that was never written.
 fn written_checks(
@@ -4488,7 +4517,7 @@ fn bound_pipeline_checks<S: State>(
             ),
         )?;
     }
-    bound_descriptor_checks(bound, pipeline, shader)?;
+    bound_descriptor_checks(recorder.device(), bound, pipeline, shader)?;
     push_constant_checks(recorder, pipeline, shader[3])?;
     descriptor_layout_checks(recorder, bound)
 }
@@ -4503,6 +4532,7 @@ fn bound_pipeline_checks<S: State>(
 /// `PARTIALLY_BOUND` leaves its descriptors to the shader promise (a shader that
 /// reads one that was not written reads past what the pipeline gave it).
 fn bound_descriptor_checks(
+    device: &Device,
     bound: &crate::recorder::Bound,
     pipeline: &PipelineRecord,
     rules: &ShaderRules,
@@ -4534,6 +4564,9 @@ fn bound_descriptor_checks(
             } else {
                 crate::formats::color_numeric(d.format).unwrap_or(0)
             };
+            if r.ops & crate::spirv::ops::ATOMIC != 0 {
+                atomic_checks(device, d, &at, rules[4])?;
+            }
             if shape.numeric != 0 && texels != 0 && shape.numeric != texels {
                 let name = |n: u32| if n == 1 { "a float" } else { "an integer" };
                 refuse(

@@ -18,6 +18,7 @@
 use crate::handles::{Device, ShaderModule};
 use crate::structs::ShaderModuleCreateInfo;
 use crate::{Error, Result};
+use std::collections::HashMap;
 
 /// The first word of every SPIR-V module.
 const MAGIC: u32 = 0x0723_0203;
@@ -194,6 +195,26 @@ pub(crate) struct Resource {
     pub count: u32,
     /// For an image variable, its image type.
     pub image: Option<ImageShape>,
+    /// What the module's instructions do with it ([`ops`] bits).
+    pub ops: u8,
+}
+
+/// What a module's instructions do with a resource variable, one bit each: read
+/// through it by the ones a value or pointer derived from it reaches (loads, access
+/// chains, `OpSampledImage`, `OpImage`, copies, selections, phis, and function
+/// arguments into parameters). An operation on a value whose variable is not found
+/// counts for every image variable of the module.
+pub(crate) mod ops {
+    /// `OpImageRead` or `OpImageSparseRead`.
+    pub const READ: u8 = 1;
+    /// `OpImageWrite`.
+    pub const WRITE: u8 = 2;
+    /// `OpImageTexelPointer`: an atomic operation on a texel.
+    pub const ATOMIC: u8 = 4;
+    /// A sampling or gather instruction.
+    pub const SAMPLE: u8 = 8;
+    /// A sampling or gather instruction with depth comparison.
+    pub const DREF: u8 = 16;
 }
 
 /// What a module's shaders need from a pipeline layout: every resource variable it
@@ -488,6 +509,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         }
         at += count;
     }
+    let (used, unplaced) = variable_ops(words, &variables);
     let mut out = Interface::default();
     for (name, ids) in vertex_entries {
         let inputs = variables
@@ -530,9 +552,145 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             kind: m.kind(storage, element),
             count,
             image: m.image_shape(element),
+            ops: used.get(&id).copied().unwrap_or(0),
         });
     }
+    // An operation whose variable was not found may be on any image variable.
+    for r in out.resources.iter_mut().filter(|r| r.image.is_some()) {
+        r.ops |= unplaced;
+    }
     out
+}
+
+/// The [`ops`] each variable of `variables` takes from the module's instructions
+/// (by variable id), and those on values of no variable found.
+fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, u8>, u8) {
+    const OP_FUNCTION: u32 = 54;
+    const OP_FUNCTION_PARAMETER: u32 = 55;
+    const OP_FUNCTION_CALL: u32 = 57;
+    const OP_IMAGE_TEXEL_POINTER: u32 = 60;
+    const OP_LOAD: u32 = 61;
+    const OP_ACCESS_CHAIN: u32 = 65;
+    const OP_PTR_ACCESS_CHAIN: u32 = 67;
+    const OP_COPY_OBJECT: u32 = 83;
+    const OP_SAMPLED_IMAGE: u32 = 86;
+    const OP_IMAGE_READ: u32 = 98;
+    const OP_IMAGE_WRITE: u32 = 99;
+    const OP_IMAGE: u32 = 100;
+    const OP_SELECT: u32 = 169;
+    const OP_PHI: u32 = 245;
+    const OP_IMAGE_SPARSE_READ: u32 = 320;
+    // Sampling and gather instructions: (opcode, with depth comparison).
+    let sample = |op: u32| match op {
+        87 | 88 | 91 | 92 | 95 | 96 | 305 | 306 | 309 | 310 | 313 | 314 => Some(false),
+        89 | 90 | 93 | 94 | 97 | 307 | 308 | 311 | 312 | 315 => Some(true),
+        _ => None,
+    };
+    // Each instruction (opcode and operands), and the parameters of each function.
+    let mut code: Vec<(u32, &[u32])> = Vec::new();
+    let mut params: HashMap<u32, Vec<u32>> = HashMap::new();
+    let mut function = 0;
+    let mut at = 5;
+    while at < words.len() {
+        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        if count == 0 || at + count > words.len() {
+            break;
+        }
+        let w = &words[at + 1..at + count];
+        match (op, w) {
+            (OP_FUNCTION, [_, id, ..]) => function = *id,
+            (OP_FUNCTION_PARAMETER, [_, id, ..]) => params.entry(function).or_default().push(*id),
+            _ => {}
+        }
+        code.push((op, w));
+        at += count;
+    }
+    // The variables each id derives from, to a fixed point (a phi or a call may
+    // name a value defined further on).
+    let mut origin: HashMap<u32, Vec<u32>> = variables
+        .iter()
+        .map(|(_, id, _)| (*id, vec![*id]))
+        .collect();
+    let flow = |origin: &mut HashMap<u32, Vec<u32>>, to: u32, from: &[u32]| -> bool {
+        let mut found: Vec<u32> = from
+            .iter()
+            .filter_map(|f| origin.get(f))
+            .flatten()
+            .copied()
+            .collect();
+        if found.is_empty() {
+            return false;
+        }
+        let entry = origin.entry(to).or_default();
+        let before = entry.len();
+        entry.append(&mut found);
+        entry.sort_unstable();
+        entry.dedup();
+        entry.len() != before
+    };
+    for _ in 0..8 {
+        let mut changed = false;
+        for &(op, w) in &code {
+            changed |= match (op, w) {
+                (OP_LOAD | OP_COPY_OBJECT | OP_IMAGE, [_, id, from, ..]) => {
+                    flow(&mut origin, *id, &[*from])
+                }
+                (OP_ACCESS_CHAIN..=OP_PTR_ACCESS_CHAIN, [_, id, base, ..]) => {
+                    flow(&mut origin, *id, &[*base])
+                }
+                (OP_SAMPLED_IMAGE, [_, id, image, sampler, ..]) => {
+                    flow(&mut origin, *id, &[*image, *sampler])
+                }
+                (OP_SELECT, [_, id, _, a, b, ..]) => flow(&mut origin, *id, &[*a, *b]),
+                (OP_PHI, [_, id, pairs @ ..]) => {
+                    let values: Vec<u32> = pairs.iter().step_by(2).copied().collect();
+                    flow(&mut origin, *id, &values)
+                }
+                (OP_FUNCTION_CALL, [_, _, callee, args @ ..]) => {
+                    let mut changed = false;
+                    for (param, arg) in params.get(callee).into_iter().flatten().zip(args) {
+                        changed |= flow(&mut origin, *param, &[*arg]);
+                    }
+                    changed
+                }
+                _ => false,
+            };
+        }
+        if !changed {
+            break;
+        }
+    }
+    let mut used: HashMap<u32, u8> = HashMap::new();
+    let mut unplaced = 0u8;
+    let mut mark = |id: u32, bits: u8| match origin.get(&id) {
+        Some(vars) => {
+            for v in vars {
+                *used.entry(*v).or_default() |= bits;
+            }
+        }
+        None => unplaced |= bits,
+    };
+    for &(op, w) in &code {
+        match (op, w) {
+            (OP_IMAGE_TEXEL_POINTER, [_, _, image, ..]) => mark(*image, ops::ATOMIC),
+            (OP_IMAGE_READ | OP_IMAGE_SPARSE_READ, [_, _, image, ..]) => mark(*image, ops::READ),
+            (OP_IMAGE_WRITE, [image, ..]) => mark(*image, ops::WRITE),
+            (op, [_, _, image, ..]) => {
+                if let Some(dref) = sample(op) {
+                    mark(
+                        *image,
+                        if dref {
+                            ops::SAMPLE | ops::DREF
+                        } else {
+                            ops::SAMPLE
+                        },
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+    (used, unplaced)
 }
 
 #[cfg(test)]
@@ -593,6 +751,26 @@ mod tests {
             }
         );
         assert_eq!(shape.view_type(), Some(ash::vk::ImageViewType::TYPE_2D));
+        let ops_of = |bytes: &[u8], binding: u32| {
+            interface(&words(bytes))
+                .resources
+                .iter()
+                .find(|r| r.binding == binding)
+                .map(|r| r.ops)
+        };
+        // imageLoad reads the storage image; the output block is not an image.
+        assert_eq!(
+            ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 0),
+            Some(ops::READ)
+        );
+        assert_eq!(
+            ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 1),
+            Some(0)
+        );
+        assert_eq!(
+            ops_of(include_bytes!("../../shaders/spv/atomic.comp.spv"), 0),
+            Some(ops::ATOMIC)
+        );
         let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
         assert!(frag.resources.is_empty());
         // The test fragment shader pushes one vec4.

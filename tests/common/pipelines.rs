@@ -502,12 +502,21 @@ pub fn storage_image(
     s: &Setup,
     usage: vk::ImageUsageFlags,
 ) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    storage_image_of(s, vk::Format::R8G8B8A8_UNORM, usage)
+}
+
+/// [`storage_image`] of `format`.
+pub fn storage_image_of(
+    s: &Setup,
+    format: vk::Format,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
     let d = &s.device;
     let image = d
         .create_image(
             &tuff::ImageCreateInfo::new()
                 .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
+                .format(format)
                 .extent(vk::Extent3D {
                     width: 4,
                     height: 4,
@@ -524,7 +533,7 @@ pub fn storage_image(
         .create_image_view(
             &tuff::ImageViewCreateInfo::new(&image)
                 .view_type(vk::ImageViewType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
+                .format(format)
                 .subresource_range(vk::ImageSubresourceRange {
                     aspect_mask: vk::ImageAspectFlags::COLOR,
                     base_mip_level: 0,

@@ -382,6 +382,7 @@ const MULTIVIEW_INSTANCES: &str = "checks, in a render pass instance with a view
 const READ_ONLY_WRITES: &str = "checks, once per change of the bound state, whether the draw writes depth (depth test and writes enabled) or stencil (stencil test enabled, a face with a write mask and an operation other than KEEP), from the bound pipeline's depth/stencil and rasterization state or the values the recording set where it has them dynamic, against the layouts of the instance's depth/stencil attachment (the subpass's reference, with its stencil layout, or the vkCmdBeginRendering attachment infos); in a secondary that continues dynamic rendering, whose layouts the inheritance info does not give, a draw that writes either is refused";
 const READ_ONLY_RENDERING: &str = "checks, as for the rule of any render pass instance (None-06886 and -06887), a draw that writes depth or stencil against the layout the vkCmdBeginRendering attachment info names (the 1.3.239 layer does not check it: the error alone proves it)";
 const RASTERIZATION_SAMPLES: &str = "checks, once per change of the bound state and unless rasterization is discarded, the bound pipeline's rasterization samples against the sample count of the current subpass's color and depth/stencil attachments (kept from the render pass's creation), or in dynamic rendering of the attachment views' images (in a continuing secondary, the inheritance info's rasterization samples); in dynamic rendering the 1.3.239 layer names the case by the sibling rule colorAttachmentCount-06188, of pipelines made with an attachment sample count info";
+const IMAGE_ATOMICS: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -472,7 +473,9 @@ macro_rules! draw_rules {
             $command,
             "-None-02699\", \"VUID-",
             $command,
-            "-maintenance4-06425\"] }; &RULES }"
+            "-maintenance4-06425\", \"VUID-",
+            $command,
+            "-None-02691\"] }; &RULES }"
         )
     };
 }
@@ -490,7 +493,9 @@ macro_rules! shader_rules {
             $command,
             "-None-02699\", \"VUID-",
             $command,
-            "-maintenance4-06425\"]"
+            "-maintenance4-06425\", \"VUID-",
+            $command,
+            "-None-02691\"]"
         )
     };
 }
@@ -525,6 +530,7 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
                 (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
                 (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
+                (concat!("VUID-", $command, "-None-02691"), How::Dynamic(IMAGE_ATOMICS)),
             ],
             ..NONE
         }
@@ -623,6 +629,7 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-format-07753"), How::Dynamic(IMAGE_VIEW_NUMERIC)),
             (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
             (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
+            (concat!("VUID-", $command, "-None-02691"), How::Dynamic(IMAGE_ATOMICS)),
             (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),

@@ -2582,11 +2582,10 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 
 # Safety
 
-The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatch-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatch-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDispatch-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDispatch-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
 - `VUID-vkCmdDispatch-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDispatch-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
@@ -2609,6 +2608,7 @@ The caller upholds these 20 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
 
+- `VUID-vkCmdDispatch-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDispatch-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatch-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDispatch-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
@@ -2624,7 +2624,7 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatch-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 52 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 51 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch(
         &mut self,
@@ -2641,6 +2641,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 52 (exp
                 "VUID-vkCmdDispatch-format-07753",
                 "VUID-vkCmdDispatch-None-02699",
                 "VUID-vkCmdDispatch-maintenance4-06425",
+                "VUID-vkCmdDispatch-None-02691",
             ],
         )?;
         {
@@ -2658,7 +2659,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 52 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,
@@ -2678,11 +2679,10 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDispatchIndirect-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
 - `VUID-vkCmdDispatchIndirect-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDispatchIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
@@ -2705,6 +2705,7 @@ The caller upholds these 20 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchIndirect.html). Settled by the wrappers:
 
+- `VUID-vkCmdDispatchIndirect-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDispatchIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDispatchIndirect-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
@@ -2722,7 +2723,7 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchIndirect-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 51 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 50 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -2738,6 +2739,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
                 "VUID-vkCmdDispatchIndirect-format-07753",
                 "VUID-vkCmdDispatchIndirect-None-02699",
                 "VUID-vkCmdDispatchIndirect-maintenance4-06425",
+                "VUID-vkCmdDispatchIndirect-None-02691",
             ],
         )?;
         {
@@ -2752,7 +2754,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 51 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,
@@ -3327,11 +3329,10 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDraw-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDraw-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDraw-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDraw-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3359,6 +3360,7 @@ The caller upholds these 25 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDraw.html). Settled by the wrappers:
 
+- `VUID-vkCmdDraw-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDraw-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDraw-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDraw-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3404,7 +3406,7 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 - `VUID-vkCmdDraw-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDraw-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 153 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 152 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3473,6 +3475,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 153 (ex
                         "VUID-vkCmdDraw-format-07753",
                         "VUID-vkCmdDraw-None-02699",
                         "VUID-vkCmdDraw-maintenance4-06425",
+                        "VUID-vkCmdDraw-None-02691",
                     ],
                 };
                 &RULES
@@ -3497,7 +3500,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 153 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-None-02691`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3526,11 +3529,10 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 26 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDrawIndexed-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDrawIndexed-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexed-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3559,6 +3561,7 @@ The caller upholds these 26 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndexed-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDrawIndexed-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexed-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexed-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3605,7 +3608,7 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 - `VUID-vkCmdDrawIndexed-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexed-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 154 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 153 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3688,6 +3691,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154 (ex
                         "VUID-vkCmdDrawIndexed-format-07753",
                         "VUID-vkCmdDrawIndexed-None-02699",
                         "VUID-vkCmdDrawIndexed-maintenance4-06425",
+                        "VUID-vkCmdDrawIndexed-None-02691",
                     ],
                 };
                 &RULES
@@ -3713,7 +3717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-None-02691`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3744,11 +3748,10 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 30 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 29 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDrawIndexedIndirect-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndexedIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3781,6 +3784,7 @@ The caller upholds these 30 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexedIndirect.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndexedIndirect-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDrawIndexedIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndexedIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -3831,10 +3835,10 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 - `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 158.
+Left to the caller (listed one by one in the crate's `validation.json`): 157.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 157: explicit rule; the wrappers do not check it*/
+- 156: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3909,6 +3913,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 158.
                         "VUID-vkCmdDrawIndexedIndirect-format-07753",
                         "VUID-vkCmdDrawIndexedIndirect-None-02699",
                         "VUID-vkCmdDrawIndexedIndirect-maintenance4-06425",
+                        "VUID-vkCmdDrawIndexedIndirect-None-02691",
                     ],
                 };
                 &RULES
@@ -3928,7 +3933,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 158.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-None-02691`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3950,11 +3955,10 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 29 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 28 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDrawIndirect-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
 - `VUID-vkCmdDrawIndirect-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
 - `VUID-vkCmdDrawIndirect-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
@@ -3986,6 +3990,7 @@ The caller upholds these 29 rules that no check of this method enforces (its com
 
 The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndirect.html). Settled by the wrappers:
 
+- `VUID-vkCmdDrawIndirect-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDrawIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDrawIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
 - `VUID-vkCmdDrawIndirect-commandBuffer-02701`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
@@ -4035,10 +4040,10 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawIndirect-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirect-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 157.
+Left to the caller (listed one by one in the crate's `validation.json`): 156.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 156: explicit rule; the wrappers do not check it*/
+- 155: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -4112,6 +4117,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 157.
                         "VUID-vkCmdDrawIndirect-format-07753",
                         "VUID-vkCmdDrawIndirect-None-02699",
                         "VUID-vkCmdDrawIndirect-maintenance4-06425",
+                        "VUID-vkCmdDrawIndirect-None-02691",
                     ],
                 };
                 &RULES
@@ -4129,7 +4135,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 157.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-None-02691`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,
