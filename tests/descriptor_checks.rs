@@ -1390,7 +1390,7 @@ fn dispatches_read_views_their_shaders_can_read() {
     // An unsigned integer view whose format has no atomics, for the atomic shader.
     let (_uint_image, _uint_memory, uint_view) =
         pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, U::empty());
-    let cases: [(&[u8], &tuff::ImageView, Option<&tuff::Buffer>, &str); 4] = [
+    let cases: [(&[u8], &tuff::ImageView, Option<&tuff::Buffer>, &str); 5] = [
         (
             include_bytes!("../shaders/spv/image_array.comp.spv"),
             &view,
@@ -1409,6 +1409,13 @@ fn dispatches_read_views_their_shaders_can_read() {
             &uint_view,
             Some(&output),
             "None-02691",
+        ),
+        // lavapipe reads no storage format without a format.
+        (
+            include_bytes!("../shaders/spv/image_unknown.comp.spv"),
+            &view,
+            Some(&output),
+            "OpTypeImage-07028",
         ),
     ];
     type Dispatch =

@@ -714,7 +714,7 @@ fn draws_read_views_their_shaders_can_read() {
     // An unsigned integer view whose format has no atomics, for the atomic shader.
     let (_uint_image, _uint_memory, uint_view) =
         pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, vk::ImageUsageFlags::empty());
-    let cases: [(&[u8], Option<&tuff::ImageView>, &str); 4] = [
+    let cases: [(&[u8], Option<&tuff::ImageView>, &str); 5] = [
         (
             include_bytes!("../shaders/spv/image_array.frag.spv"),
             Some(&view),
@@ -734,6 +734,12 @@ fn draws_read_views_their_shaders_can_read() {
             include_bytes!("../shaders/spv/atomic.frag.spv"),
             Some(&uint_view),
             "None-02691",
+        ),
+        // lavapipe reads no storage format without a format.
+        (
+            include_bytes!("../shaders/spv/image_unknown.frag.spv"),
+            Some(&view),
+            "OpTypeImage-07028",
         ),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);

@@ -3871,8 +3871,9 @@ pub(crate) struct DrawRules {
 /// The rules of a draw or dispatch about what its shaders read: an image view's
 /// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
 /// sampled type, every descriptor written, the push constants set, and atomic
-/// operations only on image views whose format supports them.
-pub(crate) type ShaderRules = [&'static str; 5];
+/// operations, depth comparison, and storage reads and writes of `Unknown` format
+/// only on image views whose format supports them.
+pub(crate) type ShaderRules = [&'static str; 8];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -4316,6 +4317,67 @@ pub(crate) fn cmd_push_constants_done<S: State>(
     }
 }
 
+/// The features of the view of `d`'s format for its image's tiling, as
+/// `VkFormatProperties3` gives them (where the device has Vulkan 1.3); on an older
+/// device, the bits that `VK_KHR_format_feature_flags2` made per format follow from
+/// the first set: depth comparison from sampling a depth format, storage without
+/// format from storage and the device's `shaderStorageImage*WithoutFormat` features.
+fn view_features2(
+    device: &Device,
+    d: &crate::retention::ImageDescriptor,
+) -> Result<vk::FormatFeatureFlags2> {
+    let live = device.live();
+    let linear = live
+        .image(d.image)
+        .is_some_and(|i| i.tiling == vk::ImageTiling::LINEAR);
+    let physical = device.parent();
+    let instance = physical.parent();
+    let version = physical.get_physical_device_properties().api_version;
+    if instance.exts().version(1) && vk::api_version_minor(version) >= 3 {
+        let mut p3 = vk::FormatProperties3::default();
+        let mut p2 = vk::FormatProperties2::default().push_next(&mut p3);
+        // SAFETY: a live physical device of a Vulkan 1.3 device; the chain is local.
+        unsafe {
+            instance
+                .fns()
+                .get_physical_device_format_properties2(physical.raw(), d.format, &mut p2)
+        };
+        return Ok(if linear {
+            p3.linear_tiling_features
+        } else {
+            p3.optimal_tiling_features
+        });
+    }
+    let props = live.format_properties(physical, d.format)?;
+    let first = if linear {
+        props.linear_tiling_features
+    } else {
+        props.optimal_tiling_features
+    };
+    type F2 = vk::FormatFeatureFlags2;
+    let mut features = F2::from_raw(u64::from(first.as_raw()));
+    let depth =
+        crate::formats::aspects(d.format).is_some_and(|a| a.contains(vk::ImageAspectFlags::DEPTH));
+    if depth && first.contains(vk::FormatFeatureFlags::SAMPLED_IMAGE) {
+        features |= F2::SAMPLED_IMAGE_DEPTH_COMPARISON;
+    }
+    if first.contains(vk::FormatFeatureFlags::STORAGE_IMAGE) {
+        let (read, write) = live.with_features(|f| {
+            (
+                f.v10.shader_storage_image_read_without_format,
+                f.v10.shader_storage_image_write_without_format,
+            )
+        });
+        if read == vk::TRUE {
+            features |= F2::STORAGE_READ_WITHOUT_FORMAT;
+        }
+        if write == vk::TRUE {
+            features |= F2::STORAGE_WRITE_WITHOUT_FORMAT;
+        }
+    }
+    Ok(features)
+}
+
 /// Refuses a draw or dispatch whose shaders use atomic operations on the image view
 /// of `d`, where the view's format features (for its image's tiling) lack
 /// `STORAGE_IMAGE_ATOMIC`.
@@ -4566,6 +4628,44 @@ fn bound_descriptor_checks(
             };
             if r.ops & crate::spirv::ops::ATOMIC != 0 {
                 atomic_checks(device, d, &at, rules[4])?;
+            }
+            let unknown_storage =
+                shape.format == 0 && r.kind == crate::spirv::ResourceKind::StorageImage;
+            let needs = [
+                (
+                    crate::spirv::ops::DREF,
+                    vk::FormatFeatureFlags2::SAMPLED_IMAGE_DEPTH_COMPARISON,
+                    rules[5],
+                    "samples it with depth comparison",
+                ),
+                (
+                    if unknown_storage {
+                        crate::spirv::ops::WRITE
+                    } else {
+                        0
+                    },
+                    vk::FormatFeatureFlags2::STORAGE_WRITE_WITHOUT_FORMAT,
+                    rules[6],
+                    "writes it as a storage image of Unknown format",
+                ),
+                (
+                    if unknown_storage {
+                        crate::spirv::ops::READ
+                    } else {
+                        0
+                    },
+                    vk::FormatFeatureFlags2::STORAGE_READ_WITHOUT_FORMAT,
+                    rules[7],
+                    "reads it as a storage image of Unknown format",
+                ),
+            ];
+            for (op, feature, vuid, what) in needs {
+                if r.ops & op != 0 && !view_features2(device, d)?.contains(feature) {
+                    refuse(
+                        vuid,
+                        format!("{}: the shader {what}, and the features of the view's format {:?} lack {feature:?}", at(), d.format),
+                    )?;
+                }
             }
             if shape.numeric != 0 && texels != 0 && shape.numeric != texels {
                 let name = |n: u32| if n == 1 { "a float" } else { "an integer" };

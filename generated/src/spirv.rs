@@ -160,6 +160,9 @@ pub(crate) struct ImageShape {
     /// The sampled type, as [`crate::formats::color_numeric`] numbers them: 1
     /// `OpTypeFloat`, 2 `OpTypeInt`, 0 anything else.
     pub numeric: u32,
+    /// The `Image Format` operand (0: `Unknown`, read and written in the view's
+    /// format).
+    pub format: u32,
 }
 
 impl ImageShape {
@@ -411,7 +414,8 @@ impl Module {
             _ => return None,
         };
         // Operands: sampled type, Dim, Depth, Arrayed, MS, Sampled, format.
-        let Some((OP_TYPE_IMAGE, [sampled, dim, _, arrayed, ..])) = self.ty(image) else {
+        let Some((OP_TYPE_IMAGE, [sampled, dim, _, arrayed, _, _, format, ..])) = self.ty(image)
+        else {
             return None;
         };
         let numeric = match self.ty(*sampled) {
@@ -423,6 +427,7 @@ impl Module {
             dim: *dim,
             arrayed: *arrayed == 1,
             numeric,
+            format: *format,
         })
     }
 
@@ -747,7 +752,9 @@ mod tests {
             ImageShape {
                 dim: 1,
                 arrayed: false,
-                numeric: 1
+                numeric: 1,
+                // rgba8
+                format: 4,
             }
         );
         assert_eq!(shape.view_type(), Some(ash::vk::ImageViewType::TYPE_2D));

@@ -383,6 +383,9 @@ const READ_ONLY_WRITES: &str = "checks, once per change of the bound state, whet
 const READ_ONLY_RENDERING: &str = "checks, as for the rule of any render pass instance (None-06886 and -06887), a draw that writes depth or stencil against the layout the vkCmdBeginRendering attachment info names (the 1.3.239 layer does not check it: the error alone proves it)";
 const RASTERIZATION_SAMPLES: &str = "checks, once per change of the bound state and unless rasterization is discarded, the bound pipeline's rasterization samples against the sample count of the current subpass's color and depth/stencil attachments (kept from the render pass's creation), or in dynamic rendering of the attachment views' images (in a continuing secondary, the inheritance info's rasterization samples); in dynamic rendering the 1.3.239 layer names the case by the sibling rule colorAttachmentCount-06188, of pipelines made with an attachment sample count info";
 const IMAGE_ATOMICS: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling";
+const UNPROVEN_DEPTH_COMPARISON: &str = "checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison";
+const UNPROVEN_WITHOUT_FORMAT: &str = "checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format";
+const READ_WITHOUT_FORMAT: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat)";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -475,7 +478,13 @@ macro_rules! draw_rules {
             $command,
             "-maintenance4-06425\", \"VUID-",
             $command,
-            "-None-02691\"] }; &RULES }"
+            "-None-02691\", \"VUID-",
+            $command,
+            "-None-06479\", \"VUID-",
+            $command,
+            "-OpTypeImage-07027\", \"VUID-",
+            $command,
+            "-OpTypeImage-07028\"] }; &RULES }"
         )
     };
 }
@@ -495,7 +504,13 @@ macro_rules! shader_rules {
             $command,
             "-maintenance4-06425\", \"VUID-",
             $command,
-            "-None-02691\"]"
+            "-None-02691\", \"VUID-",
+            $command,
+            "-None-06479\", \"VUID-",
+            $command,
+            "-OpTypeImage-07027\", \"VUID-",
+            $command,
+            "-OpTypeImage-07028\"]"
         )
     };
 }
@@ -531,6 +546,9 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
                 (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
                 (concat!("VUID-", $command, "-None-02691"), How::Dynamic(IMAGE_ATOMICS)),
+                (concat!("VUID-", $command, "-None-06479"), How::User(UNPROVEN_DEPTH_COMPARISON)),
+                (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
+                (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
             ],
             ..NONE
         }
@@ -630,6 +648,9 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-None-02699"), How::Dynamic(DESCRIPTORS_WRITTEN)),
             (concat!("VUID-", $command, "-maintenance4-06425"), How::Dynamic(PUSH_CONSTANTS_SET)),
             (concat!("VUID-", $command, "-None-02691"), How::Dynamic(IMAGE_ATOMICS)),
+            (concat!("VUID-", $command, "-None-06479"), How::User(UNPROVEN_DEPTH_COMPARISON)),
+            (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
+            (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
             (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),

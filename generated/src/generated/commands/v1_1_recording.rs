@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 23 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -22,9 +22,6 @@ The caller upholds these 23 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY`
 - `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ`
 - `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
-- `VUID-vkCmdDispatchBase-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
-- `VUID-vkCmdDispatchBase-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchBase-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
@@ -47,13 +44,16 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdDispatchBase-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
+- `VUID-vkCmdDispatchBase-OpTypeImage-07028`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat))
 - `VUID-vkCmdDispatchBase-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchBase-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 58.
+Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
+- 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
+- 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 55: explicit rule; the wrappers do not check it*/
+- 52: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -74,6 +74,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 58.
                 "VUID-vkCmdDispatchBase-None-02699",
                 "VUID-vkCmdDispatchBase-maintenance4-06425",
                 "VUID-vkCmdDispatchBase-None-02691",
+                "VUID-vkCmdDispatchBase-None-06479",
+                "VUID-vkCmdDispatchBase-OpTypeImage-07027",
+                "VUID-vkCmdDispatchBase-OpTypeImage-07028",
             ],
         )?;
         {
@@ -98,7 +101,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 58.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
