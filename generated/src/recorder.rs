@@ -615,8 +615,6 @@ impl<'c, S: State> Recorder<'c, S> {
         self.cb
     }
 
-    /// Takes the result of a command's checks: true when the command may be
-    /// recorded, false when this or an earlier check failed.
     /// A command that may change what draw and dispatch checks read was recorded.
     #[inline]
     pub(crate) fn state_changed(&mut self) {
@@ -639,6 +637,8 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
 
+    /// Takes the result of a command's checks: true when the command may be
+    /// recorded, false when this or an earlier check failed.
     pub(crate) fn accept(&mut self, r: Result<()>) -> bool {
         if self.poisoned.is_some() {
             return false;
