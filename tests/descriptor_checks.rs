@@ -1625,3 +1625,44 @@ fn dispatches_read_pushed_constants() {
     }
     assert_silent(&s.messages);
 }
+
+/// After vkCmdExecuteCommands the primary's bindings are undefined: a dispatch
+/// that relies on the pipeline and set bound before the secondaries ran is refused.
+#[test]
+fn secondaries_leave_nothing_bound() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_image, _image_memory, view) = pipelines::storage_image(&s, U::empty());
+    let (output, _output_memory) =
+        pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::STORAGE_BUFFER);
+    let reader = image_reader(&s, &view, &output);
+    let (_secondary_pool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    let inheritance = tuff::CommandBufferInheritanceInfo::new();
+    secondary
+        .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
+        .expect("begin")
+        .end()
+        .expect("end");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+        .expect("pipeline");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::COMPUTE,
+        &reader.layout,
+        0,
+        &[&reader.set],
+        &[],
+    )
+    .expect("set");
+    // SAFETY: the secondary records nothing; the dispatch is refused.
+    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
+    assert_eq!(
+        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        "VUID-vkCmdDispatch-None-02700"
+    );
+    drop(rec);
+    assert_silent(&s.messages);
+}

@@ -1256,6 +1256,57 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     );
     drop(rec);
 
+    // A pipeline that has the stencil operations static, bound in between, leaves
+    // the back face's operations undefined: setting the front face's only is not
+    // enough.
+    let stencil_dynamic = [D::VIEWPORT, D::SCISSOR, D::STENCIL_OP];
+    let dynamic_ops = {
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let states = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&stencil_dynamic);
+        let (mut made, _) =
+            pipelines::with_graphics_info(&stages, &p.graphics_layout, &pass, |info| {
+                let info = info
+                    .depth_stencil_state(Some(&stencil_writes))
+                    .dynamic_state(Some(&states));
+                unsafe { d.create_graphics_pipelines(None, &[info]) }
+            })
+            .expect("pipeline");
+        made.pop().expect("one pipeline")
+    };
+    let keep = vk::StencilOp::KEEP;
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
+        .expect("bind");
+    rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+    rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+    rec.cmd_set_stencil_op(
+        vk::StencilFaceFlags::FRONT_AND_BACK,
+        keep,
+        keep,
+        keep,
+        vk::CompareOp::ALWAYS,
+    );
+    unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw that keeps the stencil");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pass_cases[1].1)
+        .expect("bind the static pipeline");
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
+        .expect("bind again");
+    rec.cmd_set_stencil_op(
+        vk::StencilFaceFlags::FRONT,
+        keep,
+        keep,
+        keep,
+        vk::CompareOp::ALWAYS,
+    );
+    assert_eq!(
+        vuid(unsafe { rec.cmd_draw(3, 1, 0, 0) }),
+        "VUID-vkCmdDraw-None-06887"
+    );
+    drop(rec);
+
     // Dynamic rendering: the rule follows the layout of the attachment info (the
     // 1.3.239 layer checks none of them).
     let rendering_with = |state| {

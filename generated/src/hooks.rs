@@ -3663,6 +3663,7 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
         // pipeline that has it dynamic draws.
         let dynamic = recorder.bound[0].pipeline.as_ref().map_or(0, |p| p.dynamic);
         recorder.dynamic = (recorder.dynamic.0 & dynamic, 0);
+        recorder.depth_stencil.forget_static(dynamic);
     }
     // The first graphics pipeline of a subpass sets its sample count.
     let samples = recorder.bound[0].pipeline.as_ref().map(|p| p.samples);
@@ -3731,7 +3732,11 @@ fn multiview_instances<S: State>(
             vuid,
             format!("the draw's last instance index ({last}) is past maxMultiviewInstanceIndex ({max}) in a multiview render pass instance"),
         ),
-        _ => Ok(()),
+        Some(_) => Ok(()),
+        None => refuse(
+            vuid,
+            "a Vulkan 1.0 instance cannot ask maxMultiviewInstanceIndex, so no multiview draw is checked".into(),
+        ),
     }
 }
 
@@ -4387,20 +4392,10 @@ fn atomic_checks(
     at: &dyn Fn() -> String,
     vuid: &'static str,
 ) -> Result<()> {
-    let live = device.live();
-    let tiling = live
-        .image(d.image)
-        .map_or(vk::ImageTiling::OPTIMAL, |i| i.tiling);
-    let props = live.format_properties(device.parent(), d.format)?;
-    let features = if tiling == vk::ImageTiling::LINEAR {
-        props.linear_tiling_features
-    } else {
-        props.optimal_tiling_features
-    };
-    if !features.contains(vk::FormatFeatureFlags::STORAGE_IMAGE_ATOMIC) {
+    if !view_features2(device, d)?.contains(vk::FormatFeatureFlags2::STORAGE_IMAGE_ATOMIC) {
         return refuse(
             vuid,
-            format!("{}: the shader uses atomic operations on the image view, and the {tiling:?} features of its format {:?} lack STORAGE_IMAGE_ATOMIC", at(), d.format),
+            format!("{}: the shader uses atomic operations on the image view, and the features of its format {:?} (for its image's tiling) lack STORAGE_IMAGE_ATOMIC", at(), d.format),
         );
     }
     Ok(())
@@ -4533,9 +4528,10 @@ pub(crate) fn dispatch_checks<S: State>(
     })
 }
 
-/// A draw or dispatch has a pipeline bound at its bind point (02700), and a set
-/// bound at every set number of that pipeline's layout, of the same set layout
-/// (02697). Which sets the shaders use is not known here, so every set of the layout
+/// A draw or dispatch has a pipeline bound at its bind point (02700), a set bound
+/// at every set number of that pipeline's layout, of the same set layout (02697),
+/// the descriptors and push constants its shaders read ([`bound_descriptor_checks`],
+/// [`push_constant_checks`]), and its image descriptors in their layouts. Which sets the shaders use is not known here, so every set of the layout
 /// must be bound: a program that leaves an unused set unbound is refused too.
 fn bound_pipeline_checks<S: State>(
     recorder: &Recorder<'_, S>,
@@ -4587,9 +4583,11 @@ fn bound_pipeline_checks<S: State>(
 /// Refuses a draw or dispatch whose sets hold, at a binding a resource variable of
 /// its pipeline's shaders reads, a descriptor never written (or whose slot a copy of
 /// an unwritten one emptied), or an image view that an image variable cannot read: a
-/// view type other than the one the variable's `Dim` and `Arrayed` name, or a
-/// format whose texels read as another numeric type than the variable's sampled
-/// type (float against integer). Every variable the modules declare counts, as
+/// view type other than the one the variable's `Dim` and `Arrayed` name, a format
+/// whose texels read as another numeric type than the variable's sampled type
+/// (float against integer), or a format whose features lack what the shader's
+/// operations on it need (atomics, depth comparison, storage reads and writes of an
+/// `Unknown` format). Every variable the modules declare counts, as
 /// which ones the entry points use is not read; a binding with
 /// `PARTIALLY_BOUND` leaves its descriptors to the shader promise (a shader that
 /// reads one that was not written reads past what the pipeline gave it).

@@ -211,6 +211,34 @@ impl DepthStencil {
         }
     }
 
+    /// A pipeline that has the states not in `dynamic` static was bound: the values
+    /// set for them before are gone, and a later pipeline that has them dynamic
+    /// needs them set again (a partial set, of one stencil face, leaves the other
+    /// face at the value that writes).
+    pub(crate) fn forget_static(&mut self, dynamic: u32) {
+        use vk::DynamicState as D;
+        let writes = DepthStencil::default();
+        let is_static = |state| dynamic & dynamic_bit(state) == 0;
+        if is_static(D::DEPTH_TEST_ENABLE) {
+            self.depth_test = writes.depth_test;
+        }
+        if is_static(D::DEPTH_WRITE_ENABLE) {
+            self.depth_write = writes.depth_write;
+        }
+        if is_static(D::STENCIL_TEST_ENABLE) {
+            self.stencil_test = writes.stencil_test;
+        }
+        if is_static(D::STENCIL_OP) {
+            self.ops = writes.ops;
+        }
+        if is_static(D::STENCIL_WRITE_MASK) {
+            self.masks = writes.masks;
+        }
+        if is_static(D::RASTERIZER_DISCARD_ENABLE) {
+            self.discard = writes.discard;
+        }
+    }
+
     /// Whether a draw with these values writes depth.
     pub(crate) fn writes_depth(&self) -> bool {
         !self.discard && self.depth_test && self.depth_write
@@ -483,6 +511,12 @@ impl CommandBuffer {
         let rendering_samples = inherited
             .map(|r| r.rasterization_samples)
             .filter(|s| !s.is_empty());
+        let subpass = inheritance.map_or(0, |i| i.subpass);
+        let view_mask = match (&record, inherited) {
+            (Some(r), _) => r.view_masks.get(subpass as usize).copied().unwrap_or(0),
+            (None, Some(i)) => i.view_mask,
+            (None, None) => 0,
+        };
         let rendering = inherited.map(|r| {
             // SAFETY: as above.
             Vrc::new(unsafe {
@@ -496,7 +530,8 @@ impl CommandBuffer {
             })
         });
         rec.instance = Some(PassInstance {
-            subpass: inheritance.map_or(0, |i| i.subpass),
+            subpass,
+            view_mask,
             dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
             record,
             rendering,

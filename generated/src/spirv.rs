@@ -194,7 +194,8 @@ pub(crate) struct Resource {
     pub binding: u32,
     /// What descriptor it reads.
     pub kind: ResourceKind,
-    /// Descriptors the variable spans: 1, an array's length, or 0 for a runtime array.
+    /// Descriptors the variable spans: 1, an array's length, or 0 for a runtime array
+    /// or one whose length is a specialization constant (the whole binding).
     pub count: u32,
     /// For an image variable, its image type.
     pub image: Option<ImageShape>,
@@ -285,7 +286,10 @@ impl Module {
         for _ in 0..8 {
             match self.ty(id) {
                 Some((OP_TYPE_ARRAY, [elem, len, ..])) => {
-                    count = count.saturating_mul(self.constants.get(len).copied().unwrap_or(1));
+                    // A length that is not a plain constant (a specialization
+                    // constant) is not known: 0, as for a runtime array, reaches
+                    // the whole binding.
+                    count = count.saturating_mul(self.constants.get(len).copied().unwrap_or(0));
                     id = *elem;
                 }
                 Some((OP_TYPE_RUNTIME_ARRAY, [elem, ..])) => {
@@ -633,7 +637,8 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, u
         entry.dedup();
         entry.len() != before
     };
-    for _ in 0..8 {
+    // Each pass only adds (id, variable) pairs, of which there are finitely many.
+    loop {
         let mut changed = false;
         for &(op, w) in &code {
             changed |= match (op, w) {

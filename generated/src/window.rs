@@ -24,15 +24,19 @@ impl Instance {
     /// features emit and the instance enabled). The surface keeps `window` alive, and
     /// every swapchain keeps its surface alive, so the window outlives all of them.
     ///
-    /// Safe because the handles are the window's own: `raw-window-handle` promises
-    /// that the pointers in a window's and display's handles (the Xlib `Display`, the
-    /// XCB connection, the Wayland display and surface, the Win32 instance) are valid
-    /// while the window is, which the kept reference makes the surface's whole life
-    /// (`VUID-VkXlibSurfaceCreateInfoKHR-dpy-01313` and its siblings). Window IDs are
-    /// a number in the window system's protocol (an X11 `Window`, a Win32 `HWND`):
-    /// the window object names its own window, which it does not destroy while it
-    /// lives; another connection to the window system can, which no Rust type can
-    /// prevent, as `raw-window-handle` says of these IDs.
+    /// Safe because the handles are the window's own and the surface keeps the
+    /// window: `raw-window-handle` promises that the pointers in a window's and
+    /// display's handles (the Xlib `Display`, the XCB connection, the Wayland display
+    /// and surface) are valid while the handle is borrowed, and this method relies on
+    /// the window object keeping them valid as long as it lives, as the windows of
+    /// winit and of the other window libraries do (`VUID-VkXlibSurfaceCreateInfoKHR-
+    /// dpy-01313` and its siblings); a window type that frees its display or surface
+    /// through `&self` while alive breaks that. Window IDs are a number in the window
+    /// system's protocol (an X11 `Window`, a Win32 `HWND`): the window object names its
+    /// own window, which it does not destroy while it lives; another connection to
+    /// the window system can, which no Rust type can prevent, as `raw-window-handle`
+    /// says of these IDs. wgpu and vulkano make surfaces from windows on the same
+    /// terms.
     ///
     /// # Errors
     ///
@@ -133,8 +137,11 @@ impl Instance {
                     .as_ref()
                     .ok_or(Error::ExtensionNotEnabled("VK_KHR_win32_surface"))?
                     .create_win32_surface_khr;
+                let hinstance = w.hinstance.ok_or_else(|| {
+                    Error::Window("the Win32 window handle names no HINSTANCE".into())
+                })?;
                 let info = vk::Win32SurfaceCreateInfoKHR::default()
-                    .hinstance(w.hinstance.map_or(0, |h| h.get()))
+                    .hinstance(hinstance.get())
                     .hwnd(w.hwnd.get());
                 let mut out = vk::SurfaceKHR::null();
                 // SAFETY: the window's own instance and window handles, the window

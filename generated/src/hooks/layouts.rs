@@ -385,8 +385,13 @@ pub(crate) fn execute_layouts_done<S: State>(
             recorder.layouts.then(&theirs);
         }
     }
-    // The primary's dynamic state is undefined after the secondaries ran.
+    // Everything the primary bound and set is undefined after the secondaries ran:
+    // pipelines, sets, vertex and index buffers, push constants and dynamic state.
     recorder.dynamic = (0, 0);
+    recorder.bound = Default::default();
+    recorder.pushed = None;
+    recorder.counts = (None, None);
+    recorder.depth_stencil = Default::default();
 }
 
 /// The device remembers a framebuffer's attachments, whose layouts each render

@@ -700,8 +700,10 @@ macro_rules! surface_query {
 /// The recorded commands that leave unchanged everything a draw's or dispatch's
 /// state checks read: the draws and dispatches themselves (which only add layouts a
 /// later check of the same state finds met) and push constants (which only add
-/// bytes set). After any other command the recorder checks the next draw's or
-/// dispatch's state again; after these, a state already checked is not.
+/// bytes set; a push with a layout of other ranges, which drops the earlier bytes,
+/// clears the recorder's verified bits itself). After any other command the
+/// recorder checks the next draw's or dispatch's state again; after these, a state
+/// already checked is not.
 pub const KEEPS_DRAW_STATE: &[&str] = &[
     "vkCmdDraw",
     "vkCmdDrawIndexed",
