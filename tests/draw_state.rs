@@ -335,28 +335,17 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             let begin = tuff::RenderPassBeginInfo::new(pass, framebuffer)
                 .render_area(area())
                 .clear_values(&clear);
-            for unchecked in [false, true] {
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
                 let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
                 prepare(&mut rec);
                 pipelines::push_color(&mut rec, &p);
-                if unchecked {
-                    s.messages.abort_on_error(true);
-                    let _ = draw(&mut rec, true);
-                    s.messages.abort_on_error(false);
-                    let said = s.messages.take();
-                    assert!(
-                        said.iter().any(|m| m.contains(&rule)),
-                        "the layer did not name {rule}; it said {said:?}"
-                    );
-                } else {
-                    assert_eq!(vuid(draw(&mut rec, false)), rule);
-                    assert_silent(&s.messages);
-                }
+                let r = draw(&mut rec, unchecked);
                 drop(rec);
-            }
+                r
+            });
         }
     }
     assert_silent(&s.messages);
@@ -751,7 +740,7 @@ fn draws_read_views_their_shaders_can_read() {
         let reader = image_draw(&s, &p, &target.render_pass, view, code);
         for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
             let rule = format!("VUID-{command}-{suffix}");
-            for unchecked in [false, true] {
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
@@ -768,21 +757,10 @@ fn draws_read_views_their_shaders_can_read() {
                 .expect("set");
                 set_viewport(&mut rec);
                 set_scissor(&mut rec);
-                if unchecked {
-                    s.messages.abort_on_error(true);
-                    let _ = draw(&mut rec, true);
-                    s.messages.abort_on_error(false);
-                    let said = s.messages.take();
-                    assert!(
-                        said.iter().any(|m| m.contains(&rule)),
-                        "the layer did not name {rule}; it said {said:?}"
-                    );
-                } else {
-                    assert_eq!(vuid(draw(&mut rec, false)), rule);
-                    assert_silent(&s.messages);
-                }
+                let r = draw(&mut rec, unchecked);
                 drop(rec);
-            }
+                r
+            });
         }
     }
     assert_silent(&s.messages);
@@ -930,7 +908,7 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
     for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
         for (suffix, pipeline, prepare) in &cases {
             let rule = format!("VUID-{command}-{suffix}");
-            for unchecked in [false, true] {
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
@@ -939,21 +917,10 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
                     .expect("bind");
                 prepare(&mut rec);
                 pipelines::push_color(&mut rec, &p);
-                if unchecked {
-                    s.messages.abort_on_error(true);
-                    let _ = draw(&mut rec, true);
-                    s.messages.abort_on_error(false);
-                    let said = s.messages.take();
-                    assert!(
-                        said.iter().any(|m| m.contains(&rule)),
-                        "the layer did not name {rule}; it said {said:?}"
-                    );
-                } else {
-                    assert_eq!(vuid(draw(&mut rec, false)), rule);
-                    assert_silent(&s.messages);
-                }
+                let r = draw(&mut rec, unchecked);
                 drop(rec);
-            }
+                r
+            });
         }
     }
     assert_silent(&s.messages);
@@ -998,7 +965,7 @@ fn multiview_draws_stay_under_the_instance_limit() {
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     for (command, draw) in commands {
         let rule = format!("VUID-{command}-maxMultiviewInstanceIndex-02688");
-        for unchecked in [false, true] {
+        tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Silent, |unchecked| {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
@@ -1015,20 +982,12 @@ fn multiview_draws_stay_under_the_instance_limit() {
             };
             rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
             rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-            if unchecked {
-                s.messages.abort_on_error(true);
-                let _ = draw(&mut rec, true);
-                s.messages.abort_on_error(false);
-                // The 1.3.239 layer does not check the rule: tuff's error alone
-                // proves it (the command buffer is never submitted).
-                let said = s.messages.take();
-                assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
-            } else {
-                assert_eq!(vuid(draw(&mut rec, false)), rule);
-                assert_silent(&s.messages);
-            }
+            // The 1.3.239 layer does not check the rule: tuff's error alone
+            // proves it (the command buffer is never submitted).
+            let r = draw(&mut rec, unchecked);
             drop(rec);
-        }
+            r
+        });
     }
     assert_silent(&s.messages);
 }
@@ -1197,7 +1156,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
         for (suffix, pipeline) in &pass_cases {
             let rule = format!("VUID-{command}-{suffix}");
-            for unchecked in [false, true] {
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
@@ -1206,21 +1165,10 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                     .expect("bind");
                 rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
                 rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-                if unchecked {
-                    s.messages.abort_on_error(true);
-                    let _ = draw(&mut rec, true);
-                    s.messages.abort_on_error(false);
-                    let said = s.messages.take();
-                    assert!(
-                        said.iter().any(|m| m.contains(&rule)),
-                        "the layer did not name {rule}; it said {said:?}"
-                    );
-                } else {
-                    assert_eq!(vuid(draw(&mut rec, false)), rule);
-                    assert_silent(&s.messages);
-                }
+                let r = draw(&mut rec, unchecked);
                 drop(rec);
-            }
+                r
+            });
         }
     }
 
@@ -1369,7 +1317,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 .color_attachments(&with_view)
                 .depth_attachment(Some(&depth))
                 .stencil_attachment(Some(&stencil));
-            for unchecked in [false, true] {
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Silent, |unchecked| {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
@@ -1378,20 +1326,12 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                     .expect("bind");
                 rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
                 rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-                if unchecked {
-                    s.messages.abort_on_error(true);
-                    let _ = draw(&mut rec, true);
-                    s.messages.abort_on_error(false);
-                    // The 1.3.239 layer does not check these rules: tuff's error
-                    // alone proves them (the command buffer is never submitted).
-                    let said = s.messages.take();
-                    assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
-                } else {
-                    assert_eq!(vuid(draw(&mut rec, false)), rule);
-                    assert_silent(&s.messages);
-                }
+                // The 1.3.239 layer does not check these rules: tuff's error
+                // alone proves them (the command buffer is never submitted).
+                let r = draw(&mut rec, unchecked);
                 drop(rec);
-            }
+                r
+            });
         }
     }
     assert_silent(&s.messages);
@@ -1448,31 +1388,24 @@ fn draws_rasterize_their_attachments_samples() {
         // The 1.3.239 layer states the case in dynamic rendering by the sibling rule
         // of pipelines made with an attachment sample count info.
         let sibling = format!("VUID-{command}-colorAttachmentCount-06188");
-        for unchecked in [false, true] {
-            let rec = cb
-                .begin(&tuff::CommandBufferBeginInfo::new())
-                .expect("begin");
-            let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
-                .expect("bind");
-            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-            rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-            if unchecked {
-                s.messages.abort_on_error(true);
-                let _ = draw(&mut rec, true);
-                s.messages.abort_on_error(false);
-                let said = s.messages.take();
-                assert!(
-                    said.iter()
-                        .any(|m| m.contains(&rule) || m.contains(&sibling)),
-                    "the layer did not name {rule}; it said {said:?}"
-                );
-            } else {
-                assert_eq!(vuid(draw(&mut rec, false)), rule);
-                assert_silent(&s.messages);
-            }
-            drop(rec);
-        }
+        tuff_setup::breaks(
+            &s,
+            &rule,
+            tuff_setup::Layer::NamesOr(&sibling),
+            |unchecked| {
+                let rec = cb
+                    .begin(&tuff::CommandBufferBeginInfo::new())
+                    .expect("begin");
+                let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
+                    .expect("bind");
+                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
+                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                let r = draw(&mut rec, unchecked);
+                drop(rec);
+                r
+            },
+        );
     }
     assert_silent(&s.messages);
 }

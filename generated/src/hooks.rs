@@ -3711,20 +3711,7 @@ fn multiview_instances<S: State>(
     }
     let device = recorder.device();
     let max = device.live().max_multiview_instance(|| {
-        let physical = device.parent();
-        let instance = physical.parent();
-        instance.exts().version(1).then(|| {
-            let mut multiview = vk::PhysicalDeviceMultiviewProperties::default();
-            let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut multiview);
-            // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is
-            // local.
-            unsafe {
-                instance
-                    .fns()
-                    .get_physical_device_properties2(physical.raw(), &mut p2)
-            };
-            multiview.max_multiview_instance_index
-        })
+        render_pass::multiview_properties(device).map(|m| m.max_multiview_instance_index)
     });
     let last = u64::from(first_instance) + u64::from(instance_count) - 1;
     match max {
@@ -3966,29 +3953,8 @@ fn draw_values<S: State>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
 ) -> crate::recorder::DepthStencil {
-    use crate::recorder::dynamic_bit;
-    use vk::DynamicState as D;
     let mut values = pipeline.depth_stencil;
-    let now = recorder.depth_stencil;
-    let dynamic = |state| pipeline.dynamic & dynamic_bit(state) != 0;
-    if dynamic(D::DEPTH_TEST_ENABLE) {
-        values.depth_test = now.depth_test;
-    }
-    if dynamic(D::DEPTH_WRITE_ENABLE) {
-        values.depth_write = now.depth_write;
-    }
-    if dynamic(D::STENCIL_TEST_ENABLE) {
-        values.stencil_test = now.stencil_test;
-    }
-    if dynamic(D::STENCIL_OP) {
-        values.ops = now.ops;
-    }
-    if dynamic(D::STENCIL_WRITE_MASK) {
-        values.masks = now.masks;
-    }
-    if dynamic(D::RASTERIZER_DISCARD_ENABLE) {
-        values.discard = now.discard;
-    }
+    values.take(&recorder.depth_stencil, pipeline.dynamic);
     values
 }
 

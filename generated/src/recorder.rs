@@ -216,26 +216,31 @@ impl DepthStencil {
     /// needs them set again (a partial set, of one stencil face, leaves the other
     /// face at the value that writes).
     pub(crate) fn forget_static(&mut self, dynamic: u32) {
+        self.take(&DepthStencil::default(), !dynamic);
+    }
+
+    /// Takes from `from` the values of the states in `states` ([`dynamic_bit`]
+    /// bits).
+    pub(crate) fn take(&mut self, from: &DepthStencil, states: u32) {
         use vk::DynamicState as D;
-        let writes = DepthStencil::default();
-        let is_static = |state| dynamic & dynamic_bit(state) == 0;
-        if is_static(D::DEPTH_TEST_ENABLE) {
-            self.depth_test = writes.depth_test;
+        let has = |state| states & dynamic_bit(state) != 0;
+        if has(D::DEPTH_TEST_ENABLE) {
+            self.depth_test = from.depth_test;
         }
-        if is_static(D::DEPTH_WRITE_ENABLE) {
-            self.depth_write = writes.depth_write;
+        if has(D::DEPTH_WRITE_ENABLE) {
+            self.depth_write = from.depth_write;
         }
-        if is_static(D::STENCIL_TEST_ENABLE) {
-            self.stencil_test = writes.stencil_test;
+        if has(D::STENCIL_TEST_ENABLE) {
+            self.stencil_test = from.stencil_test;
         }
-        if is_static(D::STENCIL_OP) {
-            self.ops = writes.ops;
+        if has(D::STENCIL_OP) {
+            self.ops = from.ops;
         }
-        if is_static(D::STENCIL_WRITE_MASK) {
-            self.masks = writes.masks;
+        if has(D::STENCIL_WRITE_MASK) {
+            self.masks = from.masks;
         }
-        if is_static(D::RASTERIZER_DISCARD_ENABLE) {
-            self.discard = writes.discard;
+        if has(D::RASTERIZER_DISCARD_ENABLE) {
+            self.discard = from.discard;
         }
     }
 

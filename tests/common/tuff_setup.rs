@@ -426,3 +426,47 @@ pub fn shader(s: &Setup, bytes: &[u8]) -> tuff::ShaderModule {
     // and read only the resources their pipelines give them.
     unsafe { s.device.create_shader_module_from_spirv(bytes) }.expect("shader module")
 }
+
+/// What the validation layer says of an unchecked call that breaks a rule.
+#[allow(dead_code)]
+pub enum Layer<'a> {
+    /// It names the rule.
+    Names,
+    /// It names the rule, or this sibling rule that states the same case.
+    NamesOr(&'a str),
+    /// It says nothing: the 1.3.239 layer does not check the rule, and tuff's error
+    /// alone proves it (the command buffer is never submitted).
+    Silent,
+}
+
+/// Breaks `rule` through both paths: `record(false)` calls the safe method, which
+/// tuff must refuse with the rule's VUID while the layer says nothing, and
+/// `record(true)` its `_unchecked` twin, under the layer told to skip the call it
+/// reports, which must say what `layer` says. `record` makes its own recording for
+/// each and returns the call's result.
+#[allow(dead_code)]
+pub fn breaks(
+    s: &Setup,
+    rule: &str,
+    layer: Layer<'_>,
+    mut record: impl FnMut(bool) -> tuff::Result<()>,
+) {
+    assert_eq!(vuid(record(false)), rule);
+    let said = s.messages.take();
+    assert!(said.is_empty(), "the layer reported {said:?}");
+    s.messages.abort_on_error(true);
+    let _ = record(true);
+    s.messages.abort_on_error(false);
+    let said = s.messages.take();
+    match layer {
+        Layer::Names => assert!(
+            said.iter().any(|m| m.contains(rule)),
+            "the layer did not name {rule}; it said {said:?}"
+        ),
+        Layer::NamesOr(sibling) => assert!(
+            said.iter().any(|m| m.contains(rule) || m.contains(sibling)),
+            "the layer named neither {rule} nor {sibling}; it said {said:?}"
+        ),
+        Layer::Silent => assert!(said.is_empty(), "the layer now checks {rule}: {said:?}"),
+    }
+}

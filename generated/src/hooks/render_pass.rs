@@ -589,6 +589,13 @@ fn check_view_masks(
 
 /// The device's `maxMultiviewViewCount`, where the instance can ask for it.
 pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
+    multiview_properties(device).map(|m| m.max_multiview_view_count)
+}
+
+/// The device's multiview limits, where the instance can ask for them (Vulkan 1.1).
+pub(super) fn multiview_properties(
+    device: &Device,
+) -> Option<vk::PhysicalDeviceMultiviewProperties<'static>> {
     let physical = device.parent();
     let instance = physical.parent();
     if !instance.exts().version(1) {
@@ -602,7 +609,8 @@ pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
             .fns()
             .get_physical_device_properties2(physical.raw(), &mut p2)
     };
-    Some(multiview.max_multiview_view_count)
+    multiview.p_next = std::ptr::null_mut();
+    Some(multiview)
 }
 
 /// The checks of `vkCreateRenderPass` that read the attachments its subpasses

@@ -468,33 +468,18 @@ macro_rules! draw_rules {
             $command,
             "-scissorCount-03418\", \"VUID-",
             $command,
-            "-viewportCount-03419\"], shader: [\"VUID-",
-            $command,
-            "-viewType-07752\", \"VUID-",
-            $command,
-            "-format-07753\", \"VUID-",
-            $command,
-            "-None-02699\", \"VUID-",
-            $command,
-            "-maintenance4-06425\", \"VUID-",
-            $command,
-            "-None-02691\", \"VUID-",
-            $command,
-            "-None-06479\", \"VUID-",
-            $command,
-            "-OpTypeImage-07027\", \"VUID-",
-            $command,
-            "-OpTypeImage-07028\"] }; &RULES }"
+            "-viewportCount-03419\"], shader: ",
+            shader_rules!($command),
+            " }; &RULES }"
         )
     };
 }
 
-/// The `ShaderRules` of a draw or dispatch command, as the Rust expression its
-/// hooks take.
+/// The `ShaderRules` of a draw or dispatch command, as a Rust array expression.
 macro_rules! shader_rules {
     ($command:literal) => {
         concat!(
-            "&[\"VUID-",
+            "[\"VUID-",
             $command,
             "-viewType-07752\", \"VUID-",
             $command,
@@ -532,7 +517,7 @@ macro_rules! bound {
                     "self",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    shader_rules!($command),
+                    concat!("&", shader_rules!($command)),
                 ],
             ),
             settles: &[
