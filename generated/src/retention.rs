@@ -177,6 +177,8 @@ pub(crate) struct Live {
     /// `maxMultiviewInstanceIndex`, read the first time a draw in a multiview
     /// render pass instance needs it.
     max_multiview_instance: std::sync::OnceLock<Option<u32>>,
+    /// How many live buffers and images were created protected.
+    protected_resources: std::sync::atomic::AtomicUsize,
     /// The physical device's `maxBufferSize`, read once (none below Vulkan 1.3).
     max_buffer_size: std::sync::OnceLock<Option<u64>>,
     /// The core features the device was created with.
@@ -708,6 +710,7 @@ impl Default for Live {
             sets_layouts: Vutex::new(HashMap::default()),
             limits: std::sync::OnceLock::new(),
             max_multiview_instance: std::sync::OnceLock::new(),
+            protected_resources: std::sync::atomic::AtomicUsize::new(0),
             max_buffer_size: std::sync::OnceLock::new(),
             features: std::sync::OnceLock::new(),
             queue_infos: std::sync::OnceLock::new(),
@@ -896,7 +899,10 @@ impl Live {
         match H::TYPE {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
-                self.buffers.lock().remove(&key.1);
+                let gone = self.buffers.lock().remove(&key.1);
+                if gone.is_some_and(|b| b.flags.contains(vk::BufferCreateFlags::PROTECTED)) {
+                    self.protected_one(false);
+                }
                 self.bindings.lock().remove(&key);
                 if let Some(size) = self.sparse_resources.lock().remove(&key) {
                     *self.sparse_total.lock() -= size;
@@ -921,7 +927,10 @@ impl Live {
                 self.conversions.lock().remove(&key.1);
             }
             vk::ObjectType::IMAGE => {
-                self.images.lock().remove(&key.1);
+                let gone = self.images.lock().remove(&key.1);
+                if gone.is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED)) {
+                    self.protected_one(false);
+                }
                 self.layouts.lock().remove(&key.1);
                 self.bindings.lock().remove(&key);
                 self.view_formats.lock().remove(&key.1);
@@ -1320,6 +1329,23 @@ impl Live {
         self.limits.get_or_init(read)
     }
 
+    /// A protected buffer or image was created (`true`) or is gone.
+    fn protected_one(&self, created: bool) {
+        use std::sync::atomic::Ordering::Relaxed;
+        if created {
+            self.protected_resources.fetch_add(1, Relaxed);
+        } else {
+            self.protected_resources.fetch_sub(1, Relaxed);
+        }
+    }
+
+    /// Whether a protected buffer or image is alive.
+    pub(crate) fn has_protected_resources(&self) -> bool {
+        self.protected_resources
+            .load(std::sync::atomic::Ordering::Relaxed)
+            != 0
+    }
+
     /// The physical device's `maxMultiviewInstanceIndex`, read from `read` the
     /// first time.
     pub(crate) fn max_multiview_instance(&self, read: impl FnOnce() -> Option<u32>) -> Option<u32> {
@@ -1333,6 +1359,9 @@ impl Live {
 
     /// Records a new buffer's creation parameters.
     pub(crate) fn buffer_created(&self, raw: vk::Buffer, record: BufferRecord) {
+        if record.flags.contains(vk::BufferCreateFlags::PROTECTED) {
+            self.protected_one(true);
+        }
         self.buffers.lock().insert(raw.as_raw(), record);
     }
 
@@ -1385,6 +1414,9 @@ impl Live {
 
     /// Records a new image's creation parameters, and the view formats it listed.
     pub(crate) fn image_created(&self, raw: vk::Image, record: ImageRecord, views: &[vk::Format]) {
+        if record.flags.contains(vk::ImageCreateFlags::PROTECTED) {
+            self.protected_one(true);
+        }
         self.images.lock().insert(raw.as_raw(), record);
         if !views.is_empty() {
             self.view_formats

@@ -592,6 +592,24 @@ pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
     multiview_properties(device).map(|m| m.max_multiview_view_count)
 }
 
+/// The device's `protectedNoFault` (false where the instance cannot ask for it).
+pub(crate) fn protected_no_fault(device: &Device) -> bool {
+    let physical = device.parent();
+    let instance = physical.parent();
+    if !instance.exts().version(1) {
+        return false;
+    }
+    let mut protected = vk::PhysicalDeviceProtectedMemoryProperties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut protected);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
+    unsafe {
+        instance
+            .fns()
+            .get_physical_device_properties2(physical.raw(), &mut p2)
+    };
+    protected.protected_no_fault == vk::TRUE
+}
+
 /// The device's multiview limits, where the instance can ask for them (Vulkan 1.1).
 pub(super) fn multiview_properties(
     device: &Device,

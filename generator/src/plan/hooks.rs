@@ -386,6 +386,7 @@ const IMAGE_ATOMICS: &str = "checks, once per change of the bound state, each im
 const UNPROVEN_DEPTH_COMPARISON: &str = "checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison";
 const UNPROVEN_WITHOUT_FORMAT: &str = "checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format";
 const READ_WITHOUT_FORMAT: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat)";
+const UNPROVEN_PROTECTED_ACCESS: &str = "checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
@@ -495,7 +496,9 @@ macro_rules! shader_rules {
             $command,
             "-OpTypeImage-07027\", \"VUID-",
             $command,
-            "-OpTypeImage-07028\"]"
+            "-OpTypeImage-07028\", \"VUID-",
+            $command,
+            "-commandBuffer-02707\"]"
         )
     };
 }
@@ -534,6 +537,7 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-None-06479"), How::User(UNPROVEN_DEPTH_COMPARISON)),
                 (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
                 (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
+                (concat!("VUID-", $command, "-commandBuffer-02707"), How::User(UNPROVEN_PROTECTED_ACCESS)),
             ],
             ..NONE
         }
@@ -636,6 +640,7 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-None-06479"), How::User(UNPROVEN_DEPTH_COMPARISON)),
             (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
             (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
+            (concat!("VUID-", $command, "-commandBuffer-02707"), How::User(UNPROVEN_PROTECTED_ACCESS)),
             (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),
