@@ -3864,9 +3864,10 @@ pub(crate) struct DrawRules {
 /// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
 /// sampled type, every descriptor written, the push constants set, and atomic
 /// operations, depth comparison, and storage reads and writes of `Unknown` format
-/// only on image views whose format supports them; and no protected resource
-/// reached from an unprotected command buffer.
-pub(crate) type ShaderRules = [&'static str; 9];
+/// only on image views whose format supports them; no protected resource reached
+/// from an unprotected command buffer, and no draw or dispatch in a protected one
+/// (the command's rule of protected command buffers).
+pub(crate) type ShaderRules = [&'static str; 10];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -4350,19 +4351,21 @@ fn view_features2(
     Ok(features)
 }
 
-/// Refuses, on a device that enabled protectedMemory without protectedNoFault, a
-/// draw or dispatch in an unprotected command buffer while a protected buffer or
-/// image is alive (which resources its pipeline reaches is not followed). Without
-/// protectedMemory no protected object can be made (their creation checks the
-/// feature), so nothing is refused.
-fn protected_checks<S: State>(recorder: &Recorder<'_, S>, vuid: &'static str) -> Result<()> {
+/// Refuses a draw or dispatch in a protected command buffer (`in_protected` names
+/// the rule: which resources its pipeline writes, and from which stages, is not
+/// followed), and, on a device that enabled protectedMemory without
+/// protectedNoFault, one in an unprotected command buffer while a protected buffer
+/// or image is alive (which resources its pipeline reaches is not followed).
+/// Without protectedMemory no protected object can be made (their creation checks
+/// the feature), so nothing is refused.
+fn protected_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    vuid: &'static str,
+    in_protected: &'static str,
+) -> Result<()> {
     let device = recorder.device();
     let live = device.live();
     if live.with_features(|f| f.v11.protected_memory) != vk::TRUE {
-        return Ok(());
-    }
-    let no_fault = render_pass::protected_no_fault(device);
-    if no_fault {
         return Ok(());
     }
     let protected = recorder
@@ -4370,7 +4373,16 @@ fn protected_checks<S: State>(recorder: &Recorder<'_, S>, vuid: &'static str) ->
         .uses()
         .pool()
         .is_some_and(|(_, protected)| protected);
-    if !protected && live.has_protected_resources() {
+    if protected {
+        return refuse(
+            in_protected,
+            "a draw or dispatch in a protected command buffer: which resources its pipeline writes, and from which stages, is not followed".into(),
+        );
+    }
+    if render_pass::protected_no_fault(device) {
+        return Ok(());
+    }
+    if live.has_protected_resources() {
         return refuse(
             vuid,
             "a draw or dispatch in an unprotected command buffer while protected buffers or images are alive: which resources its pipeline reaches is not followed".into(),
@@ -4572,7 +4584,7 @@ fn bound_pipeline_checks<S: State>(
         )?;
     }
     bound_descriptor_checks(recorder.device(), bound, pipeline, shader)?;
-    protected_checks(recorder, shader[8])?;
+    protected_checks(recorder, shader[8], shader[9])?;
     push_constant_checks(recorder, pipeline, shader[3])?;
     descriptor_layout_checks(recorder, bound)
 }

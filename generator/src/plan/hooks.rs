@@ -387,13 +387,14 @@ const UNPROVEN_DEPTH_COMPARISON: &str = "checked by the safe methods in every bu
 const UNPROVEN_WITHOUT_FORMAT: &str = "checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format";
 const READ_WITHOUT_FORMAT: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat)";
 const UNPROVEN_PROTECTED_ACCESS: &str = "checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory";
+const UNPROVEN_PROTECTED_BUFFER: &str = "checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
 /// reference to a constant, so a draw passes a pointer rather than building the
 /// struct.
 macro_rules! draw_rules {
-    ($command:literal) => {
+    ($command:literal, $protected:literal) => {
         concat!(
             "{ const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules { render_pass: \"VUID-",
             $command,
@@ -470,7 +471,7 @@ macro_rules! draw_rules {
             "-scissorCount-03418\", \"VUID-",
             $command,
             "-viewportCount-03419\"], shader: ",
-            shader_rules!($command),
+            shader_rules!($command, $protected),
             " }; &RULES }"
         )
     };
@@ -478,7 +479,7 @@ macro_rules! draw_rules {
 
 /// The `ShaderRules` of a draw or dispatch command, as a Rust array expression.
 macro_rules! shader_rules {
-    ($command:literal) => {
+    ($command:literal, $protected:literal) => {
         concat!(
             "[\"VUID-",
             $command,
@@ -498,7 +499,9 @@ macro_rules! shader_rules {
             $command,
             "-OpTypeImage-07028\", \"VUID-",
             $command,
-            "-commandBuffer-02707\"]"
+            "-commandBuffer-02707\", \"",
+            $protected,
+            "\"]"
         )
     };
 }
@@ -507,7 +510,7 @@ macro_rules! shader_rules {
 /// set number of its layout; for a draw, a vertex buffer bound at every binding its
 /// vertex shader reads.
 macro_rules! bound {
-    ($command:literal, COMPUTE, $sets:expr) => {
+    ($command:literal, COMPUTE, $sets:expr, $protected:literal, [$($extra:expr),* $(,)?]) => {
         Special {
             command: $command,
             after: call(
@@ -520,7 +523,7 @@ macro_rules! bound {
                     "self",
                     concat!("\"VUID-", $command, "-None-02700\""),
                     concat!("\"VUID-", $command, "-None-02697\""),
-                    concat!("&", shader_rules!($command)),
+                    concat!("&", shader_rules!($command, $protected)),
                 ],
             ),
             settles: &[
@@ -538,11 +541,12 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
                 (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
                 (concat!("VUID-", $command, "-commandBuffer-02707"), How::User(UNPROVEN_PROTECTED_ACCESS)),
+                $($extra,)*
             ],
             ..NONE
         }
     };
-    ($command:literal, GRAPHICS, $sets:expr, $vertices:literal, [$($extra:expr),* $(,)?]) => {
+    ($command:literal, GRAPHICS, $sets:expr, $protected:literal, $vertices:literal, [$($extra:expr),* $(,)?]) => {
         Special {
             command: $command,
             after: call(
@@ -557,7 +561,7 @@ macro_rules! bound {
                     concat!("\"VUID-", $command, "-None-02697\""),
                     concat!("\"VUID-", $command, "-None-04007\""),
                     $vertices,
-                    draw_rules!($command),
+                    draw_rules!($command, $protected),
                 ],
             ),
             settles: with_draw_state!(
@@ -583,7 +587,7 @@ macro_rules! bound {
 /// An indexed draw: [`bound!`]'s checks, an index buffer bound, and for a direct draw
 /// the indices it reads inside it (`range`, Rust for an `Option` the hook takes).
 macro_rules! indexed {
-    ($command:literal, $range:literal, [$($settles:expr),* $(,)?]) => {
+    ($command:literal, $protected:literal, $range:literal, [$($settles:expr),* $(,)?]) => {
         Special {
             command: $command,
             after: call(
@@ -599,7 +603,7 @@ macro_rules! indexed {
                     concat!("\"VUID-", $command, "-None-07312\""),
                     concat!("\"VUID-", $command, "-None-04007\""),
                     $range,
-                    draw_rules!($command),
+                    draw_rules!($command, $protected),
                 ],
             ),
             settles: with_draw_state!($command, [$($settles),*]),
@@ -2305,14 +2309,18 @@ pub const SPECIALS: &[Special] = &[
         "vkCmdDraw",
         GRAPHICS,
         How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDraw-commandBuffer-02712",
         "Some((first_vertex, vertex_count, first_instance, instance_count, \"VUID-vkCmdDraw-None-02721\", \"VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688\"))",
         [
             ("VUID-vkCmdDraw-None-02721", How::Dynamic(VERTEX_RANGE)),
             ("VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688", How::Dynamic(MULTIVIEW_INSTANCES)),
+            ("VUID-vkCmdDraw-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
+            ("VUID-vkCmdDraw-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
         ]
     ),
     indexed!(
         "vkCmdDrawIndexed",
+        "VUID-vkCmdDrawIndexed-commandBuffer-02712",
         "Some((index_count, first_index, first_instance, instance_count, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\", \"VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688\"))",
         [
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
@@ -2321,33 +2329,77 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexed-None-04007", How::Dynamic(VERTEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
             ("VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688", How::Dynamic(MULTIVIEW_INSTANCES)),
+            ("VUID-vkCmdDrawIndexed-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
+            ("VUID-vkCmdDrawIndexed-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
         ]
     ),
-    bound!("vkCmdDrawIndirect", GRAPHICS, How::Dynamic(SETS_BOUND), "None", []),
+    bound!(
+        "vkCmdDrawIndirect",
+        GRAPHICS,
+        How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDrawIndirect-commandBuffer-02711",
+        "None",
+        [("VUID-vkCmdDrawIndirect-commandBuffer-02711", How::User(UNPROVEN_PROTECTED_BUFFER))]
+    ),
     indexed!(
         "vkCmdDrawIndexedIndirect",
+        "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711",
         "None",
         [
+            ("VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711", How::User(UNPROVEN_PROTECTED_BUFFER)),
             ("VUID-vkCmdDrawIndexedIndirect-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirect-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
-    bound!("vkCmdDrawIndirectCount", GRAPHICS, How::Dynamic(SETS_BOUND), "None", []),
+    bound!(
+        "vkCmdDrawIndirectCount",
+        GRAPHICS,
+        How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDrawIndirectCount-commandBuffer-02711",
+        "None",
+        [("VUID-vkCmdDrawIndirectCount-commandBuffer-02711", How::User(UNPROVEN_PROTECTED_BUFFER))]
+    ),
     indexed!(
         "vkCmdDrawIndexedIndirectCount",
+        "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711",
         "None",
         [
+            ("VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711", How::User(UNPROVEN_PROTECTED_BUFFER)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-02697", How::Dynamic(SETS_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-07312", How::Dynamic(INDEX_BOUND)),
             ("VUID-vkCmdDrawIndexedIndirectCount-None-04007", How::Dynamic(VERTEX_BOUND)),
         ]
     ),
-    bound!("vkCmdDispatch", COMPUTE, How::Dynamic(SETS_BOUND)),
-    bound!("vkCmdDispatchIndirect", COMPUTE, How::Dynamic(SETS_BOUND)),
-    bound!("vkCmdDispatchBase", COMPUTE, How::Dynamic(SETS_BOUND)),
+    bound!(
+        "vkCmdDispatch",
+        COMPUTE,
+        How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDispatch-commandBuffer-02712",
+        [
+            ("VUID-vkCmdDispatch-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
+            ("VUID-vkCmdDispatch-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
+        ]
+    ),
+    bound!(
+        "vkCmdDispatchIndirect",
+        COMPUTE,
+        How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDispatchIndirect-commandBuffer-02711",
+        [("VUID-vkCmdDispatchIndirect-commandBuffer-02711", How::User(UNPROVEN_PROTECTED_BUFFER))]
+    ),
+    bound!(
+        "vkCmdDispatchBase",
+        COMPUTE,
+        How::Dynamic(SETS_BOUND),
+        "VUID-vkCmdDispatchBase-commandBuffer-02712",
+        [
+            ("VUID-vkCmdDispatchBase-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
+            ("VUID-vkCmdDispatchBase-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
+        ]
+    ),
     Special {
         command: "vkCmdCopyImage",
         check: call("hooks::image_layout_checks", &["self", "crate::hooks::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),

@@ -2582,7 +2582,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 
 # Safety
 
-The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatch-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatch-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2595,8 +2595,6 @@ The caller upholds these 15 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatch-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDispatch-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatch-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatch-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
-- `VUID-vkCmdDispatch-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDispatch-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDispatch-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
@@ -2623,10 +2621,11 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 
 Left to the caller (listed one by one in the crate's `validation.json`): 50.
 
+- 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
-- 47: explicit rule; the wrappers do not check it*/
+- 45: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch(
         &mut self,
@@ -2648,6 +2647,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50.
                 "VUID-vkCmdDispatch-OpTypeImage-07027",
                 "VUID-vkCmdDispatch-OpTypeImage-07028",
                 "VUID-vkCmdDispatch-commandBuffer-02707",
+                "VUID-vkCmdDispatch-commandBuffer-02712",
             ],
         )?;
         {
@@ -2665,7 +2665,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, `VUID-vkCmdDispatch-commandBuffer-02712`, `VUID-vkCmdDispatch-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,
@@ -2685,7 +2685,7 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -2699,7 +2699,6 @@ The caller upholds these 15 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDispatchIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDispatchIndirect-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
@@ -2728,10 +2727,11 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 49.
 
+- 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
-- 46: explicit rule; the wrappers do not check it*/
+- 45: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -2752,6 +2752,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 49.
                 "VUID-vkCmdDispatchIndirect-OpTypeImage-07027",
                 "VUID-vkCmdDispatchIndirect-OpTypeImage-07028",
                 "VUID-vkCmdDispatchIndirect-commandBuffer-02707",
+                "VUID-vkCmdDispatchIndirect-commandBuffer-02711",
             ],
         )?;
         {
@@ -2766,7 +2767,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 49.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,
@@ -3341,7 +3342,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 
 # Safety
 
-The caller upholds these 20 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 18 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDraw-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDraw-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3359,8 +3360,6 @@ The caller upholds these 20 rules that no check of this method enforces (its com
 - `VUID-vkCmdDraw-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
 - `VUID-vkCmdDraw-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDraw-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDraw-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
-- `VUID-vkCmdDraw-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDraw-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDraw-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
@@ -3417,10 +3416,11 @@ The rules are on [`vkCmdDraw`'s reference page](https://registry.khronos.org/vul
 
 Left to the caller (listed one by one in the crate's `validation.json`): 151.
 
+- 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
-- 148: explicit rule; the wrappers do not check it*/
+- 146: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw(
         &mut self,
@@ -3494,6 +3494,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 151.
                         "VUID-vkCmdDraw-OpTypeImage-07027",
                         "VUID-vkCmdDraw-OpTypeImage-07028",
                         "VUID-vkCmdDraw-commandBuffer-02707",
+                        "VUID-vkCmdDraw-commandBuffer-02712",
                     ],
                 };
                 &RULES
@@ -3518,7 +3519,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 151.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-None-02691`, `VUID-vkCmdDraw-None-06479`, `VUID-vkCmdDraw-OpTypeImage-07027`, `VUID-vkCmdDraw-OpTypeImage-07028`, `VUID-vkCmdDraw-commandBuffer-02707`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-commandBuffer-02712`, `VUID-vkCmdDraw-commandBuffer-02713`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-None-02691`, `VUID-vkCmdDraw-None-06479`, `VUID-vkCmdDraw-OpTypeImage-07027`, `VUID-vkCmdDraw-OpTypeImage-07028`, `VUID-vkCmdDraw-commandBuffer-02707`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_unchecked(
         &mut self,
@@ -3547,7 +3548,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 21 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexed-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexed-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3566,8 +3567,6 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexed-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexed-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndexed-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
-- `VUID-vkCmdDrawIndexed-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDrawIndexed-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDrawIndexed-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
@@ -3625,10 +3624,11 @@ The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 152.
 
+- 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
-- 149: explicit rule; the wrappers do not check it*/
+- 147: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed(
         &mut self,
@@ -3716,6 +3716,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 152.
                         "VUID-vkCmdDrawIndexed-OpTypeImage-07027",
                         "VUID-vkCmdDrawIndexed-OpTypeImage-07028",
                         "VUID-vkCmdDrawIndexed-commandBuffer-02707",
+                        "VUID-vkCmdDrawIndexed-commandBuffer-02712",
                     ],
                 };
                 &RULES
@@ -3741,7 +3742,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 152.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-None-02691`, `VUID-vkCmdDrawIndexed-None-06479`, `VUID-vkCmdDrawIndexed-OpTypeImage-07027`, `VUID-vkCmdDrawIndexed-OpTypeImage-07028`, `VUID-vkCmdDrawIndexed-commandBuffer-02707`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-commandBuffer-02712`, `VUID-vkCmdDrawIndexed-commandBuffer-02713`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-None-02691`, `VUID-vkCmdDrawIndexed-None-06479`, `VUID-vkCmdDrawIndexed-OpTypeImage-07027`, `VUID-vkCmdDrawIndexed-OpTypeImage-07028`, `VUID-vkCmdDrawIndexed-commandBuffer-02707`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_unchecked(
         &mut self,
@@ -3772,7 +3773,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time:
 
 # Safety
 
-The caller upholds these 25 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -3795,7 +3796,6 @@ The caller upholds these 25 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirect-drawCount-00540`: If `drawCount` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + `sizeof`(`VkDrawIndexedIndirectCommand`)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndexedIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 - `VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
@@ -3858,11 +3858,12 @@ The rules are on [`vkCmdDrawIndexedIndirect`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 156.
 
+- 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 152: explicit rule; the wrappers do not check it*/
+- 151: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -3942,6 +3943,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 156.
                         "VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027",
                         "VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028",
                         "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707",
+                        "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711",
                     ],
                 };
                 &RULES
@@ -3961,7 +3963,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 156.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-None-02691`, `VUID-vkCmdDrawIndexedIndirect-None-06479`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-None-02691`, `VUID-vkCmdDrawIndexedIndirect-None-06479`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_unchecked(
         &mut self,
@@ -3983,7 +3985,7 @@ The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at 
 
 # Safety
 
-The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 23 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawIndirect-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -4005,7 +4007,6 @@ The caller upholds these 24 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndirect-drawCount-00488`: If `drawCount` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + `sizeof`(VkDrawIndirectCommand)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawIndirect-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDrawIndirect-commandBuffer-02711`: `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdDrawIndirect-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDrawIndirect-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 - `VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
@@ -4067,11 +4068,12 @@ The rules are on [`vkCmdDrawIndirect`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 155.
 
+- 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 151: explicit rule; the wrappers do not check it*/
+- 150: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -4150,6 +4152,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
                         "VUID-vkCmdDrawIndirect-OpTypeImage-07027",
                         "VUID-vkCmdDrawIndirect-OpTypeImage-07028",
                         "VUID-vkCmdDrawIndirect-commandBuffer-02707",
+                        "VUID-vkCmdDrawIndirect-commandBuffer-02711",
                     ],
                 };
                 &RULES
@@ -4167,7 +4170,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-None-02691`, `VUID-vkCmdDrawIndirect-None-06479`, `VUID-vkCmdDrawIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-None-02691`, `VUID-vkCmdDrawIndirect-None-06479`, `VUID-vkCmdDrawIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_draw_indirect_unchecked(
         &mut self,

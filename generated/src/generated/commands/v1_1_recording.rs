@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 17 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -24,8 +24,6 @@ The caller upholds these 19 rules that no check of this method enforces (its com
 - `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
 - `VUID-vkCmdDispatchBase-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchBase-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
-- `VUID-vkCmdDispatchBase-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
 - `VUID-vkCmdDispatchBase-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
 - `VUID-vkCmdDispatchBase-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
@@ -49,11 +47,12 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 
 Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
+- 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 51: explicit rule; the wrappers do not check it*/
+- 49: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -78,6 +77,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
                 "VUID-vkCmdDispatchBase-OpTypeImage-07027",
                 "VUID-vkCmdDispatchBase-OpTypeImage-07028",
                 "VUID-vkCmdDispatchBase-commandBuffer-02707",
+                "VUID-vkCmdDispatchBase-commandBuffer-02712",
             ],
         )?;
         {
@@ -102,7 +102,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
