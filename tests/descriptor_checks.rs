@@ -1418,31 +1418,7 @@ fn dispatches_read_views_their_shaders_can_read() {
             "OpTypeImage-07028",
         ),
     ];
-    type Dispatch =
-        fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
-    let commands: [(&str, Dispatch); 3] = [
-        ("vkCmdDispatch", |r, _, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
-            } else {
-                unsafe { r.cmd_dispatch(1, 1, 1) }
-            }
-        }),
-        ("vkCmdDispatchBase", |r, _, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
-            } else {
-                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
-            }
-        }),
-        ("vkCmdDispatchIndirect", |r, args, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
-            } else {
-                unsafe { r.cmd_dispatch_indirect(args, 0) }
-            }
-        }),
-    ];
+    let commands = dispatch_commands();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     for (code, view, output, suffix) in cases {
         let reader = image_reader_with(&s, view, output, None, code);
@@ -1554,31 +1530,7 @@ fn dispatches_read_pushed_constants() {
     let buffers = buffer_info(Some(&output), 0, vk::WHOLE_SIZE);
     d.update_descriptor_sets(&[buffer_write(&set, 0, T::STORAGE_BUFFER, &buffers)], &[])
         .expect("the output");
-    type Dispatch =
-        fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
-    let commands: [(&str, Dispatch); 3] = [
-        ("vkCmdDispatch", |r, _, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
-            } else {
-                unsafe { r.cmd_dispatch(1, 1, 1) }
-            }
-        }),
-        ("vkCmdDispatchBase", |r, _, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
-            } else {
-                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
-            }
-        }),
-        ("vkCmdDispatchIndirect", |r, args, unchecked| {
-            if unchecked {
-                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
-            } else {
-                unsafe { r.cmd_dispatch_indirect(args, 0) }
-            }
-        }),
-    ];
+    let commands = dispatch_commands();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     for (command, dispatch) in commands {
         let rule = format!("VUID-{command}-maintenance4-06425");
@@ -1654,4 +1606,37 @@ fn secondaries_leave_nothing_bound() {
     );
     drop(rec);
     assert_silent(&s.messages);
+}
+
+/// One dispatch command, recorded checked (`false`) or unchecked (`true`); an
+/// indirect one reads the buffer.
+type Dispatch = fn(&mut tuff::Recorder<'_, tuff::Outside>, &tuff::Buffer, bool) -> tuff::Result<()>;
+
+/// The three dispatch commands, each with its VUID prefix.
+fn dispatch_commands() -> [(&'static str, Dispatch); 3] {
+    // SAFETY (each call): the shader promise (the repository's shaders); the tests
+    // record these dispatches to be refused, or for the layer, which skips them.
+    [
+        ("vkCmdDispatch", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch(1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchBase", |r, _, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
+            } else {
+                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
+            }
+        }),
+        ("vkCmdDispatchIndirect", |r, args, unchecked| {
+            if unchecked {
+                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
+            } else {
+                unsafe { r.cmd_dispatch_indirect(args, 0) }
+            }
+        }),
+    ]
 }

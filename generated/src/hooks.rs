@@ -3995,40 +3995,50 @@ fn read_only_checks<S: State>(
         );
     };
     type L = vk::ImageLayout;
-    let dynamic_rendering = instance.dynamic;
-    if let (true, Some(layout)) = (depth, depth_layout) {
-        let rule = match layout {
-            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[2]),
-            L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL if dynamic_rendering => Some(rules[4]),
-            L::DEPTH_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[6]),
-            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
-            | L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
-            | L::DEPTH_READ_ONLY_OPTIMAL
-            | L::READ_ONLY_OPTIMAL => Some(rules[0]),
-            _ => None,
+    // Per aspect: whether the draw writes it, its layout, the layouts that hold it
+    // read-only with the dynamic-rendering rule each names, the rule of any
+    // instance, and its name with what the draw does to it.
+    let aspects = [
+        (
+            depth,
+            depth_layout,
+            [
+                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules[2]),
+                (L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, rules[4]),
+                (L::DEPTH_READ_ONLY_OPTIMAL, rules[6]),
+            ],
+            rules[0],
+            ("depth", "writes depth (depth test and writes enabled)"),
+        ),
+        (
+            stencil,
+            stencil_layout,
+            [
+                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules[3]),
+                (L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL, rules[5]),
+                (L::STENCIL_READ_ONLY_OPTIMAL, rules[7]),
+            ],
+            rules[1],
+            ("stencil", "may write stencil (stencil test enabled, a face with a write mask and an operation other than KEEP)"),
+        ),
+    ];
+    for (writes, layout, read_only, any_instance, (aspect, what)) in aspects {
+        let (true, Some(layout)) = (writes, layout) else {
+            continue;
+        };
+        let named = read_only.iter().find(|(l, _)| *l == layout);
+        let rule = match named {
+            Some((_, rule)) if instance.dynamic => Some(*rule),
+            Some(_) => Some(any_instance),
+            None if layout == L::READ_ONLY_OPTIMAL => Some(any_instance),
+            None => None,
         };
         if let Some(rule) = rule {
             refuse(
                 rule,
-                format!("the draw writes depth (depth test and writes enabled), and the depth/stencil attachment's depth aspect is in {layout:?}"),
-            )?;
-        }
-    }
-    if let (true, Some(layout)) = (stencil, stencil_layout) {
-        let rule = match layout {
-            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[3]),
-            L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[5]),
-            L::STENCIL_READ_ONLY_OPTIMAL if dynamic_rendering => Some(rules[7]),
-            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
-            | L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL
-            | L::STENCIL_READ_ONLY_OPTIMAL
-            | L::READ_ONLY_OPTIMAL => Some(rules[1]),
-            _ => None,
-        };
-        if let Some(rule) = rule {
-            refuse(
-                rule,
-                format!("the draw may write stencil (stencil test enabled, a face with a write mask and an operation other than KEEP), and the depth/stencil attachment's stencil aspect is in {layout:?}"),
+                format!(
+                    "the draw {what}, and the depth/stencil attachment's {aspect} aspect is in {layout:?}"
+                ),
             )?;
         }
     }

@@ -1016,19 +1016,20 @@ impl Live {
             let Some(u) = uses.get_mut(&set.as_raw()) else {
                 return;
             };
-            let mut written = (*u.written).clone();
+            // Copied only where a recorder still holds the list it bound, and only
+            // when the update changes it.
+            let written = &mut u.written;
             let mut undone = false;
             for &(slot, now) in updates {
                 match (written.binary_search(&slot), now) {
-                    (Err(at), true) => written.insert(at, slot),
+                    (Err(at), true) => Vrc::make_mut(written).insert(at, slot),
                     (Ok(at), false) => {
-                        written.remove(at);
+                        Vrc::make_mut(written).remove(at);
                         undone = true;
                     }
                     _ => {}
                 }
             }
-            u.written = Vrc::new(written);
             undone
         };
         if undone {
