@@ -108,6 +108,7 @@ fn draws<'a, S: tuff::recorder::Inside + 'a>(
             if $unchecked {
                 unsafe { $rec.$g($($a),*) }
             } else {
+                #[allow(unused_unsafe)]
                 unsafe { $rec.$f($($a),*) }
             }
         };
@@ -590,9 +591,10 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
                 let said = s.messages.take();
                 assert!(said.is_empty(), "the layer said {said:?}");
             } else if refused {
-                assert_eq!(vuid(unsafe { rec.cmd_draw(count, 1, first, 0) }), rule);
+                assert_eq!(vuid(rec.cmd_draw(count, 1, first, 0)), rule);
             } else {
-                unsafe { rec.cmd_draw(count, 1, first, 0) }.expect("a draw inside the buffer");
+                rec.cmd_draw(count, 1, first, 0)
+                    .expect("a draw inside the buffer");
             }
             drop(rec);
         }
@@ -618,11 +620,34 @@ fn image_draw(
     view: Option<&tuff::ImageView>,
     code: &[u8],
 ) -> ImageDraw {
+    // A storage image descriptor reads no sampler; the struct takes one.
+    let sampler =
+        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    descriptor_draw(
+        s,
+        p,
+        pass,
+        vk::DescriptorType::STORAGE_IMAGE,
+        view.map(|v| (v, &sampler)),
+        code,
+    )
+}
+
+/// [`image_draw`] with a descriptor of type `ty` (an image type) that holds the view
+/// and sampler of `written`, if given.
+fn descriptor_draw(
+    s: &Setup,
+    p: &pipelines::Pipelines,
+    pass: &tuff::RenderPass,
+    ty: vk::DescriptorType,
+    written: Option<(&tuff::ImageView, &tuff::Sampler)>,
+    code: &[u8],
+) -> ImageDraw {
     let d = &s.device;
     let module = tuff_setup::shader(s, code);
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
-        .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+        .descriptor_type(ty)
         .descriptor_count(1)
         .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
     let set_layout = d
@@ -640,7 +665,7 @@ fn image_draw(
     })
     .expect("pipeline");
     let sizes = [vk::DescriptorPoolSize {
-        ty: vk::DescriptorType::STORAGE_IMAGE,
+        ty,
         descriptor_count: 1,
     }];
     let pool = d
@@ -659,16 +684,14 @@ fn image_draw(
         .expect("set")
         .pop()
         .expect("one set");
-    // A storage image descriptor reads no sampler; the struct takes one.
-    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
-    if let Some(view) = view {
+    if let Some((view, sampler)) = written {
         let images = [
-            tuff::DescriptorImageInfo::new(&sampler, view).image_layout(vk::ImageLayout::GENERAL)
+            tuff::DescriptorImageInfo::new(sampler, view).image_layout(vk::ImageLayout::GENERAL)
         ];
         d.update_descriptor_sets(
             &[tuff::WriteDescriptorSet::new(&set)
                 .dst_binding(0)
-                .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+                .descriptor_type(ty)
                 .image_info(&images)],
             &[],
         )
@@ -951,14 +974,14 @@ fn multiview_draws_stay_under_the_instance_limit() {
             if unchecked {
                 unsafe { r.cmd_draw_unchecked(3, 1, 0, u32::MAX) }
             } else {
-                unsafe { r.cmd_draw(3, 1, 0, u32::MAX) }
+                r.cmd_draw(3, 1, 0, u32::MAX)
             }
         }),
         ("vkCmdDrawIndexed", |r, unchecked| {
             if unchecked {
                 unsafe { r.cmd_draw_indexed_unchecked(3, 1, 0, 0, u32::MAX) }
             } else {
-                unsafe { r.cmd_draw_indexed(3, 1, 0, 0, u32::MAX) }
+                r.cmd_draw_indexed(3, 1, 0, 0, u32::MAX)
             }
         }),
     ];
@@ -1196,12 +1219,10 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
     rec.cmd_set_scissor(0, &[area()]).expect("scissor");
     rec.cmd_set_depth_write_enable(vk::FALSE);
-    unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with depth writes off");
+    rec.cmd_draw(3, 1, 0, 0)
+        .expect("a draw with depth writes off");
     rec.cmd_set_depth_write_enable(vk::TRUE);
-    assert_eq!(
-        vuid(unsafe { rec.cmd_draw(3, 1, 0, 0) }),
-        "VUID-vkCmdDraw-None-06886"
-    );
+    assert_eq!(vuid(rec.cmd_draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06886");
     drop(rec);
 
     // A pipeline that has the stencil operations static, bound in between, leaves
@@ -1237,7 +1258,8 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
         keep,
         vk::CompareOp::ALWAYS,
     );
-    unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw that keeps the stencil");
+    rec.cmd_draw(3, 1, 0, 0)
+        .expect("a draw that keeps the stencil");
     rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pass_cases[1].1)
         .expect("bind the static pipeline");
     rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
@@ -1249,10 +1271,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
         keep,
         vk::CompareOp::ALWAYS,
     );
-    assert_eq!(
-        vuid(unsafe { rec.cmd_draw(3, 1, 0, 0) }),
-        "VUID-vkCmdDraw-None-06887"
-    );
+    assert_eq!(vuid(rec.cmd_draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06887");
     drop(rec);
 
     // Dynamic rendering: the rule follows the layout of the attachment info (the
@@ -1408,4 +1427,211 @@ fn draws_rasterize_their_attachments_samples() {
         );
     }
     assert_silent(&s.messages);
+}
+
+/// Records a render pass instance of `target` that binds `draw`'s pipeline and set,
+/// sets the viewport and scissor, and makes one draw (`unchecked`: its `_unchecked`
+/// twin).
+fn record_descriptor_draw(
+    cb: &mut tuff::CommandBuffer,
+    target: &tuff_setup::ColorTarget,
+    draw: &ImageDraw,
+    unchecked: bool,
+) -> tuff::Result<()> {
+    record_descriptor_draw_with(cb, target, draw, unchecked, &|rec, unchecked| {
+        if unchecked {
+            // SAFETY: the layer is told to skip the call it reports.
+            unsafe { rec.cmd_draw_unchecked(3, 1, 0, 0) }
+        } else {
+            rec.cmd_draw(3, 1, 0, 0)
+        }
+    })
+}
+
+/// [`record_descriptor_draw`] with the draw command `command`.
+fn record_descriptor_draw_with(
+    cb: &mut tuff::CommandBuffer,
+    target: &tuff_setup::ColorTarget,
+    draw: &ImageDraw,
+    unchecked: bool,
+    command: &dyn Fn(&mut Inside<'_>, bool) -> tuff::Result<()>,
+) -> tuff::Result<()> {
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &draw.pipeline)
+        .expect("bind");
+    rec.cmd_bind_descriptor_sets(
+        vk::PipelineBindPoint::GRAPHICS,
+        &draw.layout,
+        0,
+        &[&draw.set],
+        &[],
+    )
+    .expect("set");
+    set_viewport(&mut rec);
+    set_scissor(&mut rec);
+    let r = command(&mut rec, unchecked);
+    drop(rec);
+    r
+}
+
+/// A draw samples its views only as their samplers allow: linear filtering or a
+/// linear mipmap mode on an unsigned integer view (whose format lacks
+/// SAMPLED_IMAGE_FILTER_LINEAR) breaks the linear filter rules; a sampler with
+/// unnormalized coordinates sampling with an implicit LOD, or with an offset,
+/// breaks the unnormalized coordinates rules. tuff refuses the safe draw, and the
+/// layer names the same rule for the unchecked one.
+#[test]
+fn draws_sample_views_as_their_samplers_allow() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let sampled = vk::ImageUsageFlags::SAMPLED;
+    let (_uint_image, _uint_memory, uint_view) =
+        pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, sampled);
+    let (_image, _memory, view) =
+        pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UNORM, sampled);
+    // SAFETY: valid create infos; the samplers outlive the sets that hold them.
+    let sampler =
+        |info: tuff::SamplerCreateInfo<'_>| unsafe { d.create_sampler(&info) }.expect("sampler");
+    let linear = sampler(
+        tuff::SamplerCreateInfo::new()
+            .mag_filter(vk::Filter::LINEAR)
+            .min_filter(vk::Filter::LINEAR),
+    );
+    let mipmap = sampler(tuff::SamplerCreateInfo::new().mipmap_mode(vk::SamplerMipmapMode::LINEAR));
+    let edge = vk::SamplerAddressMode::CLAMP_TO_EDGE;
+    let unnormalized = sampler(
+        tuff::SamplerCreateInfo::new()
+            .unnormalized_coordinates(vk::TRUE)
+            .address_mode_u(edge)
+            .address_mode_v(edge)
+            .address_mode_w(edge),
+    );
+    let sample_uint: &[u8] = include_bytes!("../shaders/spv/sample_uint.frag.spv");
+    let sample_lod: &[u8] = include_bytes!("../shaders/spv/sample_lod.frag.spv");
+    let cases = [
+        (sample_uint, &uint_view, &linear, "magFilter-04553"),
+        (sample_uint, &uint_view, &mipmap, "mipmapMode-04770"),
+        (sample_uint, &uint_view, &unnormalized, "None-02703"),
+        (sample_lod, &view, &unnormalized, "None-02704"),
+    ];
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _args_memory) = pipelines::host_buffer(&s, 256, usage);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (code, view, sampler, suffix) in cases {
+        let ty = vk::DescriptorType::COMBINED_IMAGE_SAMPLER;
+        let draw = descriptor_draw(&s, &p, &target.render_pass, ty, Some((view, sampler)), code);
+        for (command, call) in draws::<tuff::InRenderPass>(&args, &args) {
+            let rule = format!("VUID-{command}-{suffix}");
+            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
+                record_descriptor_draw_with(&mut cb, &target, &draw, unchecked, &|rec, u| {
+                    call(rec, u)
+                })
+            });
+        }
+    }
+    assert_silent(&s.messages);
+}
+
+/// A draw's descriptors do not reach its attachments' memory: a storage image the
+/// fragment shader writes that is the color attachment itself breaks the rule that
+/// attachments are written only as attachments, and a sampled one the rule that
+/// they are read only as attachments. tuff refuses both safe draws. The layer does
+/// not judge these cases: an attachment in a render pass instance is in an
+/// attachment layout, so the 1.3.239 layer names the descriptor's layout rule
+/// (00344) instead, and the rules stay counted as the user's.
+#[test]
+fn draws_do_not_reach_their_attachments_through_descriptors() {
+    let _serial = vulkan::serial();
+    // Stores in a fragment shader need fragmentStoresAndAtomics.
+    let s = setup_full_features(true);
+    let usage = vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED;
+    let target = s.color_target(SIZE, usage);
+    let p = pipelines::pipelines(&s, &target);
+    // SAFETY: a valid create info.
+    let sampler =
+        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let cases = [
+        (
+            include_bytes!("../shaders/spv/image_store.frag.spv").as_slice(),
+            vk::DescriptorType::STORAGE_IMAGE,
+            "None-06537",
+        ),
+        (
+            include_bytes!("../shaders/spv/sample_lod.frag.spv").as_slice(),
+            vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+            "None-06538",
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (code, ty, suffix) in cases {
+        let written = Some((&target.view, &sampler));
+        let draw = descriptor_draw(&s, &p, &target.render_pass, ty, written, code);
+        let rule = format!("VUID-vkCmdDraw-{suffix}");
+        assert_eq!(
+            vuid(record_descriptor_draw(&mut cb, &target, &draw, false)),
+            rule
+        );
+    }
+    assert_silent(&s.messages);
+}
+
+/// An indexed draw on a device without robustBufferAccess fetches whatever vertex
+/// its indices name, which the host cannot know: with a vertex buffer of three
+/// vertices, tuff refuses it (the 1.3.239 layer does not check the indices'
+/// vertices: the error alone proves the rule); a device with robustBufferAccess
+/// keeps the fetches inside the buffer, and the same draw is recorded.
+#[test]
+fn indexed_draws_fetch_inside_their_vertex_buffers() {
+    let _serial = vulkan::serial();
+    let robust = vk::PhysicalDeviceFeatures::default().robust_buffer_access(true);
+    for (robust, s) in [
+        (false, setup(true)),
+        (true, tuff_setup::setup_with_features(true, robust)),
+    ] {
+        let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+        let empty = s
+            .device
+            .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+            .expect("layout");
+        let pipeline = pipelines::vertex_pipeline(&s, &empty, &target.render_pass);
+        let (vertices, _vertex_memory) =
+            pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
+        let (indices, _index_memory) =
+            pipelines::host_buffer(&s, 12, vk::BufferUsageFlags::INDEX_BUFFER);
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let clear = [vk::ClearValue::default()];
+        let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+            .render_area(area())
+            .clear_values(&clear);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+            .expect("bind");
+        rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
+            .expect("vertex buffer");
+        rec.cmd_bind_index_buffer(&indices, 0, vk::IndexType::UINT32)
+            .expect("index buffer");
+        set_viewport(&mut rec);
+        set_scissor(&mut rec);
+        let r = rec.cmd_draw_indexed(3, 1, 0, 0, 0);
+        if robust {
+            r.expect("a draw whose fetches robust buffer access keeps inside");
+        } else {
+            assert_eq!(vuid(r), "VUID-vkCmdDrawIndexed-None-02721");
+        }
+        drop(rec);
+        assert_silent(&s.messages);
+    }
 }

@@ -3319,6 +3319,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 // test; the command buffer is never submitted.
                 unsafe { $rec.$g($($a),*) }
             } else {
+                #[allow(unused_unsafe)]
                 unsafe { $rec.$f($($a),*) }
             }
         };
@@ -3543,7 +3544,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             unsafe { rec.cmd_draw_indexed_unchecked(65, 1, 0, 0, 0) }.expect("recorded");
             assert_layer_reports(&s, past);
         } else {
-            assert_eq!(vuid(unsafe { rec.cmd_draw_indexed(65, 1, 0, 0, 0) }), past);
+            assert_eq!(vuid(rec.cmd_draw_indexed(65, 1, 0, 0, 0)), past);
         }
         // A pipeline whose vertex shader reads set 0, with no set bound: every draw
         // is refused.
@@ -3575,7 +3576,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         if !unchecked {
             rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
                 .expect("vertex buffer");
-            unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("a draw with its vertex buffer bound");
+            rec.cmd_draw(3, 1, 0, 0)
+                .expect("a draw with its vertex buffer bound");
         }
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
@@ -3588,7 +3590,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 &color,
             )
             .expect("push");
-            unsafe { rec.cmd_draw_indexed(64, 1, 0, 0, 0) }.expect("64 indices inside the buffer");
+            rec.cmd_draw_indexed(64, 1, 0, 0, 0)
+                .expect("64 indices inside the buffer");
         }
         rec.cmd_end_render_pass().end().expect("end");
         if !unchecked {

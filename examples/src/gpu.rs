@@ -13,6 +13,11 @@ pub struct Requirements {
     pub tessellation_shader: bool,
     /// `fillModeNonSolid` (wireframe).
     pub fill_mode_non_solid: bool,
+    /// `robustBufferAccess`: an indexed draw that fetches vertex attributes is safe
+    /// in tuff only when every vertex its indices can name lies inside the bound
+    /// vertex buffers, which the host cannot know of the index buffer's contents,
+    /// or when robust buffer access keeps every fetch inside them.
+    pub robust_buffer_access: bool,
     /// `VK_KHR_surface`, `VK_KHR_xlib_surface` and `VK_KHR_swapchain`, for a window.
     pub window: bool,
 }
@@ -24,6 +29,7 @@ impl Requirements {
             scene,
             tessellation_shader: false,
             fill_mode_non_solid: false,
+            robust_buffer_access: false,
             window: false,
         }
     }
@@ -121,6 +127,7 @@ impl Gpu {
         let features = vk::PhysicalDeviceFeatures {
             tessellation_shader: req.tessellation_shader.into(),
             fill_mode_non_solid: req.fill_mode_non_solid.into(),
+            robust_buffer_access: req.robust_buffer_access.into(),
             ..Default::default()
         };
         let device_exts: &[_] = if req.window {

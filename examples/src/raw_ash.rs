@@ -236,7 +236,8 @@ fn render_on_device<S: Scene>(
             .queue_priorities(&priorities)];
         let features = vk::PhysicalDeviceFeatures::default()
             .tessellation_shader(req.tessellation_shader)
-            .fill_mode_non_solid(req.fill_mode_non_solid);
+            .fill_mode_non_solid(req.fill_mode_non_solid)
+            .robust_buffer_access(req.robust_buffer_access);
         let device = instance
             .create_device(
                 physical,

@@ -292,16 +292,40 @@ pub(crate) fn queue_present_khr_gate<'q>(
     Ok(gate)
 }
 
-/// The device remembers the buffer of a new buffer view.
+/// The device remembers the buffer and format of a new buffer view.
 pub(crate) fn buffer_view_created(
     device: &Device,
     view: BufferView,
     create_info: &BufferViewCreateInfo<'_>,
 ) -> BufferView {
+    let info = create_info.as_raw();
     device
         .live()
-        .buffer_view_created(view.raw(), create_info.as_raw().buffer);
+        .buffer_view_created(view.raw(), info.buffer, info.format);
     view
+}
+
+/// The device remembers what a new sampler does (its filters, mipmap mode,
+/// unnormalized coordinates and Y'CbCr conversion), which draws and dispatches check
+/// the image views it samples against.
+pub(crate) fn sampler_created(
+    device: &Device,
+    sampler: Sampler,
+    create_info: &SamplerCreateInfo<'_>,
+) -> Sampler {
+    let info = create_info.as_raw();
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let conversion: Option<&vk::SamplerYcbcrConversionInfo<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::SAMPLER_YCBCR_CONVERSION_INFO,
+        )
+    };
+    device.live().sampler_created(
+        sampler.raw(),
+        crate::retention::sampler_bits(info, conversion.is_some()),
+    );
+    sampler
 }
 
 /// The checks of `vkQueueSubmit2`: the fence and the command buffers' states.
@@ -2000,6 +2024,10 @@ pub(crate) fn descriptor_set_layout_created(
                 count: b.descriptor_count,
                 stages: b.stage_flags,
                 immutable: !b.p_immutable_samplers.is_null(),
+                immutable_bits: samplers
+                    .iter()
+                    .map(|s| device.live().sampler_bits(*s).unwrap_or(0))
+                    .fold(0, |a, b| a | b),
                 flags: flags.get(i).copied().unwrap_or_default(),
             };
             (record, samplers)
@@ -3496,6 +3524,7 @@ fn pipeline_record(
         push,
         viewports: (0, 0),
         depth_stencil: NO_DEPTH_STENCIL_WRITES,
+        blend: 0,
     }
 }
 
@@ -3637,6 +3666,16 @@ pub(crate) fn graphics_pipelines_created(
                 viewports: unsafe { raw.p_viewport_state.as_ref() }
                     .map_or((0, 0), |v| (v.viewport_count, v.scissor_count)),
                 depth_stencil: static_depth_stencil(raw),
+                // SAFETY: the safe setter stores a reference that outlives the info,
+                // and the attachments with their count.
+                blend: unsafe { raw.p_color_blend_state.as_ref() }.map_or(0, |c| {
+                    unsafe { crate::retention::raw_slice(c.p_attachments, c.attachment_count) }
+                        .iter()
+                        .take(32)
+                        .enumerate()
+                        .filter(|(_, a)| a.blend_enable == vk::TRUE)
+                        .fold(0, |bits, (i, _)| bits | (1 << i))
+                }),
                 // SAFETY: the safe struct stores its stages with their count.
                 ..pipeline_record(stage_resources(
                     device,
@@ -3739,6 +3778,9 @@ pub(crate) fn draw_checks<S: State>(
     rules: &DrawRules,
 ) -> Result<()> {
     recorder.verify_state(0, |recorder| {
+        // Before the descriptors' layouts: a descriptor that names an attachment is
+        // refused for what it does to the attachment's memory first.
+        attachment_checks(recorder, &rules.attachments)?;
         bound_pipeline_checks(
             recorder,
             vk::PipelineBindPoint::GRAPHICS,
@@ -3755,6 +3797,22 @@ pub(crate) fn draw_checks<S: State>(
         return Ok(());
     };
     multiview_instances(recorder, first_instance, instance_count, multiview)?;
+    vertex_fetch_checks(
+        recorder,
+        (u64::from(first_vertex), u64::from(vertex_count)),
+        (first_instance, instance_count),
+        vuid,
+    )
+}
+
+/// Refuses a draw that fetches vertices `(first, count)` or instances past the end
+/// of the vertex buffer bound at a binding the bound pipeline's vertex shader reads.
+fn vertex_fetch_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    (first_vertex, vertex_count): (u64, u64),
+    (first_instance, instance_count): (u32, u32),
+    vuid: &'static str,
+) -> Result<()> {
     let Some(pipeline) = &recorder.bound[0].pipeline else {
         return Ok(());
     };
@@ -3767,7 +3825,7 @@ pub(crate) fn draw_checks<S: State>(
     }
     for read in &pipeline.vertex_reads {
         let (first, count) = if read.instance {
-            (first_instance, instance_count)
+            (u64::from(first_instance), u64::from(instance_count))
         } else {
             (first_vertex, vertex_count)
         };
@@ -3781,7 +3839,7 @@ pub(crate) fn draw_checks<S: State>(
             (true, Some(stride)) => stride,
             _ => u64::from(read.stride),
         };
-        let last = u64::from(first) + u64::from(count) - 1;
+        let last = first.saturating_add(count - 1);
         let needed = last.saturating_mul(stride).saturating_add(read.end);
         if needed > range.bytes {
             refuse(
@@ -3858,7 +3916,18 @@ pub(crate) struct DrawRules {
     pub counts: [&'static str; 3],
     /// What its shaders read ([`ShaderRules`]).
     pub shader: ShaderRules,
+    /// The instance's attachments as the draw reaches them: an input attachment
+    /// variable's index names an input attachment of the subpass, its view is
+    /// compatible with the framebuffer's, no descriptor reaches an attachment's
+    /// memory (written by the shader, or read), and blending only on attachments
+    /// whose format supports it.
+    pub attachments: AttachmentRules,
 }
+
+/// The rules of [`DrawRules::attachments`]: an input attachment's index (07468),
+/// its view (07469), an attachment's memory written (06537) or read (06538) other
+/// than as an attachment, and blending (04727).
+pub(crate) type AttachmentRules = [&'static str; 5];
 
 /// The rules of a draw or dispatch about what its shaders read: an image view's
 /// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
@@ -3866,8 +3935,14 @@ pub(crate) struct DrawRules {
 /// operations, depth comparison, and storage reads and writes of `Unknown` format
 /// only on image views whose format supports them; no protected resource reached
 /// from an unprotected command buffer, and no draw or dispatch in a protected one
-/// (the command's rule of protected command buffers).
-pub(crate) type ShaderRules = [&'static str; 10];
+/// (the command's rule of protected command buffers); then what the samplers that
+/// sample a view allow (linear filtering and linear mipmaps by its format, and with
+/// unnormalized coordinates its view type, implicit-LOD, depth-comparison and
+/// projective instructions, LOD bias and offsets), texels written with as many
+/// components as an image view's or a texel buffer view's format has, storage texel
+/// buffers of `Unknown` format written and read only where their format allows it,
+/// and Y'CbCr conversions only with sampling instructions, without offsets.
+pub(crate) type ShaderRules = [&'static str; 21];
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -4230,6 +4305,7 @@ fn used_images(
         .take(n)
         .flatten()
         .flat_map(|images| images.iter().map(|(_, d)| d))
+        .filter(|d| d.kind == crate::retention::SlotKind::Image)
 }
 
 /// Refuses a draw or dispatch whose pipeline's shaders read push constants that were
@@ -4522,7 +4598,11 @@ pub(crate) fn descriptor_layouts_used<S: State>(
     let lists: SmallVec<[crate::retention::SetImages; 4]> =
         bound.images.iter().take(n).flatten().cloned().collect();
     let (live, layouts) = recorder.layouts_mut();
-    for d in lists.iter().flat_map(|l| l.iter().map(|(_, d)| d)) {
+    let images = lists
+        .iter()
+        .flat_map(|l| l.iter().map(|(_, d)| d))
+        .filter(|d| d.kind == crate::retention::SlotKind::Image);
+    for d in images {
         layouts.require(live, d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT);
     }
 }
@@ -4616,6 +4696,15 @@ fn bound_descriptor_checks(
     pipeline: &PipelineRecord,
     rules: &ShaderRules,
 ) -> Result<()> {
+    // What the separate samplers the modules declare do, together: which of them
+    // samples which image is not followed, so each sampled image counts them all.
+    let separate = pipeline
+        .resources
+        .iter()
+        .filter(|r| r.kind == crate::spirv::ResourceKind::Sampler)
+        .fold(0, |bits, r| {
+            bits | slot_sampler_bits(bound, r.set, r.binding, None)
+        });
     for r in pipeline.resources.iter() {
         written_checks(bound, r, rules[2])?;
         let Some(shape) = r.image else {
@@ -4627,6 +4716,20 @@ fn bound_descriptor_checks(
         };
         for ((_, element), d) in images.iter().filter(|((b, _), _)| *b == binding) {
             let at = || format!("set {set} binding {binding} element {element}");
+            if d.kind == crate::retention::SlotKind::TexelBuffer {
+                texel_buffer_checks(device, r, shape, d, &at, rules)?;
+                continue;
+            }
+            if d.kind != crate::retention::SlotKind::Image {
+                continue;
+            }
+            let samplers = if r.kind == crate::spirv::ResourceKind::CombinedImageSampler {
+                slot_sampler_bits(bound, set, binding, Some(d.sampler))
+            } else {
+                separate
+            };
+            sampled_view_checks(device, r, d, samplers, &at, rules)?;
+            written_components(r, d.format, &at, rules[15])?;
             if let Some(wanted) = shape.view_type() {
                 if d.view_type != wanted {
                     refuse(
@@ -4691,6 +4794,404 @@ fn bound_descriptor_checks(
                     format!("{}: the shader's image type has {} sampled type, and the view's format {:?} reads as {} type", at(), name(shape.numeric), d.format, name(texels)),
                 )?;
             }
+        }
+    }
+    Ok(())
+}
+
+/// What the samplers at binding `binding` of set `set` do ([`crate::retention::sampler_bits`]):
+/// the binding's immutable samplers, and `own` (a combined image sampler's) or,
+/// without it, every sampler written there.
+fn slot_sampler_bits(
+    bound: &crate::recorder::Bound,
+    set: u32,
+    binding: u32,
+    own: Option<u8>,
+) -> u8 {
+    let immutable = bound
+        .sets
+        .get(set as usize)
+        .and_then(Option::as_ref)
+        .and_then(|l| l.bindings.iter().find(|b| b.binding == binding))
+        .map_or(0, |b| b.immutable_bits);
+    let written = own.unwrap_or_else(|| {
+        bound
+            .images
+            .get(set as usize)
+            .and_then(Option::as_ref)
+            .map_or(0, |list| {
+                list.iter()
+                    .filter(|((b, _), _)| *b == binding)
+                    .fold(0, |bits, (_, d)| bits | d.sampler)
+            })
+    });
+    immutable | written
+}
+
+/// Refuses a draw or dispatch whose shaders sample the image view of `d` with
+/// samplers (`samplers`, their [`crate::retention::sampler_bits`]) it does not allow:
+/// linear filtering or linear mipmaps where the view's format features lack
+/// `SAMPLED_IMAGE_FILTER_LINEAR` (04553, 04770); unnormalized coordinates on a view
+/// of a type other than 1D or 2D (02702), with implicit-LOD, depth-comparison or
+/// projective instructions (02703) or with a LOD bias or offsets (02704); and a
+/// Y'CbCr conversion (of the sampler or the view) with instructions other than
+/// sampling (06550) or with offsets (06551).
+fn sampled_view_checks(
+    device: &Device,
+    r: &crate::spirv::Resource,
+    d: &crate::retention::ImageDescriptor,
+    samplers: u8,
+    at: &dyn Fn() -> String,
+    rules: &ShaderRules,
+) -> Result<()> {
+    use crate::retention::{
+        SAMPLER_LINEAR, SAMPLER_MIPMAP_LINEAR, SAMPLER_UNNORMALIZED, SAMPLER_YCBCR,
+    };
+    use crate::spirv::ops;
+    let sampled = r.ops & ops::SAMPLE != 0;
+    if sampled && samplers & (SAMPLER_LINEAR | SAMPLER_MIPMAP_LINEAR) != 0 {
+        let linear = view_features2(device, d)?
+            .contains(vk::FormatFeatureFlags2::SAMPLED_IMAGE_FILTER_LINEAR);
+        if !linear {
+            let (vuid, what) = if samplers & SAMPLER_LINEAR != 0 {
+                (rules[10], "a LINEAR magFilter or minFilter")
+            } else {
+                (rules[11], "a LINEAR mipmapMode")
+            };
+            refuse(
+                vuid,
+                format!("{}: a sampler with {what} (and no depth comparison) samples the image view, and the features of its format {:?} (for its image's tiling) lack SAMPLED_IMAGE_FILTER_LINEAR", at(), d.format),
+            )?;
+        }
+    }
+    if sampled && samplers & SAMPLER_UNNORMALIZED != 0 {
+        use vk::ImageViewType as V;
+        if matches!(
+            d.view_type,
+            V::TYPE_3D | V::CUBE | V::TYPE_1D_ARRAY | V::TYPE_2D_ARRAY | V::CUBE_ARRAY
+        ) {
+            refuse(
+                rules[12],
+                format!("{}: a sampler with unnormalized coordinates samples an image view of type {:?}", at(), d.view_type),
+            )?;
+        }
+        if r.ops & ops::IMPLICIT_DREF_PROJ != 0 {
+            refuse(
+                rules[13],
+                format!("{}: a sampler with unnormalized coordinates may sample the image with an OpImageSample instruction with ImplicitLod, Dref or Proj in its name", at()),
+            )?;
+        }
+        if r.ops & ops::SAMPLE_BIAS_OFFSET != 0 {
+            refuse(
+                rules[14],
+                format!("{}: a sampler with unnormalized coordinates may sample the image with a LOD bias or an offset", at()),
+            )?;
+        }
+    }
+    if d.ycbcr || (sampled && samplers & SAMPLER_YCBCR != 0) {
+        if r.ops & ops::NOT_SAMPLE != 0 {
+            refuse(
+                rules[19],
+                format!("{}: the image view or a sampler of it has a sampler Y'CbCr conversion, and the shader uses it with an instruction other than OpImageSample* and OpImageSparseSample*", at()),
+            )?;
+        }
+        if r.ops & ops::OFFSET != 0 {
+            refuse(
+                rules[20],
+                format!("{}: the image view or a sampler of it has a sampler Y'CbCr conversion, and the shader uses it with ConstOffset or Offset", at()),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a draw or dispatch whose shaders write texels with fewer components than
+/// the view's `format` has (04115 for an image view, 04469 for a texel buffer view).
+fn written_components(
+    r: &crate::spirv::Resource,
+    format: vk::Format,
+    at: &dyn Fn() -> String,
+    vuid: &'static str,
+) -> Result<()> {
+    let Some(has) = crate::formats::color_components(format) else {
+        return Ok(());
+    };
+    if r.write_components != 0 && u32::from(r.write_components) < has {
+        return refuse(
+            vuid,
+            format!("{}: the shader writes texels of {} components with OpImageWrite, and the view's format {format:?} has {has}", at(), r.write_components),
+        );
+    }
+    Ok(())
+}
+
+/// The buffer features of `format`, as `VkFormatProperties3` gives them where the
+/// device has Vulkan 1.3; on an older device, those of `VkFormatProperties` with
+/// storage without format from the device's `shaderStorageImage*WithoutFormat`
+/// features.
+fn buffer_features2(device: &Device, format: vk::Format) -> Result<vk::FormatFeatureFlags2> {
+    let physical = device.parent();
+    let instance = physical.parent();
+    let version = physical.get_physical_device_properties().api_version;
+    if instance.exts().version(1) && vk::api_version_minor(version) >= 3 {
+        let mut p3 = vk::FormatProperties3::default();
+        let mut p2 = vk::FormatProperties2::default().push_next(&mut p3);
+        // SAFETY: a live physical device of a Vulkan 1.3 device; the chain is local.
+        unsafe {
+            instance
+                .fns()
+                .get_physical_device_format_properties2(physical.raw(), format, &mut p2)
+        };
+        return Ok(p3.buffer_features);
+    }
+    let live = device.live();
+    let first = live.format_properties(physical, format)?.buffer_features;
+    type F2 = vk::FormatFeatureFlags2;
+    let mut features = F2::from_raw(u64::from(first.as_raw()));
+    if first.contains(vk::FormatFeatureFlags::STORAGE_TEXEL_BUFFER) {
+        let (read, write) = live.with_features(|f| {
+            (
+                f.v10.shader_storage_image_read_without_format,
+                f.v10.shader_storage_image_write_without_format,
+            )
+        });
+        if read == vk::TRUE {
+            features |= F2::STORAGE_READ_WITHOUT_FORMAT;
+        }
+        if write == vk::TRUE {
+            features |= F2::STORAGE_WRITE_WITHOUT_FORMAT;
+        }
+    }
+    Ok(features)
+}
+
+/// Refuses a draw or dispatch whose shaders write the texel buffer view of `d` with
+/// texels of fewer components than its format has (04469), or write or read it as a
+/// storage texel buffer of `Unknown` format where its format's buffer features lack
+/// that (07029, 07030).
+fn texel_buffer_checks(
+    device: &Device,
+    r: &crate::spirv::Resource,
+    shape: crate::spirv::ImageShape,
+    d: &crate::retention::ImageDescriptor,
+    at: &dyn Fn() -> String,
+    rules: &ShaderRules,
+) -> Result<()> {
+    use crate::spirv::ops;
+    written_components(r, d.format, at, rules[16])?;
+    if shape.format != 0 || r.kind != crate::spirv::ResourceKind::StorageTexelBuffer {
+        return Ok(());
+    }
+    let needs = [
+        (
+            ops::WRITE,
+            vk::FormatFeatureFlags2::STORAGE_WRITE_WITHOUT_FORMAT,
+            rules[17],
+            "writes",
+        ),
+        (
+            ops::READ,
+            vk::FormatFeatureFlags2::STORAGE_READ_WITHOUT_FORMAT,
+            rules[18],
+            "reads",
+        ),
+    ];
+    for (op, feature, vuid, what) in needs {
+        if r.ops & op != 0 && !buffer_features2(device, d.format)?.contains(feature) {
+            refuse(
+                vuid,
+                format!("{}: the shader {what} the storage texel buffer with the Unknown format, and the buffer features of the view's format {:?} lack {feature:?}", at(), d.format),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The images of the current subpass's attachments (those of the dynamic
+/// rendering's views), or `None` where the recorder does not know them (a
+/// secondary that continues an instance).
+fn attachment_images<S: State>(recorder: &Recorder<'_, S>) -> Option<Vec<vk::Image>> {
+    let instance = recorder.instance.as_ref()?;
+    if instance.dynamic {
+        return instance.rendering_images.clone();
+    }
+    let record = instance.record.as_ref()?;
+    let used = record.used.get(instance.subpass as usize)?;
+    if used.is_empty() {
+        return Some(Vec::new());
+    }
+    if recorder.pass_images.is_empty() {
+        return None;
+    }
+    Some(
+        used.iter()
+            .filter_map(|a| recorder.pass_images.get(*a as usize).copied())
+            .collect(),
+    )
+}
+
+/// Whether two bindings of memory overlap.
+fn overlaps(a: &crate::retention::Binding, b: &crate::retention::Binding) -> bool {
+    let ((memory_a, offset_a, size_a), (memory_b, offset_b, size_b)) = (*a, *b);
+    memory_a == memory_b
+        && offset_a < offset_b.saturating_add(size_b)
+        && offset_b < offset_a.saturating_add(size_a)
+}
+
+/// A draw's checks of the render pass instance's attachments as its shaders reach
+/// them: each input attachment variable's `InputAttachmentIndex` names a used input
+/// attachment of the current subpass (07468), and its descriptor views the image of
+/// that attachment in its format (07469); no descriptor the shaders declare reaches
+/// the memory of an attachment of the subpass (06537 where the shader may write it,
+/// 06538 otherwise: which commands of the subpass write each attachment is not
+/// followed); and blending only on color attachments whose format features have
+/// `COLOR_ATTACHMENT_BLEND` (04727). Where the attachments are not known (a
+/// secondary continuing an instance without its framebuffer), a draw whose shaders
+/// declare a descriptor of memory is refused.
+fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRules) -> Result<()> {
+    use crate::retention::SlotKind;
+    use crate::spirv::ResourceKind as K;
+    let (Some(instance), Some(pipeline)) = (&recorder.instance, &recorder.bound[0].pipeline) else {
+        return Ok(());
+    };
+    let bound = &recorder.bound[0];
+    let live = recorder.device().live();
+    let slots = |r: &crate::spirv::Resource| {
+        bound
+            .images
+            .get(r.set as usize)
+            .and_then(Option::as_ref)
+            .map(|list| {
+                list.iter()
+                    .filter(|((b, _), _)| *b == r.binding)
+                    .map(|(_, d)| *d)
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default()
+    };
+    let images = attachment_images(recorder);
+    for r in pipeline.resources.iter() {
+        if r.kind == K::InputAttachment {
+            let inputs = instance
+                .record
+                .as_ref()
+                .filter(|_| !instance.dynamic)
+                .and_then(|rec| rec.inputs.get(instance.subpass as usize));
+            let attachment = match (r.input_index, inputs) {
+                (Some(i), Some(inputs)) => inputs
+                    .get(i as usize)
+                    .copied()
+                    .filter(|a| *a != vk::ATTACHMENT_UNUSED),
+                _ => None,
+            };
+            let Some(attachment) = attachment else {
+                refuse(
+                    rules[0],
+                    format!("set {} binding {}: the shader reads an input attachment (InputAttachmentIndex {:?}) that the current subpass does not have", r.set, r.binding, r.input_index),
+                )?;
+                continue;
+            };
+            let format = instance
+                .record
+                .as_ref()
+                .and_then(|rec| rec.attachments.get(attachment as usize))
+                .map(|a| a.0);
+            let image = recorder.pass_images.get(attachment as usize).copied();
+            for d in slots(r).iter().filter(|d| d.kind == SlotKind::Image) {
+                if Some(d.format) != format || image.is_some_and(|i| i != d.image) {
+                    refuse(
+                        rules[1],
+                        format!("set {} binding {}: the input attachment's view (format {:?}) is not compatible with attachment {attachment} of the framebuffer (format {format:?})", r.set, r.binding, d.format),
+                    )?;
+                }
+            }
+            continue;
+        }
+        for d in slots(r) {
+            let object = match d.kind {
+                SlotKind::Image => live.binding(d.image),
+                SlotKind::TexelBuffer | SlotKind::Buffer => live.binding(d.buffer),
+                SlotKind::Sampler => continue,
+            };
+            let writes = match r.kind {
+                K::StorageBuffer => true,
+                K::StorageImage | K::StorageTexelBuffer => {
+                    r.ops & (crate::spirv::ops::WRITE | crate::spirv::ops::ATOMIC) != 0
+                }
+                _ => false,
+            };
+            let vuid = if writes { rules[2] } else { rules[3] };
+            let Some(images) = &images else {
+                return refuse(
+                    vuid,
+                    format!("set {} binding {}: the render pass instance's attachments are not known in this secondary command buffer, so a descriptor of memory may alias one", r.set, r.binding),
+                );
+            };
+            for a in images {
+                let same = d.kind == SlotKind::Image && d.image == *a;
+                let aliased = match (&object, live.binding(*a)) {
+                    (Some(o), Some(b)) => overlaps(o, &b),
+                    _ => false,
+                };
+                if same || aliased {
+                    refuse(
+                        vuid,
+                        format!("set {} binding {}: the descriptor reaches the memory of an attachment of the current subpass (image 0x{:x}), which the shader {} other than as an attachment", r.set, r.binding, a.as_raw(), if writes { "may write" } else { "reads" }),
+                    )?;
+                }
+            }
+        }
+    }
+    blend_checks(recorder, instance, pipeline, rules[4])
+}
+
+/// Refuses a draw whose bound pipeline blends into a color attachment whose
+/// format's features lack `COLOR_ATTACHMENT_BLEND` (unless it discards
+/// rasterization). The features are those of optimal tiling, and of linear tiling
+/// too where an attachment's image is linear or the attachments are not known.
+fn blend_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    instance: &crate::recorder::PassInstance,
+    pipeline: &PipelineRecord,
+    vuid: &'static str,
+) -> Result<()> {
+    if pipeline.blend == 0 || draw_values(recorder, pipeline).discard {
+        return Ok(());
+    }
+    let formats: Vec<vk::Format> = if instance.dynamic {
+        instance
+            .rendering
+            .as_ref()
+            .map_or_else(Vec::new, |r| r.colors.clone())
+    } else {
+        instance
+            .record
+            .as_ref()
+            .and_then(|r| r.color_formats.get(instance.subpass as usize).cloned())
+            .unwrap_or_default()
+    };
+    let device = recorder.device();
+    let live = device.live();
+    let linear = attachment_images(recorder).is_none_or(|images| {
+        images.iter().any(|i| {
+            live.image(*i)
+                .is_some_and(|r| r.tiling == vk::ImageTiling::LINEAR)
+        })
+    });
+    for (i, format) in formats.iter().enumerate() {
+        if i >= 32 || pipeline.blend & (1 << i) == 0 || *format == vk::Format::UNDEFINED {
+            continue;
+        }
+        let props = live.format_properties(device.parent(), *format)?;
+        let mut features = props.optimal_tiling_features;
+        if linear {
+            features &= props.linear_tiling_features;
+        }
+        if !features.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND) {
+            refuse(
+                vuid,
+                format!("the bound pipeline blends into color attachment {i}, and the features of its format {format:?} lack COLOR_ATTACHMENT_BLEND"),
+            )?;
         }
     }
     Ok(())
@@ -4831,6 +5332,64 @@ pub(crate) fn cmd_bind_index_buffer_done<'b, S: State>(
     recorder.bound[0].index = size.map(|size| (size, offset, index_type));
 }
 
+/// A direct indexed draw's index count, first index, first instance, instance
+/// count and vertex offset, with the rules of the indices read inside the index
+/// buffer (07825), of the last instance in a multiview instance (02688) and of the
+/// vertices fetched inside the vertex buffers (02721).
+pub(crate) type IndexedRange = (
+    u32,
+    u32,
+    u32,
+    u32,
+    i32,
+    &'static str,
+    &'static str,
+    &'static str,
+);
+
+/// Refuses an indexed draw that could fetch vertices past a bound vertex buffer.
+/// The indices are the index buffer's contents, which the device reads and the host
+/// does not know, so the vertices are those of every index the index type holds (an
+/// index buffer any safe program can fill); a device with `robustBufferAccess`
+/// enabled keeps every fetch inside the bound range instead, and nothing is refused.
+fn indexed_fetch_checks<S: State>(
+    recorder: &Recorder<'_, S>,
+    ty: vk::IndexType,
+    vertex_offset: i32,
+    instances: (u32, u32),
+    vuid: &'static str,
+) -> Result<()> {
+    let robust = recorder
+        .device()
+        .live()
+        .with_features(|f| f.v10.robust_buffer_access);
+    let reads = recorder.bound[0]
+        .pipeline
+        .as_ref()
+        .is_some_and(|p| !p.vertex_reads.is_empty());
+    if robust == vk::TRUE || !reads {
+        return Ok(());
+    }
+    let largest: u64 = match ty {
+        vk::IndexType::UINT16 => u64::from(u16::MAX),
+        vk::IndexType::UINT8_EXT => u64::from(u8::MAX),
+        _ => u64::from(u32::MAX),
+    };
+    let Ok(first) = u64::try_from(vertex_offset) else {
+        return refuse(
+            vuid,
+            format!("the draw's vertex offset ({vertex_offset}) is negative, so an index it reads can name a vertex before the bound vertex buffers; enable robustBufferAccess to draw with it"),
+        );
+    };
+    vertex_fetch_checks(recorder, (first, largest + 1), instances, vuid).map_err(|e| match e {
+        Error::Validation { vuid, message } => Error::Validation {
+            vuid,
+            message: format!("{message}: an indexed draw may fetch any vertex its {ty:?} indices name (the index buffer's contents are not known on the host); enable robustBufferAccess, or bind vertex buffers that hold every such vertex"),
+        },
+        other => other,
+    })
+}
+
 /// An indexed draw: a pipeline and its sets bound ([`bound_pipeline_checks`]), an index
 /// buffer bound (07312), and, for a direct draw (`range`: index count, first index and
 /// the rule), the indices it reads inside that buffer. Whether robustBufferAccess2 is
@@ -4841,14 +5400,16 @@ pub(crate) fn indexed_draw_checks<S: State>(
     sets_vuid: &'static str,
     bound_vuid: &'static str,
     vertex_vuid: &'static str,
-    range: Option<(u32, u32, u32, u32, &'static str, &'static str)>,
+    range: Option<IndexedRange>,
     draw: &DrawRules,
 ) -> Result<()> {
     draw_checks(recorder, pipeline_vuid, sets_vuid, vertex_vuid, None, draw)?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
         return refuse(bound_vuid, "no index buffer is bound".into());
     };
-    let Some((count, first, first_instance, instance_count, vuid, multiview)) = range else {
+    let Some((count, first, first_instance, instance_count, vertex_offset, vuid, multiview, fetch)) =
+        range
+    else {
         return Ok(());
     };
     multiview_instances(recorder, first_instance, instance_count, multiview)?;
@@ -4865,7 +5426,13 @@ pub(crate) fn indexed_draw_checks<S: State>(
             format!("the draw reads indices up to byte {end} of an index buffer of {size} bytes (firstIndex = {first}, indexCount = {count}, offset = {offset})"),
         )?;
     }
-    Ok(())
+    indexed_fetch_checks(
+        recorder,
+        ty,
+        vertex_offset,
+        (first_instance, instance_count),
+        fetch,
+    )
 }
 
 /// The VUIDs of one bind command's rules, which `vkBindBufferMemory`,
@@ -6713,6 +7280,7 @@ pub(crate) fn render_pass_created(
             subpass_samples: render_pass::subpass_samples(create_info),
             layouts: render_pass::attachment_layouts(create_info),
             used: render_pass::used_attachments(create_info),
+            inputs: render_pass::subpass_inputs(create_info),
             self_dependencies: render_pass::self_dependencies(create_info),
             clear_count: render_pass::clears(create_info),
             taken: render_pass::layouts_taken(create_info),
@@ -6749,6 +7317,7 @@ pub(crate) fn render_pass2_created(
             subpass_samples: render_pass::subpass_samples2(create_info),
             layouts: render_pass::attachment_layouts2(create_info),
             used: render_pass::used_attachments2(create_info),
+            inputs: render_pass::subpass_inputs2(create_info),
             self_dependencies: render_pass::self_dependencies2(create_info),
             clear_count: render_pass::clears2(create_info),
             taken: render_pass::layouts_taken2(create_info),
@@ -6795,6 +7364,7 @@ pub(crate) fn render_pass_begun<S: State>(
         rendering: None,
         rendering_layouts: None,
         rendering_samples: None,
+        rendering_images: None,
     });
 }
 
@@ -6857,10 +7427,19 @@ pub(crate) fn rendering_begun<S: State>(
         .filter_map(|a| live.view(a.image_view))
         .find_map(|v| live.image(v.image))
         .map(|i| i.samples);
+    let images = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .flat_map(|a| [a.image_view, a.resolve_image_view])
+        .filter_map(|v| live.view(v))
+        .map(|v| v.image)
+        .collect();
     recorder.instance = Some(crate::recorder::PassInstance {
         view_mask: raw.view_mask,
         no_attachments,
         dynamic: true,
+        rendering_images: Some(images),
         rendering: Some(Vrc::new(rendering)),
         rendering_layouts: Some((layout(depth), layout(stencil))),
         rendering_samples: samples,

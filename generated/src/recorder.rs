@@ -293,6 +293,10 @@ pub(crate) struct PassInstance {
     /// their views, in this recording; the inheritance info's rasterization samples
     /// in a continuing secondary), if it has any.
     pub rendering_samples: Option<vk::SampleCountFlags>,
+    /// In dynamic rendering begun in this recording: the images of its attachments'
+    /// views and resolve views (`None` in a continuing secondary, whose inheritance
+    /// info does not give them).
+    pub rendering_images: Option<Vec<vk::Image>>,
 }
 
 impl PassInstance {

@@ -205,7 +205,9 @@ pub(crate) struct Live {
     /// submission's checks and its bookkeeping.
     descriptor_gate: Vutex<()>,
     /// The buffer of each live buffer view.
-    buffer_views: Vutex<HashMap<u64, vk::Buffer>>,
+    buffer_views: Vutex<HashMap<u64, (vk::Buffer, vk::Format)>>,
+    /// What each live sampler does, as [`sampler_bits`] gives it.
+    samplers: Vutex<HashMap<u64, u8>>,
     /// The queues got with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`.
     protected_queues: Vutex<std::collections::HashSet<u64>>,
     /// The physical device's `maxTimelineSemaphoreValueDifference`, read once.
@@ -243,20 +245,75 @@ struct SetUse {
 /// (an inline uniform block's: each byte written), sorted.
 pub(crate) type SetWritten = Vrc<Vec<(u32, u32)>>;
 
-/// An image descriptor a set holds: the subresources its view reaches, and the
-/// layout the descriptor says they are in when a command accesses it.
+/// What a descriptor slot of a set holds, as the checks of draws and dispatches
+/// read it: an image view (with the subresources it reaches, the layout the
+/// descriptor says they are in, and a combined image sampler's sampler), a sampler,
+/// a texel buffer view, or a buffer.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ImageDescriptor {
-    /// The view's image.
+    /// Which of them the slot holds.
+    pub kind: SlotKind,
+    /// The view's image (null for a slot that holds no image view).
     pub image: vk::Image,
+    /// The buffer of a texel buffer view or a buffer descriptor (null otherwise).
+    pub buffer: vk::Buffer,
+    /// What the slot's sampler does ([`sampler_bits`]; 0 without a sampler, or for
+    /// one the wrappers did not create).
+    pub sampler: u8,
+    /// The image view was created with a sampler Y'CbCr conversion.
+    pub ycbcr: bool,
     /// The view's subresources.
     pub sel: crate::layouts::Sel,
     /// The descriptor's `imageLayout`.
     pub layout: vk::ImageLayout,
     /// The view's type.
     pub view_type: vk::ImageViewType,
-    /// The view's format.
+    /// The view's format (an image or texel buffer view's; `UNDEFINED` otherwise).
     pub format: vk::Format,
+}
+
+/// What a descriptor slot holds, in [`ImageDescriptor::kind`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SlotKind {
+    /// An image view, alone or with a sampler.
+    Image,
+    /// A sampler alone.
+    Sampler,
+    /// A texel buffer view.
+    TexelBuffer,
+    /// A uniform or storage buffer.
+    Buffer,
+}
+
+/// Sampler [`ImageDescriptor::sampler`] bits: `magFilter` or `minFilter` is
+/// `LINEAR` with `compareEnable` off.
+pub(crate) const SAMPLER_LINEAR: u8 = 1;
+/// `mipmapMode` is `LINEAR` with `compareEnable` off.
+pub(crate) const SAMPLER_MIPMAP_LINEAR: u8 = 2;
+/// `unnormalizedCoordinates` is on.
+pub(crate) const SAMPLER_UNNORMALIZED: u8 = 4;
+/// A sampler Y'CbCr conversion is chained.
+pub(crate) const SAMPLER_YCBCR: u8 = 8;
+
+/// The [`SAMPLER_LINEAR`] and other bits of a sampler created with `info`, the
+/// chained conversion given by `ycbcr`.
+pub(crate) fn sampler_bits(info: &vk::SamplerCreateInfo<'_>, ycbcr: bool) -> u8 {
+    let compare = info.compare_enable == vk::TRUE;
+    let mut bits = 0;
+    if !compare && (info.mag_filter == vk::Filter::LINEAR || info.min_filter == vk::Filter::LINEAR)
+    {
+        bits |= SAMPLER_LINEAR;
+    }
+    if !compare && info.mipmap_mode == vk::SamplerMipmapMode::LINEAR {
+        bits |= SAMPLER_MIPMAP_LINEAR;
+    }
+    if info.unnormalized_coordinates == vk::TRUE {
+        bits |= SAMPLER_UNNORMALIZED;
+    }
+    if ycbcr {
+        bits |= SAMPLER_YCBCR;
+    }
+    bits
 }
 
 /// The image descriptors of a set, by (binding, array element) as written.
@@ -312,6 +369,9 @@ pub(crate) struct RenderPassRecord {
     pub layouts: Vec<AttachmentLayouts>,
     /// The attachments each subpass references.
     pub used: Vec<Vec<u32>>,
+    /// Each subpass's input attachment references: the attachment each names
+    /// (`VK_ATTACHMENT_UNUSED` for an unused one).
+    pub inputs: Vec<Vec<u32>>,
     /// Its dependencies from a subpass to itself.
     pub self_dependencies: Vec<SelfDependency>,
     /// One more than the largest attachment index that a render pass instance
@@ -407,6 +467,8 @@ pub(crate) struct ViewRecord {
     pub base_level: u32,
     /// Its subresource range's first array layer.
     pub base_layer: u32,
+    /// Created with a chained `VkSamplerYcbcrConversionInfo`.
+    pub ycbcr: bool,
 }
 
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
@@ -468,6 +530,9 @@ pub(crate) struct PipelineRecord {
     pub viewports: (u32, u32),
     /// Its depth/stencil and rasterizer discard state, where static.
     pub depth_stencil: crate::recorder::DepthStencil,
+    /// The color attachments (the first 32) its color blend state enables blending
+    /// for, one bit each.
+    pub blend: u32,
 }
 
 impl RenderingFormats {
@@ -535,6 +600,8 @@ pub(crate) struct BindingRecord {
     pub stages: vk::ShaderStageFlags,
     /// Whether it has immutable samplers.
     pub immutable: bool,
+    /// What its immutable samplers do, together ([`sampler_bits`]).
+    pub immutable_bits: u8,
     /// Its `VkDescriptorBindingFlags`.
     pub flags: vk::DescriptorBindingFlags,
 }
@@ -720,6 +787,7 @@ impl Default for Live {
             set_generations: std::sync::atomic::AtomicU64::new(0),
             descriptor_gate: Vutex::new(()),
             buffer_views: Vutex::new(HashMap::default()),
+            samplers: Vutex::new(HashMap::default()),
             protected_queues: Vutex::new(std::collections::HashSet::new()),
         }
     }
@@ -914,6 +982,9 @@ impl Live {
             vk::ObjectType::BUFFER_VIEW => {
                 self.buffer_views.lock().remove(&key.1);
             }
+            vk::ObjectType::SAMPLER => {
+                self.samplers.lock().remove(&key.1);
+            }
             vk::ObjectType::FRAMEBUFFER => {
                 self.framebuffers.lock().remove(&key.1);
                 self.imageless.lock().remove(&key.1);
@@ -1037,6 +1108,70 @@ impl Live {
         }
     }
 
+    /// What a descriptor of type `ty` holds, read from the array its type selects
+    /// (none for an object the device has no record of, or a type the checks of
+    /// draws and dispatches do not read).
+    fn slot_descriptor(
+        &self,
+        ty: vk::DescriptorType,
+        image: impl Fn() -> vk::DescriptorImageInfo,
+        buffer: impl Fn() -> vk::DescriptorBufferInfo,
+        texel: impl Fn() -> vk::BufferView,
+    ) -> Option<ImageDescriptor> {
+        use vk::DescriptorType as T;
+        let empty = ImageDescriptor {
+            kind: SlotKind::Sampler,
+            image: vk::Image::null(),
+            buffer: vk::Buffer::null(),
+            sampler: 0,
+            ycbcr: false,
+            sel: crate::layouts::Sel {
+                aspect: vk::ImageAspectFlags::empty(),
+                mips: (0, 0),
+                layers: (0, 0),
+            },
+            layout: vk::ImageLayout::UNDEFINED,
+            view_type: vk::ImageViewType::default(),
+            format: vk::Format::UNDEFINED,
+        };
+        match ty {
+            T::SAMPLER => {
+                let sampler = self.sampler_bits(image().sampler)?;
+                Some(ImageDescriptor { sampler, ..empty })
+            }
+            T::UNIFORM_TEXEL_BUFFER | T::STORAGE_TEXEL_BUFFER => {
+                let (buffer, format) = self.buffer_view_record(texel())?;
+                Some(ImageDescriptor {
+                    kind: SlotKind::TexelBuffer,
+                    buffer,
+                    format,
+                    ..empty
+                })
+            }
+            T::UNIFORM_BUFFER
+            | T::STORAGE_BUFFER
+            | T::UNIFORM_BUFFER_DYNAMIC
+            | T::STORAGE_BUFFER_DYNAMIC => {
+                let b = buffer().buffer;
+                self.buffer(b)?;
+                Some(ImageDescriptor {
+                    kind: SlotKind::Buffer,
+                    buffer: b,
+                    ..empty
+                })
+            }
+            ty if names_image_layout(ty) => {
+                let info = image();
+                let mut d = self.image_descriptor(&info)?;
+                if ty == T::COMBINED_IMAGE_SAMPLER {
+                    d.sampler = self.sampler_bits(info.sampler).unwrap_or(0);
+                }
+                Some(d)
+            }
+            _ => None,
+        }
+    }
+
     /// The image descriptor of `info`: the subresources its view reaches (none for a
     /// view the device has no record of).
     fn image_descriptor(&self, info: &vk::DescriptorImageInfo) -> Option<ImageDescriptor> {
@@ -1051,7 +1186,11 @@ impl Live {
             (view.base_layer, view.base_layer.saturating_add(view.layers))
         };
         Some(ImageDescriptor {
+            kind: SlotKind::Image,
             image: view.image,
+            buffer: vk::Buffer::null(),
+            sampler: 0,
+            ycbcr: view.ycbcr,
             sel: crate::layouts::Sel {
                 aspect: view.aspect,
                 mips: (view.base_level, view.base_level.saturating_add(view.levels)),
@@ -1213,14 +1352,39 @@ impl Live {
         self.descriptor_gate.lock()
     }
 
-    /// Records a new buffer view's buffer.
-    pub(crate) fn buffer_view_created(&self, raw: vk::BufferView, buffer: vk::Buffer) {
-        self.buffer_views.lock().insert(raw.as_raw(), buffer);
+    /// Records a new buffer view's buffer and format.
+    pub(crate) fn buffer_view_created(
+        &self,
+        raw: vk::BufferView,
+        buffer: vk::Buffer,
+        format: vk::Format,
+    ) {
+        self.buffer_views
+            .lock()
+            .insert(raw.as_raw(), (buffer, format));
     }
 
     /// The buffer of a live buffer view made through the wrappers.
     pub(crate) fn buffer_view(&self, raw: vk::BufferView) -> Option<vk::Buffer> {
+        self.buffer_view_record(raw).map(|(b, _)| b)
+    }
+
+    /// The buffer and format of a live buffer view made through the wrappers.
+    pub(crate) fn buffer_view_record(
+        &self,
+        raw: vk::BufferView,
+    ) -> Option<(vk::Buffer, vk::Format)> {
         self.buffer_views.lock().get(&raw.as_raw()).copied()
+    }
+
+    /// Records what a new sampler does ([`sampler_bits`]).
+    pub(crate) fn sampler_created(&self, raw: vk::Sampler, bits: u8) {
+        self.samplers.lock().insert(raw.as_raw(), bits);
+    }
+
+    /// What a live sampler made through the wrappers does ([`sampler_bits`]).
+    pub(crate) fn sampler_bits(&self, raw: vk::Sampler) -> Option<u8> {
+        self.samplers.lock().get(&raw.as_raw()).copied()
     }
 
     /// Records a new query pool's creation parameters.
@@ -1987,9 +2151,12 @@ impl Live {
                 .map(|i| {
                     let slot = land(i);
                     // SAFETY: as for the readers below.
-                    let named = names_image_layout(w.descriptor_type)
-                        .then(|| self.image_descriptor(&unsafe { read(w.p_image_info, i) }))
-                        .flatten();
+                    let named = self.slot_descriptor(
+                        w.descriptor_type,
+                        || unsafe { read(w.p_image_info, i) },
+                        || unsafe { read(w.p_buffer_info, i) },
+                        || unsafe { read(w.p_texel_buffer_view, i) },
+                    );
                     (slot, named)
                 })
                 .collect();
@@ -2109,13 +2276,12 @@ impl Live {
             for i in 0..e.descriptor_count as usize {
                 let at = data.cast::<u8>().wrapping_add(e.offset + i * e.stride);
                 // SAFETY: as for the readers below.
-                let named = names_image_layout(e.descriptor_type)
-                    .then(|| {
-                        self.image_descriptor(&unsafe {
-                            at.cast::<vk::DescriptorImageInfo>().read_unaligned()
-                        })
-                    })
-                    .flatten();
+                let named = self.slot_descriptor(
+                    e.descriptor_type,
+                    || unsafe { at.cast::<vk::DescriptorImageInfo>().read_unaligned() },
+                    || unsafe { at.cast::<vk::DescriptorBufferInfo>().read_unaligned() },
+                    || unsafe { at.cast::<vk::BufferView>().read_unaligned() },
+                );
                 let slot = Self::landing(
                     layout.as_deref(),
                     e.dst_binding,

@@ -200,7 +200,12 @@ pub(crate) struct Resource {
     /// For an image variable, its image type.
     pub image: Option<ImageShape>,
     /// What the module's instructions do with it ([`ops`] bits).
-    pub ops: u8,
+    pub ops: u16,
+    /// The fewest components of a texel that `OpImageWrite` writes through it (0:
+    /// none is written).
+    pub write_components: u8,
+    /// Its `InputAttachmentIndex` decoration, if it has one.
+    pub input_index: Option<u32>,
 }
 
 /// What a module's instructions do with a resource variable, one bit each: read
@@ -210,15 +215,28 @@ pub(crate) struct Resource {
 /// counts for every image variable of the module.
 pub(crate) mod ops {
     /// `OpImageRead` or `OpImageSparseRead`.
-    pub const READ: u8 = 1;
+    pub const READ: u16 = 1;
     /// `OpImageWrite`.
-    pub const WRITE: u8 = 2;
+    pub const WRITE: u16 = 2;
     /// `OpImageTexelPointer`: an atomic operation on a texel.
-    pub const ATOMIC: u8 = 4;
-    /// A sampling or gather instruction.
-    pub const SAMPLE: u8 = 8;
+    pub const ATOMIC: u16 = 4;
+    /// A sampling, fetch or gather instruction.
+    pub const SAMPLE: u16 = 8;
     /// A sampling or gather instruction with depth comparison.
-    pub const DREF: u8 = 16;
+    pub const DREF: u16 = 16;
+    /// An `OpImageSample*` or `OpImageSparseSample*` instruction with `ImplicitLod`,
+    /// `Dref` or `Proj` in its name, which a sampler with unnormalized coordinates
+    /// cannot serve.
+    pub const IMPLICIT_DREF_PROJ: u16 = 32;
+    /// An `OpImageSample*` or `OpImageSparseSample*` instruction with a LOD bias or
+    /// an offset among its image operands.
+    pub const SAMPLE_BIAS_OFFSET: u16 = 64;
+    /// Any image instruction with `ConstOffset`, `Offset` or `ConstOffsets`.
+    pub const OFFSET: u16 = 128;
+    /// Any image instruction other than `OpImageSample*` and `OpImageSparseSample*`
+    /// (fetches, gathers, reads, writes, atomics, queries), which an image with a
+    /// sampler Y'CbCr conversion cannot serve.
+    pub const NOT_SAMPLE: u16 = 256;
 }
 
 /// What a module's shaders need from a pipeline layout: every resource variable it
@@ -467,6 +485,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const LOCATION: u32 = 30;
     const BINDING: u32 = 33;
     const DESCRIPTOR_SET: u32 = 34;
+    const INPUT_ATTACHMENT_INDEX: u32 = 43;
     const PUSH_CONSTANT: u32 = 9;
     let mut m = Module::default();
     let mut variables: Vec<(u32, u32, u32)> = Vec::new();
@@ -555,25 +574,41 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             continue;
         };
         let (element, count) = m.element(pointee);
+        let (ops, write_components) = used.get(&id).copied().unwrap_or((0, 0));
         out.resources.push(Resource {
             set,
             binding,
             kind: m.kind(storage, element),
             count,
             image: m.image_shape(element),
-            ops: used.get(&id).copied().unwrap_or(0),
+            ops,
+            write_components,
+            input_index: m.decorations.get(&(id, INPUT_ATTACHMENT_INDEX)).copied(),
         });
     }
     // An operation whose variable was not found may be on any image variable.
     for r in out.resources.iter_mut().filter(|r| r.image.is_some()) {
-        r.ops |= unplaced;
+        r.ops |= unplaced.0;
+        r.write_components = fewest(r.write_components, unplaced.1);
     }
     out
 }
 
-/// The [`ops`] each variable of `variables` takes from the module's instructions
+/// The fewer of two texel component counts, 0 standing for none written.
+fn fewest(a: u8, b: u8) -> u8 {
+    match (a, b) {
+        (0, n) | (n, 0) => n,
+        (a, b) => a.min(b),
+    }
+}
+
+/// What a module's instructions do with one variable: [`ops`] bits, and the fewest
+/// components of a texel `OpImageWrite` writes through it (0: none).
+type Uses = (u16, u8);
+
+/// The [`Uses`] each variable of `variables` takes from the module's instructions
 /// (by variable id), and those on values of no variable found.
-fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, u8>, u8) {
+fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, Uses>, Uses) {
     const OP_FUNCTION: u32 = 54;
     const OP_FUNCTION_PARAMETER: u32 = 55;
     const OP_FUNCTION_CALL: u32 = 57;
@@ -589,12 +624,28 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, u
     const OP_SELECT: u32 = 169;
     const OP_PHI: u32 = 245;
     const OP_IMAGE_SPARSE_READ: u32 = 320;
-    // Sampling and gather instructions: (opcode, with depth comparison).
+    // Sampling, fetch and gather instructions: (opcode, with depth comparison).
     let sample = |op: u32| match op {
         87 | 88 | 91 | 92 | 95 | 96 | 305 | 306 | 309 | 310 | 313 | 314 => Some(false),
         89 | 90 | 93 | 94 | 97 | 307 | 308 | 311 | 312 | 315 => Some(true),
         _ => None,
     };
+    // Where each image instruction's image operands mask is (an index into the
+    // operands after the opcode), and whether it is an `OpImageSample*` or
+    // `OpImageSparseSample*` instruction.
+    let operands_at = |op: u32| match op {
+        87 | 88 | 91 | 92 | 305 | 306 | 309 | 310 => Some((4, true)),
+        89 | 90 | 93 | 94 | 307 | 308 | 311 | 312 => Some((5, true)),
+        95 | 98 | 313 | 320 => Some((4, false)),
+        96 | 97 | 314 | 315 => Some((5, false)),
+        OP_IMAGE_WRITE => Some((3, false)),
+        _ => None,
+    };
+    // Image operands: Bias, ConstOffset, Offset, ConstOffsets.
+    const BIAS: u32 = 0x1;
+    const OFFSETS: u32 = 0x8 | 0x10 | 0x20;
+    const OP_IMAGE_QUERY_SIZE_LOD: u32 = 103;
+    const OP_IMAGE_QUERY_SAMPLES: u32 = 107;
     // Each instruction (opcode and operands), and the parameters of each function.
     let mut code: Vec<(u32, &[u32])> = Vec::new();
     let mut params: HashMap<u32, Vec<u32>> = HashMap::new();
@@ -670,31 +721,93 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, u
             break;
         }
     }
-    let mut used: HashMap<u32, u8> = HashMap::new();
-    let mut unplaced = 0u8;
-    let mut mark = |id: u32, bits: u8| match origin.get(&id) {
-        Some(vars) => {
-            for v in vars {
-                *used.entry(*v).or_default() |= bits;
-            }
+    // The type of each value that a texel written with `OpImageWrite` can be:
+    // instructions with a result type and a result, the result type first.
+    let typed = |op: u32| matches!(op, 41..=52 | 54 | 55 | 57 | 59..=61 | 65..=70 | 77..=98 | 100..=217 | 229..=245);
+    let type_of: HashMap<u32, u32> = code
+        .iter()
+        .filter(|(op, _)| typed(*op))
+        .filter_map(|(_, w)| Some((*w.get(1)?, *w.first()?)))
+        .collect();
+    let mut types: HashMap<u32, (u32, u32)> = HashMap::new();
+    for &(op, w) in &code {
+        if let (OP_TYPE_VECTOR, [id, _, count, ..]) = (op, w) {
+            types.insert(*id, (op, *count));
         }
-        None => unplaced |= bits,
+    }
+    // A texel's components: a vector's count, or one for a scalar.
+    let components = |texel: u32| -> u8 {
+        let count = type_of
+            .get(&texel)
+            .and_then(|ty| types.get(ty))
+            .map_or(1, |(_, n)| *n);
+        u8::try_from(count).unwrap_or(u8::MAX)
+    };
+    let mut used: HashMap<u32, Uses> = HashMap::new();
+    let mut unplaced: Uses = (0, 0);
+    let mut mark = |id: u32, bits: u16, written: u8| {
+        let add = |u: &mut Uses| {
+            u.0 |= bits;
+            u.1 = fewest(u.1, written);
+        };
+        match origin.get(&id) {
+            Some(vars) => {
+                for v in vars {
+                    add(used.entry(*v).or_default());
+                }
+            }
+            None => add(&mut unplaced),
+        }
     };
     for &(op, w) in &code {
+        // The operands mask of an image instruction, where it has one.
+        let operands =
+            operands_at(op).map(|(at, sampling)| (w.get(at).copied().unwrap_or(0), sampling));
+        let offsets = match operands {
+            Some((mask, sampling)) => {
+                let mut bits = 0;
+                if mask & OFFSETS != 0 {
+                    bits |= ops::OFFSET;
+                }
+                if sampling && mask & (BIAS | OFFSETS) != 0 {
+                    bits |= ops::SAMPLE_BIAS_OFFSET;
+                }
+                bits
+            }
+            None => 0,
+        };
         match (op, w) {
-            (OP_IMAGE_TEXEL_POINTER, [_, _, image, ..]) => mark(*image, ops::ATOMIC),
-            (OP_IMAGE_READ | OP_IMAGE_SPARSE_READ, [_, _, image, ..]) => mark(*image, ops::READ),
-            (OP_IMAGE_WRITE, [image, ..]) => mark(*image, ops::WRITE),
+            (OP_IMAGE_TEXEL_POINTER, [_, _, image, ..]) => {
+                mark(*image, ops::ATOMIC | ops::NOT_SAMPLE, 0)
+            }
+            (OP_IMAGE_READ | OP_IMAGE_SPARSE_READ, [_, _, image, ..]) => {
+                mark(*image, ops::READ | ops::NOT_SAMPLE | offsets, 0)
+            }
+            (OP_IMAGE_WRITE, [image, _, texel, ..]) => mark(
+                *image,
+                ops::WRITE | ops::NOT_SAMPLE | offsets,
+                components(*texel),
+            ),
+            (OP_IMAGE_QUERY_SIZE_LOD..=OP_IMAGE_QUERY_SAMPLES, [_, _, image, ..]) => {
+                mark(*image, ops::NOT_SAMPLE, 0)
+            }
             (op, [_, _, image, ..]) => {
                 if let Some(dref) = sample(op) {
-                    mark(
-                        *image,
-                        if dref {
-                            ops::SAMPLE | ops::DREF
-                        } else {
-                            ops::SAMPLE
-                        },
-                    );
+                    let mut bits = ops::SAMPLE | offsets;
+                    if dref {
+                        bits |= ops::DREF;
+                    }
+                    match operands_at(op) {
+                        Some((_, true)) => {
+                            let implicit = matches!(op, 87 | 89 | 91 | 93 | 305 | 307 | 309 | 311);
+                            let proj = matches!(op, 91..=94 | 309..=312);
+                            if implicit || proj || dref {
+                                bits |= ops::IMPLICIT_DREF_PROJ;
+                            }
+                        }
+                        _ => bits |= ops::NOT_SAMPLE,
+                    }
+                    mark(*image, bits, 0);
                 }
             }
             _ => {}

@@ -166,7 +166,7 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
         if checked {
             rec.cmd_push_constants(layout, stage, 0, black_box(&PUSH))
                 .expect("recorded");
-            unsafe { rec.cmd_draw(36, 1, black_box(i), 0) }.expect("recorded");
+            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
         } else {
             // SAFETY: the same valid calls as the checked branch makes.
             unsafe {

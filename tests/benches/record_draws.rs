@@ -114,7 +114,7 @@ fn main() {
         for i in 0..DRAWS {
             rec.cmd_push_constants(layout, vk::ShaderStageFlags::FRAGMENT, 0, black_box(&push))
                 .expect("recorded");
-            unsafe { rec.cmd_draw(36, 1, black_box(i), 0) }.expect("recorded");
+            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
         }
         rec.cmd_end_render_pass().end().expect("end");
     };

@@ -301,7 +301,7 @@ fn main() {
             &color,
         )
         .expect("push");
-        unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("draw");
+        rec.cmd_draw(3, 1, 0, 0).expect("draw");
     }
     let per_draw = (LIVE.load(Ordering::Relaxed) - before) as f64 / COUNT as f64;
     rec.cmd_end_render_pass().end().expect("end");

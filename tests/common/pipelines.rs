@@ -392,7 +392,7 @@ impl Pipelines {
             &color,
         )
         .expect("recorded");
-        unsafe { rec.cmd_draw(3, 1, 0, 0) }.expect("recorded");
+        rec.cmd_draw(3, 1, 0, 0).expect("recorded");
         let mut rec = rec.cmd_end_render_pass();
         if let Some(buffer) = readback {
             let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)

@@ -200,7 +200,11 @@ fn main() -> std::process::ExitCode {
         } else {
             Layout::grid(args.count, args.seed)?
         };
-        let req = Requirements::core("teapots_ash");
+        // The same device features as tuff's scene, so both draw alike.
+        let req = Requirements {
+            robust_buffer_access: true,
+            ..Requirements::core("teapots_ash")
+        };
         raw_ash::run(&args.common, req, |device, o, render_pass| {
             Teapots::new(device, o, render_pass, layout)
         })

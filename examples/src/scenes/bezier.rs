@@ -145,10 +145,7 @@ impl Scene for Bezier {
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
         // handle went missing; the speckle test caught it).
         for patch in 0..PATCHES.len() as u32 {
-            // SAFETY: the pipeline bound above was made for this render pass and subpass with
-            // this layout; its sets, vertex and index buffers and dynamic viewport and scissor
-            // are bound and set, and every index is within the vertex buffer.
-            unsafe { rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0) }?;
+            rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
         }
         Ok(())
     }

@@ -42,6 +42,7 @@ pub fn requirements(options: &Options) -> Requirements {
         scene: "bezier",
         tessellation_shader: true,
         fill_mode_non_solid: options.wireframe,
+        robust_buffer_access: false,
         window: false,
     }
 }

@@ -76,10 +76,7 @@ impl Scene for Triangle {
     ) -> tuff::Result<()> {
         rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
         rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
-        // SAFETY: the pipeline bound above was made for this render pass and subpass with this
-        // layout; its sets, vertex buffers and dynamic viewport and scissor are bound and set,
-        // and the shaders read only what they bind.
-        unsafe { rec.cmd_draw(3, 1, 0, 0) }?;
+        rec.cmd_draw(3, 1, 0, 0)?;
         Ok(())
     }
 }

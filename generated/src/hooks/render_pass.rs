@@ -276,6 +276,15 @@ impl Pass {
     /// Each subpass's color attachments' formats and depth/stencil attachment's
     /// format, for the render pass's record. An index past the attachments (which
     /// only the unchecked path lets through) reads as `UNDEFINED`.
+    /// Each subpass's input attachment references: the attachment each names
+    /// (`VK_ATTACHMENT_UNUSED` for an unused one).
+    fn inputs(&self) -> Vec<Vec<u32>> {
+        self.subpasses
+            .iter()
+            .map(|s| s.inputs.iter().map(|r| r.attachment).collect())
+            .collect()
+    }
+
     fn formats(&self) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
         let format = |r: &Ref| {
             self.attachments
@@ -699,6 +708,16 @@ pub(crate) fn subpass_formats(
     create_info: &RenderPassCreateInfo<'_>,
 ) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
     Pass::of(create_info).formats()
+}
+
+/// Each subpass's input attachment references, for `vkCreateRenderPass`'s record.
+pub(crate) fn subpass_inputs(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {
+    Pass::of(create_info).inputs()
+}
+
+/// [`subpass_inputs`] for `vkCreateRenderPass2`.
+pub(crate) fn subpass_inputs2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<u32>> {
+    Pass::of2(create_info).inputs()
 }
 
 /// Each subpass's depth/stencil layouts, for `vkCreateRenderPass`'s record.

@@ -510,6 +510,14 @@ pub(crate) fn image_view_created(
                 aspect: r.aspect_mask,
                 base_level: r.base_mip_level,
                 base_layer: r.base_array_layer,
+                // SAFETY: as for the usage info above.
+                ycbcr: unsafe {
+                    chained::<vk::SamplerYcbcrConversionInfo<'_>>(
+                        info.p_next,
+                        vk::StructureType::SAMPLER_YCBCR_CONVERSION_INFO,
+                    )
+                }
+                .is_some(),
             },
         );
     }

@@ -148,6 +148,13 @@ pub(super) fn emit(model: &Model) -> TokenStream {
             _ => Some(1),
         }
     });
+    // How many components a color format's texels have (what a texel written to
+    // it with OpImageWrite must have at least).
+    let component_arms = value_arms(model, |f| {
+        f.color()
+            .then(|| u32::try_from(f.components.len()).ok())
+            .flatten()
+    });
     let number = |name: &str| {
         model
             .enum_numbers
@@ -226,6 +233,15 @@ pub(super) fn emit(model: &Model) -> TokenStream {
         pub(crate) fn color_numeric(format: vk::Format) -> Option<u32> {
             Some(match format.as_raw() {
                 #(#numeric_arms)*
+                _ => return None,
+            })
+        }
+
+        /// How many components a color format has (vk.xml's `<component>`s); `None`
+        /// for a depth/stencil format or one the registry does not describe.
+        pub(crate) fn color_components(format: vk::Format) -> Option<u32> {
+            Some(match format.as_raw() {
+                #(#component_arms)*
                 _ => return None,
             })
         }

@@ -390,6 +390,20 @@ const UNPROVEN_PROTECTED_ACCESS: &str = "checked by the safe methods in every bu
 const UNPROVEN_PROTECTED_BUFFER: &str = "checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected";
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 
+const INDEXED_FETCH: &str = "checks, once per indexed draw and unless the device enabled robustBufferAccess (which keeps every vertex fetch inside the bound range), that the vertices every index of the bound index type can name (its largest value, plus the vertex offset; a negative offset is refused) and the instances drawn lie inside the range of each bound vertex buffer the pipeline's vertex shader reads, as for a direct draw; the index buffer's contents are the device's, so no smaller bound is known (the 1.3.239 layer does not check it: proven by the error alone)";
+const SAMPLER_LINEAR: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules sample, against the samplers that may sample it (a combined image sampler's own and its binding's immutable ones; for a separate image, every sampler the modules declare, as which sampler an OpSampledImage pairs with which image is not followed): with a LINEAR filter or mipmap mode (and no depth comparison), the view's format features (VkFormatProperties3, for its image's tiling) must have SAMPLED_IMAGE_FILTER_LINEAR; samplers record their filters when they are made";
+const SAMPLER_UNNORMALIZED: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules sample, against the samplers that may sample it (as for the linear filter rule): with unnormalized coordinates, a view of type 1D or 2D only, and no OpImageSample instruction with ImplicitLod, Dref or Proj, LOD bias or offset on the variable (read from the module's SPIR-V when it was made, followed from the variable as for atomics)";
+const UNPROVEN_DISPATCH_SAMPLERS: &str = "checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet";
+const UNPROVEN_UNNORMALIZED_VIEW: &str = "checked by the safe methods in every build (each image view a sampler with unnormalized coordinates may sample, as for None-02703, against the 1D and 2D view types), but no test breaks it yet: the tests' sampled views are 2D";
+const UNPROVEN_TEXEL_COMPONENTS: &str = "checked by the safe methods in every build (each image or texel buffer view at a binding whose variable the pipeline's modules write with OpImageWrite, against the fewest components of the texels written, read from the module's SPIR-V), but no test breaks it: GLSL's imageStore always writes four components, and the test shaders are GLSL";
+const UNPROVEN_TEXEL_WITHOUT_FORMAT: &str = "checked by the safe methods in every build (each texel buffer view at a binding whose storage texel buffer variable has the Unknown format and that the pipeline's modules write or read, against its format's VkFormatProperties3 buffer features), but no test breaks it: lavapipe reads and writes every storage texel buffer format without a format";
+const UNPROVEN_YCBCR: &str = "checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion";
+const UNPROVEN_INPUT_WRITTEN: &str = "checked by the safe methods in every build (the check of None-02699: every descriptor of a binding an input attachment variable of the pipeline's modules declares was written when the set was bound), but no test breaks it apart from that rule";
+const UNPROVEN_INPUT_ATTACHMENTS: &str = "checked by the safe methods in every build (once per change of the bound state, each input attachment variable's InputAttachmentIndex, read from the module's SPIR-V, against the current subpass's input attachment references, kept from the render pass's creation, and its descriptor's view against that attachment's format and the framebuffer's image; in dynamic rendering no input attachment is valid), but no test breaks it yet";
+const ATTACHMENT_MEMORY: &str = "checked by the safe methods in every build (once per change of the bound state, the memory each descriptor the pipeline's modules declare reaches (an image view's image, a texel buffer view's or buffer descriptor's buffer, where each is bound) against the memory of the current subpass's attachments (the framebuffer's views' images, or the dynamic rendering's views' and resolve views'): a descriptor the shader may write (a storage buffer, or a storage image or texel buffer it writes or uses atomically) names the first rule, any other the second, as which commands of the subpass write each attachment is not followed; in a secondary continuing an instance whose attachments are not known, a draw whose shaders declare such a descriptor is refused), but no test proves it against the layer: an attachment in a render pass instance is in an attachment layout, so a descriptor that reaches it breaks VkDescriptorImageInfo-imageLayout-00344 too, which the 1.3.239 layer names instead";
+const UNPROVEN_ATTACHMENT_READ_BEFORE: &str = "checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules";
+const UNPROVEN_BLEND: &str = "checked by the safe methods in every build (once per change of the bound state, unless rasterization is discarded, the color attachments the bound pipeline blends into, recorded at its creation, against the features of the instance's color formats, optimal tiling and linear where an attachment image is linear or the attachments are not known), but no test breaks it: the pipeline's creation refuses the same blending for its render pass or rendering formats first";
+
 /// The `DrawRules` of a draw command, as the Rust expression its hooks take: a
 /// reference to a constant, so a draw passes a pointer rather than building the
 /// struct.
@@ -470,7 +484,17 @@ macro_rules! draw_rules {
             $command,
             "-scissorCount-03418\", \"VUID-",
             $command,
-            "-viewportCount-03419\"], shader: ",
+            "-viewportCount-03419\"], attachments: [\"VUID-",
+            $command,
+            "-OpTypeImage-07468\", \"VUID-",
+            $command,
+            "-None-07469\", \"VUID-",
+            $command,
+            "-None-06537\", \"VUID-",
+            $command,
+            "-None-06538\", \"VUID-",
+            $command,
+            "-blendEnable-04727\"], shader: ",
             shader_rules!($command, $protected),
             " }; &RULES }"
         )
@@ -501,7 +525,29 @@ macro_rules! shader_rules {
             $command,
             "-commandBuffer-02707\", \"",
             $protected,
-            "\"]"
+            "\", \"VUID-",
+            $command,
+            "-magFilter-04553\", \"VUID-",
+            $command,
+            "-mipmapMode-04770\", \"VUID-",
+            $command,
+            "-None-02702\", \"VUID-",
+            $command,
+            "-None-02703\", \"VUID-",
+            $command,
+            "-None-02704\", \"VUID-",
+            $command,
+            "-None-04115\", \"VUID-",
+            $command,
+            "-OpImageWrite-04469\", \"VUID-",
+            $command,
+            "-OpTypeImage-07029\", \"VUID-",
+            $command,
+            "-OpTypeImage-07030\", \"VUID-",
+            $command,
+            "-None-06550\", \"VUID-",
+            $command,
+            "-ConstOffset-06551\"]"
         )
     };
 }
@@ -541,6 +587,17 @@ macro_rules! bound {
                 (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
                 (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
                 (concat!("VUID-", $command, "-commandBuffer-02707"), How::User(UNPROVEN_PROTECTED_ACCESS)),
+                (concat!("VUID-", $command, "-magFilter-04553"), How::User(UNPROVEN_DISPATCH_SAMPLERS)),
+                (concat!("VUID-", $command, "-mipmapMode-04770"), How::User(UNPROVEN_DISPATCH_SAMPLERS)),
+                (concat!("VUID-", $command, "-None-02702"), How::User(UNPROVEN_UNNORMALIZED_VIEW)),
+                (concat!("VUID-", $command, "-None-02703"), How::User(UNPROVEN_DISPATCH_SAMPLERS)),
+                (concat!("VUID-", $command, "-None-02704"), How::User(UNPROVEN_DISPATCH_SAMPLERS)),
+                (concat!("VUID-", $command, "-None-04115"), How::User(UNPROVEN_TEXEL_COMPONENTS)),
+                (concat!("VUID-", $command, "-OpImageWrite-04469"), How::User(UNPROVEN_TEXEL_COMPONENTS)),
+                (concat!("VUID-", $command, "-OpTypeImage-07029"), How::User(UNPROVEN_TEXEL_WITHOUT_FORMAT)),
+                (concat!("VUID-", $command, "-OpTypeImage-07030"), How::User(UNPROVEN_TEXEL_WITHOUT_FORMAT)),
+                (concat!("VUID-", $command, "-None-06550"), How::User(UNPROVEN_YCBCR)),
+                (concat!("VUID-", $command, "-ConstOffset-06551"), How::User(UNPROVEN_YCBCR)),
                 $($extra,)*
             ],
             ..NONE
@@ -645,6 +702,24 @@ macro_rules! with_draw_state {
             (concat!("VUID-", $command, "-OpTypeImage-07027"), How::User(UNPROVEN_WITHOUT_FORMAT)),
             (concat!("VUID-", $command, "-OpTypeImage-07028"), How::Dynamic(READ_WITHOUT_FORMAT)),
             (concat!("VUID-", $command, "-commandBuffer-02707"), How::User(UNPROVEN_PROTECTED_ACCESS)),
+            (concat!("VUID-", $command, "-magFilter-04553"), How::Dynamic(SAMPLER_LINEAR)),
+            (concat!("VUID-", $command, "-mipmapMode-04770"), How::Dynamic(SAMPLER_LINEAR)),
+            (concat!("VUID-", $command, "-None-02702"), How::User(UNPROVEN_UNNORMALIZED_VIEW)),
+            (concat!("VUID-", $command, "-None-02703"), How::Dynamic(SAMPLER_UNNORMALIZED)),
+            (concat!("VUID-", $command, "-None-02704"), How::Dynamic(SAMPLER_UNNORMALIZED)),
+            (concat!("VUID-", $command, "-None-04115"), How::User(UNPROVEN_TEXEL_COMPONENTS)),
+            (concat!("VUID-", $command, "-OpImageWrite-04469"), How::User(UNPROVEN_TEXEL_COMPONENTS)),
+            (concat!("VUID-", $command, "-OpTypeImage-07029"), How::User(UNPROVEN_TEXEL_WITHOUT_FORMAT)),
+            (concat!("VUID-", $command, "-OpTypeImage-07030"), How::User(UNPROVEN_TEXEL_WITHOUT_FORMAT)),
+            (concat!("VUID-", $command, "-None-06550"), How::User(UNPROVEN_YCBCR)),
+            (concat!("VUID-", $command, "-ConstOffset-06551"), How::User(UNPROVEN_YCBCR)),
+            (concat!("VUID-", $command, "-None-07748"), How::User(UNPROVEN_INPUT_WRITTEN)),
+            (concat!("VUID-", $command, "-OpTypeImage-07468"), How::User(UNPROVEN_INPUT_ATTACHMENTS)),
+            (concat!("VUID-", $command, "-None-07469"), How::User(UNPROVEN_INPUT_ATTACHMENTS)),
+            (concat!("VUID-", $command, "-None-06537"), How::User(ATTACHMENT_MEMORY)),
+            (concat!("VUID-", $command, "-None-06538"), How::User(ATTACHMENT_MEMORY)),
+            (concat!("VUID-", $command, "-None-06539"), How::User(UNPROVEN_ATTACHMENT_READ_BEFORE)),
+            (concat!("VUID-", $command, "-blendEnable-04727"), How::User(UNPROVEN_BLEND)),
             (concat!("VUID-", $command, "-viewportCount-03417"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-scissorCount-03418"), How::Dynamic(WITH_COUNT)),
             (concat!("VUID-", $command, "-viewportCount-03419"), How::Dynamic(WITH_COUNT)),
@@ -1266,6 +1341,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateSampler",
         check_last: call("hooks::sampler_checks", &["self", "create_info"]),
+        created: call("hooks::sampler_created", &["self", "created", "create_info"]),
         settles: &[
             ("VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072", How::Dynamic(SAMPLER_MODES)),
             ("VUID-VkSamplerCreateInfo-addressModeU-01079", How::Dynamic(SAMPLER_MODES)),
@@ -2321,7 +2397,7 @@ pub const SPECIALS: &[Special] = &[
     indexed!(
         "vkCmdDrawIndexed",
         "VUID-vkCmdDrawIndexed-commandBuffer-02712",
-        "Some((index_count, first_index, first_instance, instance_count, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\", \"VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688\"))",
+        "Some((index_count, first_index, first_instance, instance_count, vertex_offset, \"VUID-vkCmdDrawIndexed-robustBufferAccess2-07825\", \"VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688\", \"VUID-vkCmdDrawIndexed-None-02721\"))",
         [
             ("VUID-vkCmdDrawIndexed-None-02700", How::Dynamic(PIPELINE_BOUND)),
             ("VUID-vkCmdDrawIndexed-None-02697", How::Dynamic(SETS_BOUND)),
@@ -2329,6 +2405,7 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCmdDrawIndexed-None-04007", How::Dynamic(VERTEX_BOUND)),
             ("VUID-vkCmdDrawIndexed-robustBufferAccess2-07825", How::Dynamic(INDEX_RANGE)),
             ("VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688", How::Dynamic(MULTIVIEW_INSTANCES)),
+            ("VUID-vkCmdDrawIndexed-None-02721", How::Dynamic(INDEXED_FETCH)),
             ("VUID-vkCmdDrawIndexed-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
             ("VUID-vkCmdDrawIndexed-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
         ]

@@ -1679,25 +1679,31 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
             return Err(Error::Vk(r));
         }
         Ok(
-            Sampler::from_raw(
-                out,
+            crate::hooks::sampler_created(
                 self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::sampler_create_info(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
+                Sampler::from_raw(
+                    out,
+                    self,
+                    {
+                        let live = self.live();
+                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        // SAFETY: the safe info stores every array with its length and chains only
+                        // structs pushed through `push_next`.
+                        unsafe {
+                            crate::reach::sampler_create_info(
+                                create_info.as_raw(),
+                                live,
+                                &mut kept,
+                            )
+                        };
+                        (!kept.is_empty())
+                            .then(|| {
+                                tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
+                            })
+                    },
+                    true,
+                ),
+                create_info,
             ),
         )
     }

@@ -7,25 +7,14 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 17 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdDispatchBase-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdDispatchBase-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDispatchBase-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
 - `VUID-vkCmdDispatchBase-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
-- `VUID-vkCmdDispatchBase-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
-- `VUID-vkCmdDispatchBase-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
-- `VUID-vkCmdDispatchBase-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
-- `VUID-vkCmdDispatchBase-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
-- `VUID-vkCmdDispatchBase-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
 - `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX`
 - `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY`
 - `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ`
 - `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
-- `VUID-vkCmdDispatchBase-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchBase-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
-- `VUID-vkCmdDispatchBase-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
-- `VUID-vkCmdDispatchBase-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
 
 # Valid usage
 
@@ -48,11 +37,16 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
 - 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
+- 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
+- 2: checked by the safe methods in every build (each image or texel buffer view at a binding whose variable the pipeline's modules write with OpImageWrite, against the fewest components of the texels written, read from the module's SPIR-V), but no test breaks it: GLSL's imageStore always writes four components, and the test shaders are GLSL
+- 1: checked by the safe methods in every build (each image view a sampler with unnormalized coordinates may sample, as for None-02703, against the 1D and 2D view types), but no test breaks it yet: the tests' sampled views are 2D
 - 1: checked by the safe methods in every build (each image view at a binding whose storage image variable has the Unknown format and that the pipeline's modules write, against its format's VkFormatProperties3 features), but no test breaks it: lavapipe writes every storage format without a format
 - 1: checked by the safe methods in every build (each image view at a binding whose variable the pipeline's modules sample with depth comparison, OpImage*Dref*, against its format's VkFormatProperties3 features for its image's tiling; before Vulkan 1.3, a depth format that can be sampled), but no test breaks it yet: no test shader samples with depth comparison
+- 2: checked by the safe methods in every build (each texel buffer view at a binding whose storage texel buffer variable has the Unknown format and that the pipeline's modules write or read, against its format's VkFormatProperties3 buffer features), but no test breaks it: lavapipe reads and writes every storage texel buffer format without a format
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
+- 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 49: explicit rule; the wrappers do not check it*/
+- 38: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -78,6 +72,17 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
                 "VUID-vkCmdDispatchBase-OpTypeImage-07028",
                 "VUID-vkCmdDispatchBase-commandBuffer-02707",
                 "VUID-vkCmdDispatchBase-commandBuffer-02712",
+                "VUID-vkCmdDispatchBase-magFilter-04553",
+                "VUID-vkCmdDispatchBase-mipmapMode-04770",
+                "VUID-vkCmdDispatchBase-None-02702",
+                "VUID-vkCmdDispatchBase-None-02703",
+                "VUID-vkCmdDispatchBase-None-02704",
+                "VUID-vkCmdDispatchBase-None-04115",
+                "VUID-vkCmdDispatchBase-OpImageWrite-04469",
+                "VUID-vkCmdDispatchBase-OpTypeImage-07029",
+                "VUID-vkCmdDispatchBase-OpTypeImage-07030",
+                "VUID-vkCmdDispatchBase-None-06550",
+                "VUID-vkCmdDispatchBase-ConstOffset-06551",
             ],
         )?;
         {
@@ -102,7 +107,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
