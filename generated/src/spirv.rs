@@ -886,7 +886,7 @@ mod tests {
         // imageLoad reads the storage image; the output block is not an image.
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 0),
-            Some(ops::READ)
+            Some(ops::READ | ops::NOT_SAMPLE)
         );
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 1),
@@ -894,8 +894,23 @@ mod tests {
         );
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/atomic.comp.spv"), 0),
-            Some(ops::ATOMIC)
+            Some(ops::ATOMIC | ops::NOT_SAMPLE)
         );
+        // texture() samples with an implicit LOD; textureLodOffset with an offset.
+        assert_eq!(
+            ops_of(include_bytes!("../../shaders/spv/sample_uint.frag.spv"), 0),
+            Some(ops::SAMPLE | ops::IMPLICIT_DREF_PROJ)
+        );
+        assert_eq!(
+            ops_of(include_bytes!("../../shaders/spv/sample_lod.frag.spv"), 0),
+            Some(ops::SAMPLE | ops::SAMPLE_BIAS_OFFSET | ops::OFFSET)
+        );
+        // imageStore writes four components.
+        let store = interface(&words(include_bytes!(
+            "../../shaders/spv/image_store.frag.spv"
+        )));
+        assert_eq!(store.resources[0].write_components, 4);
+        assert_eq!(store.resources[0].ops, ops::WRITE | ops::NOT_SAMPLE);
         let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
         assert!(frag.resources.is_empty());
         // The test fragment shader pushes one vec4.
