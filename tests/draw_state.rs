@@ -755,34 +755,12 @@ fn draws_read_views_their_shaders_can_read() {
         ),
     ];
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    let clear = [vk::ClearValue::default()];
-    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-        .render_area(area())
-        .clear_values(&clear);
     for (code, view, suffix) in cases {
         let reader = image_draw(&s, &p, &target.render_pass, view, code);
         for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
             let rule = format!("VUID-{command}-{suffix}");
             tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
-                let rec = cb
-                    .begin(&tuff::CommandBufferBeginInfo::new())
-                    .expect("begin");
-                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &reader.pipeline)
-                    .expect("bind");
-                rec.cmd_bind_descriptor_sets(
-                    vk::PipelineBindPoint::GRAPHICS,
-                    &reader.layout,
-                    0,
-                    &[&reader.set],
-                    &[],
-                )
-                .expect("set");
-                set_viewport(&mut rec);
-                set_scissor(&mut rec);
-                let r = draw(&mut rec, unchecked);
-                drop(rec);
-                r
+                record_descriptor_draw(&mut cb, &target, &reader, unchecked, &|rec, u| draw(rec, u))
             });
         }
     }
@@ -1430,26 +1408,9 @@ fn draws_rasterize_their_attachments_samples() {
 }
 
 /// Records a render pass instance of `target` that binds `draw`'s pipeline and set,
-/// sets the viewport and scissor, and makes one draw (`unchecked`: its `_unchecked`
-/// twin).
+/// sets the viewport and scissor, and makes one draw with `command` (`unchecked`:
+/// through its `_unchecked` twin).
 fn record_descriptor_draw(
-    cb: &mut tuff::CommandBuffer,
-    target: &tuff_setup::ColorTarget,
-    draw: &ImageDraw,
-    unchecked: bool,
-) -> tuff::Result<()> {
-    record_descriptor_draw_with(cb, target, draw, unchecked, &|rec, unchecked| {
-        if unchecked {
-            // SAFETY: the layer is told to skip the call it reports.
-            unsafe { rec.cmd_draw_unchecked(3, 1, 0, 0) }
-        } else {
-            rec.cmd_draw(3, 1, 0, 0)
-        }
-    })
-}
-
-/// [`record_descriptor_draw`] with the draw command `command`.
-fn record_descriptor_draw_with(
     cb: &mut tuff::CommandBuffer,
     target: &tuff_setup::ColorTarget,
     draw: &ImageDraw,
@@ -1533,9 +1494,7 @@ fn draws_sample_views_as_their_samplers_allow() {
         for (command, call) in draws::<tuff::InRenderPass>(&args, &args) {
             let rule = format!("VUID-{command}-{suffix}");
             tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
-                record_descriptor_draw_with(&mut cb, &target, &draw, unchecked, &|rec, u| {
-                    call(rec, u)
-                })
+                record_descriptor_draw(&mut cb, &target, &draw, unchecked, &|rec, u| call(rec, u))
             });
         }
     }
@@ -1572,15 +1531,17 @@ fn draws_do_not_reach_their_attachments_through_descriptors() {
             "None-06538",
         ),
     ];
+    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER | vk::BufferUsageFlags::INDEX_BUFFER;
+    let (args, _args_memory) = pipelines::host_buffer(&s, 256, usage);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     for (code, ty, suffix) in cases {
         let written = Some((&target.view, &sampler));
         let draw = descriptor_draw(&s, &p, &target.render_pass, ty, written, code);
-        let rule = format!("VUID-vkCmdDraw-{suffix}");
-        assert_eq!(
-            vuid(record_descriptor_draw(&mut cb, &target, &draw, false)),
-            rule
-        );
+        for (command, call) in draws::<tuff::InRenderPass>(&args, &args) {
+            let recorded =
+                record_descriptor_draw(&mut cb, &target, &draw, false, &|rec, u| call(rec, u));
+            assert_eq!(vuid(recorded), format!("VUID-{command}-{suffix}"));
+        }
     }
     assert_silent(&s.messages);
 }

@@ -4376,19 +4376,13 @@ pub(crate) fn cmd_push_constants_done<S: State>(
     }
 }
 
-/// The features of the view of `d`'s format for its image's tiling, as
-/// `VkFormatProperties3` gives them (where the device has Vulkan 1.3); on an older
-/// device, the bits that `VK_KHR_format_feature_flags2` made per format follow from
-/// the first set: depth comparison from sampling a depth format, storage without
-/// format from storage and the device's `shaderStorageImage*WithoutFormat` features.
-fn view_features2(
-    device: &Device,
-    d: &crate::retention::ImageDescriptor,
-) -> Result<vk::FormatFeatureFlags2> {
-    let live = device.live();
-    let linear = live
-        .image(d.image)
-        .is_some_and(|i| i.tiling == vk::ImageTiling::LINEAR);
+/// The features of `format` as `VkFormatProperties3` gives them (where the device
+/// has Vulkan 1.3): linear tiling, optimal tiling and buffer. On an older device, the
+/// bits that `VK_KHR_format_feature_flags2` made per format follow from the first
+/// set: depth comparison from sampling a depth format, storage without format from
+/// storage (an image's or a texel buffer's) and the device's
+/// `shaderStorageImage*WithoutFormat` features.
+fn format_features2(device: &Device, format: vk::Format) -> Result<[vk::FormatFeatureFlags2; 3]> {
     let physical = device.parent();
     let instance = physical.parent();
     let version = physical.get_physical_device_properties().api_version;
@@ -4399,42 +4393,58 @@ fn view_features2(
         unsafe {
             instance
                 .fns()
-                .get_physical_device_format_properties2(physical.raw(), d.format, &mut p2)
+                .get_physical_device_format_properties2(physical.raw(), format, &mut p2)
         };
-        return Ok(if linear {
-            p3.linear_tiling_features
-        } else {
-            p3.optimal_tiling_features
-        });
+        return Ok([
+            p3.linear_tiling_features,
+            p3.optimal_tiling_features,
+            p3.buffer_features,
+        ]);
     }
-    let props = live.format_properties(physical, d.format)?;
-    let first = if linear {
-        props.linear_tiling_features
-    } else {
-        props.optimal_tiling_features
-    };
-    type F2 = vk::FormatFeatureFlags2;
-    let mut features = F2::from_raw(u64::from(first.as_raw()));
+    let live = device.live();
+    let props = live.format_properties(physical, format)?;
+    let (read, write) = live.with_features(|f| {
+        (
+            f.v10.shader_storage_image_read_without_format == vk::TRUE,
+            f.v10.shader_storage_image_write_without_format == vk::TRUE,
+        )
+    });
     let depth =
-        crate::formats::aspects(d.format).is_some_and(|a| a.contains(vk::ImageAspectFlags::DEPTH));
-    if depth && first.contains(vk::FormatFeatureFlags::SAMPLED_IMAGE) {
-        features |= F2::SAMPLED_IMAGE_DEPTH_COMPARISON;
-    }
-    if first.contains(vk::FormatFeatureFlags::STORAGE_IMAGE) {
-        let (read, write) = live.with_features(|f| {
-            (
-                f.v10.shader_storage_image_read_without_format,
-                f.v10.shader_storage_image_write_without_format,
-            )
-        });
-        if read == vk::TRUE {
+        crate::formats::aspects(format).is_some_and(|a| a.contains(vk::ImageAspectFlags::DEPTH));
+    type F = vk::FormatFeatureFlags;
+    type F2 = vk::FormatFeatureFlags2;
+    let widen = |first: F, storage: F| {
+        let mut features = F2::from_raw(u64::from(first.as_raw()));
+        if depth && first.contains(F::SAMPLED_IMAGE) {
+            features |= F2::SAMPLED_IMAGE_DEPTH_COMPARISON;
+        }
+        if first.contains(storage) && read {
             features |= F2::STORAGE_READ_WITHOUT_FORMAT;
         }
-        if write == vk::TRUE {
+        if first.contains(storage) && write {
             features |= F2::STORAGE_WRITE_WITHOUT_FORMAT;
         }
-    }
-    Ok(features)
+        features
+    };
+    Ok([
+        widen(props.linear_tiling_features, F::STORAGE_IMAGE),
+        widen(props.optimal_tiling_features, F::STORAGE_IMAGE),
+        widen(props.buffer_features, F::STORAGE_TEXEL_BUFFER),
+    ])
+}
+
+/// The features of the view of `d`'s format for its image's tiling
+/// ([`format_features2`]).
+fn view_features2(
+    device: &Device,
+    d: &crate::retention::ImageDescriptor,
+) -> Result<vk::FormatFeatureFlags2> {
+    let linear = device
+        .live()
+        .image(d.image)
+        .is_some_and(|i| i.tiling == vk::ImageTiling::LINEAR);
+    let [linear_features, optimal, _] = format_features2(device, d.format)?;
+    Ok(if linear { linear_features } else { optimal })
 }
 
 /// Refuses a draw or dispatch in a protected command buffer (`in_protected` names
@@ -4592,7 +4602,11 @@ pub(crate) fn descriptor_layouts_used<S: State>(
     let bound = &recorder.bound[i];
     let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
     // Most draws read no image descriptor: nothing to collect.
-    if !bound.images.iter().take(n).any(Option::is_some) {
+    let image = |l: &crate::retention::SetImages| {
+        l.iter()
+            .any(|(_, d)| d.kind == crate::retention::SlotKind::Image)
+    };
+    if !bound.images.iter().take(n).flatten().any(image) {
         return;
     }
     let lists: SmallVec<[crate::retention::SetImages; 4]> =
@@ -4925,46 +4939,6 @@ fn written_components(
     Ok(())
 }
 
-/// The buffer features of `format`, as `VkFormatProperties3` gives them where the
-/// device has Vulkan 1.3; on an older device, those of `VkFormatProperties` with
-/// storage without format from the device's `shaderStorageImage*WithoutFormat`
-/// features.
-fn buffer_features2(device: &Device, format: vk::Format) -> Result<vk::FormatFeatureFlags2> {
-    let physical = device.parent();
-    let instance = physical.parent();
-    let version = physical.get_physical_device_properties().api_version;
-    if instance.exts().version(1) && vk::api_version_minor(version) >= 3 {
-        let mut p3 = vk::FormatProperties3::default();
-        let mut p2 = vk::FormatProperties2::default().push_next(&mut p3);
-        // SAFETY: a live physical device of a Vulkan 1.3 device; the chain is local.
-        unsafe {
-            instance
-                .fns()
-                .get_physical_device_format_properties2(physical.raw(), format, &mut p2)
-        };
-        return Ok(p3.buffer_features);
-    }
-    let live = device.live();
-    let first = live.format_properties(physical, format)?.buffer_features;
-    type F2 = vk::FormatFeatureFlags2;
-    let mut features = F2::from_raw(u64::from(first.as_raw()));
-    if first.contains(vk::FormatFeatureFlags::STORAGE_TEXEL_BUFFER) {
-        let (read, write) = live.with_features(|f| {
-            (
-                f.v10.shader_storage_image_read_without_format,
-                f.v10.shader_storage_image_write_without_format,
-            )
-        });
-        if read == vk::TRUE {
-            features |= F2::STORAGE_READ_WITHOUT_FORMAT;
-        }
-        if write == vk::TRUE {
-            features |= F2::STORAGE_WRITE_WITHOUT_FORMAT;
-        }
-    }
-    Ok(features)
-}
-
 /// Refuses a draw or dispatch whose shaders write the texel buffer view of `d` with
 /// texels of fewer components than its format has (04469), or write or read it as a
 /// storage texel buffer of `Unknown` format where its format's buffer features lack
@@ -4997,7 +4971,7 @@ fn texel_buffer_checks(
         ),
     ];
     for (op, feature, vuid, what) in needs {
-        if r.ops & op != 0 && !buffer_features2(device, d.format)?.contains(feature) {
+        if r.ops & op != 0 && !format_features2(device, d.format)?[2].contains(feature) {
             refuse(
                 vuid,
                 format!("{}: the shader {what} the storage texel buffer with the Unknown format, and the buffer features of the view's format {:?} lack {feature:?}", at(), d.format),
@@ -5057,17 +5031,15 @@ fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
     let bound = &recorder.bound[0];
     let live = recorder.device().live();
     let slots = |r: &crate::spirv::Resource| {
+        let binding = r.binding;
         bound
             .images
             .get(r.set as usize)
             .and_then(Option::as_ref)
-            .map(|list| {
-                list.iter()
-                    .filter(|((b, _), _)| *b == r.binding)
-                    .map(|(_, d)| *d)
-                    .collect::<Vec<_>>()
-            })
-            .unwrap_or_default()
+            .into_iter()
+            .flat_map(|list| list.iter())
+            .filter(move |((b, _), _)| *b == binding)
+            .map(|(_, d)| *d)
     };
     let images = attachment_images(recorder);
     for r in pipeline.resources.iter() {
@@ -5097,7 +5069,7 @@ fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
                 .and_then(|rec| rec.attachments.get(attachment as usize))
                 .map(|a| a.0);
             let image = recorder.pass_images.get(attachment as usize).copied();
-            for d in slots(r).iter().filter(|d| d.kind == SlotKind::Image) {
+            for d in slots(r).filter(|d| d.kind == SlotKind::Image) {
                 if Some(d.format) != format || image.is_some_and(|i| i != d.image) {
                     refuse(
                         rules[1],
