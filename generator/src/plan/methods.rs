@@ -1,6 +1,7 @@
 //! The rules that apply to each emitted method: its command's own and those of every
-//! struct it takes, through members and `pNext` chains, for the report's per-method
-//! table.
+//! struct it takes, through members and `pNext` chains (but those the safe structs
+//! refuse, `hooks::UNCHAINED`), for the report's per-method table and the safety
+//! decision.
 
 use super::commands::Plan;
 use super::Context;
@@ -44,7 +45,17 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
                     continue;
                 }
                 todo.extend(def.members.iter().map(|m| m.type_name.clone()));
-                todo.extend(model.extended_by.get(&t).into_iter().flatten().cloned());
+                // A chain the safe structs refuse cannot carry its struct's rules
+                // into a call.
+                todo.extend(
+                    model
+                        .extended_by
+                        .get(&t)
+                        .into_iter()
+                        .flatten()
+                        .filter(|e| !super::hooks::unchained(e, &t))
+                        .cloned(),
+                );
             }
             let mut items = vec![plan.name.clone()];
             items.extend(seen);

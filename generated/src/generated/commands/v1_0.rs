@@ -582,7 +582,7 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 43 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 35 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateComputePipelines-flags-00695`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateComputePipelines-flags-00696`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -618,14 +618,6 @@ The caller upholds these 43 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: `requiredSubgroupSize` must be a power-of-two integer
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: `requiredSubgroupSize` must be greater or equal to `minSubgroupSize`
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: `requiredSubgroupSize` must be less than or equal to `maxSubgroupSize`
-- `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
-- `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
-- `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
-- `VUID-VkShaderModuleCreateInfo-pCode-04146`: `pCode` must not declare any SPIR-V extension that is not supported by the API, as described by the Extension section of the SPIR-V Environment appendix
-- `VUID-VkShaderModuleCreateInfo-pCode-04147`: If `pCode` declares any of the SPIR-V extensions listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
-- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: `codeSize` must be a multiple of 4
-- `VUID-VkShaderModuleCreateInfo-pCode-01087`: `pCode` must point to valid SPIR-V code, formatted and packed as described by the Khronos SPIR-V Specification
-- `VUID-VkShaderModuleCreateInfo-pCode-01088`: `pCode` must adhere to the validation rules described by the Validation Rules within a Module section of the SPIR-V Environment appendix
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 
 # Valid usage
@@ -1032,7 +1024,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 88 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 80 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-flags-00720`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` must be less than the index into `pCreateInfos` that corresponds to that element
 - `VUID-vkCreateGraphicsPipelines-flags-00721`: If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the `VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT` flag set
@@ -1112,14 +1104,6 @@ The caller upholds these 88 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: `requiredSubgroupSize` must be a power-of-two integer
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: `requiredSubgroupSize` must be greater or equal to `minSubgroupSize`
 - `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: `requiredSubgroupSize` must be less than or equal to `maxSubgroupSize`
-- `VUID-VkShaderModuleCreateInfo-pCode-01089`: `pCode` must declare the `Shader` capability for SPIR-V code
-- `VUID-VkShaderModuleCreateInfo-pCode-01090`: `pCode` must not declare any capability that is not supported by the API, as described by the Capabilities section of the SPIR-V Environment appendix
-- `VUID-VkShaderModuleCreateInfo-pCode-01091`: If `pCode` declares any of the capabilities listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
-- `VUID-VkShaderModuleCreateInfo-pCode-04146`: `pCode` must not declare any SPIR-V extension that is not supported by the API, as described by the Extension section of the SPIR-V Environment appendix
-- `VUID-VkShaderModuleCreateInfo-pCode-04147`: If `pCode` declares any of the SPIR-V extensions listed in the SPIR-V Environment appendix, one of the corresponding requirements must be satisfied
-- `VUID-VkShaderModuleCreateInfo-codeSize-01086`: `codeSize` must be a multiple of 4
-- `VUID-VkShaderModuleCreateInfo-pCode-01087`: `pCode` must point to valid SPIR-V code, formatted and packed as described by the Khronos SPIR-V Specification
-- `VUID-VkShaderModuleCreateInfo-pCode-01088`: `pCode` must adhere to the validation rules described by the Validation Rules within a Module section of the SPIR-V Environment appendix
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 - `VUID-VkVertexInputAttributeDescription-format-00623`: `format` must be allowed as a vertex buffer format, as specified by the `VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by `vkGetPhysicalDeviceFormatProperties`
 
