@@ -50,6 +50,8 @@ struct Parts {
     flags: vk::PipelineCreateFlags,
     /// Name the base pipeline by handle (a pipeline made for it).
     base_handle: bool,
+    /// Whether that base pipeline allows derivatives.
+    base_allows: bool,
     base_index: i32,
     /// The stages, each with the repository's shader of that stage: the test
     /// shaders, or the Bézier ones for a pipeline with tessellation.
@@ -90,6 +92,7 @@ impl Default for Parts {
         Parts {
             flags: vk::PipelineCreateFlags::empty(),
             base_handle: false,
+            base_allows: true,
             base_index: -1,
             stages: vec![vk::ShaderStageFlags::VERTEX, vk::ShaderStageFlags::FRAGMENT],
             bezier: false,
@@ -392,7 +395,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let base = parts.base_handle.then(|| {
         let (mut made, _) = unsafe {
             s.device
-                .create_graphics_pipelines(None, &[base_info(c, pass.as_ref())])
+                .create_graphics_pipelines(None, &[base_info(c, pass.as_ref(), parts.base_allows)])
         }
         .expect("base pipeline");
         made.pop().expect("one pipeline")
@@ -430,10 +433,12 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     (safe, layer)
 }
 
-/// The create info of a base pipeline that allows derivatives: the test pipeline.
+/// The create info of a base pipeline, the test pipeline, that allows derivatives
+/// (`allows`) or not.
 fn base_info<'a>(
     c: &'a Common,
     pass: Option<&'a tuff::RenderPass>,
+    allows: bool,
 ) -> tuff::GraphicsPipelineCreateInfo<'a> {
     // Leaked: the info outlives this function; a few bytes once per case.
     let parts: &'a _ = Box::leak(Box::new((
@@ -466,8 +471,13 @@ fn base_info<'a>(
     let dynamic: &'a _ = Box::leak(Box::new(
         tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&parts.7),
     ));
+    let flags = if allows {
+        vk::PipelineCreateFlags::ALLOW_DERIVATIVES
+    } else {
+        vk::PipelineCreateFlags::empty()
+    };
     tuff::GraphicsPipelineCreateInfo::new()
-        .flags(vk::PipelineCreateFlags::ALLOW_DERIVATIVES)
+        .flags(flags)
         .stages(&parts.0)
         .vertex_input_state(Some(&parts.1))
         .input_assembly_state(Some(&parts.2))
@@ -623,6 +633,19 @@ const CASES: &[Case] = &[
             p.base_index = 0;
         })
     },
+    // The base is the create info itself, which does not allow derivatives.
+    Case {
+        also: &["VUID-vkCreateGraphicsPipelines-flags-00721"],
+        ..case("VUID-vkCreateGraphicsPipelines-flags-00720", |p| {
+            p.flags = vk::PipelineCreateFlags::DERIVATIVE;
+            p.base_index = 0;
+        })
+    },
+    case("VUID-vkCreateGraphicsPipelines-flags-00721", |p| {
+        p.flags = vk::PipelineCreateFlags::DERIVATIVE;
+        p.base_handle = true;
+        p.base_allows = false;
+    }),
     case("VUID-VkGraphicsPipelineCreateInfo-stage-06897", |p| {
         p.stages = vec![
             vk::ShaderStageFlags::VERTEX,
@@ -1019,7 +1042,7 @@ fn create_compute(
     s: &Setup,
     stage: vk::ShaderStageFlags,
     flags: vk::PipelineCreateFlags,
-    base: Option<i32>,
+    base: Option<vk::PipelineCreateFlags>,
     index: i32,
 ) -> (tuff::Result<()>, Vec<String>) {
     let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/test.comp.spv"));
@@ -1057,13 +1080,8 @@ fn create_compute(
         .base_pipeline_handle(base)
         .base_pipeline_index(index)
     };
-    let base_pipeline = base.map(|_| {
-        let base = info(
-            vk::ShaderStageFlags::COMPUTE,
-            vk::PipelineCreateFlags::ALLOW_DERIVATIVES,
-            None,
-        )
-        .base_pipeline_index(-1);
+    let base_pipeline = base.map(|base_flags| {
+        let base = info(vk::ShaderStageFlags::COMPUTE, base_flags, None).base_pipeline_index(-1);
         let (mut made, _) =
             unsafe { s.device.create_compute_pipelines(None, &[base]) }.expect("base pipeline");
         made.pop().expect("one pipeline")
@@ -1085,6 +1103,7 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
     let compute = vk::ShaderStageFlags::COMPUTE;
     let none = vk::PipelineCreateFlags::empty();
     let derivative = vk::PipelineCreateFlags::DERIVATIVE;
+    let allows = vk::PipelineCreateFlags::ALLOW_DERIVATIVES;
     let (safe, layer) = create_compute(&s, compute, none, None, -1);
     assert!(
         safe.is_ok() && layer.is_empty(),
@@ -1114,7 +1133,18 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
             "VUID-VkComputePipelineCreateInfo-flags-00699",
             // A handle and an index break the rule each way.
             &["VUID-VkComputePipelineCreateInfo-flags-00700"][..],
-            create_compute(&s, compute, derivative, Some(0), 0),
+            create_compute(&s, compute, derivative, Some(allows), 0),
+        ),
+        (
+            "VUID-vkCreateComputePipelines-flags-00695",
+            // The base is the create info itself, which does not allow derivatives.
+            &["VUID-vkCreateComputePipelines-flags-00696"][..],
+            create_compute(&s, compute, derivative, None, 0),
+        ),
+        (
+            "VUID-vkCreateComputePipelines-flags-00696",
+            &[][..],
+            create_compute(&s, compute, derivative, Some(none), -1),
         ),
     ] {
         match &safe {

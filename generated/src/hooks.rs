@@ -2855,7 +2855,7 @@ pub(crate) fn create_compute_pipelines_checks(
     device: &Device,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Result<()> {
-    compute_pipeline_state_checks(create_infos)?;
+    compute_pipeline_state_checks(device, create_infos)?;
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
@@ -3505,10 +3505,12 @@ fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::reco
 /// compute pipeline has, the resources and push constants its stages' modules
 /// declare; a graphics pipeline's adds its fixed-function state.
 fn pipeline_record(
+    flags: vk::PipelineCreateFlags,
     (resources, push): (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>),
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::COMPUTE,
+        flags,
         layout: Vrc::new(LayoutRecord {
             push_ranges: Vec::new(),
             set_dynamics: Vec::new(),
@@ -3604,7 +3606,10 @@ pub(crate) fn compute_pipelines_created(
     let records = create_infos.iter().map(|i| {
         (
             i.as_raw().layout,
-            pipeline_record(stage_resources(device, std::iter::once(&i.as_raw().stage))),
+            pipeline_record(
+                i.as_raw().flags,
+                stage_resources(device, std::iter::once(&i.as_raw().stage)),
+            ),
         )
     });
     pipelines_created(device, &created, vk::PipelineBindPoint::COMPUTE, records);
@@ -3677,10 +3682,14 @@ pub(crate) fn graphics_pipelines_created(
                         .fold(0, |bits, (i, _)| bits | (1 << i))
                 }),
                 // SAFETY: the safe struct stores its stages with their count.
-                ..pipeline_record(stage_resources(
-                    device,
-                    unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
-                ))
+                ..pipeline_record(
+                    raw.flags,
+                    stage_resources(
+                        device,
+                        unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }
+                            .iter(),
+                    ),
+                )
             }
         })
     });

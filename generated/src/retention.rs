@@ -503,6 +503,8 @@ impl LayoutRecord {
 pub(crate) struct PipelineRecord {
     /// Graphics or compute.
     pub bind_point: vk::PipelineBindPoint,
+    /// Its create info's flags.
+    pub flags: vk::PipelineCreateFlags,
     /// The layout it was created with.
     pub layout: Vrc<LayoutRecord>,
     /// The vertex-buffer bindings (the first 64) its vertex shader reads, one bit

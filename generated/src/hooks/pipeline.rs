@@ -81,6 +81,8 @@ pub(crate) fn graphics_pipeline_state_checks(
     device: &Device,
     create_infos: &[GraphicsPipelineCreateInfo<'_>],
 ) -> Result<()> {
+    let flags: Vec<vk::PipelineCreateFlags> =
+        create_infos.iter().map(|i| i.as_raw().flags).collect();
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         // SAFETY: `raw` is a safe struct's.
@@ -93,12 +95,10 @@ pub(crate) fn graphics_pipeline_state_checks(
             )?;
         }
         check_derivative(
+            device,
             raw.flags,
-            (
-                raw.base_pipeline_handle != vk::Pipeline::null(),
-                raw.base_pipeline_index,
-            ),
-            create_infos.len(),
+            (raw.base_pipeline_handle, raw.base_pipeline_index),
+            (i, &flags),
             &GRAPHICS_DERIVATIVE,
             &at,
         )?;
@@ -126,6 +126,29 @@ pub(crate) fn graphics_pipeline_state_checks(
 /// fraction within [0, 1], a defined logic operation, and each stage's
 /// specialization constants once each.
 fn check_state_structs(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    // The features these states need are VK_EXT_extended_dynamic_state2's, which no
+    // device made through the safe `create_device` enables (it is outside the
+    // emitted API).
+    let unavailable = [
+        (
+            vk::DynamicState::LOGIC_OP_EXT,
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869",
+            "extendedDynamicState2LogicOp",
+        ),
+        (
+            vk::DynamicState::PATCH_CONTROL_POINTS_EXT,
+            "VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870",
+            "extendedDynamicState2PatchControlPoints",
+        ),
+    ];
+    for (state, vuid, feature) in unavailable {
+        if states.dynamic.contains(&state) {
+            refuse(
+                vuid,
+                format!("{at}'s pDynamicStates names {state:?}, and the device has not enabled {feature}"),
+            )?;
+        }
+    }
     if let Some(i) =
         (1..states.dynamic.len()).find(|&i| states.dynamic[..i].contains(&states.dynamic[i]))
     {
@@ -287,32 +310,46 @@ struct DerivativeRules {
     neither: &'static str,
     bad_index: &'static str,
     both_handle: &'static str,
+    /// A base named by index comes earlier in the create infos.
+    earlier: &'static str,
+    /// The base allows derivatives.
+    allows: &'static str,
 }
 
 const GRAPHICS_DERIVATIVE: DerivativeRules = DerivativeRules {
     neither: "VUID-VkGraphicsPipelineCreateInfo-flags-00722",
     bad_index: "VUID-VkGraphicsPipelineCreateInfo-flags-00723",
     both_handle: "VUID-VkGraphicsPipelineCreateInfo-flags-00724",
+    earlier: "VUID-vkCreateGraphicsPipelines-flags-00720",
+    allows: "VUID-vkCreateGraphicsPipelines-flags-00721",
 };
 
 const COMPUTE_DERIVATIVE: DerivativeRules = DerivativeRules {
     neither: "VUID-VkComputePipelineCreateInfo-flags-00697",
     bad_index: "VUID-VkComputePipelineCreateInfo-flags-00698",
     both_handle: "VUID-VkComputePipelineCreateInfo-flags-00699",
+    earlier: "VUID-vkCreateComputePipelines-flags-00695",
+    allows: "VUID-vkCreateComputePipelines-flags-00696",
 };
 
-/// A derivative names its base one way only: by handle, or by an index into the
-/// create infos.
+/// A derivative names its base one way only: by handle, or by the index of an
+/// earlier create info of the call (whose flags are `all`; it is element `i`), and
+/// the base allows derivatives (a pipeline by handle, as the device recorded it).
 fn check_derivative(
+    device: &Device,
     flags: vk::PipelineCreateFlags,
-    (handle, index): (bool, i32),
-    count: usize,
+    (handle, index): (vk::Pipeline, i32),
+    (i, all): (usize, &[vk::PipelineCreateFlags]),
     rules: &DerivativeRules,
     at: &str,
 ) -> Result<()> {
     if !flags.contains(vk::PipelineCreateFlags::DERIVATIVE) {
         return Ok(());
     }
+    let count = all.len();
+    let handle_flags =
+        (handle != vk::Pipeline::null()).then(|| device.live().pipeline(handle).map(|p| p.flags));
+    let handle = handle != vk::Pipeline::null();
     if !handle && index == -1 {
         refuse(
             rules.neither,
@@ -331,14 +368,35 @@ fn check_derivative(
             format!("{at} names a base pipeline by handle and by index ({index})"),
         )?;
     }
+    if !handle && index >= 0 && index as usize >= i {
+        refuse(
+            rules.earlier,
+            format!("{at} names create info {index} as its base pipeline, which does not come before it"),
+        )?;
+    }
+    let base = match handle_flags {
+        Some(recorded) => recorded,
+        None => usize::try_from(index)
+            .ok()
+            .and_then(|b| all.get(b).copied()),
+    };
+    if base.is_some_and(|b| !b.contains(vk::PipelineCreateFlags::ALLOW_DERIVATIVES)) {
+        refuse(
+            rules.allows,
+            format!("{at}'s base pipeline was not created with VK_PIPELINE_CREATE_ALLOW_DERIVATIVES_BIT"),
+        )?;
+    }
     Ok(())
 }
 
 /// The checks of `vkCreateComputePipelines` over each create info as a whole: its
 /// stage is a compute stage, and a derivative names its base one way.
 pub(crate) fn compute_pipeline_state_checks(
+    device: &Device,
     create_infos: &[ComputePipelineCreateInfo<'_>],
 ) -> Result<()> {
+    let flags: Vec<vk::PipelineCreateFlags> =
+        create_infos.iter().map(|i| i.as_raw().flags).collect();
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         let at = format!("pCreateInfos[{i}]");
@@ -352,12 +410,10 @@ pub(crate) fn compute_pipeline_state_checks(
             )?;
         }
         check_derivative(
+            device,
             raw.flags,
-            (
-                raw.base_pipeline_handle != vk::Pipeline::null(),
-                raw.base_pipeline_index,
-            ),
-            create_infos.len(),
+            (raw.base_pipeline_handle, raw.base_pipeline_index),
+            (i, &flags),
             &COMPUTE_DERIVATIVE,
             &at,
         )?;

@@ -283,7 +283,9 @@ const RENDER_PASS_INDICES: &str =
 const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
 const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
 const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too)";
-const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos)";
+const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags)";
+const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
+const SAME_AS_00724: &str = "checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkGraphicsPipelineCreateInfo-flags-00724, whose text states the same case, and the layer names both";
 const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first";
 const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
 const UNPROVEN_PROTECTED_QUEUES: &str = "checked by the safe methods in every build (against the physical device's queue families), but no test breaks it: lavapipe has no protected queues, and a family is named twice only as protected and unprotected queues, so protectedMemory is refused first";
@@ -2103,6 +2105,8 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkComputePipelineCreateInfo-flags-00697", How::Dynamic(COMPUTE_STATE)),
             ("VUID-VkComputePipelineCreateInfo-flags-00698", How::Dynamic(COMPUTE_STATE)),
             ("VUID-VkComputePipelineCreateInfo-flags-00699", How::Dynamic(COMPUTE_STATE)),
+            ("VUID-vkCreateComputePipelines-flags-00695", How::Dynamic(COMPUTE_STATE)),
+            ("VUID-vkCreateComputePipelines-flags-00696", How::Dynamic(COMPUTE_STATE)),
             ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
@@ -2144,6 +2148,11 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00722", How::Dynamic(PIPELINE_STATE_ALONE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00723", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00724", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-flags-00725", How::User(SAME_AS_00724)),
+            ("VUID-vkCreateGraphicsPipelines-flags-00720", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-vkCreateGraphicsPipelines-flags-00721", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869", How::User(UNAVAILABLE_DYNAMIC_STATES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870", How::User(UNAVAILABLE_DYNAMIC_STATES)),
             ("VUID-VkGraphicsPipelineCreateInfo-stage-06897", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-stage-00727", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-00729", How::Dynamic(PIPELINE_STATE)),

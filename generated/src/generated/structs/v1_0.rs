@@ -634,10 +634,10 @@ impl<'a> CommandPoolCreateInfo<'a> {
 
 The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkComputePipelineCreateInfo.html). Settled by the wrappers:
 
-- `VUID-VkComputePipelineCreateInfo-flags-00697`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
-- `VUID-VkComputePipelineCreateInfo-flags-00698`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
-- `VUID-VkComputePipelineCreateInfo-flags-00699`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
-- `VUID-VkComputePipelineCreateInfo-stage-00701`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by an index into the create infos))
+- `VUID-VkComputePipelineCreateInfo-flags-00697`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
+- `VUID-VkComputePipelineCreateInfo-flags-00698`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
+- `VUID-VkComputePipelineCreateInfo-flags-00699`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
+- `VUID-VkComputePipelineCreateInfo-stage-00701`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
 - `VUID-VkComputePipelineCreateInfo-layout-00703`: dynamic (checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage)
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
@@ -1411,10 +1411,12 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 251.
 
+- 2: checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first
 - 1: checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first
-- 247: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkGraphicsPipelineCreateInfo-flags-00724, whose text states the same case, and the layer names both
+- 244: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
