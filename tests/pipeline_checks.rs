@@ -20,10 +20,20 @@ mod tuff_setup;
 mod vulkan;
 
 use tuff::vk;
+use tuff::Handle as _;
 use tuff_setup::Setup;
 
 const RGBA8: vk::Format = vk::Format::R8G8B8A8_UNORM;
 const D32S8: vk::Format = vk::Format::D32_SFLOAT_S8_UINT;
+
+/// A required subgroup size.
+#[derive(Clone, Copy)]
+enum SubgroupSize {
+    /// This size.
+    Of(u32),
+    /// The device's `minSubgroupSize`, a valid size.
+    DeviceMin,
+}
 
 /// What a pipeline renders to.
 #[derive(Clone)]
@@ -85,6 +95,10 @@ struct Parts {
     logic_op: Option<vk::LogicOp>,
     /// Specialization constant IDs of the first stage.
     constants: Vec<u32>,
+    /// The first stage's flags.
+    stage_flags: vk::PipelineShaderStageCreateFlags,
+    /// A required subgroup size chained to the first stage.
+    subgroup_size: Option<SubgroupSize>,
 }
 
 impl Default for Parts {
@@ -128,6 +142,8 @@ impl Default for Parts {
             attributes: vec![],
             logic_op: None,
             constants: vec![],
+            stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
+            subgroup_size: None,
         }
     }
 }
@@ -271,14 +287,44 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let spec = tuff::SpecializationInfo::new()
         .map_entries(&entries)
         .data(&spec_data);
+    let mut required: Option<_> = parts.subgroup_size.map(|size| {
+        let size = match size {
+            SubgroupSize::Of(size) => size,
+            SubgroupSize::DeviceMin => {
+                let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+                let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+                // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is
+                // local.
+                unsafe {
+                    s.instance
+                        .fns()
+                        .get_physical_device_properties2(s.physical.raw(), &mut p2)
+                };
+                p13.min_subgroup_size
+            }
+        };
+        let mut info = tuff::PipelineShaderStageRequiredSubgroupSizeCreateInfo::new();
+        // SAFETY: a plain value member (the registry marks the struct returned-only,
+        // so it has no setter).
+        unsafe { info.raw_values_mut() }.required_subgroup_size = size;
+        info
+    });
+    // The first stage takes the chained size, once.
+    let mut chained = required.iter_mut();
     let stages: Vec<_> = parts
         .stages
         .iter()
         .enumerate()
         .map(|(k, &stage)| {
-            let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+            let mut stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
                 .stage(stage)
                 .module(Some(module(stage)));
+            if k == 0 {
+                stage = stage.flags(parts.stage_flags);
+                if let Some(next) = chained.next() {
+                    stage = stage.push_next(next);
+                }
+            }
             if k == 0 && !entries.is_empty() {
                 stage.specialization_info(Some(&spec))
             } else {
@@ -646,6 +692,58 @@ const CASES: &[Case] = &[
         p.base_handle = true;
         p.base_allows = false;
     }),
+    Case {
+        on: On::Bare,
+        ..case("VUID-VkPipelineShaderStageCreateInfo-flags-02784", |p| {
+            p.stage_flags = vk::PipelineShaderStageCreateFlags::ALLOW_VARYING_SUBGROUP_SIZE
+        })
+    },
+    Case {
+        on: On::Bare,
+        ..case("VUID-VkPipelineShaderStageCreateInfo-flags-02785", |p| {
+            p.stage_flags = vk::PipelineShaderStageCreateFlags::REQUIRE_FULL_SUBGROUPS
+        })
+    },
+    // A vertex stage may not be among the stages that take a required size.
+    Case {
+        on: On::Full,
+        also: &["VUID-VkPipelineShaderStageCreateInfo-pNext-02755"],
+        ..case(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760",
+            |p| p.subgroup_size = Some(SubgroupSize::Of(3)),
+        )
+    },
+    // Lavapipe's smallest subgroup is larger than one invocation.
+    Case {
+        on: On::Full,
+        also: &["VUID-VkPipelineShaderStageCreateInfo-pNext-02755"],
+        ..case(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761",
+            |p| p.subgroup_size = Some(SubgroupSize::Of(1)),
+        )
+    },
+    Case {
+        on: On::Full,
+        also: &["VUID-VkPipelineShaderStageCreateInfo-pNext-02755"],
+        ..case(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762",
+            |p| p.subgroup_size = Some(SubgroupSize::Of(1 << 20)),
+        )
+    },
+    Case {
+        on: On::Full,
+        also: &["VUID-VkPipelineShaderStageCreateInfo-pNext-02755"],
+        ..case("VUID-VkPipelineShaderStageCreateInfo-pNext-02754", |p| {
+            p.stage_flags = vk::PipelineShaderStageCreateFlags::ALLOW_VARYING_SUBGROUP_SIZE;
+            p.subgroup_size = Some(SubgroupSize::DeviceMin);
+        })
+    },
+    Case {
+        on: On::Bare,
+        ..case("VUID-VkPipelineShaderStageCreateInfo-pNext-02755", |p| {
+            p.subgroup_size = Some(SubgroupSize::DeviceMin)
+        })
+    },
     case("VUID-VkGraphicsPipelineCreateInfo-stage-06897", |p| {
         p.stages = vec![
             vk::ShaderStageFlags::VERTEX,

@@ -2849,6 +2849,86 @@ fn check_specialization(
     Ok(())
 }
 
+/// A shader stage's subgroup size control: its flags need the features they name
+/// (02784, 02785), and a chained `VkPipelineShaderStageRequiredSubgroupSizeCreateInfo`
+/// names a power of two within the device's subgroup sizes (02760 to 02762), without
+/// a varying size (02754), with `subgroupSizeControl` on and for a stage in
+/// `requiredSubgroupSizeStages` (02755).
+fn check_stage_subgroups(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    type F = vk::PipelineShaderStageCreateFlags;
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let required: Option<&vk::PipelineShaderStageRequiredSubgroupSizeCreateInfo<'_>> = unsafe {
+        chained(
+            stage.p_next,
+            vk::StructureType::PIPELINE_SHADER_STAGE_REQUIRED_SUBGROUP_SIZE_CREATE_INFO,
+        )
+    };
+    let varying = stage.flags.contains(F::ALLOW_VARYING_SUBGROUP_SIZE);
+    let full = stage.flags.contains(F::REQUIRE_FULL_SUBGROUPS);
+    if !varying && !full && required.is_none() {
+        return Ok(());
+    }
+    let (control, full_subgroups) = device
+        .live()
+        .with_features(|f| (f.v13.subgroup_size_control, f.v13.compute_full_subgroups));
+    if varying && control != vk::TRUE {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02784",
+            format!("{at}: flags include ALLOW_VARYING_SUBGROUP_SIZE, and the device has not enabled subgroupSizeControl"),
+        )?;
+    }
+    if full && full_subgroups != vk::TRUE {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02785",
+            format!("{at}: flags include REQUIRE_FULL_SUBGROUPS, and the device has not enabled computeFullSubgroups"),
+        )?;
+    }
+    let Some(required) = required else {
+        return Ok(());
+    };
+    let size = required.required_subgroup_size;
+    if !size.is_power_of_two() {
+        refuse(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760",
+            format!("{at}: requiredSubgroupSize ({size}) is not a power of two"),
+        )?;
+    }
+    let properties = vulkan13_properties(device);
+    let (min, max) = properties.map_or((0, 0), |p| (p.min_subgroup_size, p.max_subgroup_size));
+    if size < min {
+        refuse(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761",
+            format!("{at}: requiredSubgroupSize ({size}) is below minSubgroupSize ({min})"),
+        )?;
+    }
+    if size > max {
+        refuse(
+            "VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762",
+            format!("{at}: requiredSubgroupSize ({size}) is above maxSubgroupSize ({max}; 0 where the device has no Vulkan 1.3 properties)"),
+        )?;
+    }
+    if varying {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-pNext-02754",
+            format!("{at}: a required subgroup size is chained, and flags include ALLOW_VARYING_SUBGROUP_SIZE"),
+        )?;
+    }
+    let stages = properties.map_or(vk::ShaderStageFlags::empty(), |p| {
+        p.required_subgroup_size_stages
+    });
+    if control != vk::TRUE || !stages.contains(stage.stage) {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-pNext-02755",
+            format!("{at}: a required subgroup size is chained, and the device has not enabled subgroupSizeControl or {:?} is not among its requiredSubgroupSizeStages ({stages:?})", stage.stage),
+        )?;
+    }
+    Ok(())
+}
+
 /// The checks of `vkCreateComputePipelines` that keep the driver inside the
 /// specialization data.
 pub(crate) fn create_compute_pipelines_checks(
@@ -2859,6 +2939,7 @@ pub(crate) fn create_compute_pipelines_checks(
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
+        check_stage_subgroups(device, &raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
         check_shader_layout(
             device,
             &raw.stage,
@@ -2988,6 +3069,11 @@ pub(crate) fn create_graphics_pipelines_checks(
         let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
         for (j, stage) in stages.iter().enumerate() {
             check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
+            check_stage_subgroups(
+                device,
+                stage,
+                &format_args!("pCreateInfos[{i}].pStages[{j}]"),
+            )?;
             check_shader_layout(
                 device,
                 stage,

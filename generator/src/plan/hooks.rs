@@ -273,6 +273,7 @@ pub fn unchained(ext: &str, head: &str) -> bool {
 pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and command running it relies on, and that tuff cannot check beyond its interface. The caller promises that it is valid SPIR-V for the Vulkan environment (the validation rules of the SPIR-V environment appendix, and those of each stage it is used for); that it declares only capabilities, extensions and features the device has enabled; and that every invocation of it terminates and reads and writes only inside the resources it is given: its descriptors' ranges and images (of a binding created with `PARTIALLY_BOUND`, only descriptors that were written), its push-constant block, its workgroup and private memory (where the device has `robustBufferAccess` enabled, out-of-range buffer accesses are defined and need no promise). What tuff checks instead, when a pipeline is created: each resource variable the module declares has a binding of a descriptor type that can back it, visible to the stage, and its push constants a range that covers them; when a draw or dispatch is recorded: every descriptor of the bindings its variables read was written (but for `PARTIALLY_BOUND` bindings), and each image view there has the view type and numeric format its image variable reads.";
 const STAGE_MODULE: &str = "checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver)";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
+const SUBGROUP_SIZES: &str = "checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them)";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
     "checks the viewports (scissors) are given or dynamic unless rasterization is discarded";
@@ -2111,6 +2112,13 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
             ("VUID-VkPipelineShaderStageCreateInfo-module-06716", How::Dynamic(STAGE_MODULE)),
+            ("VUID-VkPipelineShaderStageCreateInfo-flags-02784", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-flags-02785", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-pNext-02754", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-pNext-02755", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762", How::Dynamic(SUBGROUP_SIZES)),
         ],
         ..NONE
     },

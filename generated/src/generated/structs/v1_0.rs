@@ -2663,12 +2663,16 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 - `VUID-VkPipelineShaderStageCreateInfo-module-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02784`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageCreateInfo-flags-02785`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
 - `VUID-VkPipelineShaderStageCreateInfo-module-06716`: dynamic (checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 37.
+Left to the caller (listed one by one in the crate's `validation.json`): 33.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 34: explicit rule; the wrappers do not check it*/
+- 30: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {

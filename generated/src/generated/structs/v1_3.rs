@@ -2016,9 +2016,10 @@ for PipelineRenderingCreateInfo<'a> {}
 
 The rules are on [`VkPipelineShaderStageRequiredSubgroupSizeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageRequiredSubgroupSizeCreateInfo.html). Settled by the wrappers:
 
-- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
+- `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageRequiredSubgroupSizeCreateInfo<'a> {
