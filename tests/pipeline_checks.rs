@@ -99,6 +99,9 @@ struct Parts {
     stage_flags: vk::PipelineShaderStageCreateFlags,
     /// A required subgroup size chained to the first stage.
     subgroup_size: Option<SubgroupSize>,
+    /// A creation feedback info chained to the pipeline, as the safe struct makes
+    /// it (its pointers NULL: the registry gives it no setter).
+    feedback: bool,
 }
 
 impl Default for Parts {
@@ -144,6 +147,7 @@ impl Default for Parts {
             constants: vec![],
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
             subgroup_size: None,
+            feedback: false,
         }
     }
 }
@@ -468,6 +472,12 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     if let Some(r) = rendering_info.as_mut() {
         info = info.push_next(r);
     }
+    let mut feedback = parts
+        .feedback
+        .then(tuff::PipelineCreationFeedbackCreateInfo::new);
+    if let Some(f) = feedback.as_mut() {
+        info = info.push_next(f);
+    }
     let infos = [info];
     let safe = unsafe { s.device.create_graphics_pipelines(None, &infos) }.map(drop);
     if !layer {
@@ -692,6 +702,10 @@ const CASES: &[Case] = &[
         p.base_handle = true;
         p.base_allows = false;
     }),
+    case(
+        "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
+        |p| p.feedback = true,
+    ),
     Case {
         on: On::Bare,
         ..case("VUID-VkPipelineShaderStageCreateInfo-flags-02784", |p| {

@@ -2929,6 +2929,42 @@ fn check_stage_subgroups(
     Ok(())
 }
 
+/// A chained `VkPipelineCreationFeedbackCreateInfo` (in `next`, the chain of a create
+/// info of `stages` stages) names where the driver writes the pipeline's feedback
+/// (`parameter`: the safe struct has no setter for it, so a safe program's is NULL)
+/// and as many stage feedbacks as stages, or none (`count`).
+fn check_creation_feedback(
+    next: *const core::ffi::c_void,
+    stages: u32,
+    (parameter, count): (&'static str, &'static str),
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let feedback: Option<&vk::PipelineCreationFeedbackCreateInfo<'_>> = unsafe {
+        chained(
+            next,
+            vk::StructureType::PIPELINE_CREATION_FEEDBACK_CREATE_INFO,
+        )
+    };
+    let Some(feedback) = feedback else {
+        return Ok(());
+    };
+    if feedback.p_pipeline_creation_feedback.is_null() {
+        refuse(
+            parameter,
+            format!("{at}: a chained VkPipelineCreationFeedbackCreateInfo's pPipelineCreationFeedback is NULL, and the driver writes through it"),
+        )?;
+    }
+    let n = feedback.pipeline_stage_creation_feedback_count;
+    if n != 0 && n != stages {
+        refuse(
+            count,
+            format!("{at}: pipelineStageCreationFeedbackCount ({n}) is neither 0 nor the pipeline's stage count ({stages})"),
+        )?;
+    }
+    Ok(())
+}
+
 /// The checks of `vkCreateComputePipelines` that keep the driver inside the
 /// specialization data.
 pub(crate) fn create_compute_pipelines_checks(
@@ -2940,6 +2976,15 @@ pub(crate) fn create_compute_pipelines_checks(
         let raw = info.as_raw();
         check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
         check_stage_subgroups(device, &raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
+        check_creation_feedback(
+            raw.p_next,
+            1,
+            (
+                "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
+                "VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566",
+            ),
+            &format_args!("pCreateInfos[{i}]"),
+        )?;
         check_shader_layout(
             device,
             &raw.stage,
@@ -3065,6 +3110,15 @@ pub(crate) fn create_graphics_pipelines_checks(
                 ),
             )?;
         }
+        check_creation_feedback(
+            raw.p_next,
+            raw.stage_count,
+            (
+                "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
+                "VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594",
+            ),
+            &format_args!("pCreateInfos[{i}]"),
+        )?;
         // SAFETY: the safe setter stores the stages with their count.
         let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
         for (j, stage) in stages.iter().enumerate() {

@@ -32,6 +32,12 @@ pub fn records(
     let mut out = Vec::new();
     for rule in cx.validity.rules.iter().filter(|r| r.emitted) {
         let settlement = match (rule.category, derived.get(rule.vuid.as_str())) {
+            // A special case that settles an implicit rule the derivation cannot
+            // (a pointer Vulkan writes through, in a struct without a setter for it).
+            (Category::Implicit, _) if super::hooks::settled(&rule.vuid).is_some() => {
+                super::hooks::settled(&rule.vuid)
+                    .map_or_else(|| Settlement::User(String::new()), from_table)
+            }
             (Category::Implicit, _) if checker.dynamic(&rule.vuid).is_some() => {
                 Settlement::Dynamic(checker.dynamic(&rule.vuid).unwrap_or_default().to_owned())
             }
@@ -100,11 +106,7 @@ fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Se
         .replace('`', "")
         .to_lowercase();
     if let Some(how) = super::hooks::settled(vuid) {
-        match how {
-            How::Static(m) => Settlement::Static(m.into()),
-            How::Dynamic(m) => Settlement::Dynamic(m.into()),
-            How::User(m) => Settlement::User(m.into()),
-        }
+        from_table(how)
     } else if t.contains("all submitted commands that refer to") {
         Settlement::Static(
             "destroyed only when the last wrapper clone goes; recorded command buffers and pending submissions hold clones until their fence signals".into(),
@@ -119,6 +121,15 @@ fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Se
         Settlement::Static("the wrappers never pass allocation callbacks".into())
     } else {
         Settlement::User("explicit rule; the wrappers do not check it".into())
+    }
+}
+
+/// The settlement a row of the special-case table gives a rule.
+fn from_table(how: How) -> Settlement {
+    match how {
+        How::Static(m) => Settlement::Static(m.into()),
+        How::Dynamic(m) => Settlement::Dynamic(m.into()),
+        How::User(m) => Settlement::User(m.into()),
     }
 }
 

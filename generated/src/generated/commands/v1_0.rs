@@ -582,15 +582,13 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 26 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateComputePipelines-pipelineCache-02873`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
 - `VUID-VkComputePipelineCreateInfo-flags-00700`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
 - `VUID-VkComputePipelineCreateInfo-stage-00702`: The shader code for the entry point identified by `stage` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
 - `VUID-VkComputePipelineCreateInfo-layout-01687`: The number of resources in `layout` accessible to the compute shader stage must be less than or equal to `VkPhysicalDeviceLimits::maxPerStageResources`
-- `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be `1`
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
 - `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
 - `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
 - `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`
@@ -645,7 +643,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -1017,7 +1015,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 68 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 66 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
@@ -1064,9 +1062,7 @@ The caller upholds these 68 rules that no check of this method enforces (its com
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06059`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not include variables decorated with the `Layer` built-in decoration in their interfaces
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`: If `renderPass` is VK_NULL_HANDLE, the pipeline is being created with pre-rasterization shader state, and VkPipelineRenderingCreateInfo::`viewMask` is not `0`, all of the shaders in the pipeline must not include variables decorated with the `ViewIndex` built-in decoration in their interfaces
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`: If the pipeline is being created with fragment shader state and `renderPass` is VK_NULL_HANDLE, fragment shaders in `pStages` must not include the `InputAttachment` capability
-- `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`: If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be equal to `stageCount`
 - `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`: If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkPipelineColorBlendAttachmentState structures
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
 - `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: `pName` must be the name of an `OpEntryPoint` in `module` with an execution model that matches `stage`
 - `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`: If the identified entry point includes any variable in its interface that is declared with the `ClipDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxClipDistances`
 - `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`: If the identified entry point includes any variable in its interface that is declared with the `CullDistance` `BuiltIn` decoration, that variable must not have an array size greater than `VkPhysicalDeviceLimits::maxCullDistances`

@@ -648,7 +648,10 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 - `VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15.
+
+- 1: checked by the safe methods in every build (a chained VkPipelineCreationFeedbackCreateInfo's stage count against the pipeline's, or 0), but no test breaks it: the safe struct has no setter for its pointers, so its NULL feedback pointer is refused first
+- 14: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -1411,12 +1414,13 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 
 Left to the caller (listed one by one in the crate's `validation.json`): 251.
 
+- 1: checked by the safe methods in every build (a chained VkPipelineCreationFeedbackCreateInfo's stage count against the pipeline's, or 0), but no test breaks it: the safe struct has no setter for its pointers, so its NULL feedback pointer is refused first
 - 2: checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first
 - 1: checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first
 - 1: checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkGraphicsPipelineCreateInfo-flags-00724, whose text states the same case, and the layer names both
-- 244: explicit rule; the wrappers do not check it*/
+- 243: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {

@@ -1953,9 +1953,8 @@ for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 The rules are on [`VkPipelineCreationFeedbackCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCreationFeedbackCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkPipelineCreationFeedbackCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer Vulkan writes through)).*/
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`: dynamic (checks a chained VkPipelineCreationFeedbackCreateInfo of a graphics or compute pipeline names where the driver writes the feedback: the 1.3.239 registry makes the struct returned-only, so the safe struct has no setter and a safe program's pointer is NULL, which is refused)
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineCreationFeedbackCreateInfo<'a> {
