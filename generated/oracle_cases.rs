@@ -1881,4 +1881,10 @@ oracle_cases! {
         "VUID-vkCreatePrivateDataSlot-privateData-04564" on bare => |v, l, o| {
         },
     },
+    debug_utils_object_name_info_ext: vk::DebugUtilsObjectNameInfoEXT<'_> {
+        "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589" => |v, l, o| {
+            v.object_type = vk::ObjectType::from_raw(0);
+            v.object_handle = 0;
+        },
+    },
 }

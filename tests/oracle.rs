@@ -465,6 +465,31 @@ macro_rules! create {
     }};
 }
 
+fn debug_utils_object_name_info_ext(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut vk::DebugUtilsObjectNameInfoEXT<'_>, &Limits, &mut Objects),
+) -> Outcome {
+    use tuff::{vk::Handle as _, Handle as _};
+    // The device names itself.
+    let mut info = tuff::DebugUtilsObjectNameInfoEXT::new()
+        .object_type(vk::ObjectType::DEVICE)
+        .object_handle(s.device.raw().as_raw())
+        .object_name(Some(c"oracle"));
+    // SAFETY: as in `buffer_create_info`.
+    change(
+        unsafe { info.raw_values_mut() },
+        limits,
+        &mut Objects::default(),
+    );
+    create!(
+        s,
+        set_debug_utils_object_name_ext,
+        set_debug_utils_object_name_ext_unchecked,
+        &info
+    )
+}
+
 fn image_view_create_info(
     s: &Setup,
     limits: &Limits,
@@ -1436,6 +1461,14 @@ const LAYER_NAMES: &[(&str, &str)] = &[
 /// may name them beside it: the case still proves its rule when the layer names
 /// it, and names nothing but these besides.
 const IMPLIED: &[(&str, &[&str], &str)] = &[
+    (
+        "objectType-02589",
+        &[
+            "VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587",
+            "VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588",
+        ],
+        "vkSetDebugUtilsObjectNameEXT, the call the struct's fixture makes, takes no object of type UNKNOWN and no null handle, which the same change gives it",
+    ),
     (
         "srcImage-01791",
         &["srcImage-07744", "srcOffset-00147"],

@@ -88,9 +88,11 @@ struct Parts {
     restart: bool,
     patch_points: u32,
     min_sample_shading: f32,
-    /// Vertex binding numbers and attribute (location, binding) pairs.
+    /// Vertex binding numbers and attribute (location, binding) pairs, and the
+    /// attributes' format.
     bindings: Vec<u32>,
     attributes: Vec<(u32, u32)>,
+    attribute_format: vk::Format,
     /// A logic operation, enabled, for the blend state.
     logic_op: Option<vk::LogicOp>,
     /// Specialization constant IDs of the first stage.
@@ -143,6 +145,7 @@ impl Default for Parts {
             min_sample_shading: 0.0,
             bindings: vec![],
             attributes: vec![],
+            attribute_format: vk::Format::R32G32B32A32_SFLOAT,
             logic_op: None,
             constants: vec![],
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
@@ -351,7 +354,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         .map(|&(location, binding)| vk::VertexInputAttributeDescription {
             location,
             binding,
-            format: vk::Format::R32G32B32A32_SFLOAT,
+            format: parts.attribute_format,
             offset: 0,
         })
         .collect();
@@ -702,6 +705,16 @@ const CASES: &[Case] = &[
         p.base_handle = true;
         p.base_allows = false;
     }),
+    // A block-compressed format holds no vertex attributes. The test vertex shader
+    // reads no input, so the layer also notes the attribute goes unread.
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-OutputNotConsumed"],
+        ..case("VUID-VkVertexInputAttributeDescription-format-00623", |p| {
+            p.bindings = vec![0];
+            p.attributes = vec![(0, 0)];
+            p.attribute_format = vk::Format::BC1_RGB_UNORM_BLOCK;
+        })
+    },
     case(
         "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
         |p| p.feedback = true,

@@ -1147,6 +1147,11 @@ pub(crate) fn named_object_sync(
     if let Some(sync) = device.live().sync_of(ty, raw) {
         return Ok(sync);
     }
+    // A null handle of no type names nothing the driver could reach; the struct's
+    // own check refuses it (VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589).
+    if ty == vk::ObjectType::UNKNOWN && raw == 0 {
+        return Ok(tuff_runtime::HostSync::new());
+    }
     let physical = device.parent();
     let own = match ty {
         vk::ObjectType::DEVICE => raw == device.raw().as_raw(),

@@ -209,6 +209,18 @@ fn check_state_structs(device: &Device, states: &States<'_>, at: &str) -> Result
                 format!("{at}'s attribute at location {} reads binding {}, which no binding description describes", a.location, a.binding),
             )?;
         }
+        for a in attributes {
+            let buffer = device
+                .live()
+                .format_properties(device.parent(), a.format)?
+                .buffer_features;
+            if !buffer.contains(vk::FormatFeatureFlags::VERTEX_BUFFER) {
+                refuse(
+                    "VUID-VkVertexInputAttributeDescription-format-00623",
+                    format!("{at}'s attribute at location {} has format {:?}, whose buffer features lack VERTEX_BUFFER", a.location, a.format),
+                )?;
+            }
+        }
     }
     if let Some(a) = states.assembly {
         use vk::PrimitiveTopology as T;

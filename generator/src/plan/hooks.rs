@@ -285,9 +285,11 @@ const RENDER_PASS_INDICES: &str =
     "checks each attachment, subpass and input attachment index against the render pass's counts";
 const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
 const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
-const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states, vertex bindings and locations once each and every attribute's binding described, primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too)";
+const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states, vertex bindings and locations once each, every attribute's binding described and its format one the device reads vertices in (VERTEX_BUFFER among its buffer features), primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too)";
 const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags)";
 const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
+const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
+const BLEND_ATTACHMENTS_SLICE: &str = "the safe struct's `attachments` takes a slice and sets `attachmentCount` from its length, so the pointer is valid for that many states";
 const SAME_AS_00724: &str = "checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkGraphicsPipelineCreateInfo-flags-00724, whose text states the same case, and the layer names both";
 const UNPROVEN_DEPTH_BOUNDS: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first";
 const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first";
@@ -2162,6 +2164,10 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00723", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00724", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00725", How::User(SAME_AS_00724)),
+            ("VUID-VkVertexInputAttributeDescription-format-00623", How::Dynamic(STATE_STRUCTS)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06603", How::Static(RENDER_PASS_WRAPPER)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06575", How::Static(RENDER_PASS_WRAPPER)),
+            ("VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354", How::Static(BLEND_ATTACHMENTS_SLICE)),
             ("VUID-vkCreateGraphicsPipelines-flags-00720", How::Dynamic(PIPELINE_STATE)),
             ("VUID-vkCreateGraphicsPipelines-flags-00721", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869", How::User(UNAVAILABLE_DYNAMIC_STATES)),

@@ -19,6 +19,7 @@ use crate::validity::explicit::{FormatClass, Object, Op, Pred, Recognised, Rhs, 
 /// method's name, over an `args::` struct of the parameters a rule can name.
 pub const FIXTURES: &[&str] = &[
     "VkBufferCreateInfo",
+    "VkDebugUtilsObjectNameInfoEXT",
     "VkImageCreateInfo",
     "VkSamplerCreateInfo",
     "VkMemoryBarrier2",

@@ -548,6 +548,8 @@ pub fn plain(html: &str) -> String {
 /// be zero`) is a code span like the others.
 fn normalised(text: &str) -> String {
     let s = text
+        // The null handle is a link, not a code span, in the rule's HTML.
+        .replace(" VK_NULL_HANDLE", " `VK_NULL_HANDLE`")
         .replace(" must not equal ", " must not be equal to ")
         .replace(" must equal ", " must be equal to ")
         .replace(" must also ", " must ");
@@ -1095,7 +1097,7 @@ fn value_pred(input: &Input, path: &str, positive: bool, list: &str) -> Option<P
 
 /// An API constant a number member is compared with, as a Rust expression of the
 /// member's type: the specification defines each as all bits set (`(~0U)`,
-/// `(~0ULL)`).
+/// `(~0ULL)`), but `VK_NULL_HANDLE`, which is 0.
 fn constant(name: &str, c_type: &str) -> Option<&'static str> {
     match (name, c_type) {
         (
@@ -1107,6 +1109,8 @@ fn constant(name: &str, c_type: &str) -> Option<&'static str> {
             "uint32_t",
         ) => Some("u32::MAX"),
         ("VK_WHOLE_SIZE", "VkDeviceSize" | "uint64_t") => Some("u64::MAX"),
+        // A handle carried as a number (`objectHandle`): the null handle is 0.
+        ("VK_NULL_HANDLE", "uint64_t") => Some("0"),
         _ => None,
     }
 }

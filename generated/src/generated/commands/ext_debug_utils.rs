@@ -215,10 +215,9 @@ The caller upholds the rules that [`Self::create_debug_utils_messenger_ext`] che
 
 # Safety
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591`: The `objectType` member of each element of `pCallbackData->pObjects` must not be `VK_OBJECT_TYPE_UNKNOWN`
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
 
 # Valid usage
 
@@ -385,11 +384,10 @@ impl Device {
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587`: `pNameInfo->objectType` must not be `VK_OBJECT_TYPE_UNKNOWN`
 - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588`: `pNameInfo->objectHandle` must not be VK_NULL_HANDLE
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
 
 # Valid usage
 

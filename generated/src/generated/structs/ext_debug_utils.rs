@@ -204,12 +204,11 @@ for DebugUtilsMessengerCreateInfoEXT<'a> {}
 
 The rules are on [`VkDebugUtilsObjectNameInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectNameInfoEXT.html). Settled by the wrappers:
 
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590`: dynamic (checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone))
 - `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -88,6 +88,17 @@ pub fn check_debug_utils_object_name_info_ext(
         s,
         "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter",
     )?;
+    if matches!(v.object_type.as_raw(), 0) && v.object_handle == 0 {
+        return Err(
+            fail(
+                "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589",
+                format!(
+                    "If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE (`objectType` = {:?}, `objectHandle` = {:?})",
+                    v.object_type, v.object_handle
+                ),
+            ),
+        );
+    }
     Ok(())
 }
 ///The rules of `VkDebugUtilsObjectTagInfoEXT` that are checked at run time.
