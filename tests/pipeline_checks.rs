@@ -97,8 +97,9 @@ struct Parts {
     logic_op: Option<vk::LogicOp>,
     /// Specialization constant IDs of the first stage.
     constants: Vec<u32>,
-    /// The first stage's flags.
+    /// The first stage's flags and entry point name.
     stage_flags: vk::PipelineShaderStageCreateFlags,
+    entry: &'static core::ffi::CStr,
     /// A required subgroup size chained to the first stage.
     subgroup_size: Option<SubgroupSize>,
     /// A creation feedback info chained to the pipeline, as the safe struct makes
@@ -149,6 +150,7 @@ impl Default for Parts {
             logic_op: None,
             constants: vec![],
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
+            entry: c"main",
             subgroup_size: None,
             feedback: false,
         }
@@ -327,7 +329,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
                 .stage(stage)
                 .module(Some(module(stage)));
             if k == 0 {
-                stage = stage.flags(parts.stage_flags);
+                stage = stage.flags(parts.stage_flags).name(parts.entry);
                 if let Some(next) = chained.next() {
                     stage = stage.push_next(next);
                 }
@@ -715,6 +717,9 @@ const CASES: &[Case] = &[
             p.attribute_format = vk::Format::BC1_RGB_UNORM_BLOCK;
         })
     },
+    case("VUID-VkPipelineShaderStageCreateInfo-pName-00707", |p| {
+        p.entry = c"other"
+    }),
     case(
         "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
         |p| p.feedback = true,

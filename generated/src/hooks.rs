@@ -3032,6 +3032,20 @@ fn check_shader_layout(
         );
     }
     let live = device.live();
+    if let Some(interface) = live
+        .shader_module(stage.module)
+        .filter(|_| !stage.p_name.is_null())
+    {
+        // SAFETY: the safe struct's constructor and `name` setter take the name as a
+        // `&CStr` the struct borrows, so it is a nul-terminated string that outlives it.
+        let name = unsafe { core::ffi::CStr::from_ptr(stage.p_name) };
+        if !interface.has_entry_point(name.to_bytes(), stage.stage) {
+            refuse(
+                "VUID-VkPipelineShaderStageCreateInfo-pName-00707",
+                format!("{at}: the module has no entry point {name:?} of the {:?} stage's execution model", stage.stage),
+            )?;
+        }
+    }
     let (Some(interface), Some(layout)) = (
         live.shader_module(stage.module),
         live.pipeline_layout(layout),

@@ -252,6 +252,31 @@ pub(crate) struct Interface {
     /// Each vertex entry point's name and the input locations it declares (a
     /// location and how many consecutive ones the variable takes).
     pub vertex_inputs: Vec<(String, Vec<(u32, u32)>)>,
+    /// Every entry point: its name and execution model (0 `Vertex`, 1
+    /// `TessellationControl`, 2 `TessellationEvaluation`, 3 `Geometry`, 4
+    /// `Fragment`, 5 `GLCompute`, ...).
+    pub entry_points: Vec<(String, u32)>,
+}
+
+impl Interface {
+    /// Whether the module has an entry point `name` whose execution model is the
+    /// one of the pipeline stage `stage` (a stage of the emitted API without one,
+    /// such as a ray tracing stage, has none).
+    pub(crate) fn has_entry_point(&self, name: &[u8], stage: ash::vk::ShaderStageFlags) -> bool {
+        use ash::vk::ShaderStageFlags as S;
+        let model = match stage {
+            S::VERTEX => 0,
+            S::TESSELLATION_CONTROL => 1,
+            S::TESSELLATION_EVALUATION => 2,
+            S::GEOMETRY => 3,
+            S::FRAGMENT => 4,
+            S::COMPUTE => 5,
+            _ => return false,
+        };
+        self.entry_points
+            .iter()
+            .any(|(n, m)| n.as_bytes() == name && *m == model)
+    }
 }
 
 impl Interface {
@@ -491,6 +516,8 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     let mut variables: Vec<(u32, u32, u32)> = Vec::new();
     // Each vertex entry point's name and interface ids.
     let mut vertex_entries: Vec<(String, Vec<u32>)> = Vec::new();
+    // Every entry point's name and execution model.
+    let mut entry_points: Vec<(String, u32)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -516,7 +543,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                 m.constants.insert(w[2], w[3]);
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
-            (OP_ENTRY_POINT, 4..) if w[1] == EXECUTION_MODEL_VERTEX => {
+            (OP_ENTRY_POINT, 4..) => {
                 // The name is a nul-terminated string packed four bytes a word; the
                 // interface ids follow it.
                 let mut name = Vec::new();
@@ -531,14 +558,20 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                     }
                 }
                 let name = String::from_utf8_lossy(&name).into_owned();
-                vertex_entries.push((name, rest.to_vec()));
+                entry_points.push((name.clone(), w[1]));
+                if w[1] == EXECUTION_MODEL_VERTEX {
+                    vertex_entries.push((name, rest.to_vec()));
+                }
             }
             _ => {}
         }
         at += count;
     }
     let (used, unplaced) = variable_ops(words, &variables);
-    let mut out = Interface::default();
+    let mut out = Interface {
+        entry_points,
+        ..Interface::default()
+    };
     for (name, ids) in vertex_entries {
         let inputs = variables
             .iter()
@@ -834,6 +867,10 @@ mod tests {
             [("main".to_owned(), vec![(0, 1), (1, 1)])]
         );
         assert!(triangle.reads_vertex_location(b"main", 1));
+        assert_eq!(triangle.entry_points, [("main".to_owned(), 0)]);
+        assert!(triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::VERTEX));
+        assert!(!triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::FRAGMENT));
+        assert!(!triangle.has_entry_point(b"other", ash::vk::ShaderStageFlags::VERTEX));
         assert!(!triangle.reads_vertex_location(b"main", 2));
         assert!(!triangle.reads_vertex_location(b"other", 0));
         let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));

@@ -2662,6 +2662,7 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
 
 The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageCreateInfo.html). Settled by the wrappers:
 
+- `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: dynamic (checks each stage of a graphics or compute pipeline names an entry point of its module with the stage's execution model (the module's entry points are read from its SPIR-V when it is made))
 - `VUID-VkPipelineShaderStageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkPipelineShaderStageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
@@ -2676,10 +2677,10 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`: dynamic (checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them))
 - `VUID-VkPipelineShaderStageCreateInfo-module-06716`: dynamic (checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 33.
+Left to the caller (listed one by one in the crate's `validation.json`): 32.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 30: explicit rule; the wrappers do not check it*/
+- 29: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
