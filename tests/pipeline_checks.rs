@@ -717,6 +717,65 @@ const CASES: &[Case] = &[
             p.attribute_format = vk::Format::BC1_RGB_UNORM_BLOCK;
         })
     },
+    // A format of an extension the device does not enable (VK_IMG_format_pvrtc): it
+    // has no attachment feature or depth/stencil aspect either, which is what the
+    // 1.3.239 layer names (it does not check the value itself).
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-renderPass-06581"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06580", |p| {
+            p.target = rendering(
+                0,
+                vec![vk::Format::PVRTC1_2BPP_UNORM_BLOCK_IMG],
+                vk::Format::UNDEFINED,
+                vk::Format::UNDEFINED,
+            )
+        })
+    },
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-renderPass-06587"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06583", |p| {
+            p.target = rendering(
+                0,
+                vec![RGBA8],
+                vk::Format::PVRTC1_2BPP_UNORM_BLOCK_IMG,
+                vk::Format::UNDEFINED,
+            )
+        })
+    },
+    Case {
+        also: &["VUID-VkGraphicsPipelineCreateInfo-renderPass-06588"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06584", |p| {
+            p.target = rendering(
+                0,
+                vec![RGBA8],
+                vk::Format::UNDEFINED,
+                vk::Format::PVRTC1_2BPP_UNORM_BLOCK_IMG,
+            )
+        })
+    },
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06053", |p| {
+        p.target = rendering(0, vec![RGBA8], D32S8, D32S8);
+        p.depth_stencil = None;
+    }),
+    case("VUID-VkGraphicsPipelineCreateInfo-renderPass-06054", |p| {
+        p.target = rendering(0, vec![RGBA8], vk::Format::UNDEFINED, vk::Format::UNDEFINED);
+        p.blend = None;
+    }),
+    // Rasterization discarded statically, so the viewport state is wanted only for
+    // the dynamic state. The unchecked call crashed the test process (the 1.3.239
+    // layer lets it through to lavapipe, which reads the missing state): proven by
+    // the error alone, without the driver.
+    Case {
+        layer: false,
+        ..case(
+            "VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892",
+            |p| {
+                p.discard = true;
+                p.dynamic.push(vk::DynamicState::RASTERIZER_DISCARD_ENABLE);
+                p.viewport_counts = None;
+            },
+        )
+    },
     case("VUID-VkPipelineShaderStageCreateInfo-pName-00707", |p| {
         p.entry = c"other"
     }),

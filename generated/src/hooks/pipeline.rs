@@ -108,6 +108,26 @@ pub(crate) fn graphics_pipeline_state_checks(
             false => subpass_targets(device, raw, &at)?,
             true => rendering_targets(device, raw, &at)?,
         };
+        if states.fragment() && raw.render_pass == vk::RenderPass::null() {
+            // Dynamic rendering's formats ask for the states that write them.
+            if targets.depth.is_some() && states.depth_stencil.is_none() {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06053",
+                    format!(
+                        "{at} renders to a depth or stencil format and has no pDepthStencilState"
+                    ),
+                )?;
+            }
+            if !targets.colors.is_empty() && states.blend.is_none() {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06054",
+                    format!(
+                        "{at} renders to {} color attachments and has no pColorBlendState",
+                        targets.colors.len()
+                    ),
+                )?;
+            }
+        }
         if states.fragment() {
             check_targets(device, raw, &states, &targets, &at)?;
             check_blend_identical(device, &states, &at)?;
@@ -536,6 +556,12 @@ fn check_present(
             "VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751",
             "pMultisampleState (the pipeline has fragment output state)",
         ),
+        (
+            !states.dynamic(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)
+                || states.viewport.is_some(),
+            "VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892",
+            "pViewportState (rasterizer discard is dynamic)",
+        ),
     ];
     for (given, vuid, what) in needs {
         if !given {
@@ -626,6 +652,25 @@ fn rendering_targets(
         crate::retention::raw_slice(r.p_color_attachment_formats, r.color_attachment_count)
     };
     let (depth, stencil) = (r.depth_attachment_format, r.stencil_attachment_format);
+    // Values of the API first: the format queries below hand them to the driver.
+    let scope = device.scope();
+    for &f in colors {
+        crate::checks::enum_format(
+            f,
+            &scope,
+            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06580",
+        )?;
+    }
+    crate::checks::enum_format(
+        depth,
+        &scope,
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06583",
+    )?;
+    crate::checks::enum_format(
+        stencil,
+        &scope,
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06584",
+    )?;
     let defined = |f: vk::Format| f != vk::Format::UNDEFINED;
     for (k, &f) in colors.iter().enumerate().filter(|(_, f)| defined(**f)) {
         if !features(device, f)?.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT) {
