@@ -776,6 +776,16 @@ const CASES: &[Case] = &[
             },
         )
     },
+    case("VUID-VkGraphicsPipelineCreateInfo-pStages-06894", |p| {
+        p.discard = true
+    }),
+    // The fragment module has no compute entry point either.
+    Case {
+        also: &["VUID-VkPipelineShaderStageCreateInfo-pName-00707"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-06896", |p| {
+            p.stages = vec![vk::ShaderStageFlags::VERTEX, vk::ShaderStageFlags::COMPUTE]
+        })
+    },
     case("VUID-VkPipelineShaderStageCreateInfo-pName-00707", |p| {
         p.entry = c"other"
     }),

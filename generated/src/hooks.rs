@@ -3136,6 +3136,19 @@ pub(crate) fn create_graphics_pipelines_checks(
         // SAFETY: the safe setter stores the stages with their count.
         let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
         for (j, stage) in stages.iter().enumerate() {
+            // Before the stage's module is read for the stage: a stage no graphics
+            // pipeline state has (compute, say) is refused as such.
+            let graphics = vk::ShaderStageFlags::VERTEX
+                | vk::ShaderStageFlags::TESSELLATION_CONTROL
+                | vk::ShaderStageFlags::TESSELLATION_EVALUATION
+                | vk::ShaderStageFlags::GEOMETRY
+                | vk::ShaderStageFlags::FRAGMENT;
+            if !graphics.contains(stage.stage) || stage.stage.is_empty() {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-pStages-06896",
+                    format!("pCreateInfos[{i}].pStages[{j}].stage ({:?}) is no stage of pre-rasterization or fragment shader state", stage.stage),
+                )?;
+            }
             check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
             check_stage_subgroups(
                 device,

@@ -459,6 +459,14 @@ pub(crate) fn compute_pipeline_state_checks(
 fn check_stages(states: &States<'_>, at: &str) -> Result<()> {
     let mut seen = vk::ShaderStageFlags::empty();
     for (j, s) in states.stages.iter().enumerate() {
+        // With rasterization discarded for good, the pipeline has no fragment shader
+        // state for a fragment stage to belong to.
+        if s.stage == vk::ShaderStageFlags::FRAGMENT && !states.fragment() {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-06894",
+                format!("{at}.pStages[{j}] is a fragment stage, and the pipeline discards rasterization statically, so it has no fragment shader state"),
+            )?;
+        }
         if seen.intersects(s.stage) {
             refuse(
                 "VUID-VkGraphicsPipelineCreateInfo-stage-06897",

@@ -290,6 +290,7 @@ const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states
 const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags)";
 const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
 const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
+const COMPLETE_PIPELINES: &str = "every graphics pipeline the emitted API makes is complete (no pipeline libraries are emitted): it always has pre-rasterization shader state, its vertex stage among them (stage-00727 is checked)";
 const VIEWPORT_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (a pipeline with rasterizer discard dynamic and no viewport state crashed the test process under the 1.3.239 layer, which lets it through to lavapipe: proven by the error alone)";
 const RENDERING_FORMATS_SLICE: &str = "the safe VkPipelineRenderingCreateInfo's `color_attachment_formats` takes a slice and sets `colorAttachmentCount` from its length, so the pointer is valid for that many formats (each checked as a VkFormat value, renderPass-06580)";
 const BLEND_ATTACHMENTS_SLICE: &str = "the safe struct's `attachments` takes a slice and sets `attachmentCount` from its length, so the pointer is valid for that many states";
@@ -2170,6 +2171,9 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkGraphicsPipelineCreateInfo-flags-00725", How::User(SAME_AS_00724)),
             ("VUID-VkVertexInputAttributeDescription-format-00623", How::Dynamic(STATE_STRUCTS)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06603", How::Static(RENDER_PASS_WRAPPER)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-06894", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-06895", How::Static(COMPLETE_PIPELINES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-06896", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06579", How::Static(RENDERING_FORMATS_SLICE)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06580", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06583", How::Dynamic(PIPELINE_STATE)),
