@@ -218,6 +218,8 @@ fn render_pass(s: &Setup, colors: &[vk::Format], depth: Option<vk::Format>) -> t
 struct Common {
     test: [tuff::ShaderModule; 2],
     bezier: [tuff::ShaderModule; 4],
+    /// A geometry shader of points in and out.
+    geometry: tuff::ShaderModule,
     layout: tuff::PipelineLayout,
     _set_layout: tuff::DescriptorSetLayout,
 }
@@ -262,6 +264,7 @@ fn common(s: &Setup) -> Common {
             shader(include_bytes!("../shaders/spv/bezier.tese.spv")),
             shader(include_bytes!("../shaders/spv/bezier.frag.spv")),
         ],
+        geometry: shader(include_bytes!("../shaders/spv/points.geom.spv")),
         layout,
         _set_layout: set_layout,
     }
@@ -271,6 +274,9 @@ fn common(s: &Setup) -> Common {
 /// through the unchecked one.
 fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()>, Vec<String>) {
     let module = |stage: vk::ShaderStageFlags| {
+        if stage == vk::ShaderStageFlags::GEOMETRY {
+            return &c.geometry;
+        }
         let i = match stage {
             vk::ShaderStageFlags::VERTEX => 0,
             vk::ShaderStageFlags::TESSELLATION_CONTROL => 1,
@@ -779,6 +785,28 @@ const CASES: &[Case] = &[
     case("VUID-VkGraphicsPipelineCreateInfo-pStages-06894", |p| {
         p.discard = true
     }),
+    // A geometry shader of points after a triangle list.
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00738", |p| {
+            p.stages = vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ]
+        })
+    },
+    // A geometry shader of points after tessellation into triangles (quads); it
+    // does not pass on the outputs of the evaluation stage that the Bézier fragment
+    // shader reads.
+    Case {
+        on: On::Full,
+        also: &["UNASSIGNED-CoreValidation-Shader-InputNotProduced"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00739", |p| {
+            *p = Parts::tessellated();
+            p.stages.insert(3, vk::ShaderStageFlags::GEOMETRY);
+        })
+    },
     // The fragment module has no compute entry point either.
     Case {
         also: &["VUID-VkPipelineShaderStageCreateInfo-pName-00707"],

@@ -252,10 +252,38 @@ pub(crate) struct Interface {
     /// Each vertex entry point's name and the input locations it declares (a
     /// location and how many consecutive ones the variable takes).
     pub vertex_inputs: Vec<(String, Vec<(u32, u32)>)>,
-    /// Every entry point: its name and execution model (0 `Vertex`, 1
-    /// `TessellationControl`, 2 `TessellationEvaluation`, 3 `Geometry`, 4
-    /// `Fragment`, 5 `GLCompute`, ...).
-    pub entry_points: Vec<(String, u32)>,
+    /// Every entry point, with the execution modes declared for it.
+    pub entry_points: Vec<EntryPoint>,
+}
+
+/// An entry point of a module.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct EntryPoint {
+    /// Its name.
+    pub name: String,
+    /// Its execution model (0 `Vertex`, 1 `TessellationControl`, 2
+    /// `TessellationEvaluation`, 3 `Geometry`, 4 `Fragment`, 5 `GLCompute`, ...).
+    pub model: u32,
+    /// Each `OpExecutionMode` declared for it: the mode and its literal operands.
+    pub modes: Vec<(u32, Vec<u32>)>,
+}
+
+impl EntryPoint {
+    /// The operands of execution mode `mode`, if the entry point declares it.
+    pub(crate) fn mode(&self, mode: u32) -> Option<&[u32]> {
+        self.modes
+            .iter()
+            .find(|(m, _)| *m == mode)
+            .map(|(_, operands)| operands.as_slice())
+    }
+
+    /// The first of `modes` the entry point declares.
+    pub(crate) fn first_of(&self, modes: &[u32]) -> Option<u32> {
+        self.modes
+            .iter()
+            .map(|(m, _)| *m)
+            .find(|m| modes.contains(m))
+    }
 }
 
 impl Interface {
@@ -263,6 +291,15 @@ impl Interface {
     /// one of the pipeline stage `stage` (a stage of the emitted API without one,
     /// such as a ray tracing stage, has none).
     pub(crate) fn has_entry_point(&self, name: &[u8], stage: ash::vk::ShaderStageFlags) -> bool {
+        self.entry_point(name, stage).is_some()
+    }
+
+    /// The entry point `name` with the execution model of pipeline stage `stage`.
+    pub(crate) fn entry_point(
+        &self,
+        name: &[u8],
+        stage: ash::vk::ShaderStageFlags,
+    ) -> Option<&EntryPoint> {
         use ash::vk::ShaderStageFlags as S;
         let model = match stage {
             S::VERTEX => 0,
@@ -271,11 +308,11 @@ impl Interface {
             S::GEOMETRY => 3,
             S::FRAGMENT => 4,
             S::COMPUTE => 5,
-            _ => return false,
+            _ => return None,
         };
         self.entry_points
             .iter()
-            .any(|(n, m)| n.as_bytes() == name && *m == model)
+            .find(|e| e.name.as_bytes() == name && e.model == model)
     }
 }
 
@@ -505,6 +542,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const OP_MEMBER_DECORATE: u32 = 72;
     const OP_VARIABLE: u32 = 59;
     const OP_ENTRY_POINT: u32 = 15;
+    const OP_EXECUTION_MODE: u32 = 16;
     const EXECUTION_MODEL_VERTEX: u32 = 0;
     const INPUT: u32 = 1;
     const LOCATION: u32 = 30;
@@ -517,7 +555,9 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     // Each vertex entry point's name and interface ids.
     let mut vertex_entries: Vec<(String, Vec<u32>)> = Vec::new();
     // Every entry point's name and execution model.
-    let mut entry_points: Vec<(String, u32)> = Vec::new();
+    let mut entry_points: Vec<(u32, EntryPoint)> = Vec::new();
+    // Execution modes by entry point id.
+    let mut modes: Vec<(u32, u32, Vec<u32>)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -543,6 +583,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                 m.constants.insert(w[2], w[3]);
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
+            (OP_EXECUTION_MODE, 3..) => modes.push((w[1], w[2], w[3..].to_vec())),
             (OP_ENTRY_POINT, 4..) => {
                 // The name is a nul-terminated string packed four bytes a word; the
                 // interface ids follow it.
@@ -558,7 +599,14 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                     }
                 }
                 let name = String::from_utf8_lossy(&name).into_owned();
-                entry_points.push((name.clone(), w[1]));
+                entry_points.push((
+                    w[2],
+                    EntryPoint {
+                        name: name.clone(),
+                        model: w[1],
+                        modes: Vec::new(),
+                    },
+                ));
                 if w[1] == EXECUTION_MODEL_VERTEX {
                     vertex_entries.push((name, rest.to_vec()));
                 }
@@ -568,8 +616,13 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         at += count;
     }
     let (used, unplaced) = variable_ops(words, &variables);
+    for (id, mode, operands) in modes {
+        if let Some((_, e)) = entry_points.iter_mut().find(|(e, _)| *e == id) {
+            e.modes.push((mode, operands));
+        }
+    }
     let mut out = Interface {
-        entry_points,
+        entry_points: entry_points.into_iter().map(|(_, e)| e).collect(),
         ..Interface::default()
     };
     for (name, ids) in vertex_entries {
@@ -867,7 +920,14 @@ mod tests {
             [("main".to_owned(), vec![(0, 1), (1, 1)])]
         );
         assert!(triangle.reads_vertex_location(b"main", 1));
-        assert_eq!(triangle.entry_points, [("main".to_owned(), 0)]);
+        assert_eq!(triangle.entry_points.len(), 1);
+        assert_eq!(
+            (
+                triangle.entry_points[0].name.as_str(),
+                triangle.entry_points[0].model
+            ),
+            ("main", 0)
+        );
         assert!(triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::VERTEX));
         assert!(!triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::FRAGMENT));
         assert!(!triangle.has_entry_point(b"other", ash::vk::ShaderStageFlags::VERTEX));
@@ -952,6 +1012,25 @@ mod tests {
         assert!(frag.resources.is_empty());
         // The test fragment shader pushes one vec4.
         assert_eq!(frag.push_constants, Some((0, 16)));
+    }
+
+    #[test]
+    fn entry_points_keep_their_execution_modes() {
+        let geometry = interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")));
+        let e = geometry
+            .entry_point(b"main", ash::vk::ShaderStageFlags::GEOMETRY)
+            .expect("the geometry entry point");
+        // InputPoints, OutputPoints, OutputVertices 1, Invocations 1.
+        assert!(e.mode(19).is_some());
+        assert!(e.mode(27).is_some());
+        assert_eq!(e.mode(26), Some(&[1][..]));
+        assert_eq!(e.mode(0), Some(&[1][..]));
+        let tese = interface(&words(include_bytes!("../../shaders/spv/bezier.tese.spv")));
+        let e = tese
+            .entry_point(b"main", ash::vk::ShaderStageFlags::TESSELLATION_EVALUATION)
+            .expect("the evaluation entry point");
+        // Quads.
+        assert_eq!(e.first_of(&[22, 24, 25]), Some(24));
     }
 
     #[test]

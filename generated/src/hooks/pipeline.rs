@@ -103,6 +103,7 @@ pub(crate) fn graphics_pipeline_state_checks(
             &at,
         )?;
         check_stages(&states, &at)?;
+        check_execution_modes(device, &states, &at)?;
         check_present(raw, &states, &at)?;
         let targets = match raw.render_pass == vk::RenderPass::null() {
             false => subpass_targets(device, raw, &at)?,
@@ -519,6 +520,184 @@ fn check_stages(states: &States<'_>, at: &str) -> Result<()> {
             format!(
                 "{at}'s topology is VK_PRIMITIVE_TOPOLOGY_PATCH_LIST without tessellation stages"
             ),
+        )?;
+    }
+    Ok(())
+}
+
+/// SPIR-V execution modes a graphics pipeline's stages rely on.
+mod mode {
+    pub const INVOCATIONS: u32 = 0;
+    pub const POINT_MODE: u32 = 10;
+    pub const INPUT_POINTS: u32 = 19;
+    pub const INPUT_LINES: u32 = 20;
+    pub const INPUT_LINES_ADJACENCY: u32 = 21;
+    pub const TRIANGLES: u32 = 22;
+    pub const INPUT_TRIANGLES_ADJACENCY: u32 = 23;
+    pub const QUADS: u32 = 24;
+    pub const ISOLINES: u32 = 25;
+    pub const OUTPUT_VERTICES: u32 = 26;
+    /// The tessellation subdivisions.
+    pub const SUBDIVISIONS: [u32; 3] = [TRIANGLES, QUADS, ISOLINES];
+    /// A geometry shader's input primitives.
+    pub const GEOMETRY_INPUTS: [u32; 5] = [
+        INPUT_POINTS,
+        INPUT_LINES,
+        INPUT_LINES_ADJACENCY,
+        TRIANGLES,
+        INPUT_TRIANGLES_ADJACENCY,
+    ];
+}
+
+/// The execution modes of a graphics pipeline's tessellation and geometry stages,
+/// read from their modules' entry points: tessellation stages that agree on a
+/// subdivision (00732, 00733) and an output patch size (00734, 00735) within
+/// `maxTessellationPatchSize` (00713); a geometry stage with an output vertex count
+/// (00714) and an invocation count (00715) within the limits, whose input primitive
+/// is what the topology (00738) or the tessellation stages (00739) give it.
+fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    use vk::ShaderStageFlags as S;
+    let live = device.live();
+    let interfaces: Vec<_> = states
+        .stages
+        .iter()
+        .filter_map(|s| Some((s, live.shader_module(s.module)?)))
+        .collect();
+    let entry = |stage: S| {
+        interfaces
+            .iter()
+            .find(|(s, _)| s.stage == stage)
+            .and_then(|(s, i)| {
+                if s.p_name.is_null() {
+                    return None;
+                }
+                // SAFETY: as in `check_shader_layout`: the safe struct keeps the name as
+                // a `&CStr`.
+                let name = unsafe { core::ffi::CStr::from_ptr(s.p_name) };
+                i.entry_point(name.to_bytes(), stage).cloned()
+            })
+    };
+    let limits = crate::hooks::limits(device);
+    let (control, evaluation, geometry) = (
+        entry(S::TESSELLATION_CONTROL),
+        entry(S::TESSELLATION_EVALUATION),
+        entry(S::GEOMETRY),
+    );
+    let tessellation = [&control, &evaluation];
+    let tessellated = control.is_some() && evaluation.is_some();
+    if tessellated {
+        let subdivisions: Vec<u32> = tessellation
+            .iter()
+            .filter_map(|e| e.as_ref()?.first_of(&mode::SUBDIVISIONS))
+            .collect();
+        if subdivisions.is_empty() {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00732",
+                format!(
+                    "{at}'s tessellation stages name no subdivision (Triangles, Quads or Isolines)"
+                ),
+            )?;
+        }
+        if subdivisions.windows(2).any(|w| w[0] != w[1]) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00733",
+                format!(
+                    "{at}'s tessellation stages name different subdivisions ({subdivisions:?})"
+                ),
+            )?;
+        }
+        let sizes: Vec<u32> = tessellation
+            .iter()
+            .filter_map(|e| e.as_ref()?.mode(mode::OUTPUT_VERTICES)?.first().copied())
+            .collect();
+        if sizes.is_empty() {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00734",
+                format!("{at}'s tessellation stages name no output patch size (OutputVertices)"),
+            )?;
+        }
+        if sizes.windows(2).any(|w| w[0] != w[1]) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00735",
+                format!("{at}'s tessellation stages name different output patch sizes ({sizes:?})"),
+            )?;
+        }
+        let max = limits.max_tessellation_patch_size;
+        if let Some(size) = sizes.iter().find(|n| **n == 0 || **n > max) {
+            refuse(
+                "VUID-VkPipelineShaderStageCreateInfo-stage-00713",
+                format!("{at}'s tessellation output patch size ({size}) is not within 1 and maxTessellationPatchSize ({max})"),
+            )?;
+        }
+    }
+    let Some(geometry) = geometry else {
+        return Ok(());
+    };
+    let vertices = geometry
+        .mode(mode::OUTPUT_VERTICES)
+        .and_then(|o| o.first().copied());
+    let max = limits.max_geometry_output_vertices;
+    if !vertices.is_some_and(|n| n > 0 && n <= max) {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00714",
+            format!("{at}'s geometry stage's output vertex count ({vertices:?}) is not within 1 and maxGeometryOutputVertices ({max})"),
+        )?;
+    }
+    let invocations = geometry
+        .mode(mode::INVOCATIONS)
+        .and_then(|o| o.first().copied());
+    let max = limits.max_geometry_shader_invocations;
+    if !invocations.is_some_and(|n| n > 0 && n <= max) {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00715",
+            format!("{at}'s geometry stage's invocation count ({invocations:?}) is not within 1 and maxGeometryShaderInvocations ({max})"),
+        )?;
+    }
+    let input = geometry.first_of(&mode::GEOMETRY_INPUTS);
+    if tessellated {
+        // What the tessellator emits: points, lines for isolines, else triangles.
+        let points = tessellation.iter().any(|e| {
+            e.as_ref()
+                .is_some_and(|e| e.mode(mode::POINT_MODE).is_some())
+        });
+        let lines = tessellation.iter().any(|e| {
+            e.as_ref()
+                .and_then(|e| e.first_of(&mode::SUBDIVISIONS))
+                .is_some_and(|m| m == mode::ISOLINES)
+        });
+        let wanted = if points {
+            mode::INPUT_POINTS
+        } else if lines {
+            mode::INPUT_LINES
+        } else {
+            mode::TRIANGLES
+        };
+        if input != Some(wanted) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00739",
+                format!("{at}'s geometry stage's input primitive (mode {input:?}) is not the tessellation stages' output (mode {wanted})"),
+            )?;
+        }
+        return Ok(());
+    }
+    let Some(assembly) = states.assembly else {
+        return Ok(());
+    };
+    use vk::PrimitiveTopology as T;
+    let wanted = match assembly.topology {
+        T::POINT_LIST => mode::INPUT_POINTS,
+        T::LINE_LIST | T::LINE_STRIP => mode::INPUT_LINES,
+        T::LINE_LIST_WITH_ADJACENCY | T::LINE_STRIP_WITH_ADJACENCY => mode::INPUT_LINES_ADJACENCY,
+        T::TRIANGLE_LIST | T::TRIANGLE_STRIP | T::TRIANGLE_FAN => mode::TRIANGLES,
+        T::TRIANGLE_LIST_WITH_ADJACENCY | T::TRIANGLE_STRIP_WITH_ADJACENCY => {
+            mode::INPUT_TRIANGLES_ADJACENCY
+        }
+        _ => return Ok(()),
+    };
+    if input != Some(wanted) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pStages-00738",
+            format!("{at}'s geometry stage's input primitive (mode {input:?}) is not the one its topology {:?} gives (mode {wanted})", assembly.topology),
         )?;
     }
     Ok(())

@@ -290,6 +290,8 @@ const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states
 const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags)";
 const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
 const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
+const EXECUTION_MODES: &str = "checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them";
+const UNPROVEN_EXECUTION_MODES: &str = "checked by the safe methods in every build (the execution modes of the entry points the tessellation and geometry stages name, read from each module's SPIR-V: one subdivision and one output patch size between the tessellation stages, within maxTessellationPatchSize; a geometry stage's output vertex and invocation counts within the limits), but no test breaks it: GLSL writes these modes in the stage that must have them, within the compiler's limits, and the test shaders are GLSL";
 const COMPLETE_PIPELINES: &str = "every graphics pipeline the emitted API makes is complete (no pipeline libraries are emitted): it always has pre-rasterization shader state, its vertex stage among them (stage-00727 is checked)";
 const VIEWPORT_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (a pipeline with rasterizer discard dynamic and no viewport state crashed the test process under the 1.3.239 layer, which lets it through to lavapipe: proven by the error alone)";
 const RENDERING_FORMATS_SLICE: &str = "the safe VkPipelineRenderingCreateInfo's `color_attachment_formats` takes a slice and sets `colorAttachmentCount` from its length, so the pointer is valid for that many formats (each checked as a VkFormat value, renderPass-06580)";
@@ -2172,6 +2174,15 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkVertexInputAttributeDescription-format-00623", How::Dynamic(STATE_STRUCTS)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06603", How::Static(RENDER_PASS_WRAPPER)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-06894", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00738", How::Dynamic(EXECUTION_MODES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00739", How::Dynamic(EXECUTION_MODES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00732", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00733", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00734", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00735", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-stage-00713", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-stage-00714", How::User(UNPROVEN_EXECUTION_MODES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-stage-00715", How::User(UNPROVEN_EXECUTION_MODES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-06895", How::Static(COMPLETE_PIPELINES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-06896", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06579", How::Static(RENDERING_FORMATS_SLICE)),

@@ -1371,6 +1371,8 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-topology-00737`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00738`: dynamic (checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them)
+- `VUID-VkGraphicsPipelineCreateInfo-pStages-00739`: dynamic (checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them)
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
@@ -1424,15 +1426,16 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 239.
+Left to the caller (listed one by one in the crate's `validation.json`): 237.
 
 - 1: checked by the safe methods in every build (a chained VkPipelineCreationFeedbackCreateInfo's stage count against the pipeline's, or 0), but no test breaks it: the safe struct has no setter for its pointers, so its NULL feedback pointer is refused first
+- 4: checked by the safe methods in every build (the execution modes of the entry points the tessellation and geometry stages name, read from each module's SPIR-V: one subdivision and one output patch size between the tessellation stages, within maxTessellationPatchSize; a geometry stage's output vertex and invocation counts within the limits), but no test breaks it: GLSL writes these modes in the stage that must have them, within the compiler's limits, and the test shaders are GLSL
 - 2: checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: checked by the safe methods in every build, but no test breaks it: every format lavapipe has with a depth (or stencil) aspect is a depth/stencil attachment format, so a format without the feature lacks the aspect, which is refused first
 - 1: checked by the safe methods in every build, but no test breaks it: lavapipe has no depthBounds feature, without which a depth bounds test is refused first
 - 1: checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkGraphicsPipelineCreateInfo-flags-00724, whose text states the same case, and the layer names both
-- 231: explicit rule; the wrappers do not check it*/
+- 225: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct GraphicsPipelineCreateInfo<'a> {
@@ -2689,8 +2692,9 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 
 Left to the caller (listed one by one in the crate's `validation.json`): 32.
 
+- 3: checked by the safe methods in every build (the execution modes of the entry points the tessellation and geometry stages name, read from each module's SPIR-V: one subdivision and one output patch size between the tessellation stages, within maxTessellationPatchSize; a geometry stage's output vertex and invocation counts within the limits), but no test breaks it: GLSL writes these modes in the stage that must have them, within the compiler's limits, and the test shaders are GLSL
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 29: explicit rule; the wrappers do not check it*/
+- 26: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
