@@ -1321,12 +1321,55 @@ fn create_compute(
     (safe, layer)
 }
 
+/// A compute pipeline of `one.comp` (one invocation per workgroup, no resources)
+/// whose stage has `flags` and, if given, a chained required subgroup size (the
+/// device's smallest), on a device with every feature.
+fn create_subgroups(
+    s: &Setup,
+    flags: vk::PipelineShaderStageCreateFlags,
+    required: bool,
+) -> (tuff::Result<()>, Vec<String>) {
+    let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/one.comp.spv"));
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    let mut size = tuff::PipelineShaderStageRequiredSubgroupSizeCreateInfo::new();
+    let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+    // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+    unsafe {
+        s.instance
+            .fns()
+            .get_physical_device_properties2(s.physical.raw(), &mut p2)
+    };
+    // SAFETY: a plain value member (the registry marks the struct returned-only, so
+    // it has no setter).
+    unsafe { size.raw_values_mut() }.required_subgroup_size = p13.min_subgroup_size;
+    let mut stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&module))
+        .flags(flags);
+    if required {
+        stage = stage.push_next(&mut size);
+    }
+    let infos = [tuff::ComputePipelineCreateInfo::new(stage, &layout)];
+    let safe = unsafe { s.device.create_compute_pipelines(None, &infos) }.map(drop);
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_compute_pipelines_unchecked(None, &infos) };
+    });
+    (safe, layer)
+}
+
 /// Compute pipelines: a stage other than compute, and a derivative that names its
 /// base no way or both ways, are refused; the layer names the same rules.
 #[test]
 fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = tuff_setup::setup(true);
+    // Full subgroups need computeFullSubgroups and subgroupSizeControl.
+    let full = tuff_setup::setup_full_features(true);
+    type F = vk::PipelineShaderStageCreateFlags;
     let compute = vk::ShaderStageFlags::COMPUTE;
     let none = vk::PipelineCreateFlags::empty();
     let derivative = vk::PipelineCreateFlags::DERIVATIVE;
@@ -1338,6 +1381,7 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
     );
     let names = |m: &String, v: &str| m.contains(&format!("[ {v} ]"));
     let mut failures = Vec::new();
+    let (mut by_layer, mut alone) = (0, Vec::new());
     for (vuid, also, (safe, layer)) in [
         (
             "VUID-VkComputePipelineCreateInfo-stage-00701",
@@ -1373,6 +1417,26 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
             &[][..],
             create_compute(&s, compute, derivative, Some(none), -1),
         ),
+        // A workgroup one invocation wide, with full subgroups.
+        (
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02759",
+            &[][..],
+            create_subgroups(&full, F::REQUIRE_FULL_SUBGROUPS, false),
+        ),
+        (
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02758",
+            &[][..],
+            create_subgroups(
+                &full,
+                F::REQUIRE_FULL_SUBGROUPS | F::ALLOW_VARYING_SUBGROUP_SIZE,
+                false,
+            ),
+        ),
+        (
+            "VUID-VkPipelineShaderStageCreateInfo-pNext-02757",
+            &[][..],
+            create_subgroups(&full, F::REQUIRE_FULL_SUBGROUPS, true),
+        ),
     ] {
         match &safe {
             Err(tuff::Error::Validation { vuid: got, .. }) if *got == vuid => {}
@@ -1382,15 +1446,23 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
             }
         }
         let implied = |m: &String| also.iter().any(|a| names(m, a));
-        let agrees = layer.iter().all(implied)
-            || (layer.iter().any(|m| names(m, vuid))
-                && layer.iter().all(|m| names(m, vuid) || implied(m)));
-        if !agrees {
+        if layer.iter().all(implied) {
+            alone.push(vuid);
+        } else if layer.iter().any(|m| names(m, vuid))
+            && layer.iter().all(|m| names(m, vuid) || implied(m))
+        {
+            by_layer += 1;
+        } else {
             failures.push(format!(
                 "{vuid}: the layer said something else:\n  {}",
                 layer.join("\n  ")
             ));
         }
     }
+    println!(
+        "compute pipelines: the layer named {by_layer}, the error alone proves {} ({})",
+        alone.len(),
+        alone.join(", ")
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -2887,6 +2887,12 @@ fn check_stage_subgroups(
             format!("{at}: flags include REQUIRE_FULL_SUBGROUPS, and the device has not enabled computeFullSubgroups"),
         )?;
     }
+    check_workgroup_subgroups(
+        device,
+        stage,
+        required.map(|r| r.required_subgroup_size),
+        at,
+    )?;
     let Some(required) = required else {
         return Ok(());
     };
@@ -2929,6 +2935,20 @@ fn check_stage_subgroups(
     Ok(())
 }
 
+/// Holds the pipeline cache a pipeline creation uses for the call: a cache created
+/// with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT` must not be used by
+/// two threads at once (`VUID-vkCreateGraphicsPipelines-pipelineCache-02876`,
+/// `VUID-vkCreateComputePipelines-pipelineCache-02873`), and one without it costs
+/// the lock only.
+pub(crate) fn pipeline_cache_gate(
+    _device: &Device,
+    cache: Option<&PipelineCache>,
+) -> Result<Vec<tuff_runtime::HostSyncGuard>> {
+    Ok(tuff_runtime::lock_all(
+        cache.map(|c| c.host_sync().clone()).into_iter().collect(),
+    ))
+}
+
 /// A chained `VkPipelineCreationFeedbackCreateInfo` (in `next`, the chain of a create
 /// info of `stages` stages) names where the driver writes the pipeline's feedback
 /// (`parameter`: the safe struct has no setter for it, so a safe program's is NULL)
@@ -2963,6 +2983,104 @@ fn check_creation_feedback(
         )?;
     }
     Ok(())
+}
+
+/// A stage's workgroup against the subgroups its flags and a chained required size
+/// ask for, from the `LocalSize` execution mode of the entry point it names: no more
+/// invocations than `maxComputeWorkgroupSubgroups` subgroups of the required size
+/// (02756); with full subgroups, a width that is a multiple of the required size
+/// (02757), of `maxSubgroupSize` with a varying size (02758), or else of the
+/// device's `subgroupSize` (02759). A workgroup size the module gives otherwise
+/// (`LocalSizeId`, the `WorkgroupSize` built-in) is not read: where one of these
+/// rules applies, the stage is refused.
+fn check_workgroup_subgroups(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    required: Option<u32>,
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    type F = vk::PipelineShaderStageCreateFlags;
+    const LOCAL_SIZE: u32 = 17;
+    let full = stage.flags.contains(F::REQUIRE_FULL_SUBGROUPS);
+    let varying = stage.flags.contains(F::ALLOW_VARYING_SUBGROUP_SIZE);
+    let compute_required = required.filter(|_| stage.stage == vk::ShaderStageFlags::COMPUTE);
+    if !full && compute_required.is_none() {
+        return Ok(());
+    }
+    let size: Option<[u32; 3]> = device
+        .live()
+        .shader_module(stage.module)
+        .filter(|_| !stage.p_name.is_null())
+        .and_then(|i| {
+            // SAFETY: as in `check_shader_layout`: the safe struct keeps the name as
+            // a `&CStr`.
+            let name = unsafe { core::ffi::CStr::from_ptr(stage.p_name) };
+            match i
+                .entry_point(name.to_bytes(), stage.stage)?
+                .mode(LOCAL_SIZE)?
+            {
+                [x, y, z, ..] => Some([*x, *y, *z]),
+                _ => None,
+            }
+        });
+    let p13 = vulkan13_properties(device);
+    if let Some(required) = compute_required {
+        let max = p13.map_or(0, |p| p.max_compute_workgroup_subgroups);
+        let invocations = size.map(|[x, y, z]| u64::from(x) * u64::from(y) * u64::from(z));
+        if invocations.is_none_or(|n| n > u64::from(max) * u64::from(required)) {
+            refuse(
+                "VUID-VkPipelineShaderStageCreateInfo-pNext-02756",
+                format!("{at}: the workgroup's invocations ({invocations:?}, None where the module does not give them as LocalSize) are more than maxComputeWorkgroupSubgroups ({max}) subgroups of the required size ({required})"),
+            )?;
+        }
+    }
+    if !full {
+        return Ok(());
+    }
+    let (multiple, vuid, of) = match (required, varying) {
+        (Some(r), _) => (
+            r,
+            "VUID-VkPipelineShaderStageCreateInfo-pNext-02757",
+            "the required subgroup size",
+        ),
+        (None, true) => (
+            p13.map_or(0, |p| p.max_subgroup_size),
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02758",
+            "maxSubgroupSize",
+        ),
+        (None, false) => (
+            subgroup_size(device),
+            "VUID-VkPipelineShaderStageCreateInfo-flags-02759",
+            "the device's subgroupSize",
+        ),
+    };
+    let width = size.map(|[x, _, _]| x);
+    if !width.is_some_and(|x| multiple != 0 && x % multiple == 0) {
+        refuse(
+            vuid,
+            format!("{at}: with full subgroups, the workgroup's width ({width:?}, None where the module does not give it as LocalSize) must be a multiple of {of} ({multiple})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The device's default `subgroupSize` (Vulkan 1.1), or 0 where it cannot be asked.
+fn subgroup_size(device: &Device) -> u32 {
+    let physical = device.parent();
+    let instance = physical.parent();
+    let version = physical.get_physical_device_properties().api_version;
+    if !instance.exts().version(1) || vk::api_version_minor(version) < 1 {
+        return 0;
+    }
+    let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
+    unsafe {
+        instance
+            .fns()
+            .get_physical_device_properties2(physical.raw(), &mut p2)
+    };
+    subgroup.subgroup_size
 }
 
 /// The checks of `vkCreateComputePipelines` that keep the driver inside the

@@ -274,8 +274,11 @@ pub const SHADER_CONTRACT: &str = "The code is SPIR-V that every pipeline and co
 const STAGE_MODULE: &str = "checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver)";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
 const ENTRY_POINT: &str = "checks each stage of a graphics or compute pipeline names an entry point of its module with the stage's execution model (the module's entry points are read from its SPIR-V when it is made)";
+const CACHE_LOCKED: &str = "the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once";
 const CREATION_FEEDBACK: &str = "checks a chained VkPipelineCreationFeedbackCreateInfo of a graphics or compute pipeline names where the driver writes the feedback: the 1.3.239 registry makes the struct returned-only, so the safe struct has no setter and a safe program's pointer is NULL, which is refused";
 const UNPROVEN_FEEDBACK_COUNT: &str = "checked by the safe methods in every build (a chained VkPipelineCreationFeedbackCreateInfo's stage count against the pipeline's, or 0), but no test breaks it: the safe struct has no setter for its pointers, so its NULL feedback pointer is refused first";
+const WORKGROUP_SUBGROUPS: &str = "checks a stage that asks for full subgroups: the width of the workgroup its entry point declares (the LocalSize execution mode, read from the module's SPIR-V; a size given otherwise is refused) against the required subgroup size, maxSubgroupSize with a varying size, or the device's subgroupSize";
+const UNPROVEN_WORKGROUP_SUBGROUPS: &str = "checked by the safe methods in every build (a compute stage with a required subgroup size: the invocations of the workgroup its entry point declares against maxComputeWorkgroupSubgroups subgroups of that size), but no test breaks it: lavapipe's maxComputeWorkgroupSubgroups times its subgroup size is its largest workgroup";
 const SUBGROUP_SIZES: &str = "checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them)";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
@@ -287,7 +290,7 @@ const RENDER_PASS_INDICES: &str =
 const PIPELINE_STATE: &str = "checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded";
 const PIPELINE_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (the 1.3.239 layer does not check this one, and lavapipe crashes on a missing layout or multisample state: proven by the error alone)";
 const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states, vertex bindings and locations once each, every attribute's binding described and its format one the device reads vertices in (VERTEX_BUFFER among its buffer features), primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too)";
-const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags)";
+const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others";
 const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
 const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
 const EXECUTION_MODES: &str = "checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them";
@@ -2107,6 +2110,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateComputePipelines",
         check: call("hooks::create_compute_pipelines_checks", &["self", "create_infos"]),
+        hold: call("hooks::pipeline_cache_gate", &["self", "pipeline_cache"]),
         created: call(
             "hooks::compute_pipelines_created",
             &["self", "created", "create_infos"],
@@ -2123,10 +2127,16 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
             ("VUID-VkPipelineShaderStageCreateInfo-module-06716", How::Dynamic(STAGE_MODULE)),
             ("VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter", How::Dynamic(CREATION_FEEDBACK)),
+            ("VUID-vkCreateComputePipelines-pipelineCache-02873", How::Static(CACHE_LOCKED)),
+            ("VUID-vkCreateGraphicsPipelines-pipelineCache-02876", How::Static(CACHE_LOCKED)),
             ("VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566", How::User(UNPROVEN_FEEDBACK_COUNT)),
             ("VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594", How::User(UNPROVEN_FEEDBACK_COUNT)),
             ("VUID-VkPipelineShaderStageCreateInfo-pName-00707", How::Dynamic(ENTRY_POINT)),
             ("VUID-VkPipelineShaderStageCreateInfo-flags-02784", How::Dynamic(SUBGROUP_SIZES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-pNext-02756", How::User(UNPROVEN_WORKGROUP_SUBGROUPS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-pNext-02757", How::Dynamic(WORKGROUP_SUBGROUPS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-flags-02758", How::Dynamic(WORKGROUP_SUBGROUPS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-flags-02759", How::Dynamic(WORKGROUP_SUBGROUPS)),
             ("VUID-VkPipelineShaderStageCreateInfo-flags-02785", How::Dynamic(SUBGROUP_SIZES)),
             ("VUID-VkPipelineShaderStageCreateInfo-pNext-02754", How::Dynamic(SUBGROUP_SIZES)),
             ("VUID-VkPipelineShaderStageCreateInfo-pNext-02755", How::Dynamic(SUBGROUP_SIZES)),
@@ -2139,6 +2149,7 @@ pub const SPECIALS: &[Special] = &[
     Special {
         command: "vkCreateGraphicsPipelines",
         check: call("hooks::create_graphics_pipelines_checks", &["self", "create_infos"]),
+        hold: call("hooks::pipeline_cache_gate", &["self", "pipeline_cache"]),
         check_last: call(
             "hooks::graphics_pipeline_state_checks",
             &["self", "create_infos"],

@@ -582,9 +582,8 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCreateComputePipelines-pipelineCache-02873`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
 - `VUID-VkComputePipelineCreateInfo-flags-00700`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
 - `VUID-VkComputePipelineCreateInfo-stage-00702`: The shader code for the entry point identified by `stage` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
 - `VUID-VkComputePipelineCreateInfo-layout-01687`: The number of resources in `layout` accessible to the compute shader stage must be less than or equal to `VkPhysicalDeviceLimits::maxPerStageResources`
@@ -597,10 +596,6 @@ The caller upholds these 19 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageCreateInfo-stage-02597`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `ViewportIndex` for any primitive, it must write the same value to `ViewportIndex` for all vertices of a given primitive
 - `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
 - `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain and `stage` is `VK_SHADER_STAGE_COMPUTE_BIT`, the local workgroup size of the shader must be less than or equal to the product of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize` and `maxComputeWorkgroupSubgroups`
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, and `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the local workgroup size in the X dimension of the pipeline must be a multiple of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize`
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02758`: If `flags` has both the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` and `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flags set, the local workgroup size in the X dimension of the pipeline must be a multiple of `maxSubgroupSize`
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02759`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set and `flags` does not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set and no VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the local workgroup size in the X dimension of the pipeline must be a multiple of `subgroupSize`
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 
@@ -608,8 +603,8 @@ The caller upholds these 19 rules that no check of this method enforces (its com
 
 The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
 
-- `VUID-vkCreateComputePipelines-flags-00695`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
-- `VUID-vkCreateComputePipelines-flags-00696`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags))
+- `VUID-vkCreateComputePipelines-flags-00695`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others)
+- `VUID-vkCreateComputePipelines-flags-00696`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others)
 - `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
@@ -617,8 +612,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
 - `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateComputePipelines-pipelineCache-02873`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
     #[inline]
     pub unsafe fn create_compute_pipelines<'a>(
         &self,
@@ -630,6 +624,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
+        let _held = crate::hooks::pipeline_cache_gate(self, pipeline_cache)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
@@ -638,7 +633,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`, `VUID-vkCreateComputePipelines-pipelineCache-02873`, `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`, `VUID-VkPipelineShaderStageCreateInfo-flags-02758`, `VUID-VkPipelineShaderStageCreateInfo-flags-02759`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -1010,9 +1005,8 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 41 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 36 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
 - `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`: If the pipeline is being created with a `Vertex` {ExecutionModel} and no `TessellationEvaluation` or `Geometry` {ExecutionModel}, and the `topology` member of `pInputAssembly` is `VK_PRIMITIVE_TOPOLOGY_POINT_LIST`, a `PointSize` decorated variable must be written to
 - `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`: If the pipeline is being created with a `TessellationEvaluation` {ExecutionModel}, no `Geometry` {ExecutionModel}, uses the `PointMode` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is enabled, a `PointSize` decorated variable must be written to
 - `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724`: If the pipeline is being created with a `TessellationEvaluation` {ExecutionModel}, no `Geometry` {ExecutionModel}, uses the `PointMode` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is not enabled, a `PointSize` decorated variable must not be written to
@@ -1047,10 +1041,6 @@ The caller upholds these 41 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageCreateInfo-stage-02597`: If `stage` is either `VK_SHADER_STAGE_VERTEX_BIT`, `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT`, `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT`, or `VK_SHADER_STAGE_GEOMETRY_BIT`, and the identified entry point writes to `ViewportIndex` for any primitive, it must write the same value to `ViewportIndex` for all vertices of a given primitive
 - `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
 - `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain and `stage` is `VK_SHADER_STAGE_COMPUTE_BIT`, the local workgroup size of the shader must be less than or equal to the product of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize` and `maxComputeWorkgroupSubgroups`
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`: If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, and `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the local workgroup size in the X dimension of the pipeline must be a multiple of VkPipelineShaderStageRequiredSubgroupSizeCreateInfo::`requiredSubgroupSize`
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02758`: If `flags` has both the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` and `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flags set, the local workgroup size in the X dimension of the pipeline must be a multiple of `maxSubgroupSize`
-- `VUID-VkPipelineShaderStageCreateInfo-flags-02759`: If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set and `flags` does not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set and no VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, the local workgroup size in the X dimension of the pipeline must be a multiple of `subgroupSize`
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
 - `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 
@@ -1067,8 +1057,7 @@ The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry
 - `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
     #[inline]
     pub unsafe fn create_graphics_pipelines<'a>(
         &self,
@@ -1082,6 +1071,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             r?;
         }
         crate::hooks::graphics_pipeline_state_checks(self, create_infos)?;
+        let _held = crate::hooks::pipeline_cache_gate(self, pipeline_cache)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
