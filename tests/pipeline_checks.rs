@@ -78,6 +78,8 @@ struct Parts {
     line_width: f32,
     depth_bias: Option<f32>,
     multisample: bool,
+    /// The multisample state's rasterization samples.
+    samples: vk::SampleCountFlags,
     depth_stencil: Option<(bool, f32, f32)>,
     /// Each color blend attachment's `blendEnable`; `None` for no blend state.
     blend: Option<Vec<bool>>,
@@ -132,6 +134,7 @@ impl Default for Parts {
             line_width: 1.0,
             depth_bias: None,
             multisample: true,
+            samples: vk::SampleCountFlags::TYPE_1,
             depth_stencil: None,
             blend: Some(vec![false]),
             dynamic: vec![vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR],
@@ -407,7 +410,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         raster = raster.depth_bias_enable(vk::TRUE).depth_bias_clamp(clamp);
     }
     let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
-        .rasterization_samples(vk::SampleCountFlags::TYPE_1)
+        .rasterization_samples(parts.samples)
         .min_sample_shading(parts.min_sample_shading);
     let depth_stencil = parts.depth_stencil.map(|(bounds, min, max)| {
         tuff::PipelineDepthStencilStateCreateInfo::new()
@@ -812,6 +815,20 @@ const CASES: &[Case] = &[
         also: &["VUID-VkPipelineShaderStageCreateInfo-pName-00707"],
         ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-06896", |p| {
             p.stages = vec![vk::ShaderStageFlags::VERTEX, vk::ShaderStageFlags::COMPUTE]
+        })
+    },
+    // Lavapipe renders to no attachment with 1 or 4 samples, not 8. The test
+    // fragment shader's color output then has no attachment, which the layer notes.
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-OutputNotConsumed"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-subpass-00758", |p| {
+            p.target = Target::Pass {
+                colors: vec![],
+                depth: None,
+                subpass: 0,
+            };
+            p.blend = None;
+            p.samples = vk::SampleCountFlags::TYPE_8;
         })
     },
     case("VUID-VkPipelineShaderStageCreateInfo-pName-00707", |p| {

@@ -129,10 +129,14 @@ pub(crate) fn graphics_pipeline_state_checks(
                 )?;
             }
         }
+        if states.fragment() && raw.render_pass != vk::RenderPass::null() {
+            check_zero_attachments(device, raw, &states, &at)?;
+        }
         if states.fragment() {
             check_targets(device, raw, &states, &targets, &at)?;
             check_blend_identical(device, &states, &at)?;
         }
+        check_stage_resources(device, raw, &states, targets.colors.len(), &at)?;
         check_viewport_state(&states, &at)?;
         check_fixed_function(device, &states, &at)?;
         check_state_structs(device, &states, &at)?;
@@ -754,6 +758,88 @@ fn check_present(
         if !given {
             refuse(vuid, format!("{at} has no {what}"))?;
         }
+    }
+    Ok(())
+}
+
+/// Each stage the pipeline uses reaches at most `maxPerStageResources` resources
+/// through its layout (01688): the descriptors of the kinds that limit counts, in set
+/// layouts without `UPDATE_AFTER_BIND_POOL`, visible to the stage, and for the
+/// fragment stage its `colors` color attachments.
+fn check_stage_resources(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    states: &States<'_>,
+    colors: usize,
+    at: &str,
+) -> Result<()> {
+    use vk::DescriptorType as T;
+    let Some(layout) = device.live().pipeline_layout(raw.layout) else {
+        return Ok(());
+    };
+    let max = u64::from(crate::hooks::limits(device).max_per_stage_resources);
+    for s in states.stages {
+        let mut count: u64 = layout
+            .sets
+            .iter()
+            .filter(|set| !set.update_after_bind)
+            .flat_map(|set| set.bindings.iter())
+            .filter(|b| b.stages.contains(s.stage))
+            .filter(|b| {
+                matches!(
+                    b.ty,
+                    T::SAMPLER
+                        | T::COMBINED_IMAGE_SAMPLER
+                        | T::SAMPLED_IMAGE
+                        | T::STORAGE_IMAGE
+                        | T::UNIFORM_TEXEL_BUFFER
+                        | T::STORAGE_TEXEL_BUFFER
+                        | T::UNIFORM_BUFFER
+                        | T::STORAGE_BUFFER
+                        | T::UNIFORM_BUFFER_DYNAMIC
+                        | T::STORAGE_BUFFER_DYNAMIC
+                        | T::INPUT_ATTACHMENT
+                )
+            })
+            .map(|b| u64::from(b.count))
+            .sum();
+        if s.stage == vk::ShaderStageFlags::FRAGMENT {
+            count += colors as u64;
+        }
+        if count > max {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-layout-01688",
+                format!("{at}'s {:?} stage reaches {count} resources through its layout (and color attachments), past maxPerStageResources ({max})", s.stage),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A subpass that uses no attachment rasterizes at a sample count the device
+/// supports without attachments (`framebufferNoAttachmentsSampleCounts`, 00758).
+fn check_zero_attachments(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    states: &States<'_>,
+    at: &str,
+) -> Result<()> {
+    let (Some(record), Some(multisample)) = (
+        device.live().render_pass(raw.render_pass),
+        states.multisample,
+    ) else {
+        return Ok(());
+    };
+    if record.no_attachments.get(raw.subpass as usize) != Some(&true) {
+        return Ok(());
+    }
+    let samples = multisample.rasterization_samples;
+    let supported = crate::hooks::limits(device).framebuffer_no_attachments_sample_counts;
+    if !supported.contains(samples) {
+        refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-subpass-00758",
+            format!("{at}'s subpass uses no attachment, and its rasterizationSamples ({samples:?}) is not among framebufferNoAttachmentsSampleCounts ({supported:?})"),
+        )?;
     }
     Ok(())
 }

@@ -295,6 +295,7 @@ const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every b
 const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
 const EXECUTION_MODES: &str = "checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them";
 const UNPROVEN_EXECUTION_MODES: &str = "checked by the safe methods in every build (the execution modes of the entry points the tessellation and geometry stages name, read from each module's SPIR-V: one subdivision and one output patch size between the tessellation stages, within maxTessellationPatchSize; a geometry stage's output vertex and invocation counts within the limits), but no test breaks it: GLSL writes these modes in the stage that must have them, within the compiler's limits, and the test shaders are GLSL";
+const UNPROVEN_STAGE_RESOURCES: &str = "checked by the safe methods in every build (for each stage, the descriptors of the limited kinds its layout's set layouts without UPDATE_AFTER_BIND_POOL make visible to it, and for the fragment stage the color attachments, against maxPerStageResources), but no test breaks it: a pipeline layout past the limit is refused when it is made (VkPipelineLayoutCreateInfo-descriptorType-03022), and one at lavapipe's limit is more descriptors than a test should make to add a color attachment to";
 const COMPLETE_PIPELINES: &str = "every graphics pipeline the emitted API makes is complete (no pipeline libraries are emitted): it always has pre-rasterization shader state, its vertex stage among them (stage-00727 is checked)";
 const VIEWPORT_STATE_ALONE: &str = "checks the pipeline's state as a whole, as for its other rules (a pipeline with rasterizer discard dynamic and no viewport state crashed the test process under the 1.3.239 layer, which lets it through to lavapipe: proven by the error alone)";
 const RENDERING_FORMATS_SLICE: &str = "the safe VkPipelineRenderingCreateInfo's `color_attachment_formats` takes a slice and sets `colorAttachmentCount` from its length, so the pointer is valid for that many formats (each checked as a VkFormat value, renderPass-06580)";
@@ -2185,6 +2186,8 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkVertexInputAttributeDescription-format-00623", How::Dynamic(STATE_STRUCTS)),
             ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06603", How::Static(RENDER_PASS_WRAPPER)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-06894", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-subpass-00758", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-layout-01688", How::User(UNPROVEN_STAGE_RESOURCES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-00738", How::Dynamic(EXECUTION_MODES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-00739", How::Dynamic(EXECUTION_MODES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-00732", How::User(UNPROVEN_EXECUTION_MODES)),
