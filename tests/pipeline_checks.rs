@@ -308,18 +308,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let mut required: Option<_> = parts.subgroup_size.map(|size| {
         let size = match size {
             SubgroupSize::Of(size) => size,
-            SubgroupSize::DeviceMin => {
-                let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
-                let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
-                // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is
-                // local.
-                unsafe {
-                    s.instance
-                        .fns()
-                        .get_physical_device_properties2(s.physical.raw(), &mut p2)
-                };
-                p13.min_subgroup_size
-            }
+            SubgroupSize::DeviceMin => min_subgroup_size(s),
         };
         let mut info = tuff::PipelineShaderStageRequiredSubgroupSizeCreateInfo::new();
         // SAFETY: a plain value member (the registry marks the struct returned-only,
@@ -1338,6 +1327,19 @@ fn create_compute(
     (safe, layer)
 }
 
+/// The device's `minSubgroupSize` (Vulkan 1.3).
+fn min_subgroup_size(s: &Setup) -> u32 {
+    let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
+    // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
+    unsafe {
+        s.instance
+            .fns()
+            .get_physical_device_properties2(s.physical.raw(), &mut p2)
+    };
+    p13.min_subgroup_size
+}
+
 /// A compute pipeline of `one.comp` (one invocation per workgroup, no resources)
 /// whose stage has `flags` and, if given, a chained required subgroup size (the
 /// device's smallest), on a device with every feature.
@@ -1352,17 +1354,9 @@ fn create_subgroups(
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("layout");
     let mut size = tuff::PipelineShaderStageRequiredSubgroupSizeCreateInfo::new();
-    let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
-    // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
-    unsafe {
-        s.instance
-            .fns()
-            .get_physical_device_properties2(s.physical.raw(), &mut p2)
-    };
     // SAFETY: a plain value member (the registry marks the struct returned-only, so
     // it has no setter).
-    unsafe { size.raw_values_mut() }.required_subgroup_size = p13.min_subgroup_size;
+    unsafe { size.raw_values_mut() }.required_subgroup_size = min_subgroup_size(s);
     let mut stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&module))

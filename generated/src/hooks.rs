@@ -3007,21 +3007,10 @@ fn check_workgroup_subgroups(
     if !full && compute_required.is_none() {
         return Ok(());
     }
-    let size: Option<[u32; 3]> = device
-        .live()
-        .shader_module(stage.module)
-        .filter(|_| !stage.p_name.is_null())
-        .and_then(|i| {
-            // SAFETY: as in `check_shader_layout`: the safe struct keeps the name as
-            // a `&CStr`.
-            let name = unsafe { core::ffi::CStr::from_ptr(stage.p_name) };
-            match i
-                .entry_point(name.to_bytes(), stage.stage)?
-                .mode(LOCAL_SIZE)?
-            {
-                [x, y, z, ..] => Some([*x, *y, *z]),
-                _ => None,
-            }
+    let size: Option<[u32; 3]> =
+        stage_entry_point(device, stage).and_then(|e| match e.mode(LOCAL_SIZE)? {
+            [x, y, z, ..] => Some([*x, *y, *z]),
+            _ => None,
         });
     let p13 = vulkan13_properties(device);
     if let Some(required) = compute_required {
@@ -3129,6 +3118,27 @@ pub(crate) fn shader_module_created(
     module
 }
 
+/// The entry point a stage names in its module, for the stage's execution model
+/// (none where the module is not the wrappers' or has no such entry point).
+pub(crate) fn stage_entry_point(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+) -> Option<crate::spirv::EntryPoint> {
+    let name = stage_name(stage)?;
+    let interface = device.live().shader_module(stage.module)?;
+    interface.entry_point(name.to_bytes(), stage.stage).cloned()
+}
+
+/// The entry point name a stage gives.
+fn stage_name<'s>(stage: &'s vk::PipelineShaderStageCreateInfo<'_>) -> Option<&'s core::ffi::CStr> {
+    if stage.p_name.is_null() {
+        return None;
+    }
+    // SAFETY: the safe struct's constructor and `name` setter take the name as a
+    // `&CStr` the struct borrows, so it is a nul-terminated string that outlives it.
+    Some(unsafe { core::ffi::CStr::from_ptr(stage.p_name) })
+}
+
 /// A stage's shader against the pipeline layout: every resource variable its module
 /// declares has a binding in the layout's set, of a descriptor type that can back
 /// it, visible to the stage and with as many descriptors, and its push-constant
@@ -3150,19 +3160,15 @@ fn check_shader_layout(
         );
     }
     let live = device.live();
-    if let Some(interface) = live
-        .shader_module(stage.module)
-        .filter(|_| !stage.p_name.is_null())
-    {
-        // SAFETY: the safe struct's constructor and `name` setter take the name as a
-        // `&CStr` the struct borrows, so it is a nul-terminated string that outlives it.
-        let name = unsafe { core::ffi::CStr::from_ptr(stage.p_name) };
-        if !interface.has_entry_point(name.to_bytes(), stage.stage) {
-            refuse(
-                "VUID-VkPipelineShaderStageCreateInfo-pName-00707",
-                format!("{at}: the module has no entry point {name:?} of the {:?} stage's execution model", stage.stage),
-            )?;
-        }
+    if live.shader_module(stage.module).is_some() && stage_entry_point(device, stage).is_none() {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-pName-00707",
+            format!(
+                "{at}: the module has no entry point {:?} with the {:?} stage's execution model",
+                stage_name(stage),
+                stage.stage
+            ),
+        )?;
     }
     let (Some(interface), Some(layout)) = (
         live.shader_module(stage.module),

@@ -287,13 +287,6 @@ impl EntryPoint {
 }
 
 impl Interface {
-    /// Whether the module has an entry point `name` whose execution model is the
-    /// one of the pipeline stage `stage` (a stage of the emitted API without one,
-    /// such as a ray tracing stage, has none).
-    pub(crate) fn has_entry_point(&self, name: &[u8], stage: ash::vk::ShaderStageFlags) -> bool {
-        self.entry_point(name, stage).is_some()
-    }
-
     /// The entry point `name` with the execution model of pipeline stage `stage`.
     pub(crate) fn entry_point(
         &self,
@@ -928,9 +921,10 @@ mod tests {
             ),
             ("main", 0)
         );
-        assert!(triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::VERTEX));
-        assert!(!triangle.has_entry_point(b"main", ash::vk::ShaderStageFlags::FRAGMENT));
-        assert!(!triangle.has_entry_point(b"other", ash::vk::ShaderStageFlags::VERTEX));
+        let entry = |name: &[u8], stage| triangle.entry_point(name, stage).is_some();
+        assert!(entry(b"main", ash::vk::ShaderStageFlags::VERTEX));
+        assert!(!entry(b"main", ash::vk::ShaderStageFlags::FRAGMENT));
+        assert!(!entry(b"other", ash::vk::ShaderStageFlags::VERTEX));
         assert!(!triangle.reads_vertex_location(b"main", 2));
         assert!(!triangle.reads_vertex_location(b"other", 0));
         let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));

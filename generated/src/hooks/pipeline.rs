@@ -561,25 +561,9 @@ mod mode {
 /// is what the topology (00738) or the tessellation stages (00739) give it.
 fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
     use vk::ShaderStageFlags as S;
-    let live = device.live();
-    let interfaces: Vec<_> = states
-        .stages
-        .iter()
-        .filter_map(|s| Some((s, live.shader_module(s.module)?)))
-        .collect();
     let entry = |stage: S| {
-        interfaces
-            .iter()
-            .find(|(s, _)| s.stage == stage)
-            .and_then(|(s, i)| {
-                if s.p_name.is_null() {
-                    return None;
-                }
-                // SAFETY: as in `check_shader_layout`: the safe struct keeps the name as
-                // a `&CStr`.
-                let name = unsafe { core::ffi::CStr::from_ptr(s.p_name) };
-                i.entry_point(name.to_bytes(), stage).cloned()
-            })
+        let s = states.stages.iter().find(|s| s.stage == stage)?;
+        crate::hooks::stage_entry_point(device, s)
     };
     let limits = crate::hooks::limits(device);
     let (control, evaluation, geometry) = (
