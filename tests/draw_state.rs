@@ -757,12 +757,7 @@ fn draws_read_views_their_shaders_can_read() {
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     for (code, view, suffix) in cases {
         let reader = image_draw(&s, &p, &target.render_pass, view, code);
-        for (command, draw) in draws::<tuff::InRenderPass>(&args, &args) {
-            let rule = format!("VUID-{command}-{suffix}");
-            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
-                record_descriptor_draw(&mut cb, &target, &reader, unchecked, &|rec, u| draw(rec, u))
-            });
-        }
+        breaks_with_every_draw(&s, &mut cb, &target, &reader, &args, suffix);
     }
     assert_silent(&s.messages);
 }
@@ -1407,6 +1402,25 @@ fn draws_rasterize_their_attachments_samples() {
     assert_silent(&s.messages);
 }
 
+/// Breaks `VUID-<command>-<suffix>` with each draw command over `draw`'s pipeline and
+/// set (an indexed one binds `args` as its index buffer, an indirect one reads it):
+/// tuff refuses the safe call, and the layer names the rule for the unchecked one.
+fn breaks_with_every_draw(
+    s: &Setup,
+    cb: &mut tuff::CommandBuffer,
+    target: &tuff_setup::ColorTarget,
+    draw: &ImageDraw,
+    args: &tuff::Buffer,
+    suffix: &str,
+) {
+    for (command, call) in draws::<tuff::InRenderPass>(args, args) {
+        let rule = format!("VUID-{command}-{suffix}");
+        tuff_setup::breaks(s, &rule, tuff_setup::Layer::Names, |unchecked| {
+            record_descriptor_draw(cb, target, draw, unchecked, &|rec, u| call(rec, u))
+        });
+    }
+}
+
 /// Records a render pass instance of `target` that binds `draw`'s pipeline and set,
 /// sets the viewport and scissor, and makes one draw with `command` (`unchecked`:
 /// through its `_unchecked` twin).
@@ -1491,12 +1505,7 @@ fn draws_sample_views_as_their_samplers_allow() {
     for (code, view, sampler, suffix) in cases {
         let ty = vk::DescriptorType::COMBINED_IMAGE_SAMPLER;
         let draw = descriptor_draw(&s, &p, &target.render_pass, ty, Some((view, sampler)), code);
-        for (command, call) in draws::<tuff::InRenderPass>(&args, &args) {
-            let rule = format!("VUID-{command}-{suffix}");
-            tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Names, |unchecked| {
-                record_descriptor_draw(&mut cb, &target, &draw, unchecked, &|rec, u| call(rec, u))
-            });
-        }
+        breaks_with_every_draw(&s, &mut cb, &target, &draw, &args, suffix);
     }
     assert_silent(&s.messages);
 }
