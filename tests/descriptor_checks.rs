@@ -1129,8 +1129,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .expect("begin");
     transition(&mut rec, &image, L::UNDEFINED, L::TRANSFER_DST_OPTIMAL);
     bind(&mut rec);
-    // SAFETY: the shader promise; the dispatch is refused.
-    assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
+    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
     drop(rec);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -1169,8 +1168,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     bind(&mut rec);
-    // SAFETY: the shader promise; the image's layout is checked at the submission.
-    unsafe { rec.cmd_dispatch(1, 1, 1) }
+    rec.cmd_dispatch(1, 1, 1)
         .expect("a dispatch of an image the recording leaves alone");
     rec.end().expect("end");
     let both = tuff::HandleSlice::new(&[&first, &cb]);
@@ -1239,8 +1237,8 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[],
     )
     .expect("set");
-    // SAFETY: the shader promise (the repository's shader).
-    unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("a dispatch of a GENERAL image");
+    rec.cmd_dispatch(1, 1, 1)
+        .expect("a dispatch of a GENERAL image");
     let after_read = tuff::ImageMemoryBarrier::new(&image)
         .old_layout(L::GENERAL)
         .new_layout(L::TRANSFER_DST_OPTIMAL)
@@ -1264,8 +1262,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[after_read],
     )
     .expect("barrier");
-    // SAFETY: as above; the dispatch is refused.
-    assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
+    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
     drop(rec);
 
     let both = image_reader_with(&s, &view, Some(&output), Some(&view), IMAGE_COMP);
@@ -1282,8 +1279,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[],
     )
     .expect("set");
-    // SAFETY: as above; the dispatch is refused.
-    assert_eq!(vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }), rule);
+    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
     drop(rec);
     assert_silent(&s.messages);
 }
@@ -1364,7 +1360,7 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
     )
     .expect("set");
     assert_eq!(
-        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        vuid(rec.cmd_dispatch(1, 1, 1)),
         "VUID-VkDescriptorImageInfo-imageLayout-00344"
     );
     drop(rec);
@@ -1477,9 +1473,8 @@ fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
         &[],
     )
     .expect("set");
-    // SAFETY: the shader promise; the dispatch is refused.
     assert_eq!(
-        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        vuid(rec.cmd_dispatch(1, 1, 1)),
         "VUID-vkCmdDispatch-None-02699"
     );
     drop(rec);
@@ -1601,7 +1596,7 @@ fn secondaries_leave_nothing_bound() {
     // SAFETY: the secondary records nothing; the dispatch is refused.
     unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
     assert_eq!(
-        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        vuid(rec.cmd_dispatch(1, 1, 1)),
         "VUID-vkCmdDispatch-None-02700"
     );
     drop(rec);
@@ -1621,7 +1616,7 @@ fn dispatch_commands() -> [(&'static str, Dispatch); 3] {
             if unchecked {
                 unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
             } else {
-                unsafe { r.cmd_dispatch(1, 1, 1) }
+                r.cmd_dispatch(1, 1, 1)
             }
         }),
         ("vkCmdDispatchBase", |r, _, unchecked| {

@@ -1605,3 +1605,78 @@ fn indexed_draws_fetch_inside_their_vertex_buffers() {
         assert_silent(&s.messages);
     }
 }
+
+/// A compute pipeline has every state static: a dispatch after a dynamic state was
+/// set since its pipeline was bound is refused by each dispatch command (the 1.3.239
+/// layer says nothing of the unchecked one: the error alone proves the rule), and
+/// binding the pipeline again clears it.
+#[test]
+fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let (args, _memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::INDIRECT_BUFFER);
+    type Dispatch<'a> =
+        Box<dyn Fn(&mut tuff::Recorder<'_, tuff::Outside>, bool) -> tuff::Result<()> + 'a>;
+    // SAFETY (each `unsafe` call): the recording is never submitted; the rules these
+    // methods leave to their caller concern what the device does when it runs, and
+    // the layer is told to skip an unchecked call it reports.
+    let dispatches: [(&str, Dispatch<'_>); 3] = [
+        (
+            "vkCmdDispatch",
+            Box::new(|r, unchecked| match unchecked {
+                true => unsafe { r.cmd_dispatch_unchecked(1, 1, 1) },
+                false => r.cmd_dispatch(1, 1, 1),
+            }),
+        ),
+        (
+            "vkCmdDispatchBase",
+            Box::new(|r, unchecked| match unchecked {
+                true => unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) },
+                false => unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) },
+            }),
+        ),
+        (
+            "vkCmdDispatchIndirect",
+            Box::new(|r, unchecked| match unchecked {
+                true => unsafe { r.cmd_dispatch_indirect_unchecked(&args, 0) },
+                false => unsafe { r.cmd_dispatch_indirect(&args, 0) },
+            }),
+        ),
+    ];
+    let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+            .expect("bind");
+        r.cmd_bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &p.compute_layout,
+            0,
+            &[&p.set],
+            &[],
+        )
+        .expect("sets");
+    };
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for (command, dispatch) in &dispatches {
+        let rule = format!("VUID-{command}-None-02859");
+        tuff_setup::breaks(&s, &rule, tuff_setup::Layer::Silent, |unchecked| {
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            bind(&mut rec);
+            rec.cmd_set_line_width(1.0);
+            dispatch(&mut rec, unchecked)
+        });
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        bind(&mut rec);
+        dispatch(&mut rec, false).expect("a dispatch with nothing set since the bind");
+        rec.cmd_set_line_width(1.0);
+        bind(&mut rec);
+        dispatch(&mut rec, false).expect("a dispatch after the pipeline is bound again");
+        rec.end().expect("end");
+    }
+    assert_silent(&s.messages);
+}

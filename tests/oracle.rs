@@ -2620,7 +2620,7 @@ fn cmd_dispatch(
         s,
         |r| {
             bind(r);
-            unsafe { r.cmd_dispatch(x, y, z) }
+            r.cmd_dispatch(x, y, z)
         },
         |r| {
             bind(r);

@@ -3238,7 +3238,7 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        vuid(rec.cmd_dispatch(1, 1, 1)),
         "VUID-vkCmdDispatch-None-02700"
     );
     assert_eq!(
@@ -3251,12 +3251,13 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
     );
     rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
     assert_eq!(
-        vuid(unsafe { rec.cmd_dispatch(1, 1, 1) }),
+        vuid(rec.cmd_dispatch(1, 1, 1)),
         "VUID-vkCmdDispatch-None-02697"
     );
     rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
         .expect("sets");
-    unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("a dispatch with its pipeline and set");
+    rec.cmd_dispatch(1, 1, 1)
+        .expect("a dispatch with its pipeline and set");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");

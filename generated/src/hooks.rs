@@ -3997,6 +3997,9 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
     if let Some(i) = crate::recorder::Bound::index(pipeline_bind_point) {
         recorder.bound[i].pipeline = recorder.device().live().pipeline(pipeline.raw());
     }
+    if pipeline_bind_point == vk::PipelineBindPoint::COMPUTE {
+        recorder.compute_dynamic = 0;
+    }
     if pipeline_bind_point == vk::PipelineBindPoint::GRAPHICS {
         // A state static in the new pipeline must be set again before a later
         // pipeline that has it dynamic draws.
@@ -4183,6 +4186,7 @@ pub(crate) fn depth_stencil_set<S: State>(
 pub(crate) fn dynamic_state_set<S: State>(recorder: &mut Recorder<'_, S>, bits: u32) {
     recorder.dynamic.0 |= bits;
     recorder.dynamic.1 |= bits;
+    recorder.compute_dynamic |= bits;
 }
 
 /// The rules of one draw command about the state it draws with.
@@ -4921,11 +4925,14 @@ pub(crate) fn descriptor_layouts_used<S: State>(
     }
 }
 
-/// A dispatch's state checks ([`bound_pipeline_checks`]), once per state.
+/// A dispatch's state checks ([`bound_pipeline_checks`]), once per state, and no
+/// dynamic state set since its compute pipeline was bound (`static_unset`: the
+/// pipeline has every state static).
 pub(crate) fn dispatch_checks<S: State>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
+    static_unset: &'static str,
     shader: &ShaderRules,
 ) -> Result<()> {
     recorder.verify_state(1, |recorder| {
@@ -4936,7 +4943,15 @@ pub(crate) fn dispatch_checks<S: State>(
             sets_vuid,
             None,
             shader,
-        )
+        )?;
+        let set = recorder.compute_dynamic;
+        if set != 0 && recorder.bound[1].pipeline.is_some() {
+            refuse(
+                static_unset,
+                format!("dynamic state bit {} was set since the bound compute pipeline was bound, and a compute pipeline has every state static", set.trailing_zeros()),
+            )?;
+        }
+        Ok(())
     })
 }
 

@@ -413,6 +413,9 @@ pub struct Recorder<'c, S: State> {
     /// the state static), and those set since the last graphics pipeline was bound,
     /// as [`dynamic_bit`] bits.
     pub(crate) dynamic: (u32, u32),
+    /// The dynamic states set since the last compute pipeline was bound, which has
+    /// every state static, as [`dynamic_bit`] bits.
+    pub(crate) compute_dynamic: u32,
     /// The push constants set so far.
     pub(crate) pushed: Option<Pushed>,
     /// The depth, stencil and rasterizer discard values the recording set.
@@ -624,6 +627,7 @@ impl CommandBuffer {
             sets: Vec::new(),
             events: Vec::new(),
             dynamic: (0, 0),
+            compute_dynamic: 0,
             pushed: None,
             counts: (None, None),
             depth_stencil: DepthStencil::default(),
@@ -775,6 +779,7 @@ impl<'c, S: State> Recorder<'c, S> {
             sets: self.sets,
             events: self.events,
             dynamic: self.dynamic,
+            compute_dynamic: self.compute_dynamic,
             pushed: self.pushed,
             counts: self.counts,
             depth_stencil: self.depth_stencil,

@@ -449,7 +449,7 @@ impl Pipelines {
             &[],
         )
         .expect("recorded");
-        unsafe { rec.cmd_dispatch(1, 1, 1) }.expect("recorded");
+        rec.cmd_dispatch(1, 1, 1).expect("recorded");
         rec
     }
 }

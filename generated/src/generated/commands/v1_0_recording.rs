@@ -2580,13 +2580,6 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
     }
     /**`vkCmdDispatch`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdDispatch-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDispatch-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
-
 # Valid usage
 
 The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
@@ -2594,6 +2587,8 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDispatch-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatch-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatch-commandBuffer-02701`: static (a compute pipeline has no dynamic state (VkComputePipelineCreateInfo has no pDynamicState), so a dispatch's pipeline requires none to be set)
+- `VUID-vkCmdDispatch-None-02859`: dynamic (checks, once per change of the bound state, that no dynamic state setting command was recorded since the bound compute pipeline was bound (a compute pipeline has every state static; the recorder keeps a bit per state set since, cleared by each compute bind); the 1.3.239 layer does not check it for dispatches: the error alone proves it)
 - `VUID-vkCmdDispatch-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
 - `VUID-vkCmdDispatch-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatch-groupCountX-00386`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
@@ -2608,7 +2603,7 @@ The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdDispatch-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatch-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 50.
+Left to the caller (listed one by one in the crate's `validation.json`): 48.
 
 - 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
@@ -2619,9 +2614,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50.
 - 2: checked by the safe methods in every build (each texel buffer view at a binding whose storage texel buffer variable has the Unknown format and that the pipeline's modules write or read, against its format's VkFormatProperties3 buffer features), but no test breaks it: lavapipe reads and writes every storage texel buffer format without a format
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
-- 34: explicit rule; the wrappers do not check it*/
+- 32: explicit rule; the wrappers do not check it*/
     #[inline]
-    pub unsafe fn cmd_dispatch(
+    pub fn cmd_dispatch(
         &mut self,
         group_count_x: u32,
         group_count_y: u32,
@@ -2631,6 +2626,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50.
             self,
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
+            "VUID-vkCmdDispatch-None-02859",
             &[
                 "VUID-vkCmdDispatch-viewType-07752",
                 "VUID-vkCmdDispatch-format-07753",
@@ -2670,7 +2666,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 50.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, `VUID-vkCmdDispatch-magFilter-04553`, `VUID-vkCmdDispatch-mipmapMode-04770`, `VUID-vkCmdDispatch-None-02702`, `VUID-vkCmdDispatch-None-02703`, `VUID-vkCmdDispatch-None-02704`, `VUID-vkCmdDispatch-None-04115`, `VUID-vkCmdDispatch-OpImageWrite-04469`, `VUID-vkCmdDispatch-OpTypeImage-07029`, `VUID-vkCmdDispatch-OpTypeImage-07030`, `VUID-vkCmdDispatch-None-06550`, `VUID-vkCmdDispatch-ConstOffset-06551`, `VUID-vkCmdDispatch-commandBuffer-02712`, `VUID-vkCmdDispatch-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-None-02859`, `VUID-vkCmdDispatch-commandBuffer-02701`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, `VUID-vkCmdDispatch-magFilter-04553`, `VUID-vkCmdDispatch-mipmapMode-04770`, `VUID-vkCmdDispatch-None-02702`, `VUID-vkCmdDispatch-None-02703`, `VUID-vkCmdDispatch-None-02704`, `VUID-vkCmdDispatch-None-04115`, `VUID-vkCmdDispatch-OpImageWrite-04469`, `VUID-vkCmdDispatch-OpTypeImage-07029`, `VUID-vkCmdDispatch-OpTypeImage-07030`, `VUID-vkCmdDispatch-None-06550`, `VUID-vkCmdDispatch-ConstOffset-06551`, `VUID-vkCmdDispatch-commandBuffer-02712`, `VUID-vkCmdDispatch-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_unchecked(
         &mut self,
@@ -2690,10 +2686,8 @@ The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDispatchIndirect-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
 
 # Valid usage
@@ -2703,6 +2697,8 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDispatchIndirect-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchIndirect-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatchIndirect-commandBuffer-02701`: static (a compute pipeline has no dynamic state (VkComputePipelineCreateInfo has no pDynamicState), so a dispatch's pipeline requires none to be set)
+- `VUID-vkCmdDispatchIndirect-None-02859`: dynamic (checks, once per change of the bound state, that no dynamic state setting command was recorded since the bound compute pipeline was bound (a compute pipeline has every state static; the recorder keeps a bit per state set since, cleared by each compute bind); the 1.3.239 layer does not check it for dispatches: the error alone proves it)
 - `VUID-vkCmdDispatchIndirect-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
 - `VUID-vkCmdDispatchIndirect-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatchIndirect-buffer-02708`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
@@ -2719,7 +2715,7 @@ The rules are on [`vkCmdDispatchIndirect`'s reference page](https://registry.khr
 - `VUID-vkCmdDispatchIndirect-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchIndirect-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 49.
+Left to the caller (listed one by one in the crate's `validation.json`): 47.
 
 - 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
@@ -2730,7 +2726,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 49.
 - 2: checked by the safe methods in every build (each texel buffer view at a binding whose storage texel buffer variable has the Unknown format and that the pipeline's modules write or read, against its format's VkFormatProperties3 buffer features), but no test breaks it: lavapipe reads and writes every storage texel buffer format without a format
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
-- 34: explicit rule; the wrappers do not check it*/
+- 32: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -2741,6 +2737,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 49.
             self,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
+            "VUID-vkCmdDispatchIndirect-None-02859",
             &[
                 "VUID-vkCmdDispatchIndirect-viewType-07752",
                 "VUID-vkCmdDispatchIndirect-format-07753",
@@ -2777,7 +2774,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 49.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-None-02859`, `VUID-vkCmdDispatchIndirect-commandBuffer-02701`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_indirect_unchecked(
         &mut self,

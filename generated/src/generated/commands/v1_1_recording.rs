@@ -7,10 +7,8 @@ impl<'c> Recorder<'c, Outside> {
 
 # Safety
 
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdDispatchBase-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
-- `VUID-vkCmdDispatchBase-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
 - `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX`
 - `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY`
 - `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ`
@@ -23,6 +21,8 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-None-02691`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules use with OpImageTexelPointer (followed from the variable through loads, access chains, copies, selections, phis and function arguments; an atomic on a value of no variable found counts for every image variable) against its format's features for its image's tiling)
 - `VUID-vkCmdDispatchBase-None-02697`: dynamic (checks a set of the right set layout is bound at every set number of the bound pipeline's layout (every set, as which ones the shaders use is not known))
 - `VUID-vkCmdDispatchBase-None-02700`: dynamic (checks a pipeline is bound at the command's bind point, which the recorder tracks)
+- `VUID-vkCmdDispatchBase-commandBuffer-02701`: static (a compute pipeline has no dynamic state (VkComputePipelineCreateInfo has no pDynamicState), so a dispatch's pipeline requires none to be set)
+- `VUID-vkCmdDispatchBase-None-02859`: dynamic (checks, once per change of the bound state, that no dynamic state setting command was recorded since the bound compute pipeline was bound (a compute pipeline has every state static; the recorder keeps a bit per state set since, cleared by each compute bind); the 1.3.239 layer does not check it for dispatches: the error alone proves it)
 - `VUID-vkCmdDispatchBase-viewType-07752`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, against the view type the variable's Dim and Arrayed name (read from the module's SPIR-V when it was made; every variable a module declares counts, as which ones the entry point uses is not read))
 - `VUID-vkCmdDispatchBase-format-07753`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts))
 - `VUID-vkCmdDispatchBase-commandBuffer-parameter`: static (`self` is a live wrapper)
@@ -34,7 +34,7 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchBase-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 57.
+Left to the caller (listed one by one in the crate's `validation.json`): 55.
 
 - 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
@@ -46,7 +46,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 38: explicit rule; the wrappers do not check it*/
+- 36: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -61,6 +61,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
             self,
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
+            "VUID-vkCmdDispatchBase-None-02859",
             &[
                 "VUID-vkCmdDispatchBase-viewType-07752",
                 "VUID-vkCmdDispatchBase-format-07753",
@@ -107,7 +108,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 57.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-None-02859`, `VUID-vkCmdDispatchBase-commandBuffer-02701`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_dispatch_base_unchecked(
         &mut self,
