@@ -471,10 +471,19 @@ fn debug_utils_object_name_info_ext(
     change: &dyn Fn(&mut vk::DebugUtilsObjectNameInfoEXT<'_>, &Limits, &mut Objects),
 ) -> Outcome {
     use tuff::{vk::Handle as _, Handle as _};
-    // The device names itself.
+    // A buffer of the device gets a name (with multi_thread, naming the device itself
+    // is refused: another thread could use it meanwhile).
+    let buffer = s
+        .device
+        .create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(16)
+                .usage(vk::BufferUsageFlags::TRANSFER_SRC),
+        )
+        .expect("buffer");
     let mut info = tuff::DebugUtilsObjectNameInfoEXT::new()
-        .object_type(vk::ObjectType::DEVICE)
-        .object_handle(s.device.raw().as_raw())
+        .object_type(vk::ObjectType::BUFFER)
+        .object_handle(buffer.raw().as_raw())
         .object_name(Some(c"oracle"));
     // SAFETY: as in `buffer_create_info`.
     change(
