@@ -99,6 +99,11 @@ struct Parts {
     logic_op: Option<vk::LogicOp>,
     /// Specialization constant IDs of the first stage.
     constants: Vec<u32>,
+    /// The bytes each map entry gives its constant.
+    constant_size: usize,
+    /// The vertex stage runs `spec.vert`, which declares a boolean specialization
+    /// constant 0, instead of the test shader.
+    spec_vertex: bool,
     /// The first stage's flags and entry point name.
     stage_flags: vk::PipelineShaderStageCreateFlags,
     entry: &'static core::ffi::CStr,
@@ -152,6 +157,8 @@ impl Default for Parts {
             attribute_format: vk::Format::R32G32B32A32_SFLOAT,
             logic_op: None,
             constants: vec![],
+            constant_size: 4,
+            spec_vertex: false,
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
             entry: c"main",
             subgroup_size: None,
@@ -223,6 +230,8 @@ struct Common {
     bezier: [tuff::ShaderModule; 4],
     /// A geometry shader of points in and out.
     geometry: tuff::ShaderModule,
+    /// The test vertex shader with a boolean specialization constant.
+    spec_vertex: tuff::ShaderModule,
     layout: tuff::PipelineLayout,
     _set_layout: tuff::DescriptorSetLayout,
 }
@@ -268,6 +277,7 @@ fn common(s: &Setup) -> Common {
             shader(include_bytes!("../shaders/spv/bezier.frag.spv")),
         ],
         geometry: shader(include_bytes!("../shaders/spv/points.geom.spv")),
+        spec_vertex: shader(include_bytes!("../shaders/spv/spec.vert.spv")),
         layout,
         _set_layout: set_layout,
     }
@@ -279,6 +289,9 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let module = |stage: vk::ShaderStageFlags| {
         if stage == vk::ShaderStageFlags::GEOMETRY {
             return &c.geometry;
+        }
+        if stage == vk::ShaderStageFlags::VERTEX && parts.spec_vertex {
+            return &c.spec_vertex;
         }
         let i = match stage {
             vk::ShaderStageFlags::VERTEX => 0,
@@ -298,7 +311,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         .map(|&constant_id| vk::SpecializationMapEntry {
             constant_id,
             offset: 0,
-            size: 4,
+            size: parts.constant_size,
         })
         .collect();
     let spec_data = [0u8; 4];
@@ -668,6 +681,12 @@ const CASES: &[Case] = &[
     },
     case("VUID-VkSpecializationInfo-constantID-04911", |p| {
         p.constants = vec![1, 1]
+    }),
+    // One byte for a boolean, which takes a VkBool32's four.
+    case("VUID-VkSpecializationMapEntry-constantID-00776", |p| {
+        p.spec_vertex = true;
+        p.constants = vec![0];
+        p.constant_size = 1;
     }),
     case("VUID-VkGraphicsPipelineCreateInfo-flags-00764", |p| {
         p.flags = vk::PipelineCreateFlags::DISPATCH_BASE

@@ -3072,6 +3072,40 @@ fn subgroup_size(device: &Device) -> u32 {
     subgroup.subgroup_size
 }
 
+/// Each specialization map entry of a stage that names a constant its module
+/// declares gives it as many bytes as the constant's type has, four for a boolean
+/// (`VUID-VkSpecializationMapEntry-constantID-00776`).
+fn check_constant_sizes(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    // SAFETY: the safe struct's setter stores a reference that outlives the create info.
+    let Some(info) = (unsafe { stage.p_specialization_info.as_ref() }) else {
+        return Ok(());
+    };
+    let Some(interface) = device.live().shader_module(stage.module) else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stores the entries with their count.
+    let entries = unsafe { crate::retention::raw_slice(info.p_map_entries, info.map_entry_count) };
+    for (k, e) in entries.iter().enumerate() {
+        let declared = interface
+            .spec_constants
+            .iter()
+            .find(|(id, _)| *id == e.constant_id);
+        if let Some((id, size)) = declared {
+            if e.size != *size as usize {
+                refuse(
+                    "VUID-VkSpecializationMapEntry-constantID-00776",
+                    format!("{at}: pMapEntries[{k}] gives specialization constant {id} {} bytes, and its type has {size}", e.size),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The checks of `vkCreateComputePipelines` that keep the driver inside the
 /// specialization data.
 pub(crate) fn create_compute_pipelines_checks(
@@ -3082,6 +3116,7 @@ pub(crate) fn create_compute_pipelines_checks(
     for (i, info) in create_infos.iter().enumerate() {
         let raw = info.as_raw();
         check_specialization(&raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
+        check_constant_sizes(device, &raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
         check_stage_subgroups(device, &raw.stage, &format_args!("pCreateInfos[{i}].stage"))?;
         check_creation_feedback(
             raw.p_next,
@@ -3274,6 +3309,11 @@ pub(crate) fn create_graphics_pipelines_checks(
                 )?;
             }
             check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
+            check_constant_sizes(
+                device,
+                stage,
+                &format_args!("pCreateInfos[{i}].pStages[{j}]"),
+            )?;
             check_stage_subgroups(
                 device,
                 stage,

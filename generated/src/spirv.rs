@@ -254,6 +254,9 @@ pub(crate) struct Interface {
     pub vertex_inputs: Vec<(String, Vec<(u32, u32)>)>,
     /// Every entry point, with the execution modes declared for it.
     pub entry_points: Vec<EntryPoint>,
+    /// Each specialization constant's `SpecId` and the bytes a map entry gives it
+    /// (a boolean's: a `VkBool32`'s four).
+    pub spec_constants: Vec<(u32, u32)>,
 }
 
 /// An entry point of a module.
@@ -536,6 +539,9 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const OP_VARIABLE: u32 = 59;
     const OP_ENTRY_POINT: u32 = 15;
     const OP_EXECUTION_MODE: u32 = 16;
+    const OP_SPEC_CONSTANT_TRUE: u32 = 48;
+    const OP_SPEC_CONSTANT: u32 = 50;
+    const SPEC_ID: u32 = 1;
     const EXECUTION_MODEL_VERTEX: u32 = 0;
     const INPUT: u32 = 1;
     const LOCATION: u32 = 30;
@@ -551,6 +557,8 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     let mut entry_points: Vec<(u32, EntryPoint)> = Vec::new();
     // Execution modes by entry point id.
     let mut modes: Vec<(u32, u32, Vec<u32>)> = Vec::new();
+    // Scalar specialization constants: opcode, result type and result id.
+    let mut spec: Vec<(u32, u32, u32)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -577,6 +585,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
             (OP_EXECUTION_MODE, 3..) => modes.push((w[1], w[2], w[3..].to_vec())),
+            (OP_SPEC_CONSTANT_TRUE..=OP_SPEC_CONSTANT, 3..) => spec.push((op, w[1], w[2])),
             (OP_ENTRY_POINT, 4..) => {
                 // The name is a nul-terminated string packed four bytes a word; the
                 // interface ids follow it.
@@ -614,8 +623,22 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             e.modes.push((mode, operands));
         }
     }
+    let spec_constants = spec
+        .into_iter()
+        .filter_map(|(op, ty, id)| {
+            let spec_id = *m.decorations.get(&(id, SPEC_ID))?;
+            let size = match (op, m.ty(ty)) {
+                (OP_SPEC_CONSTANT, Some((OP_TYPE_INT | OP_TYPE_FLOAT, [width, ..]))) => width / 8,
+                (OP_SPEC_CONSTANT, _) => return None,
+                // OpSpecConstantTrue and OpSpecConstantFalse: a boolean.
+                _ => 4,
+            };
+            Some((spec_id, size))
+        })
+        .collect();
     let mut out = Interface {
         entry_points: entry_points.into_iter().map(|(_, e)| e).collect(),
+        spec_constants,
         ..Interface::default()
     };
     for (name, ids) in vertex_entries {
@@ -1025,6 +1048,14 @@ mod tests {
             .expect("the evaluation entry point");
         // Quads.
         assert_eq!(e.first_of(&[22, 24, 25]), Some(24));
+    }
+
+    #[test]
+    fn specialization_constants_keep_their_sizes() {
+        let spec = interface(&words(include_bytes!("../../shaders/spv/spec.vert.spv")));
+        assert_eq!(spec.spec_constants, [(0, 4)]);
+        let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
+        assert!(test.spec_constants.is_empty());
     }
 
     #[test]

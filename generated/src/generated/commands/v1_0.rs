@@ -582,7 +582,7 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Safety
 
-The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkComputePipelineCreateInfo-flags-00700`: If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be -1
 - `VUID-VkComputePipelineCreateInfo-stage-00702`: The shader code for the entry point identified by `stage` and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces chapter
@@ -597,7 +597,6 @@ The caller upholds these 14 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
 - `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
-- `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 
 # Valid usage
 
@@ -633,7 +632,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`, `VUID-vkCreateComputePipelines-pipelineCache-02873`, `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`, `VUID-VkPipelineShaderStageCreateInfo-flags-02758`, `VUID-VkPipelineShaderStageCreateInfo-flags-02759`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationMapEntry-constantID-00776`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter`, `VUID-vkCreateComputePipelines-pipelineCache-02873`, `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`, `VUID-VkPipelineShaderStageCreateInfo-flags-02758`, `VUID-VkPipelineShaderStageCreateInfo-flags-02759`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -1005,7 +1004,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
 
 # Safety
 
-The caller upholds these 34 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`: If the pipeline is being created with a `Vertex` {ExecutionModel} and no `TessellationEvaluation` or `Geometry` {ExecutionModel}, and the `topology` member of `pInputAssembly` is `VK_PRIMITIVE_TOPOLOGY_POINT_LIST`, a `PointSize` decorated variable must be written to
 - `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`: If the pipeline is being created with a `TessellationEvaluation` {ExecutionModel}, no `Geometry` {ExecutionModel}, uses the `PointMode` {ExecutionMode}, and `shaderTessellationAndGeometryPointSize` is enabled, a `PointSize` decorated variable must be written to
@@ -1040,7 +1039,6 @@ The caller upholds these 34 rules that no check of this method enforces (its com
 - `VUID-VkPipelineShaderStageCreateInfo-stage-00718`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, the identified entry point must not include any output variables in its interface decorated with `CullDistance`
 - `VUID-VkPipelineShaderStageCreateInfo-stage-06685`: If `stage` is `VK_SHADER_STAGE_FRAGMENT_BIT`, and the identified entry point writes to `FragDepth` in any execution path, all execution paths that are not exclusive to helper invocations must either discard the fragment, or write or initialize the value of `FragDepth`
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719`: The shader code used by the pipeline must be valid as described by the Khronos SPIR-V Specification after applying the specializations provided in `pSpecializationInfo`, if any, and then converting all specialization constants into fixed constants
-- `VUID-VkSpecializationMapEntry-constantID-00776`: For a `constantID` specialization constant declared in a shader, `size` must match the byte size of the `constantID`. If the specialization constant is of type `boolean`, `size` must be the byte size of VkBool32
 
 # Valid usage
 
