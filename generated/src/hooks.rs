@@ -3072,6 +3072,95 @@ fn subgroup_size(device: &Device) -> u32 {
     subgroup.subgroup_size
 }
 
+/// The built-in variables of the entry point a stage names: clip and cull distance
+/// arrays within `maxClipDistances` (00708), `maxCullDistances` (00709) and together
+/// `maxCombinedClipAndCullDistances` (00710, per storage class), a sample mask within
+/// `maxSampleMaskWords` (00711), no cull distance read by a vertex stage (00712) or
+/// written by a fragment stage (00718).
+fn check_stage_builtins(
+    device: &Device,
+    stage: &vk::PipelineShaderStageCreateInfo<'_>,
+    at: &dyn core::fmt::Display,
+) -> Result<()> {
+    const CLIP: u32 = 3;
+    const CULL: u32 = 4;
+    const SAMPLE_MASK: u32 = 20;
+    const INPUT: u32 = 1;
+    const OUTPUT: u32 = 3;
+    let Some(entry) = stage_entry_point(device, stage) else {
+        return Ok(());
+    };
+    if entry.builtins.is_empty() {
+        return Ok(());
+    }
+    let limits = limits(device);
+    let of = |builtin: u32, storage: Option<u32>| {
+        entry
+            .builtins
+            .iter()
+            .filter(move |(b, s, _)| *b == builtin && storage.is_none_or(|w| w == *s))
+    };
+    let bounds = [
+        (
+            CLIP,
+            limits.max_clip_distances,
+            "VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708",
+            "ClipDistance",
+            "maxClipDistances",
+        ),
+        (
+            CULL,
+            limits.max_cull_distances,
+            "VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709",
+            "CullDistance",
+            "maxCullDistances",
+        ),
+        (
+            SAMPLE_MASK,
+            limits.max_sample_mask_words,
+            "VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711",
+            "SampleMask",
+            "maxSampleMaskWords",
+        ),
+    ];
+    for (builtin, max, vuid, name, limit) in bounds {
+        if let Some((_, _, len)) = of(builtin, None).find(|(_, _, len)| *len > max) {
+            refuse(
+                vuid,
+                format!(
+                    "{at}: the entry point's {name} array has {len} elements, past {limit} ({max})"
+                ),
+            )?;
+        }
+    }
+    let combined = limits.max_combined_clip_and_cull_distances;
+    for storage in [INPUT, OUTPUT] {
+        let sum: u32 = of(CLIP, Some(storage))
+            .chain(of(CULL, Some(storage)))
+            .map(|(_, _, len)| *len)
+            .sum();
+        if sum > combined {
+            refuse(
+                "VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710",
+                format!("{at}: the entry point's ClipDistance and CullDistance arrays have {sum} elements together, past maxCombinedClipAndCullDistances ({combined})"),
+            )?;
+        }
+    }
+    if stage.stage == vk::ShaderStageFlags::VERTEX && of(CULL, Some(INPUT)).next().is_some() {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00712",
+            format!("{at}: a vertex entry point reads a CullDistance input"),
+        )?;
+    }
+    if stage.stage == vk::ShaderStageFlags::FRAGMENT && of(CULL, Some(OUTPUT)).next().is_some() {
+        refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00718",
+            format!("{at}: a fragment entry point writes a CullDistance output"),
+        )?;
+    }
+    Ok(())
+}
+
 /// Each specialization map entry of a stage that names a constant its module
 /// declares gives it as many bytes as the constant's type has, four for a boolean
 /// (`VUID-VkSpecializationMapEntry-constantID-00776`).
@@ -3310,6 +3399,11 @@ pub(crate) fn create_graphics_pipelines_checks(
             }
             check_specialization(stage, &format_args!("pCreateInfos[{i}].pStages[{j}]"))?;
             check_constant_sizes(
+                device,
+                stage,
+                &format_args!("pCreateInfos[{i}].pStages[{j}]"),
+            )?;
+            check_stage_builtins(
                 device,
                 stage,
                 &format_args!("pCreateInfos[{i}].pStages[{j}]"),

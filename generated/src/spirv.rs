@@ -269,6 +269,10 @@ pub(crate) struct EntryPoint {
     pub model: u32,
     /// Each `OpExecutionMode` declared for it: the mode and its literal operands.
     pub modes: Vec<(u32, Vec<u32>)>,
+    /// The built-in variables of its interface (decorated themselves, or members of
+    /// a block, as `gl_PerVertex` is): the `BuiltIn`, the variable's storage class
+    /// and its array size (1 for a scalar or vector).
+    pub builtins: Vec<(u32, u32, u32)>,
 }
 
 impl EntryPoint {
@@ -486,6 +490,32 @@ impl Module {
         }
     }
 
+    /// The built-ins variable `id` of type `pointee` carries, each with its array
+    /// size: its own `BuiltIn` decoration, or those of the members of the block it
+    /// is (under any per-vertex arrays).
+    fn builtins(&self, id: u32, pointee: u32) -> Vec<(u32, u32)> {
+        const BUILT_IN: u32 = 11;
+        let len = |t: u32| match self.ty(t) {
+            Some((OP_TYPE_ARRAY, [_, len, ..])) => self.constants.get(len).copied().unwrap_or(0),
+            _ => 1,
+        };
+        if let Some(builtin) = self.decorations.get(&(id, BUILT_IN)) {
+            return vec![(*builtin, len(pointee))];
+        }
+        let (block, _) = self.element(pointee);
+        let Some((OP_TYPE_STRUCT, members)) = self.ty(block) else {
+            return Vec::new();
+        };
+        members
+            .iter()
+            .enumerate()
+            .filter_map(|(i, member)| {
+                let builtin = self.member_decorations.get(&(block, i as u32, BUILT_IN))?;
+                Some((*builtin, len(*member)))
+            })
+            .collect()
+    }
+
     /// The image type of a variable whose type under any arrays is `element`.
     fn image_shape(&self, element: u32) -> Option<ImageShape> {
         let image = match self.ty(element)? {
@@ -559,6 +589,8 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     let mut modes: Vec<(u32, u32, Vec<u32>)> = Vec::new();
     // Scalar specialization constants: opcode, result type and result id.
     let mut spec: Vec<(u32, u32, u32)> = Vec::new();
+    // Each entry point's interface ids.
+    let mut interfaces: Vec<(u32, Vec<u32>)> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -606,9 +638,10 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                     EntryPoint {
                         name: name.clone(),
                         model: w[1],
-                        modes: Vec::new(),
+                        ..EntryPoint::default()
                     },
                 ));
+                interfaces.push((w[2], rest.to_vec()));
                 if w[1] == EXECUTION_MODEL_VERTEX {
                     vertex_entries.push((name, rest.to_vec()));
                 }
@@ -618,6 +651,24 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         at += count;
     }
     let (used, unplaced) = variable_ops(words, &variables);
+    for (entry, ids) in interfaces {
+        let builtins: Vec<(u32, u32, u32)> = variables
+            .iter()
+            .filter(|(_, id, _)| ids.contains(id))
+            .flat_map(|(ty, id, storage)| {
+                let pointee = match m.ty(*ty) {
+                    Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
+                    _ => 0,
+                };
+                m.builtins(*id, pointee)
+                    .into_iter()
+                    .map(move |(builtin, len)| (builtin, *storage, len))
+            })
+            .collect();
+        if let Some((_, e)) = entry_points.iter_mut().find(|(e, _)| *e == entry) {
+            e.builtins = builtins;
+        }
+    }
     for (id, mode, operands) in modes {
         if let Some((_, e)) = entry_points.iter_mut().find(|(e, _)| *e == id) {
             e.modes.push((mode, operands));
@@ -1048,6 +1099,13 @@ mod tests {
             .expect("the evaluation entry point");
         // Quads.
         assert_eq!(e.first_of(&[22, 24, 25]), Some(24));
+        // The geometry shader reads gl_in[] and writes gl_PerVertex: Position (0) and
+        // PointSize (1) among the members of each block (Input 1, Output 3).
+        let builtins = &interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")))
+            .entry_points[0]
+            .builtins;
+        assert!(builtins.contains(&(0, 1, 1)));
+        assert!(builtins.contains(&(1, 3, 1)));
     }
 
     #[test]

@@ -280,6 +280,7 @@ const UNPROVEN_FEEDBACK_COUNT: &str = "checked by the safe methods in every buil
 const WORKGROUP_SUBGROUPS: &str = "checks a stage that asks for full subgroups: the width of the workgroup its entry point declares (the LocalSize execution mode, read from the module's SPIR-V; a size given otherwise is refused) against the required subgroup size, maxSubgroupSize with a varying size, or the device's subgroupSize";
 const UNPROVEN_WORKGROUP_SUBGROUPS: &str = "checked by the safe methods in every build (a compute stage with a required subgroup size: the invocations of the workgroup its entry point declares against maxComputeWorkgroupSubgroups subgroups of that size), but no test breaks it: lavapipe's maxComputeWorkgroupSubgroups times its subgroup size is its largest workgroup";
 const SUBGROUP_SIZES: &str = "checks each stage of a graphics or compute pipeline: its subgroup size flags against the subgroupSizeControl and computeFullSubgroups features the device recorded, and a chained required subgroup size against a power of two, the device's minSubgroupSize, maxSubgroupSize and requiredSubgroupSizeStages (Vulkan 1.3 properties, read at the call), the varying-size flag and the subgroupSizeControl feature (the 1.3.239 layer names the flags rules and 02754 for a graphics stage, and says nothing of the required size's others: the error alone proves them)";
+const UNPROVEN_BUILTINS: &str = "checked by the safe methods in every build (the built-in variables of the interface of the entry point a graphics stage names, read from the module's SPIR-V: clip and cull distance and sample mask array sizes against the limits, no cull distance input to a vertex stage or output from a fragment stage), but no test breaks it: GLSL compilers keep these arrays within their own limits, which lavapipe's match, and declare no such variables, and the test shaders are GLSL";
 const CONSTANT_SIZES: &str = "checks each specialization map entry that names a constant the stage's module declares (its SpecId and scalar type, read from the SPIR-V when the module is made) against the byte size of that type, four for a boolean";
 const SPECIALIZATION: &str = "checks each specialization map entry lies inside the specialization data (graphics and compute pipelines)";
 const GIVEN_OR_DYNAMIC: &str =
@@ -2131,6 +2132,12 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-vkCreateComputePipelines-flags-00696", How::Dynamic(COMPUTE_STATE)),
             ("VUID-VkSpecializationInfo-offset-00773", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkSpecializationMapEntry-constantID-00776", How::Dynamic(CONSTANT_SIZES)),
+            ("VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708", How::User(UNPROVEN_BUILTINS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709", How::User(UNPROVEN_BUILTINS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710", How::User(UNPROVEN_BUILTINS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711", How::User(UNPROVEN_BUILTINS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-stage-00712", How::User(UNPROVEN_BUILTINS)),
+            ("VUID-VkPipelineShaderStageCreateInfo-stage-00718", How::User(UNPROVEN_BUILTINS)),
             ("VUID-VkSpecializationInfo-pMapEntries-00774", How::Dynamic(SPECIALIZATION)),
             ("VUID-VkComputePipelineCreateInfo-layout-00703", How::Dynamic(SHADER_LAYOUT)),
             ("VUID-VkPipelineShaderStageCreateInfo-module-06716", How::Dynamic(STAGE_MODULE)),

@@ -2698,9 +2698,10 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 29.
 
 - 1: checked by the safe methods in every build (a compute stage with a required subgroup size: the invocations of the workgroup its entry point declares against maxComputeWorkgroupSubgroups subgroups of that size), but no test breaks it: lavapipe's maxComputeWorkgroupSubgroups times its subgroup size is its largest workgroup
+- 6: checked by the safe methods in every build (the built-in variables of the interface of the entry point a graphics stage names, read from the module's SPIR-V: clip and cull distance and sample mask array sizes against the limits, no cull distance input to a vertex stage or output from a fragment stage), but no test breaks it: GLSL compilers keep these arrays within their own limits, which lavapipe's match, and declare no such variables, and the test shaders are GLSL
 - 3: checked by the safe methods in every build (the execution modes of the entry points the tessellation and geometry stages name, read from each module's SPIR-V: one subdivision and one output patch size between the tessellation stages, within maxTessellationPatchSize; a geometry stage's output vertex and invocation counts within the limits), but no test breaks it: GLSL writes these modes in the stage that must have them, within the compiler's limits, and the test shaders are GLSL
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 22: explicit rule; the wrappers do not check it*/
+- 16: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineShaderStageCreateInfo<'a> {
