@@ -104,6 +104,8 @@ struct Parts {
     /// The vertex stage runs `spec.vert`, which declares a boolean specialization
     /// constant 0, instead of the test shader.
     spec_vertex: bool,
+    /// The geometry stage does not write the point size.
+    unsized_geometry: bool,
     /// The first stage's flags and entry point name.
     stage_flags: vk::PipelineShaderStageCreateFlags,
     entry: &'static core::ffi::CStr,
@@ -159,6 +161,7 @@ impl Default for Parts {
             constants: vec![],
             constant_size: 4,
             spec_vertex: false,
+            unsized_geometry: false,
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
             entry: c"main",
             subgroup_size: None,
@@ -232,6 +235,8 @@ struct Common {
     geometry: tuff::ShaderModule,
     /// The test vertex shader with a boolean specialization constant.
     spec_vertex: tuff::ShaderModule,
+    /// The geometry shader of points without their size.
+    unsized_geometry: tuff::ShaderModule,
     layout: tuff::PipelineLayout,
     _set_layout: tuff::DescriptorSetLayout,
 }
@@ -278,6 +283,7 @@ fn common(s: &Setup) -> Common {
         ],
         geometry: shader(include_bytes!("../shaders/spv/points.geom.spv")),
         spec_vertex: shader(include_bytes!("../shaders/spv/spec.vert.spv")),
+        unsized_geometry: shader(include_bytes!("../shaders/spv/points_unsized.geom.spv")),
         layout,
         _set_layout: set_layout,
     }
@@ -288,7 +294,11 @@ fn common(s: &Setup) -> Common {
 fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()>, Vec<String>) {
     let module = |stage: vk::ShaderStageFlags| {
         if stage == vk::ShaderStageFlags::GEOMETRY {
-            return &c.geometry;
+            return if parts.unsized_geometry {
+                &c.unsized_geometry
+            } else {
+                &c.geometry
+            };
         }
         if stage == vk::ShaderStageFlags::VERTEX && parts.spec_vertex {
             return &c.spec_vertex;
@@ -682,6 +692,22 @@ const CASES: &[Case] = &[
     case("VUID-VkSpecializationInfo-constantID-04911", |p| {
         p.constants = vec![1, 1]
     }),
+    // The test vertex shader writes no point size.
+    case("VUID-VkGraphicsPipelineCreateInfo-Vertex-07722", |p| {
+        p.topology = Some(vk::PrimitiveTopology::POINT_LIST)
+    }),
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-Geometry-07725", |p| {
+            p.stages = vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ];
+            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
+            p.unsized_geometry = true;
+        })
+    },
     // One byte for a boolean, which takes a VkBool32's four.
     case("VUID-VkSpecializationMapEntry-constantID-00776", |p| {
         p.spec_vertex = true;

@@ -273,6 +273,8 @@ pub(crate) struct EntryPoint {
     /// a block, as `gl_PerVertex` is): the `BuiltIn`, the variable's storage class
     /// and its array size (1 for a scalar or vector).
     pub builtins: Vec<(u32, u32, u32)>,
+    /// The built-ins the module stores to through its interface's variables.
+    pub writes: Vec<u32>,
 }
 
 impl EntryPoint {
@@ -651,7 +653,16 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         at += count;
     }
     let (used, unplaced) = variable_ops(words, &variables);
+    let stored = stored_builtins(words, &m, &variables);
     for (entry, ids) in interfaces {
+        let writes: Vec<u32> = stored
+            .iter()
+            .filter(|(var, _)| ids.contains(var))
+            .map(|(_, b)| *b)
+            .collect();
+        if let Some((_, e)) = entry_points.iter_mut().find(|(e, _)| *e == entry) {
+            e.writes = writes;
+        }
         let builtins: Vec<(u32, u32, u32)> = variables
             .iter()
             .filter(|(_, id, _)| ids.contains(id))
@@ -753,6 +764,69 @@ fn fewest(a: u8, b: u8) -> u8 {
         (0, n) | (n, 0) => n,
         (a, b) => a.min(b),
     }
+}
+
+/// The (variable, built-in) pairs an `OpStore` of the module writes: a store to a
+/// variable decorated `BuiltIn`, or through an access chain into a member of a block
+/// variable (under one level of per-vertex array) that is.
+fn stored_builtins(words: &[u32], m: &Module, variables: &[(u32, u32, u32)]) -> Vec<(u32, u32)> {
+    const OP_STORE: u32 = 62;
+    const OP_ACCESS_CHAIN: u32 = 65;
+    const OP_IN_BOUNDS_ACCESS_CHAIN: u32 = 66;
+    const BUILT_IN: u32 = 11;
+    // Each access chain's base and indices, and the pointers stored to.
+    let mut chains: HashMap<u32, (u32, Vec<u32>)> = HashMap::new();
+    let mut stores: Vec<u32> = Vec::new();
+    let mut at = 5;
+    while at < words.len() {
+        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        if count == 0 || at + count > words.len() {
+            break;
+        }
+        let w = &words[at + 1..at + count];
+        match (op, w) {
+            (OP_ACCESS_CHAIN | OP_IN_BOUNDS_ACCESS_CHAIN, [_, id, base, indices @ ..]) => {
+                chains.insert(*id, (*base, indices.to_vec()));
+            }
+            (OP_STORE, [pointer, ..]) => stores.push(*pointer),
+            _ => {}
+        }
+        at += count;
+    }
+    let mut out = Vec::new();
+    for pointer in stores {
+        // The chain from a variable down to the pointer, its indices in order.
+        let (mut root, mut indices) = (pointer, Vec::new());
+        for _ in 0..8 {
+            let Some((base, more)) = chains.get(&root) else {
+                break;
+            };
+            indices.splice(0..0, more.iter().copied());
+            root = *base;
+        }
+        let Some((ty, _, _)) = variables.iter().find(|(_, id, _)| *id == root) else {
+            continue;
+        };
+        if let Some(b) = m.decorations.get(&(root, BUILT_IN)) {
+            out.push((root, *b));
+            continue;
+        }
+        let Some((OP_TYPE_POINTER, [_, pointee, ..])) = m.ty(*ty) else {
+            continue;
+        };
+        // A block, or an array of blocks (per vertex) whose first index is the vertex.
+        let (block, member_at) = match m.ty(*pointee) {
+            Some((OP_TYPE_ARRAY | OP_TYPE_RUNTIME_ARRAY, [elem, ..])) => (*elem, 1),
+            _ => (*pointee, 0),
+        };
+        let member = indices.get(member_at).and_then(|i| m.constants.get(i));
+        if let Some(b) = member.and_then(|i| m.member_decorations.get(&(block, *i, BUILT_IN))) {
+            out.push((root, *b));
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 /// What a module's instructions do with one variable: [`ops`] bits, and the fewest
@@ -1106,6 +1180,11 @@ mod tests {
             .builtins;
         assert!(builtins.contains(&(0, 1, 1)));
         assert!(builtins.contains(&(1, 3, 1)));
+        // It writes Position and PointSize; the test vertex shader Position only.
+        let geometry = interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")));
+        assert_eq!(geometry.entry_points[0].writes, [0, 1]);
+        let vertex = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
+        assert_eq!(vertex.entry_points[0].writes, [0]);
     }
 
     #[test]

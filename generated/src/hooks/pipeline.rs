@@ -104,6 +104,7 @@ pub(crate) fn graphics_pipeline_state_checks(
         )?;
         check_stages(&states, &at)?;
         check_execution_modes(device, &states, &at)?;
+        check_point_size(device, &states, &at)?;
         check_present(raw, &states, &at)?;
         let targets = match raw.render_pass == vk::RenderPass::null() {
             false => subpass_targets(device, raw, &at)?,
@@ -686,6 +687,74 @@ fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Resu
         refuse(
             "VUID-VkGraphicsPipelineCreateInfo-pStages-00738",
             format!("{at}'s geometry stage's input primitive (mode {input:?}) is not the one its topology {:?} gives (mode {wanted})", assembly.topology),
+        )?;
+    }
+    Ok(())
+}
+
+/// The last pre-rasterization stage writes `PointSize` where it rasterizes points
+/// and the device reads it there: a vertex stage alone with a point list (07722), a
+/// tessellation evaluation stage in point mode with no geometry stage (07723), or a
+/// geometry stage that outputs points (07725), while
+/// `shaderTessellationAndGeometryPointSize` is enabled for the last two; without
+/// it, they must not write it (07724, 07726).
+fn check_point_size(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    use vk::ShaderStageFlags as S;
+    const POINT_SIZE: u32 = 1;
+    const OUTPUT_POINTS: u32 = 27;
+    let entry = |stage: S| {
+        let s = states.stages.iter().find(|s| s.stage == stage)?;
+        crate::hooks::stage_entry_point(device, s)
+    };
+    let sized = device
+        .live()
+        .with_features(|f| f.v10.shader_tessellation_and_geometry_point_size)
+        == vk::TRUE;
+    let (geometry, evaluation) = (entry(S::GEOMETRY), entry(S::TESSELLATION_EVALUATION));
+    let (last, points, written, unwritten, what) = if let Some(g) = geometry {
+        let points = g.mode(OUTPUT_POINTS).is_some();
+        (
+            g,
+            points,
+            "VUID-VkGraphicsPipelineCreateInfo-Geometry-07725",
+            "VUID-VkGraphicsPipelineCreateInfo-Geometry-07726",
+            "geometry stage outputs points",
+        )
+    } else if let Some(e) = evaluation {
+        let points = e.mode(mode::POINT_MODE).is_some();
+        (
+            e,
+            points,
+            "VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723",
+            "VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724",
+            "tessellation evaluation stage is in point mode",
+        )
+    } else {
+        let Some(v) = entry(S::VERTEX) else {
+            return Ok(());
+        };
+        let points = states
+            .assembly
+            .is_some_and(|a| a.topology == vk::PrimitiveTopology::POINT_LIST);
+        if points && !v.writes.contains(&POINT_SIZE) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-Vertex-07722",
+                format!("{at} draws a point list with a vertex stage alone, which does not write PointSize"),
+            )?;
+        }
+        return Ok(());
+    };
+    let writes = last.writes.contains(&POINT_SIZE);
+    if points && sized && !writes {
+        refuse(
+            written,
+            format!("{at}'s {what} and does not write PointSize, which the device's shaderTessellationAndGeometryPointSize reads"),
+        )?;
+    }
+    if points && !sized && writes {
+        refuse(
+            unwritten,
+            format!("{at}'s {what} and writes PointSize, and the device has not enabled shaderTessellationAndGeometryPointSize"),
         )?;
     }
     Ok(())
