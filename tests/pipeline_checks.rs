@@ -106,6 +106,8 @@ struct Parts {
     spec_vertex: bool,
     /// The geometry stage does not write the point size.
     unsized_geometry: bool,
+    /// The fragment stage reads PrimitiveId (`prim.frag`).
+    primitive_fragment: bool,
     /// The first stage's flags and entry point name.
     stage_flags: vk::PipelineShaderStageCreateFlags,
     entry: &'static core::ffi::CStr,
@@ -162,6 +164,7 @@ impl Default for Parts {
             constant_size: 4,
             spec_vertex: false,
             unsized_geometry: false,
+            primitive_fragment: false,
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
             entry: c"main",
             subgroup_size: None,
@@ -237,6 +240,8 @@ struct Common {
     spec_vertex: tuff::ShaderModule,
     /// The geometry shader of points without their size.
     unsized_geometry: tuff::ShaderModule,
+    /// A fragment shader that reads PrimitiveId.
+    primitive_fragment: tuff::ShaderModule,
     layout: tuff::PipelineLayout,
     _set_layout: tuff::DescriptorSetLayout,
 }
@@ -284,6 +289,7 @@ fn common(s: &Setup) -> Common {
         geometry: shader(include_bytes!("../shaders/spv/points.geom.spv")),
         spec_vertex: shader(include_bytes!("../shaders/spv/spec.vert.spv")),
         unsized_geometry: shader(include_bytes!("../shaders/spv/points_unsized.geom.spv")),
+        primitive_fragment: shader(include_bytes!("../shaders/spv/prim.frag.spv")),
         layout,
         _set_layout: set_layout,
     }
@@ -302,6 +308,9 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         }
         if stage == vk::ShaderStageFlags::VERTEX && parts.spec_vertex {
             return &c.spec_vertex;
+        }
+        if stage == vk::ShaderStageFlags::FRAGMENT && parts.primitive_fragment {
+            return &c.primitive_fragment;
         }
         let i = match stage {
             vk::ShaderStageFlags::VERTEX => 0,
@@ -706,6 +715,19 @@ const CASES: &[Case] = &[
             ];
             p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
             p.unsized_geometry = true;
+        })
+    },
+    // The points geometry shader does not write PrimitiveId.
+    Case {
+        on: On::Full,
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00740", |p| {
+            p.stages = vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ];
+            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
+            p.primitive_fragment = true;
         })
     },
     // One byte for a boolean, which takes a VkBool32's four.

@@ -257,6 +257,8 @@ pub(crate) struct Interface {
     /// Each specialization constant's `SpecId` and the bytes a map entry gives it
     /// (a boolean's: a `VkBool32`'s four).
     pub spec_constants: Vec<(u32, u32)>,
+    /// The capabilities the module declares.
+    pub capabilities: Vec<u32>,
 }
 
 /// An entry point of a module.
@@ -571,6 +573,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const OP_VARIABLE: u32 = 59;
     const OP_ENTRY_POINT: u32 = 15;
     const OP_EXECUTION_MODE: u32 = 16;
+    const OP_CAPABILITY: u32 = 17;
     const OP_SPEC_CONSTANT_TRUE: u32 = 48;
     const OP_SPEC_CONSTANT: u32 = 50;
     const SPEC_ID: u32 = 1;
@@ -593,6 +596,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     let mut spec: Vec<(u32, u32, u32)> = Vec::new();
     // Each entry point's interface ids.
     let mut interfaces: Vec<(u32, Vec<u32>)> = Vec::new();
+    let mut capabilities: Vec<u32> = Vec::new();
     // The header is five words; instructions follow.
     let mut at = 5;
     while at < words.len() {
@@ -619,6 +623,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             }
             (OP_VARIABLE, 4..) => variables.push((w[1], w[2], w[3])),
             (OP_EXECUTION_MODE, 3..) => modes.push((w[1], w[2], w[3..].to_vec())),
+            (OP_CAPABILITY, 2..) => capabilities.push(w[1]),
             (OP_SPEC_CONSTANT_TRUE..=OP_SPEC_CONSTANT, 3..) => spec.push((op, w[1], w[2])),
             (OP_ENTRY_POINT, 4..) => {
                 // The name is a nul-terminated string packed four bytes a word; the
@@ -701,6 +706,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     let mut out = Interface {
         entry_points: entry_points.into_iter().map(|(_, e)| e).collect(),
         spec_constants,
+        capabilities,
         ..Interface::default()
     };
     for (name, ids) in vertex_entries {

@@ -72,6 +72,8 @@ impl<'a> States<'a> {
 struct Targets {
     colors: Vec<vk::Format>,
     depth: Option<vk::Format>,
+    /// The subpass's or the rendering's view mask.
+    view_mask: u32,
 }
 
 /// The checks of `vkCreateGraphicsPipelines` over each pipeline's state as a
@@ -110,6 +112,7 @@ pub(crate) fn graphics_pipeline_state_checks(
             false => subpass_targets(device, raw, &at)?,
             true => rendering_targets(device, raw, &at)?,
         };
+        check_stage_interfaces(device, raw, &states, &targets, &at)?;
         if states.fragment() && raw.render_pass == vk::RenderPass::null() {
             // Dynamic rendering's formats ask for the states that write them.
             if targets.depth.is_some() && states.depth_stencil.is_none() {
@@ -692,6 +695,130 @@ fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Resu
     Ok(())
 }
 
+/// What the stages' entry points declare and write against what the pipeline renders
+/// to: with a view mask, no tessellation or geometry stage without the multiview
+/// feature for it (06047, 06048; 06057, 06058 in dynamic rendering) and no `Layer`
+/// written (06049, 07718) or in an interface (06050, 06059); a fragment stage's
+/// input attachments only in a render pass (06056, and no `InputAttachment`
+/// capability, 06061), none of them unused in the subpass (06038); and a fragment
+/// stage that reads `PrimitiveId` after a geometry stage that writes it (00740).
+fn check_stage_interfaces(
+    device: &Device,
+    raw: &vk::GraphicsPipelineCreateInfo<'_>,
+    states: &States<'_>,
+    targets: &Targets,
+    at: &str,
+) -> Result<()> {
+    use vk::ShaderStageFlags as S;
+    const LAYER: u32 = 9;
+    const PRIMITIVE_ID: u32 = 7;
+    const INPUT: u32 = 1;
+    const INPUT_ATTACHMENT_CAPABILITY: u32 = 40;
+    let pass = raw.render_pass != vk::RenderPass::null();
+    let entry = |stage: S| {
+        let s = states.stages.iter().find(|s| s.stage == stage)?;
+        crate::hooks::stage_entry_point(device, s)
+    };
+    let has = |stage: S| states.stages.iter().any(|s| s.stage == stage);
+    let pick =
+        |in_pass: &'static str, rendering: &'static str| if pass { in_pass } else { rendering };
+    if targets.view_mask != 0 {
+        let (tessellation, geometry) = device.live().with_features(|f| {
+            (
+                f.v11.multiview_tessellation_shader == vk::TRUE,
+                f.v11.multiview_geometry_shader == vk::TRUE,
+            )
+        });
+        if !tessellation && (has(S::TESSELLATION_CONTROL) || has(S::TESSELLATION_EVALUATION)) {
+            refuse(
+                pick("VUID-VkGraphicsPipelineCreateInfo-renderPass-06047", "VUID-VkGraphicsPipelineCreateInfo-renderPass-06057"),
+                format!("{at} renders with view mask {:#x} and has tessellation stages, and the device has not enabled multiviewTessellationShader", targets.view_mask),
+            )?;
+        }
+        if !geometry && has(S::GEOMETRY) {
+            refuse(
+                pick("VUID-VkGraphicsPipelineCreateInfo-renderPass-06048", "VUID-VkGraphicsPipelineCreateInfo-renderPass-06058"),
+                format!("{at} renders with view mask {:#x} and has a geometry stage, and the device has not enabled multiviewGeometryShader", targets.view_mask),
+            )?;
+        }
+        for s in states.stages {
+            let Some(e) = crate::hooks::stage_entry_point(device, s) else {
+                continue;
+            };
+            if e.writes.contains(&LAYER) {
+                refuse(
+                    pick(
+                        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06049",
+                        "VUID-VkGraphicsPipelineCreateInfo-renderPass-07718",
+                    ),
+                    format!(
+                        "{at} renders with view mask {:#x}, and its {:?} stage writes Layer",
+                        targets.view_mask, s.stage
+                    ),
+                )?;
+            }
+            if e.builtins.iter().any(|(b, _, _)| *b == LAYER) {
+                refuse(
+                    pick("VUID-VkGraphicsPipelineCreateInfo-renderPass-06050", "VUID-VkGraphicsPipelineCreateInfo-renderPass-06059"),
+                    format!("{at} renders with view mask {:#x}, and its {:?} stage's interface has a Layer variable", targets.view_mask, s.stage),
+                )?;
+            }
+        }
+    }
+    let fragment = states.stages.iter().find(|s| s.stage == S::FRAGMENT);
+    if let Some(interface) = fragment.and_then(|s| device.live().shader_module(s.module)) {
+        let inputs = interface
+            .resources
+            .iter()
+            .filter(|r| r.kind == crate::spirv::ResourceKind::InputAttachment);
+        if !pass {
+            if inputs.clone().next().is_some() {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06056",
+                    format!("{at} is made for dynamic rendering, and its fragment stage reads an input attachment"),
+                )?;
+            }
+            if interface
+                .capabilities
+                .contains(&INPUT_ATTACHMENT_CAPABILITY)
+            {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-06061",
+                    format!("{at} is made for dynamic rendering, and its fragment stage declares the InputAttachment capability"),
+                )?;
+            }
+        } else if let Some(record) = device.live().render_pass(raw.render_pass) {
+            let subpass = record.inputs.get(raw.subpass as usize);
+            for r in inputs {
+                let unused = r
+                    .input_index
+                    .and_then(|i| subpass?.get(i as usize))
+                    .is_some_and(|a| *a == vk::ATTACHMENT_UNUSED);
+                if unused {
+                    refuse(
+                        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06038",
+                        format!("{at}'s fragment stage reads input attachment {:?}, which subpass {} defines as VK_ATTACHMENT_UNUSED", r.input_index, raw.subpass),
+                    )?;
+                }
+            }
+        }
+    }
+    let reads_primitive = entry(S::FRAGMENT).is_some_and(|e| {
+        e.builtins
+            .iter()
+            .any(|(b, s, _)| *b == PRIMITIVE_ID && *s == INPUT)
+    });
+    if let Some(g) = entry(S::GEOMETRY).filter(|_| reads_primitive) {
+        if !g.writes.contains(&PRIMITIVE_ID) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-00740",
+                format!("{at}'s fragment stage reads PrimitiveId, and its geometry stage does not write it"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
 /// The last pre-rasterization stage writes `PointSize` where it rasterizes points
 /// and the device reads it there: a vertex stage alone with a point list (07722), a
 /// tessellation evaluation stage in point mode with no geometry stage (07723), or a
@@ -907,6 +1034,7 @@ fn subpass_targets(
         return Ok(Targets {
             colors: Vec::new(),
             depth: None,
+            view_mask: 0,
         });
     };
     let count = record.view_masks.len();
@@ -926,6 +1054,7 @@ fn subpass_targets(
             .cloned()
             .unwrap_or_default(),
         depth: record.depth_formats.get(subpass).copied().flatten(),
+        view_mask: record.view_masks.get(subpass).copied().unwrap_or(0),
     })
 }
 
@@ -956,6 +1085,7 @@ fn rendering_targets(
         return Ok(Targets {
             colors: Vec::new(),
             depth: None,
+            view_mask: 0,
         });
     };
     if r.view_mask != 0 && multiview == vk::FALSE {
@@ -1050,6 +1180,7 @@ fn rendering_targets(
     Ok(Targets {
         colors: colors.to_vec(),
         depth: [depth, stencil].into_iter().find(|f| defined(*f)),
+        view_mask: r.view_mask,
     })
 }
 

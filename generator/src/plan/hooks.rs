@@ -295,6 +295,8 @@ const STATE_STRUCTS: &str = "checks each state struct on its own: dynamic states
 const COMPUTE_STATE: &str = "checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others";
 const UNAVAILABLE_DYNAMIC_STATES: &str = "checked by the safe methods in every build (the state is refused, as its feature is VK_EXT_extended_dynamic_state2's, which no device made through the safe create_device enables), but no test breaks it: on such a device the implicit check of pDynamicStates refuses the state first, as a value of an extension not enabled";
 const RENDER_PASS_WRAPPER: &str = "the safe struct's `render_pass` takes an `Option<&RenderPass>`: no handle, or a live wrapper's, which is valid";
+const STAGE_INTERFACES: &str = "checks the built-ins the stages' entry points declare and store to (read from each module's SPIR-V): a fragment stage that reads PrimitiveId after a geometry stage that does not write it is refused (the 1.3.239 layer does not check it: the error alone proves it)";
+const UNPROVEN_STAGE_INTERFACES: &str = "checked by the safe methods in every build (with a view mask, tessellation and geometry stages against the multiview features and no Layer written or declared; input attachments of a fragment stage only in a render pass, none unused in the subpass, no InputAttachment capability in dynamic rendering), but no test breaks it yet: the test devices enable the multiview features with the stages, the test render passes have no view mask, and the test shaders written for Vulkan 1.0 cannot write Layer from a vertex stage";
 const POINT_SIZE: &str = "checks the last pre-rasterization stage of a pipeline that rasterizes points (a vertex stage alone with a point list, a geometry stage that outputs points, a tessellation evaluation stage in point mode) writes PointSize, or with shaderTessellationAndGeometryPointSize off for the last two does not: the stores of the module into a PointSize variable or block member of its interface are read from its SPIR-V when it is made";
 const UNPROVEN_POINT_SIZE: &str = "checked by the safe methods in every build (as for Vertex-07722 and Geometry-07725), but no test breaks it: the test devices enable shaderTessellationAndGeometryPointSize whenever they enable geometry and tessellation shaders, and no test shader tessellates in point mode";
 const EXECUTION_MODES: &str = "checks the execution modes of the entry points the tessellation and geometry stages name (read from each module's SPIR-V when it is made): a geometry stage's input primitive against the topology, or against what the tessellation stages emit (points, lines for isolines, else triangles); the 1.3.239 layer checks neither case: the error alone proves them";
@@ -2206,6 +2208,18 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkGraphicsPipelineCreateInfo-layout-01688", How::User(UNPROVEN_STAGE_RESOURCES)),
             ("VUID-VkGraphicsPipelineCreateInfo-pStages-00738", How::Dynamic(EXECUTION_MODES)),
             ("VUID-VkGraphicsPipelineCreateInfo-Vertex-07722", How::Dynamic(POINT_SIZE)),
+            ("VUID-VkGraphicsPipelineCreateInfo-pStages-00740", How::Dynamic(STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06047", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06048", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06049", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06050", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06057", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06058", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-07718", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06059", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06038", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06056", How::User(UNPROVEN_STAGE_INTERFACES)),
+            ("VUID-VkGraphicsPipelineCreateInfo-renderPass-06061", How::User(UNPROVEN_STAGE_INTERFACES)),
             ("VUID-VkGraphicsPipelineCreateInfo-Geometry-07725", How::Dynamic(POINT_SIZE)),
             ("VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723", How::User(UNPROVEN_POINT_SIZE)),
             ("VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724", How::User(UNPROVEN_POINT_SIZE)),
