@@ -698,7 +698,9 @@ fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Resu
 /// What the stages' entry points declare and write against what the pipeline renders
 /// to: with a view mask, no tessellation or geometry stage without the multiview
 /// feature for it (06047, 06048; 06057, 06058 in dynamic rendering) and no `Layer`
-/// written (06049, 07718) or in an interface (06050, 06059); a fragment stage's
+/// written (06049, 07718) or in an interface (06050, 06059), nor in dynamic
+/// rendering a `ViewIndex` in an interface (07719, as the 1.3.239 rule reads); a
+/// fragment stage's
 /// input attachments only in a render pass (06056, and no `InputAttachment`
 /// capability, 06061), none of them unused in the subpass (06038); and a fragment
 /// stage that reads `PrimitiveId` after a geometry stage that writes it (00740).
@@ -711,6 +713,7 @@ fn check_stage_interfaces(
 ) -> Result<()> {
     use vk::ShaderStageFlags as S;
     const LAYER: u32 = 9;
+    const VIEW_INDEX: u32 = 4440;
     const PRIMITIVE_ID: u32 = 7;
     const INPUT: u32 = 1;
     const INPUT_ATTACHMENT_CAPABILITY: u32 = 40;
@@ -755,6 +758,12 @@ fn check_stage_interfaces(
                         "{at} renders with view mask {:#x}, and its {:?} stage writes Layer",
                         targets.view_mask, s.stage
                     ),
+                )?;
+            }
+            if !pass && e.builtins.iter().any(|(b, _, _)| *b == VIEW_INDEX) {
+                refuse(
+                    "VUID-VkGraphicsPipelineCreateInfo-renderPass-07719",
+                    format!("{at} renders with view mask {:#x} in dynamic rendering, and its {:?} stage's interface has a ViewIndex variable", targets.view_mask, s.stage),
                 )?;
             }
             if e.builtins.iter().any(|(b, _, _)| *b == LAYER) {

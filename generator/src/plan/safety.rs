@@ -37,10 +37,15 @@ pub const REVIEWED: &[Class] = &[
     Class {
         name: "the shader's own behaviour",
         reason: "the rule is about what a shader does when it runs (termination, accesses \
-                 outside the bound buffers without `robustBufferAccess`), which only the \
-                 shader decides; `create_shader_module` is `unsafe` and makes the caller \
-                 promise it once for every shader a pipeline can run",
-        holds: |r| SHADER_TAILS.iter().any(|t| r.vuid.ends_with(t)) && r.item.starts_with("vkCmd"),
+                 outside the bound buffers without `robustBufferAccess`, the same Layer and \
+                 ViewportIndex for every vertex of a primitive, FragDepth written on every \
+                 path of a fragment shader that writes it on one), which only the shader \
+                 decides; `create_shader_module` is `unsafe` and makes the caller promise \
+                 it once for every shader a pipeline can run",
+        holds: |r| {
+            (SHADER_TAILS.iter().any(|t| r.vuid.ends_with(t)) && r.item.starts_with("vkCmd"))
+                || SHADER_RUN_TIME.contains(&r.vuid.as_str())
+        },
     },
     Class {
         name: "queue family ownership of a resource's contents",
@@ -69,6 +74,14 @@ const OWNERSHIP: &[&str] = &[
 /// shader promise covers: termination, and buffer accesses inside the bound ranges
 /// where robust buffer access is off.
 const SHADER_TAILS: &[&str] = &["-None-07288", "-None-02705", "-None-02706"];
+
+/// Rules of a pipeline's stages about the values their shaders write when they run,
+/// which the shader promise covers, by VUID.
+const SHADER_RUN_TIME: &[&str] = &[
+    "VUID-VkPipelineShaderStageCreateInfo-stage-02596",
+    "VUID-VkPipelineShaderStageCreateInfo-stage-02597",
+    "VUID-VkPipelineShaderStageCreateInfo-stage-06685",
+];
 
 /// A rule a method's caller owns.
 #[derive(Debug, Clone, PartialEq, Eq)]
