@@ -459,6 +459,16 @@ pub(crate) fn compute_pipeline_state_checks(
             &at,
         )?;
         check_specialization(core::slice::from_ref(&raw.stage), &at)?;
+        if let Some(layout) = device.live().pipeline_layout(raw.layout) {
+            let count = stage_resources(&layout, vk::ShaderStageFlags::COMPUTE);
+            let max = u64::from(crate::hooks::limits(device).max_per_stage_resources);
+            if count > max {
+                refuse(
+                    "VUID-VkComputePipelineCreateInfo-layout-01687",
+                    format!("{at}'s compute stage reaches {count} resources through its layout, past maxPerStageResources ({max})"),
+                )?;
+            }
+        }
     }
     Ok(())
 }
@@ -962,36 +972,12 @@ fn check_stage_resources(
     colors: usize,
     at: &str,
 ) -> Result<()> {
-    use vk::DescriptorType as T;
     let Some(layout) = device.live().pipeline_layout(raw.layout) else {
         return Ok(());
     };
     let max = u64::from(crate::hooks::limits(device).max_per_stage_resources);
     for s in states.stages {
-        let mut count: u64 = layout
-            .sets
-            .iter()
-            .filter(|set| !set.update_after_bind)
-            .flat_map(|set| set.bindings.iter())
-            .filter(|b| b.stages.contains(s.stage))
-            .filter(|b| {
-                matches!(
-                    b.ty,
-                    T::SAMPLER
-                        | T::COMBINED_IMAGE_SAMPLER
-                        | T::SAMPLED_IMAGE
-                        | T::STORAGE_IMAGE
-                        | T::UNIFORM_TEXEL_BUFFER
-                        | T::STORAGE_TEXEL_BUFFER
-                        | T::UNIFORM_BUFFER
-                        | T::STORAGE_BUFFER
-                        | T::UNIFORM_BUFFER_DYNAMIC
-                        | T::STORAGE_BUFFER_DYNAMIC
-                        | T::INPUT_ATTACHMENT
-                )
-            })
-            .map(|b| u64::from(b.count))
-            .sum();
+        let mut count = stage_resources(&layout, s.stage);
         if s.stage == vk::ShaderStageFlags::FRAGMENT {
             count += colors as u64;
         }
@@ -1003,6 +989,37 @@ fn check_stage_resources(
         }
     }
     Ok(())
+}
+
+/// The resources of `layout` that count against `maxPerStageResources` for `stage`:
+/// the descriptors of the limited kinds in its set layouts without
+/// `UPDATE_AFTER_BIND_POOL` that the stage can see.
+fn stage_resources(layout: &crate::retention::LayoutRecord, stage: vk::ShaderStageFlags) -> u64 {
+    use vk::DescriptorType as T;
+    layout
+        .sets
+        .iter()
+        .filter(|set| !set.update_after_bind)
+        .flat_map(|set| set.bindings.iter())
+        .filter(|b| b.stages.contains(stage))
+        .filter(|b| {
+            matches!(
+                b.ty,
+                T::SAMPLER
+                    | T::COMBINED_IMAGE_SAMPLER
+                    | T::SAMPLED_IMAGE
+                    | T::STORAGE_IMAGE
+                    | T::UNIFORM_TEXEL_BUFFER
+                    | T::STORAGE_TEXEL_BUFFER
+                    | T::UNIFORM_BUFFER
+                    | T::STORAGE_BUFFER
+                    | T::UNIFORM_BUFFER_DYNAMIC
+                    | T::STORAGE_BUFFER_DYNAMIC
+                    | T::INPUT_ATTACHMENT
+            )
+        })
+        .map(|b| u64::from(b.count))
+        .sum()
 }
 
 /// A subpass that uses no attachment rasterizes at a sample count the device

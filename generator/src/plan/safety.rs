@@ -39,7 +39,8 @@ pub const REVIEWED: &[Class] = &[
         reason: "the rule is about what a shader does when it runs (termination, accesses \
                  outside the bound buffers without `robustBufferAccess`, the same Layer and \
                  ViewportIndex for every vertex of a primitive, FragDepth written on every \
-                 path of a fragment shader that writes it on one), which only the shader \
+                 path of a fragment shader that writes it on one, valid SPIR-V under the \
+                 specializations the program's pipelines give it), which only the shader \
                  decides; `create_shader_module` is `unsafe` and makes the caller promise \
                  it once for every shader a pipeline can run",
         holds: |r| {
@@ -75,12 +76,14 @@ const OWNERSHIP: &[&str] = &[
 /// where robust buffer access is off.
 const SHADER_TAILS: &[&str] = &["-None-07288", "-None-02705", "-None-02706"];
 
-/// Rules of a pipeline's stages about the values their shaders write when they run,
-/// which the shader promise covers, by VUID.
+/// Rules of a pipeline's stages about what their shaders do when they run (the
+/// values they write, their validity once specialized), which the shader promise
+/// covers, by VUID.
 const SHADER_RUN_TIME: &[&str] = &[
     "VUID-VkPipelineShaderStageCreateInfo-stage-02596",
     "VUID-VkPipelineShaderStageCreateInfo-stage-02597",
     "VUID-VkPipelineShaderStageCreateInfo-stage-06685",
+    "VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-06719",
 ];
 
 /// A rule a method's caller owns.

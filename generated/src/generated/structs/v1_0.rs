@@ -651,7 +651,9 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 15.
 
 - 1: checked by the safe methods in every build (a chained VkPipelineCreationFeedbackCreateInfo's stage count against the pipeline's, or 0), but no test breaks it: the safe struct has no setter for its pointers, so its NULL feedback pointer is refused first
-- 14: explicit rule; the wrappers do not check it*/
+- 1: checked by the safe methods in every build (for each stage, the descriptors of the limited kinds its layout's set layouts without UPDATE_AFTER_BIND_POOL make visible to it, and for the fragment stage the color attachments, against maxPerStageResources), but no test breaks it: a pipeline layout past the limit is refused when it is made (VkPipelineLayoutCreateInfo-descriptorType-03022), and one at lavapipe's limit is more descriptors than a test should make to add a color attachment to
+- 1: checked by the safe methods in every build: a derivative with a base pipeline handle and an index other than -1 is refused as VUID-VkComputePipelineCreateInfo-flags-00699, whose text states the same case, and the layer names both
+- 12: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
