@@ -563,6 +563,23 @@ impl Module {
     }
 }
 
+/// The instructions of a module after its five-word header: each opcode with its
+/// words, the first (which holds the opcode and the word count) included. A
+/// malformed instruction ends the walk.
+fn instructions(words: &[u32]) -> impl Iterator<Item = (u32, &[u32])> {
+    let mut at = 5;
+    std::iter::from_fn(move || {
+        let first = *words.get(at)?;
+        let (count, op) = ((first >> 16) as usize, first & 0xffff);
+        if count == 0 || at + count > words.len() {
+            return None;
+        }
+        let w = &words[at..at + count];
+        at += count;
+        Some((op, w))
+    })
+}
+
 /// The interface of the SPIR-V module in `words` (in the host's byte order, as
 /// [`spirv_words`] returns them). Malformed instructions end the walk; what was read
 /// until then is kept.
@@ -597,14 +614,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     // Each entry point's interface ids.
     let mut interfaces: Vec<(u32, Vec<u32>)> = Vec::new();
     let mut capabilities: Vec<u32> = Vec::new();
-    // The header is five words; instructions follow.
-    let mut at = 5;
-    while at < words.len() {
-        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
-        if count == 0 || at + count > words.len() {
-            break;
-        }
-        let w = &words[at..at + count];
+    for (op, w) in instructions(words) {
         match (op, w.len()) {
             (OP_DECORATE, 3) => {
                 m.flags.insert((w[1], w[2]));
@@ -655,7 +665,6 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             }
             _ => {}
         }
-        at += count;
     }
     let (used, unplaced) = variable_ops(words, &variables);
     let stored = stored_builtins(words, &m, &variables);
@@ -783,21 +792,14 @@ fn stored_builtins(words: &[u32], m: &Module, variables: &[(u32, u32, u32)]) -> 
     // Each access chain's base and indices, and the pointers stored to.
     let mut chains: HashMap<u32, (u32, Vec<u32>)> = HashMap::new();
     let mut stores: Vec<u32> = Vec::new();
-    let mut at = 5;
-    while at < words.len() {
-        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
-        if count == 0 || at + count > words.len() {
-            break;
-        }
-        let w = &words[at + 1..at + count];
-        match (op, w) {
+    for (op, w) in instructions(words) {
+        match (op, &w[1..]) {
             (OP_ACCESS_CHAIN | OP_IN_BOUNDS_ACCESS_CHAIN, [_, id, base, indices @ ..]) => {
                 chains.insert(*id, (*base, indices.to_vec()));
             }
             (OP_STORE, [pointer, ..]) => stores.push(*pointer),
             _ => {}
         }
-        at += count;
     }
     let mut out = Vec::new();
     for pointer in stores {
@@ -883,20 +885,14 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, U
     let mut code: Vec<(u32, &[u32])> = Vec::new();
     let mut params: HashMap<u32, Vec<u32>> = HashMap::new();
     let mut function = 0;
-    let mut at = 5;
-    while at < words.len() {
-        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
-        if count == 0 || at + count > words.len() {
-            break;
-        }
-        let w = &words[at + 1..at + count];
+    for (op, w) in instructions(words) {
+        let w = &w[1..];
         match (op, w) {
             (OP_FUNCTION, [_, id, ..]) => function = *id,
             (OP_FUNCTION_PARAMETER, [_, id, ..]) => params.entry(function).or_default().push(*id),
             _ => {}
         }
         code.push((op, w));
-        at += count;
     }
     // The variables each id derives from, to a fixed point (a phi or a call may
     // name a value defined further on).

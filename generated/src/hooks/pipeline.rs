@@ -54,6 +54,16 @@ impl<'a> States<'a> {
         }
     }
 
+    /// The entry point the pipeline's `stage` stage names, if it has that stage.
+    fn entry_point(
+        &self,
+        device: &Device,
+        stage: vk::ShaderStageFlags,
+    ) -> Option<crate::spirv::EntryPoint> {
+        let s = self.stages.iter().find(|s| s.stage == stage)?;
+        crate::hooks::stage_entry_point(device, s)
+    }
+
     fn dynamic(&self, state: vk::DynamicState) -> bool {
         self.dynamic.contains(&state)
     }
@@ -575,10 +585,7 @@ mod mode {
 /// is what the topology (00738) or the tessellation stages (00739) give it.
 fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
     use vk::ShaderStageFlags as S;
-    let entry = |stage: S| {
-        let s = states.stages.iter().find(|s| s.stage == stage)?;
-        crate::hooks::stage_entry_point(device, s)
-    };
+    let entry = |stage: S| states.entry_point(device, stage);
     let limits = crate::hooks::limits(device);
     let (control, evaluation, geometry) = (
         entry(S::TESSELLATION_CONTROL),
@@ -710,10 +717,10 @@ fn check_execution_modes(device: &Device, states: &States<'_>, at: &str) -> Resu
 /// feature for it (06047, 06048; 06057, 06058 in dynamic rendering) and no `Layer`
 /// written (06049, 07718) or in an interface (06050, 06059), nor in dynamic
 /// rendering a `ViewIndex` in an interface (07719, as the 1.3.239 rule reads); a
-/// fragment stage's
-/// input attachments only in a render pass (06056, and no `InputAttachment`
-/// capability, 06061), none of them unused in the subpass (06038); and a fragment
-/// stage that reads `PrimitiveId` after a geometry stage that writes it (00740).
+/// fragment stage's input attachments only in a render pass (06056, and no
+/// `InputAttachment` capability, 06061), none of them unused in the subpass (06038);
+/// and a fragment stage that reads `PrimitiveId` after a geometry stage that writes
+/// it (00740).
 fn check_stage_interfaces(
     device: &Device,
     raw: &vk::GraphicsPipelineCreateInfo<'_>,
@@ -728,10 +735,7 @@ fn check_stage_interfaces(
     const INPUT: u32 = 1;
     const INPUT_ATTACHMENT_CAPABILITY: u32 = 40;
     let pass = raw.render_pass != vk::RenderPass::null();
-    let entry = |stage: S| {
-        let s = states.stages.iter().find(|s| s.stage == stage)?;
-        crate::hooks::stage_entry_point(device, s)
-    };
+    let entry = |stage: S| states.entry_point(device, stage);
     let has = |stage: S| states.stages.iter().any(|s| s.stage == stage);
     let pick =
         |in_pass: &'static str, rendering: &'static str| if pass { in_pass } else { rendering };
@@ -848,10 +852,7 @@ fn check_point_size(device: &Device, states: &States<'_>, at: &str) -> Result<()
     use vk::ShaderStageFlags as S;
     const POINT_SIZE: u32 = 1;
     const OUTPUT_POINTS: u32 = 27;
-    let entry = |stage: S| {
-        let s = states.stages.iter().find(|s| s.stage == stage)?;
-        crate::hooks::stage_entry_point(device, s)
-    };
+    let entry = |stage: S| states.entry_point(device, stage);
     let sized = device
         .live()
         .with_features(|f| f.v10.shader_tessellation_and_geometry_point_size)
