@@ -998,14 +998,12 @@ fn image_reader_with(
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&module));
-    // SAFETY: the shader promise (the repository's shader, see `tuff_setup::shader`).
-    let (mut pipelines, _) = unsafe {
-        d.create_compute_pipelines(
+    let (mut pipelines, _) = d
+        .create_compute_pipelines(
             None,
             &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
         )
-    }
-    .expect("compute pipeline");
+        .expect("compute pipeline");
     let sizes = [
         vk::DescriptorPoolSize {
             ty: T::STORAGE_IMAGE,
@@ -1511,14 +1509,12 @@ fn dispatches_read_pushed_constants() {
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&module));
-    // SAFETY: the shader promise (the repository's shader).
-    let (mut pipelines, _) = unsafe {
-        d.create_compute_pipelines(
+    let (mut pipelines, _) = d
+        .create_compute_pipelines(
             None,
             &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
         )
-    }
-    .expect("compute pipeline");
+        .expect("compute pipeline");
     let pipeline = pipelines.pop().expect("one pipeline");
     let pool = storage_pool(&s, 1, vk::DescriptorPoolCreateFlags::empty());
     let set = one_set(&s, &pool, &set_layout);

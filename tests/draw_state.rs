@@ -85,7 +85,7 @@ fn pipeline(
     let states = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(dynamic);
     let (mut made, _) = pipelines::with_graphics_info(&stages, &p.graphics_layout, pass, |info| {
         let info = info.subpass(subpass).dynamic_state(Some(&states));
-        unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+        s.device.create_graphics_pipelines(None, &[info])
     })
     .expect("pipeline");
     made.pop().expect("one pipeline")
@@ -405,7 +405,7 @@ fn rendering_pipeline_with(
             .color_blend_state(Some(&blend))
             .depth_stencil_state(Some(depth_stencil))
             .push_next(&mut rendering);
-        unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+        s.device.create_graphics_pipelines(None, &[info])
     })
     .expect("pipeline");
     made.pop().expect("one pipeline")
@@ -660,7 +660,7 @@ fn descriptor_draw(
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
         .expect("pipeline layout");
     let stages = pipelines::test_stages(&p.vert, &module);
-    let (mut made, _) = pipelines::with_graphics_info(&stages, &layout, pass, |info| unsafe {
+    let (mut made, _) = pipelines::with_graphics_info(&stages, &layout, pass, |info| {
         d.create_graphics_pipelines(None, &[info])
     })
     .expect("pipeline");
@@ -857,7 +857,7 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
                 let info = info
                     .viewport_state(Some(&viewports))
                     .dynamic_state(Some(&states));
-                unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+                s.device.create_graphics_pipelines(None, &[info])
             },
         )
         .expect("pipeline");
@@ -1135,7 +1135,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
         let (mut made, _) =
             pipelines::with_graphics_info(&stages, &p.graphics_layout, &pass, |info| {
                 let info = info.depth_stencil_state(Some(state));
-                unsafe { d.create_graphics_pipelines(None, &[info]) }
+                d.create_graphics_pipelines(None, &[info])
             })
             .expect("pipeline");
         made.pop().expect("one pipeline")
@@ -1178,7 +1178,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 let info = info
                     .depth_stencil_state(Some(&depth_writes))
                     .dynamic_state(Some(&states));
-                unsafe { d.create_graphics_pipelines(None, &[info]) }
+                d.create_graphics_pipelines(None, &[info])
             })
             .expect("pipeline");
         made.pop().expect("one pipeline")
@@ -1210,7 +1210,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 let info = info
                     .depth_stencil_state(Some(&stencil_writes))
                     .dynamic_state(Some(&states));
-                unsafe { d.create_graphics_pipelines(None, &[info]) }
+                d.create_graphics_pipelines(None, &[info])
             })
             .expect("pipeline");
         made.pop().expect("one pipeline")
@@ -1357,7 +1357,7 @@ fn draws_rasterize_their_attachments_samples() {
                     .render_pass(None)
                     .multisample_state(Some(&multisample))
                     .push_next(&mut rendering);
-                unsafe { s.device.create_graphics_pipelines(None, &[info]) }
+                s.device.create_graphics_pipelines(None, &[info])
             },
         )
         .expect("pipeline");

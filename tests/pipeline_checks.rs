@@ -9,10 +9,10 @@
 //! VUID and nothing else but the rules the case says the same change breaks, or say
 //! nothing (the rule is then proven by the error alone).
 //!
-//! SAFETY of the `unsafe` blocks: `create_graphics_pipelines` is `unsafe` for rules
-//! its `# Safety` section lists, which these pipelines keep but for the one each
-//! case breaks on purpose, which tuff refuses and the layer skips. The shaders are
-//! the repository's (see `tuff_setup::shader`).
+//! SAFETY of the `unsafe` blocks: the `_unchecked` twins check nothing; these
+//! pipelines keep every rule but the one each case breaks on purpose, which the
+//! layer, told to skip a call it reports, skips. The shaders are the repository's
+//! (see `tuff_setup::shader`).
 
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;
@@ -108,6 +108,12 @@ struct Parts {
     unsized_geometry: bool,
     /// The fragment stage reads PrimitiveId (`prim.frag`).
     primitive_fragment: bool,
+    /// Stages that run one of [`Common::named`]'s shaders instead, by file name.
+    named: Vec<(vk::ShaderStageFlags, &'static str)>,
+    /// The render pass's depth/stencil attachment is the subpass's input attachment
+    /// 0 instead, with these aspects chained (none: no aspect info), and the
+    /// fragment stage reads it through `input_depth.frag` with the input layout.
+    input_aspect: Option<vk::ImageAspectFlags>,
     /// The first stage's flags and entry point name.
     stage_flags: vk::PipelineShaderStageCreateFlags,
     entry: &'static core::ffi::CStr,
@@ -165,6 +171,8 @@ impl Default for Parts {
             spec_vertex: false,
             unsized_geometry: false,
             primitive_fragment: false,
+            named: vec![],
+            input_aspect: None,
             stage_flags: vk::PipelineShaderStageCreateFlags::empty(),
             entry: c"main",
             subgroup_size: None,
@@ -191,8 +199,15 @@ impl Parts {
     }
 }
 
-/// A render pass of one subpass that writes these attachments.
-fn render_pass(s: &Setup, colors: &[vk::Format], depth: Option<vk::Format>) -> tuff::RenderPass {
+/// A render pass of one subpass that writes these attachments; with `input`, the
+/// depth/stencil one is its input attachment 0 instead, with those aspects chained
+/// unless empty.
+fn render_pass(
+    s: &Setup,
+    colors: &[vk::Format],
+    depth: Option<vk::Format>,
+    input: Option<vk::ImageAspectFlags>,
+) -> tuff::RenderPass {
     let description = |format, layout| vk::AttachmentDescription {
         format,
         samples: vk::SampleCountFlags::TYPE_1,
@@ -218,13 +233,32 @@ fn render_pass(s: &Setup, colors: &[vk::Format], depth: Option<vk::Format>) -> t
         attachment: colors.len() as u32,
         layout: depth_layout,
     });
+    let input_refs: Vec<_> = depth_ref
+        .iter()
+        .filter(|_| input.is_some())
+        .map(|r| vk::AttachmentReference {
+            attachment: r.attachment,
+            layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+        })
+        .collect();
     let subpasses = [tuff::SubpassDescription::new()
         .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
         .color_attachments(&color_refs)
-        .depth_stencil_attachment(depth_ref.as_ref())];
-    let info = tuff::RenderPassCreateInfo::new()
+        .input_attachments(&input_refs)
+        .depth_stencil_attachment(depth_ref.as_ref().filter(|_| input.is_none()))];
+    let aspect_references = [vk::InputAttachmentAspectReference {
+        subpass: 0,
+        input_attachment_index: 0,
+        aspect_mask: input.unwrap_or_default(),
+    }];
+    let mut aspects = tuff::RenderPassInputAttachmentAspectCreateInfo::new()
+        .aspect_references(&aspect_references);
+    let mut info = tuff::RenderPassCreateInfo::new()
         .attachments(&attachments)
         .subpasses(&subpasses);
+    if input.is_some_and(|a| !a.is_empty()) {
+        info = info.push_next(&mut aspects);
+    }
     s.device.create_render_pass(&info).expect("render pass")
 }
 
@@ -242,7 +276,12 @@ struct Common {
     unsized_geometry: tuff::ShaderModule,
     /// A fragment shader that reads PrimitiveId.
     primitive_fragment: tuff::ShaderModule,
+    /// Shaders whose interfaces link, or fail to, by their file names.
+    named: Vec<(&'static str, tuff::ShaderModule)>,
     layout: tuff::PipelineLayout,
+    /// A layout of one input attachment for the fragment stage.
+    input_layout: tuff::PipelineLayout,
+    _input_set_layout: tuff::DescriptorSetLayout,
     _set_layout: tuff::DescriptorSetLayout,
 }
 
@@ -275,7 +314,27 @@ fn common(s: &Setup) -> Common {
                 .push_constant_ranges(&push),
         )
         .expect("layout");
+    let input_bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::INPUT_ATTACHMENT)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+    let input_set_layout = s
+        .device
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&input_bindings),
+        )
+        .expect("input set layout");
+    let input_set_layouts = tuff::HandleSlice::new(&[&input_set_layout]);
+    let input_layout = s
+        .device
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new().set_layouts(&input_set_layouts),
+        )
+        .expect("input layout");
     Common {
+        input_layout,
+        _input_set_layout: input_set_layout,
         test: [
             shader(include_bytes!("../shaders/spv/test.vert.spv")),
             shader(include_bytes!("../shaders/spv/test.frag.spv")),
@@ -290,6 +349,32 @@ fn common(s: &Setup) -> Common {
         spec_vertex: shader(include_bytes!("../shaders/spv/spec.vert.spv")),
         unsized_geometry: shader(include_bytes!("../shaders/spv/points_unsized.geom.spv")),
         primitive_fragment: shader(include_bytes!("../shaders/spv/prim.frag.spv")),
+        named: vec![
+            (
+                "varying.vert",
+                shader(include_bytes!("../shaders/spv/varying.vert.spv")),
+            ),
+            (
+                "varying.geom",
+                shader(include_bytes!("../shaders/spv/varying.geom.spv")),
+            ),
+            (
+                "varying.frag",
+                shader(include_bytes!("../shaders/spv/varying.frag.spv")),
+            ),
+            (
+                "triangle.frag",
+                shader(include_bytes!("../shaders/spv/triangle.frag.spv")),
+            ),
+            (
+                "position_only.vert",
+                shader(include_bytes!("../shaders/spv/position_only.vert.spv")),
+            ),
+            (
+                "input_depth.frag",
+                shader(include_bytes!("../shaders/spv/input_depth.frag.spv")),
+            ),
+        ],
         layout,
         _set_layout: set_layout,
     }
@@ -299,6 +384,16 @@ fn common(s: &Setup) -> Common {
 /// through the unchecked one.
 fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()>, Vec<String>) {
     let module = |stage: vk::ShaderStageFlags| {
+        let input = (stage == vk::ShaderStageFlags::FRAGMENT && parts.input_aspect.is_some())
+            .then_some((stage, "input_depth.frag"));
+        if let Some((_, name)) = input.iter().chain(&parts.named).find(|(s, _)| *s == stage) {
+            return &c
+                .named
+                .iter()
+                .find(|(n, _)| n == name)
+                .expect("a named shader")
+                .1;
+        }
         if stage == vk::ShaderStageFlags::GEOMETRY {
             return if parts.unsized_geometry {
                 &c.unsized_geometry
@@ -458,7 +553,9 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     });
     let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&parts.dynamic);
     let pass = match &parts.target {
-        Target::Pass { colors, depth, .. } => Some(render_pass(s, colors, *depth)),
+        Target::Pass { colors, depth, .. } => {
+            Some(render_pass(s, colors, *depth, parts.input_aspect))
+        }
         Target::Rendering { .. } => None,
     };
     let (rendering_colors, mut rendering) = match &parts.target {
@@ -478,11 +575,10 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
             .stencil_attachment_format(stencil)
     });
     let base = parts.base_handle.then(|| {
-        let (mut made, _) = unsafe {
-            s.device
-                .create_graphics_pipelines(None, &[base_info(c, pass.as_ref(), parts.base_allows)])
-        }
-        .expect("base pipeline");
+        let (mut made, _) = s
+            .device
+            .create_graphics_pipelines(None, &[base_info(c, pass.as_ref(), parts.base_allows)])
+            .expect("base pipeline");
         made.pop().expect("one pipeline")
     });
     let mut info = tuff::GraphicsPipelineCreateInfo::new()
@@ -497,7 +593,10 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         .depth_stencil_state(depth_stencil.as_ref())
         .color_blend_state(blend.as_ref())
         .dynamic_state(Some(&dynamic))
-        .layout(parts.layout.then_some(&c.layout))
+        .layout(parts.layout.then_some(match parts.input_aspect {
+            Some(_) => &c.input_layout,
+            None => &c.layout,
+        }))
         .render_pass(pass.as_ref())
         .base_pipeline_handle(base.as_ref())
         .base_pipeline_index(parts.base_index);
@@ -514,7 +613,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
         info = info.push_next(f);
     }
     let infos = [info];
-    let safe = unsafe { s.device.create_graphics_pipelines(None, &infos) }.map(drop);
+    let safe = s.device.create_graphics_pipelines(None, &infos).map(drop);
     if !layer {
         return (safe, Vec::new());
     }
@@ -730,6 +829,65 @@ const CASES: &[Case] = &[
             p.primitive_fragment = true;
         })
     },
+    // The test vertex shader writes nothing at location 0, which the fragment
+    // shader reads: the 1.3.239 layer names it under an unassigned ID.
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-InputNotProduced"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-None-04889", |p| {
+            p.named = vec![(vk::ShaderStageFlags::FRAGMENT, "triangle.frag")]
+        })
+    },
+    // A vec4 output read as a vec3, on a device without maintenance4: the 1.3.239
+    // layer warns of the unread component under an unassigned ID.
+    Case {
+        also: &["UNASSIGNED-CoreValidation-Shader-OutputNotConsumed"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-None-04889", |p| {
+            p.named = vec![
+                (vk::ShaderStageFlags::VERTEX, "varying.vert"),
+                (vk::ShaderStageFlags::FRAGMENT, "triangle.frag"),
+            ]
+        })
+    },
+    // The geometry stage reads location 0, which the test vertex shader does not
+    // write: the 1.3.239 layer names it under an unassigned ID.
+    Case {
+        on: On::Full,
+        also: &["UNASSIGNED-CoreValidation-Shader-InputNotProduced"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00742", |p| {
+            p.stages = vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ];
+            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
+            p.named = vec![(vk::ShaderStageFlags::GEOMETRY, "varying.geom")];
+        })
+    },
+    // A built-in output block of gl_Position alone, and the geometry stage's full
+    // input block: the 1.3.239 layer names it under an unassigned ID.
+    Case {
+        on: On::Full,
+        also: &["UNASSIGNED-CoreValidation-Shader-InterfaceTypeMismatch"],
+        ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00742", |p| {
+            p.stages = vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ];
+            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
+            p.named = vec![(vk::ShaderStageFlags::VERTEX, "position_only.vert")];
+        })
+    },
+    // The fragment stage reads the depth aspect of an input attachment that the
+    // render pass lets it read the stencil aspect of alone.
+    case("VUID-VkGraphicsPipelineCreateInfo-pStages-01565", |p| {
+        p.target = Target::Pass {
+            colors: vec![RGBA8],
+            depth: Some(D32S8),
+            subpass: 0,
+        };
+        p.input_aspect = Some(vk::ImageAspectFlags::STENCIL);
+    }),
     // One byte for a boolean, which takes a VkBool32's four.
     case("VUID-VkSpecializationMapEntry-constantID-00776", |p| {
         p.spec_vertex = true;
@@ -1269,6 +1427,48 @@ fn the_cases_start_from_valid_pipelines() {
             "the test pipeline with dynamic rendering",
         ),
         (&full, Parts::tessellated(), "the Bézier pipeline"),
+        (
+            &s,
+            Parts {
+                target: Target::Pass {
+                    colors: vec![RGBA8],
+                    depth: Some(D32S8),
+                    subpass: 0,
+                },
+                input_aspect: Some(vk::ImageAspectFlags::DEPTH),
+                ..Parts::default()
+            },
+            "a fragment stage that reads the depth aspect it may read",
+        ),
+        (
+            &full,
+            Parts {
+                stages: vec![
+                    vk::ShaderStageFlags::VERTEX,
+                    vk::ShaderStageFlags::GEOMETRY,
+                    vk::ShaderStageFlags::FRAGMENT,
+                ],
+                topology: Some(vk::PrimitiveTopology::POINT_LIST),
+                named: vec![
+                    (vk::ShaderStageFlags::VERTEX, "varying.vert"),
+                    (vk::ShaderStageFlags::GEOMETRY, "varying.geom"),
+                    (vk::ShaderStageFlags::FRAGMENT, "varying.frag"),
+                ],
+                ..Parts::default()
+            },
+            "a color passed through a geometry stage",
+        ),
+        (
+            &full,
+            Parts {
+                named: vec![
+                    (vk::ShaderStageFlags::VERTEX, "varying.vert"),
+                    (vk::ShaderStageFlags::FRAGMENT, "triangle.frag"),
+                ],
+                ..Parts::default()
+            },
+            "a vec4 output read as a vec3 with maintenance4",
+        ),
     ] {
         let c = common(s);
         let (safe, layer) = create(s, &c, &parts, true);
@@ -1382,12 +1582,14 @@ fn create_compute(
     };
     let base_pipeline = base.map(|base_flags| {
         let base = info(vk::ShaderStageFlags::COMPUTE, base_flags, None).base_pipeline_index(-1);
-        let (mut made, _) =
-            unsafe { s.device.create_compute_pipelines(None, &[base]) }.expect("base pipeline");
+        let (mut made, _) = s
+            .device
+            .create_compute_pipelines(None, &[base])
+            .expect("base pipeline");
         made.pop().expect("one pipeline")
     });
     let infos = [info(stage, flags, base_pipeline.as_ref())];
-    let safe = unsafe { s.device.create_compute_pipelines(None, &infos) }.map(drop);
+    let safe = s.device.create_compute_pipelines(None, &infos).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_compute_pipelines_unchecked(None, &infos) };
     });
@@ -1432,7 +1634,7 @@ fn create_subgroups(
         stage = stage.push_next(&mut size);
     }
     let infos = [tuff::ComputePipelineCreateInfo::new(stage, &layout)];
-    let safe = unsafe { s.device.create_compute_pipelines(None, &infos) }.map(drop);
+    let safe = s.device.create_compute_pipelines(None, &infos).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_compute_pipelines_unchecked(None, &infos) };
     });

@@ -2979,7 +2979,7 @@ fn pipeline_creation_reads_inside_its_arrays() {
             // SAFETY: the layer skips the call, which breaks only the rule under test.
             unsafe { d.create_compute_pipelines_unchecked(None, &info) }.map(|_| ())
         } else {
-            unsafe { d.create_compute_pipelines(None, &info) }.map(|_| ())
+            d.create_compute_pipelines(None, &info).map(|_| ())
         }
     };
     let stages = [
@@ -3052,17 +3052,15 @@ fn pipeline_creation_reads_inside_its_arrays() {
         assert_eq!(vuid(compute(spec, false)), *expected);
     }
     for (expected, info) in &graphics_cases {
-        assert_eq!(
-            vuid(unsafe { d.create_graphics_pipelines(None, &[*info]) }),
-            *expected
-        );
+        assert_eq!(vuid(d.create_graphics_pipelines(None, &[*info])), *expected);
     }
     let inside = [entry(0, 4)];
     let good = tuff::SpecializationInfo::new()
         .map_entries(&inside)
         .data(&data);
     compute(&good, false).expect("a constant inside the data");
-    let (_pipelines, r) = unsafe { d.create_graphics_pipelines(None, &[graphics(2, false)]) }
+    let (_pipelines, r) = d
+        .create_graphics_pipelines(None, &[graphics(2, false)])
         .expect("viewports and scissors both dynamic");
     assert_eq!(r, vk::Result::SUCCESS);
     assert_silent(&s.messages);
@@ -3477,7 +3475,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         &set_stages,
         &set_pipeline_layout,
         &target.render_pass,
-        |info| unsafe { s.device.create_graphics_pipelines(None, &[info]) },
+        |info| s.device.create_graphics_pipelines(None, &[info]),
     )
     .expect("pipeline with a set");
     let set_pipeline = set_pipeline.pop().expect("one pipeline");
@@ -3624,7 +3622,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     };
     let compute = [tuff::ComputePipelineCreateInfo::new(stage(), &empty)];
     assert_eq!(
-        vuid(unsafe { d.create_compute_pipelines(None, &compute) }),
+        vuid(d.create_compute_pipelines(None, &compute)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     // A stage without a module: no code that had the shader promise.
@@ -3633,7 +3631,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
         &empty,
     )];
     assert_eq!(
-        vuid(unsafe { d.create_compute_pipelines(None, &no_module) }),
+        vuid(d.create_compute_pipelines(None, &no_module)),
         "VUID-VkPipelineShaderStageCreateInfo-module-06716"
     );
     // A one-set layout whose bindings 0 and 1 have these types and stages.
@@ -3664,7 +3662,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let vertex_only = layout_of([uniform, storage], vk::ShaderStageFlags::VERTEX);
     let hidden = [tuff::ComputePipelineCreateInfo::new(stage(), &vertex_only)];
     assert_eq!(
-        vuid(unsafe { d.create_compute_pipelines(None, &hidden) }),
+        vuid(d.create_compute_pipelines(None, &hidden)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     // Visible to the compute stage, but the uniform block's binding holds storage
@@ -3672,7 +3670,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     let wrong_type = layout_of([storage, storage], vk::ShaderStageFlags::COMPUTE);
     let mistyped = [tuff::ComputePipelineCreateInfo::new(stage(), &wrong_type)];
     assert_eq!(
-        vuid(unsafe { d.create_compute_pipelines(None, &mistyped) }),
+        vuid(d.create_compute_pipelines(None, &mistyped)),
         "VUID-VkComputePipelineCreateInfo-layout-00703"
     );
     assert_silent(&s.messages);
@@ -3695,7 +3693,7 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
     for layout in [&empty, &short_layout] {
         pipelines::with_graphics_info(&stages, layout, rp, |info| {
             assert_eq!(
-                vuid(unsafe { d.create_graphics_pipelines(None, &[info]) }),
+                vuid(d.create_graphics_pipelines(None, &[info])),
                 "VUID-VkGraphicsPipelineCreateInfo-layout-00756"
             );
         });

@@ -50,7 +50,9 @@ pub fn shader(device: &tuff::Device, bytes: &[u8]) -> tuff::Result<tuff::ShaderM
     // SAFETY: the shader promise. The scenes' shaders are compiled from the GLSL in
     // `shaders/` by `scripts/shaders.sh` (a test fails if the committed SPIR-V is
     // stale), are valid SPIR-V for Vulkan 1.3, use no feature the scenes' devices do
-    // not enable, terminate, and read and write only the uniform buffers, push
+    // not enable, declare a few interface locations and std140/std430 blocks (within
+    // every Vulkan device's minimum limits), terminate, and read and write only the
+    // uniform buffers, push
     // constants and attachments their pipelines give them, at indices their own
     // vertex and instance counts bound.
     unsafe { device.create_shader_module_from_spirv(bytes) }

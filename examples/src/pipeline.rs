@@ -87,10 +87,7 @@ pub fn graphics(
     if desc.depth {
         info = info.depth_stencil_state(Some(&depth));
     }
-    // SAFETY: the create infos keep the rules the method lists: shaders promised at their
-    // creation, states the render pass's attachments accept, no dynamic state beyond viewport
-    // and scissor.
-    let (mut pipelines, _) = unsafe { gpu.device.create_graphics_pipelines(None, &[info]) }?;
+    let (mut pipelines, _) = gpu.device.create_graphics_pipelines(None, &[info])?;
     pipelines.pop().context("no pipeline was created")
 }
 

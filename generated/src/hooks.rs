@@ -5501,7 +5501,7 @@ fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
             let attachment = match (r.input_index, inputs) {
                 (Some(i), Some(inputs)) => inputs
                     .get(i as usize)
-                    .copied()
+                    .map(|(a, _)| *a)
                     .filter(|a| *a != vk::ATTACHMENT_UNUSED),
                 _ => None,
             };

@@ -370,8 +370,9 @@ pub(crate) struct RenderPassRecord {
     /// The attachments each subpass references.
     pub used: Vec<Vec<u32>>,
     /// Each subpass's input attachment references: the attachment each names
-    /// (`VK_ATTACHMENT_UNUSED` for an unused one).
-    pub inputs: Vec<Vec<u32>>,
+    /// (`VK_ATTACHMENT_UNUSED` for an unused one), and the aspects the fragment
+    /// shader may read through it (empty: every aspect of its format).
+    pub inputs: Vec<Vec<(u32, vk::ImageAspectFlags)>>,
     /// Its dependencies from a subpass to itself.
     pub self_dependencies: Vec<SelfDependency>,
     /// One more than the largest attachment index that a render pass instance

@@ -277,6 +277,87 @@ pub(crate) struct EntryPoint {
     pub builtins: Vec<(u32, u32, u32)>,
     /// The built-ins the module stores to through its interface's variables.
     pub writes: Vec<u32>,
+    /// Its user-defined input and output variables (and the members of such
+    /// blocks), the per-vertex array of a tessellation or geometry stage's
+    /// variable taken off.
+    pub io: Vec<IoVar>,
+    /// The members of its built-in input block and of its built-in output block (as
+    /// `gl_PerVertex`): each `BuiltIn` with its array size, in declaration order.
+    pub builtin_blocks: [Vec<(u32, u32)>; 2],
+}
+
+/// A user-defined input or output of an entry point's interface: a variable, or a
+/// member of a block variable, with the place it takes in the interface.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct IoVar {
+    /// An output (else an input).
+    pub output: bool,
+    /// Its `Location` (`u32::MAX` where none is found: it matches nothing).
+    pub location: u32,
+    /// Its `Component`, or 0.
+    pub component: u32,
+    /// Decorated `Patch` (itself or its block).
+    pub patch: bool,
+    /// Its type.
+    pub ty: IoType,
+}
+
+/// The type of an interface variable, as far as interface matching compares it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum IoType {
+    /// A scalar: its kind (0 float, 1 signed integer, 2 unsigned integer) and bit
+    /// width.
+    Scalar(u8, u32),
+    /// A vector of a scalar type and its component count.
+    Vector(Box<IoType>, u32),
+    /// A matrix of a column vector type and its column count.
+    Matrix(Box<IoType>, u32),
+    /// An array of an element type and its length (0: not a plain constant).
+    Array(Box<IoType>, u32),
+    /// A structure's member types, in order.
+    Struct(Vec<IoType>),
+    /// Anything else, or what the reader could not follow: it matches nothing.
+    Unknown,
+}
+
+impl IoType {
+    /// Whether an output of this type matches an input of type `input`: the same
+    /// type, or with `narrowing` (maintenance4) a vector of more components of the
+    /// same component type. A type the reader could not follow matches nothing.
+    pub(crate) fn matches(&self, input: &IoType, narrowing: bool) -> bool {
+        if !self.known() || !input.known() {
+            return false;
+        }
+        match (self, input) {
+            (IoType::Vector(a, n), IoType::Vector(b, m)) if narrowing => a == b && n >= m,
+            _ => self == input,
+        }
+    }
+
+    fn known(&self) -> bool {
+        match self {
+            IoType::Scalar(..) => true,
+            IoType::Vector(t, _) | IoType::Matrix(t, _) => t.known(),
+            IoType::Array(t, len) => *len > 0 && t.known(),
+            IoType::Struct(members) => members.iter().all(IoType::known),
+            IoType::Unknown => false,
+        }
+    }
+
+    /// The locations it takes: one per scalar or vector (two for a 64-bit vector of
+    /// three or four), one per matrix column, times an array's length, summed over
+    /// a structure's members.
+    pub(crate) fn locations(&self) -> u32 {
+        match self {
+            IoType::Vector(t, n) if matches!(**t, IoType::Scalar(_, 64)) && *n > 2 => 2,
+            IoType::Scalar(..) | IoType::Vector(..) | IoType::Unknown => 1,
+            IoType::Matrix(t, n) => n.saturating_mul(t.locations()),
+            IoType::Array(t, len) => len.saturating_mul(t.locations()),
+            IoType::Struct(members) => members
+                .iter()
+                .fold(0u32, |sum, t| sum.saturating_add(t.locations())),
+        }
+    }
 }
 
 impl EntryPoint {
@@ -336,6 +417,8 @@ impl Interface {
 struct Module {
     decorations: std::collections::HashMap<(u32, u32), u32>,
     member_decorations: std::collections::HashMap<(u32, u32, u32), u32>,
+    /// Member decorations without operands.
+    member_flags: std::collections::HashSet<(u32, u32, u32)>,
     /// Result id to (opcode, operands after the result id).
     types: std::collections::HashMap<u32, (u32, Vec<u32>)>,
     constants: std::collections::HashMap<u32, u32>,
@@ -494,6 +577,118 @@ impl Module {
         }
     }
 
+    /// The interface-matching type of type `id`.
+    fn io_type(&self, id: u32, depth: u32) -> IoType {
+        if depth > 16 {
+            return IoType::Unknown;
+        }
+        match self.ty(id) {
+            Some((OP_TYPE_FLOAT, [width, ..])) => IoType::Scalar(0, *width),
+            Some((OP_TYPE_INT, [width, signed, ..])) => {
+                IoType::Scalar(if *signed == 1 { 1 } else { 2 }, *width)
+            }
+            Some((OP_TYPE_VECTOR, [component, count, ..])) => {
+                IoType::Vector(Box::new(self.io_type(*component, depth + 1)), *count)
+            }
+            Some((OP_TYPE_MATRIX, [column, columns, ..])) => {
+                IoType::Matrix(Box::new(self.io_type(*column, depth + 1)), *columns)
+            }
+            Some((OP_TYPE_ARRAY, [elem, len, ..])) => IoType::Array(
+                Box::new(self.io_type(*elem, depth + 1)),
+                self.constants.get(len).copied().unwrap_or(0),
+            ),
+            Some((OP_TYPE_STRUCT, members)) => IoType::Struct(
+                members
+                    .iter()
+                    .map(|m| self.io_type(*m, depth + 1))
+                    .collect(),
+            ),
+            _ => IoType::Unknown,
+        }
+    }
+
+    /// The user-defined inputs or outputs variable `id` of type `pointee` gives an
+    /// entry point of execution model `model`, or its built-in block's members
+    /// (`Err`), or nothing for a variable decorated `BuiltIn`.
+    fn io(
+        &self,
+        id: u32,
+        pointee: u32,
+        output: bool,
+        model: u32,
+    ) -> std::result::Result<Vec<IoVar>, Vec<(u32, u32)>> {
+        const BUILT_IN: u32 = 11;
+        const PATCH: u32 = 15;
+        const LOCATION: u32 = 30;
+        const COMPONENT: u32 = 31;
+        if self.decorations.contains_key(&(id, BUILT_IN)) {
+            return Ok(Vec::new());
+        }
+        let patch = self.flags.contains(&(id, PATCH));
+        // Tessellation control inputs and outputs, tessellation evaluation and
+        // geometry inputs are arrays of one element per vertex, but for patch ones.
+        let per_vertex = !patch
+            && match model {
+                1 => true,
+                2 | 3 => !output,
+                _ => false,
+            };
+        let ty = match (per_vertex, self.ty(pointee)) {
+            (false, _) => pointee,
+            (true, Some((OP_TYPE_ARRAY | OP_TYPE_RUNTIME_ARRAY, [elem, ..]))) => *elem,
+            (true, _) => {
+                return Ok(vec![IoVar {
+                    output,
+                    location: u32::MAX,
+                    component: 0,
+                    patch,
+                    ty: IoType::Unknown,
+                }])
+            }
+        };
+        let location = self.decorations.get(&(id, LOCATION)).copied();
+        let component = self.decorations.get(&(id, COMPONENT)).copied().unwrap_or(0);
+        match self.ty(ty) {
+            Some((OP_TYPE_STRUCT, members)) if self.flags.contains(&(ty, DEC_BLOCK)) => {
+                let builtins: Vec<(u32, u32)> = self.builtins(0, pointee);
+                if !builtins.is_empty() {
+                    return Err(builtins);
+                }
+                let mut next = location.unwrap_or(u32::MAX);
+                let mut out = Vec::new();
+                for (i, member) in members.iter().enumerate() {
+                    let i = i as u32;
+                    let at = self.member_decorations.get(&(ty, i, LOCATION)).copied();
+                    let location = at.unwrap_or(next);
+                    let member_ty = self.io_type(*member, 0);
+                    next = match location {
+                        u32::MAX => u32::MAX,
+                        l => l.saturating_add(member_ty.locations()),
+                    };
+                    out.push(IoVar {
+                        output,
+                        location,
+                        component: self
+                            .member_decorations
+                            .get(&(ty, i, COMPONENT))
+                            .copied()
+                            .unwrap_or(0),
+                        patch: patch || self.member_flags.contains(&(ty, i, PATCH)),
+                        ty: member_ty,
+                    });
+                }
+                Ok(out)
+            }
+            _ => Ok(vec![IoVar {
+                output,
+                location: location.unwrap_or(u32::MAX),
+                component,
+                patch,
+                ty: self.io_type(ty, 0),
+            }]),
+        }
+    }
+
     /// The built-ins variable `id` of type `pointee` carries, each with its array
     /// size: its own `BuiltIn` decoration, or those of the members of the block it
     /// is (under any per-vertex arrays).
@@ -596,6 +791,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
     const SPEC_ID: u32 = 1;
     const EXECUTION_MODEL_VERTEX: u32 = 0;
     const INPUT: u32 = 1;
+    const OUTPUT: u32 = 3;
     const LOCATION: u32 = 30;
     const BINDING: u32 = 33;
     const DESCRIPTOR_SET: u32 = 34;
@@ -621,6 +817,9 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             }
             (OP_DECORATE, 4..) => {
                 m.decorations.insert((w[1], w[2]), w[3]);
+            }
+            (OP_MEMBER_DECORATE, 4) => {
+                m.member_flags.insert((w[1], w[2], w[3]));
             }
             (OP_MEMBER_DECORATE, 5..) => {
                 m.member_decorations.insert((w[1], w[2], w[3]), w[4]);
@@ -692,6 +891,21 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
             .collect();
         if let Some((_, e)) = entry_points.iter_mut().find(|(e, _)| *e == entry) {
             e.builtins = builtins;
+            for (ty, id, storage) in variables.iter().filter(|(_, id, _)| ids.contains(id)) {
+                let output = match *storage {
+                    INPUT => false,
+                    OUTPUT => true,
+                    _ => continue,
+                };
+                let pointee = match m.ty(*ty) {
+                    Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
+                    _ => 0,
+                };
+                match m.io(*id, pointee, output, e.model) {
+                    Ok(io) => e.io.extend(io),
+                    Err(block) => e.builtin_blocks[usize::from(output)] = block,
+                }
+            }
         }
     }
     for (id, mode, operands) in modes {
@@ -1187,6 +1401,51 @@ mod tests {
         assert_eq!(geometry.entry_points[0].writes, [0, 1]);
         let vertex = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
         assert_eq!(vertex.entry_points[0].writes, [0]);
+    }
+
+    #[test]
+    fn interface_variables_keep_their_locations_and_types() {
+        use super::{IoType, IoVar};
+        let vec = |n| IoType::Vector(Box::new(IoType::Scalar(0, 32)), n);
+        let var = |output, location, ty| IoVar {
+            output,
+            location,
+            component: 0,
+            patch: false,
+            ty,
+        };
+        // The geometry stage's per-vertex input array is taken off.
+        let geom = interface(&words(include_bytes!("../../shaders/spv/varying.geom.spv")));
+        let mut io = geom.entry_points[0].io.clone();
+        io.sort_unstable_by_key(|v| v.output);
+        assert_eq!(io, [var(false, 0, vec(4)), var(true, 0, vec(4))]);
+        let full = vec![(0, 1), (1, 1), (3, 1), (4, 1)];
+        assert_eq!(
+            geom.entry_points[0].builtin_blocks,
+            [full.clone(), full.clone()]
+        );
+        let frag = interface(&words(include_bytes!("../../shaders/spv/bezier.frag.spv")));
+        let inputs: Vec<_> = frag.entry_points[0]
+            .io
+            .iter()
+            .filter(|v| !v.output)
+            .cloned()
+            .collect();
+        assert_eq!(inputs, [var(false, 0, vec(3)), var(false, 1, vec(3))]);
+        // A redeclared output block of gl_Position alone.
+        let vert = interface(&words(include_bytes!(
+            "../../shaders/spv/position_only.vert.spv"
+        )));
+        assert_eq!(vert.entry_points[0].builtin_blocks, [vec![], vec![(0, 1)]]);
+        // A vector of more components matches a narrower input only with narrowing.
+        assert!(vec(4).matches(&vec(4), false));
+        assert!(!vec(4).matches(&vec(3), false));
+        assert!(vec(4).matches(&vec(3), true));
+        assert!(!vec(3).matches(&vec(4), true));
+        assert!(!IoType::Unknown.matches(&IoType::Unknown, true));
+        assert!(
+            !IoType::Array(Box::new(vec(4)), 0).matches(&IoType::Array(Box::new(vec(4)), 0), false)
+        );
     }
 
     #[test]

@@ -181,7 +181,7 @@ pub fn vertex_pipeline(
     let input = tuff::PipelineVertexInputStateCreateInfo::new()
         .vertex_binding_descriptions(&binding)
         .vertex_attribute_descriptions(&attributes);
-    let (mut made, _) = with_graphics_info(&stages, layout, render_pass, |info| unsafe {
+    let (mut made, _) = with_graphics_info(&stages, layout, render_pass, |info| {
         s.device
             .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
     })
@@ -207,13 +207,11 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
         .expect("graphics layout");
     let stages = test_stages(&vert, &frag);
-    let (mut graphics, r) = with_graphics_info(
-        &stages,
-        &graphics_layout,
-        &target.render_pass,
-        |info| unsafe { d.create_graphics_pipelines(None, &[info]) },
-    )
-    .expect("graphics pipeline");
+    let (mut graphics, r) =
+        with_graphics_info(&stages, &graphics_layout, &target.render_pass, |info| {
+            d.create_graphics_pipelines(None, &[info])
+        })
+        .expect("graphics pipeline");
     assert_eq!(r, vk::Result::SUCCESS);
     let graphics = graphics.pop().expect("one pipeline");
 
@@ -241,13 +239,12 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&comp));
-    let (mut compute, r) = unsafe {
-        d.create_compute_pipelines(
+    let (mut compute, r) = d
+        .create_compute_pipelines(
             None,
             &[tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)],
         )
-    }
-    .expect("compute pipeline");
+        .expect("compute pipeline");
     assert_eq!(r, vk::Result::SUCCESS);
     let compute = compute.pop().expect("one pipeline");
 

@@ -123,6 +123,7 @@ pub(crate) fn graphics_pipeline_state_checks(
             true => rendering_targets(device, raw, &at)?,
         };
         check_stage_interfaces(device, raw, &states, &targets, &at)?;
+        check_stage_linking(device, &states, &at)?;
         if states.fragment() && raw.render_pass == vk::RenderPass::null() {
             // Dynamic rendering's formats ask for the states that write them.
             if targets.depth.is_some() && states.depth_stencil.is_none() {
@@ -816,13 +817,14 @@ fn check_stage_interfaces(
                 let unused = r
                     .input_index
                     .and_then(|i| subpass?.get(i as usize))
-                    .is_some_and(|a| *a == vk::ATTACHMENT_UNUSED);
+                    .is_some_and(|(a, _)| *a == vk::ATTACHMENT_UNUSED);
                 if unused {
                     refuse(
                         "VUID-VkGraphicsPipelineCreateInfo-renderPass-06038",
                         format!("{at}'s fragment stage reads input attachment {:?}, which subpass {} defines as VK_ATTACHMENT_UNUSED", r.input_index, raw.subpass),
                     )?;
                 }
+                check_input_aspects(&record, subpass.map_or(&[][..], |s| s), r, at)?;
             }
         }
     }
@@ -836,6 +838,122 @@ fn check_stage_interfaces(
             refuse(
                 "VUID-VkGraphicsPipelineCreateInfo-pStages-00740",
                 format!("{at}'s fragment stage reads PrimitiveId, and its geometry stage does not write it"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// An input attachment variable reads only aspects its subpass's references name
+/// (pStages-01565): a float variable reads the depth aspect of a depth/stencil
+/// attachment, an integer one its stencil aspect, and a color attachment its color
+/// aspect. A variable that spans several input indices is held to each; one whose
+/// count or numeric type is not known, to every reference from its index on.
+fn check_input_aspects(
+    record: &crate::retention::RenderPassRecord,
+    inputs: &[(u32, vk::ImageAspectFlags)],
+    r: &crate::spirv::Resource,
+    at: &str,
+) -> Result<()> {
+    type A = vk::ImageAspectFlags;
+    let Some(first) = r.input_index else {
+        return Ok(());
+    };
+    let numeric = r.image.map_or(0, |i| i.numeric);
+    let last = match r.count {
+        0 => inputs.len() as u32,
+        n => first.saturating_add(n),
+    };
+    for index in first..last {
+        let Some(&(attachment, mask)) = inputs.get(index as usize) else {
+            continue;
+        };
+        let Some(&(format, _, _)) = record.attachments.get(attachment as usize) else {
+            continue;
+        };
+        if mask.is_empty() {
+            continue;
+        }
+        let present = crate::formats::aspects(format).unwrap_or(A::empty());
+        let reads = if present.intersects(A::DEPTH | A::STENCIL) {
+            match numeric {
+                1 => A::DEPTH,
+                2 => A::STENCIL,
+                _ => A::DEPTH | A::STENCIL,
+            }
+        } else {
+            A::COLOR
+        };
+        if !mask.contains(reads) {
+            refuse(
+                "VUID-VkGraphicsPipelineCreateInfo-pStages-01565",
+                format!("{at}'s fragment stage reads the {reads:?} aspect of input attachment {index} (attachment {attachment}, {format:?}), and the render pass lets it read {mask:?} alone"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The linking rules between consecutive shader stages (the Shader Interfaces
+/// chapter): every user-defined input of a stage matches an output of the stage
+/// before it at the same location and component, of the same type (or, with
+/// `maintenance4`, a vector of more components), both per-patch or neither; and
+/// between two stages that are not fragment stages, the built-in blocks match
+/// exactly. An input that no output writes is refused too, as later registries'
+/// rules read; a type the SPIR-V reader cannot follow matches nothing. Between
+/// pre-rasterization stages that is pStages-00742, into the fragment stage
+/// None-04889.
+fn check_stage_linking(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
+    use vk::ShaderStageFlags as S;
+    let order = [
+        S::VERTEX,
+        S::TESSELLATION_CONTROL,
+        S::TESSELLATION_EVALUATION,
+        S::GEOMETRY,
+        S::FRAGMENT,
+    ];
+    let present: Vec<(S, crate::spirv::EntryPoint)> = order
+        .iter()
+        .filter_map(|&stage| Some((stage, states.entry_point(device, stage)?)))
+        .collect();
+    let narrowing = device.live().with_features(|f| f.v13.maintenance4) == vk::TRUE;
+    for pair in present.windows(2) {
+        let [(from, producer), (to, consumer)] = pair else {
+            continue;
+        };
+        let rule = match *to {
+            S::FRAGMENT => "VUID-VkGraphicsPipelineCreateInfo-None-04889",
+            _ => "VUID-VkGraphicsPipelineCreateInfo-pStages-00742",
+        };
+        for input in consumer.io.iter().filter(|v| !v.output) {
+            let output = producer.io.iter().find(|v| {
+                v.output
+                    && v.location != u32::MAX
+                    && (v.location, v.component, v.patch)
+                        == (input.location, input.component, input.patch)
+            });
+            let what = match output {
+                None => "no output of",
+                Some(o) if o.ty.matches(&input.ty, narrowing) => continue,
+                Some(_) => "an output of another type in",
+            };
+            let patch = if input.patch { "patch " } else { "" };
+            refuse(
+                rule,
+                format!(
+                    "{at}'s {to:?} stage reads the {patch}input at location {} component {} ({:?}), which is {what} its {from:?} stage",
+                    input.location, input.component, input.ty
+                ),
+            )?;
+        }
+        let [inputs, _] = &consumer.builtin_blocks;
+        let [_, outputs] = &producer.builtin_blocks;
+        if *to != S::FRAGMENT && !inputs.is_empty() && inputs != outputs {
+            refuse(
+                rule,
+                format!(
+                    "{at}'s {to:?} stage reads the built-in block {inputs:?} (BuiltIn, array size), and its {from:?} stage writes {outputs:?}: they must match exactly"
+                ),
             )?;
         }
     }

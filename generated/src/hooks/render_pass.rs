@@ -158,7 +158,32 @@ impl Pass {
                         .to_vec(),
                     }
                 })
-                .collect();
+                .collect::<Vec<_>>();
+            // A chained VkRenderPassInputAttachmentAspectCreateInfo restricts the
+            // aspects an input attachment reference lets the shader read.
+            let mut subpasses = subpasses;
+            let aspects: Option<&vk::RenderPassInputAttachmentAspectCreateInfo<'_>> = chained(
+                raw.p_next,
+                vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
+            );
+            if let Some(aspects) = aspects {
+                let references = crate::retention::raw_slice(
+                    aspects.p_aspect_references,
+                    aspects.aspect_reference_count,
+                );
+                for r in references {
+                    let input = subpasses
+                        .get_mut(r.subpass as usize)
+                        .and_then(|s| s.inputs.get_mut(r.input_attachment_index as usize));
+                    if let Some(input) = input {
+                        // Two references to one input leave the aspects both name.
+                        input.aspect_mask = match input.aspect_mask.is_empty() {
+                            true => r.aspect_mask,
+                            false => input.aspect_mask & r.aspect_mask,
+                        };
+                    }
+                }
+            }
             Pass {
                 attachments,
                 subpasses,
@@ -273,18 +298,24 @@ impl Pass {
         out
     }
 
-    /// Each subpass's color attachments' formats and depth/stencil attachment's
-    /// format, for the render pass's record. An index past the attachments (which
-    /// only the unchecked path lets through) reads as `UNDEFINED`.
     /// Each subpass's input attachment references: the attachment each names
-    /// (`VK_ATTACHMENT_UNUSED` for an unused one).
-    fn inputs(&self) -> Vec<Vec<u32>> {
+    /// (`VK_ATTACHMENT_UNUSED` for an unused one) and the aspects it lets the
+    /// fragment shader read (empty: every aspect of the format).
+    fn inputs(&self) -> Vec<Vec<(u32, vk::ImageAspectFlags)>> {
         self.subpasses
             .iter()
-            .map(|s| s.inputs.iter().map(|r| r.attachment).collect())
+            .map(|s| {
+                s.inputs
+                    .iter()
+                    .map(|r| (r.attachment, r.aspect_mask))
+                    .collect()
+            })
             .collect()
     }
 
+    /// Each subpass's color attachments' formats and depth/stencil attachment's
+    /// format, for the render pass's record. An index past the attachments (which
+    /// only the unchecked path lets through) reads as `UNDEFINED`.
     fn formats(&self) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
         let format = |r: &Ref| {
             self.attachments
@@ -711,12 +742,16 @@ pub(crate) fn subpass_formats(
 }
 
 /// Each subpass's input attachment references, for `vkCreateRenderPass`'s record.
-pub(crate) fn subpass_inputs(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {
+pub(crate) fn subpass_inputs(
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Vec<Vec<(u32, vk::ImageAspectFlags)>> {
     Pass::of(create_info).inputs()
 }
 
 /// [`subpass_inputs`] for `vkCreateRenderPass2`.
-pub(crate) fn subpass_inputs2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<u32>> {
+pub(crate) fn subpass_inputs2(
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> Vec<Vec<(u32, vk::ImageAspectFlags)>> {
     Pass::of2(create_info).inputs()
 }
 
