@@ -118,6 +118,9 @@ where
                 g.emitted.total(),
                 g.registry.total()
             );
+            for l in &g.left_out {
+                let _ = writeln!(out, "tuff-gen: left out {}: {}", l.name, l.reason);
+            }
             if let Some(c) = &g.comparison {
                 let _ = writeln!(
                     out,

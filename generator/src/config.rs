@@ -11,7 +11,17 @@ pub struct Config {
     /// The newest core version to emit, as `"1.3"`: every `VK_VERSION_1_x` up to it.
     pub api_version: String,
     /// Extensions to emit besides core, by name.
+    #[serde(default)]
     pub extensions: Vec<String>,
+    /// Emit every extension the registry supports for the vulkan API (besides
+    /// `extensions`), less those the reference registry leaves out.
+    #[serde(default)]
+    pub all_extensions: bool,
+    /// The registry the `ash` release the generated crate builds on was generated
+    /// from (relative to the config file): an extension it lacks, or defines
+    /// otherwise, is left out and listed.
+    #[serde(default)]
+    pub reference_registry: Option<String>,
     /// Folders of Rust programs that use the generated crate (relative to the config
     /// file); the report lists the methods they call first.
     #[serde(default)]
@@ -56,6 +66,34 @@ impl Config {
             })
     }
 
+    /// The extensions the config asks for: `extensions`, and with `all_extensions`
+    /// every extension `registry` supports for the vulkan API, in name order.
+    pub fn wanted_extensions(&self, registry: &crate::registry::Registry) -> Vec<String> {
+        let mut wanted: Vec<String> = self.extensions.clone();
+        if self.all_extensions {
+            wanted.extend(
+                registry
+                    .extensions
+                    .iter()
+                    .filter(|e| {
+                        e.supported
+                            .as_deref()
+                            .is_some_and(|s| s.split(',').any(|a| a == "vulkan"))
+                    })
+                    .map(|e| e.name.clone()),
+            );
+        }
+        wanted.sort();
+        wanted.dedup();
+        wanted
+    }
+
+    /// The path of the reference registry, if the config names one.
+    pub fn reference_path(&self, config_path: &Path) -> Option<std::path::PathBuf> {
+        let base = config_path.parent().unwrap_or(Path::new("."));
+        self.reference_registry.as_ref().map(|r| base.join(r))
+    }
+
     /// The feature names the cap enables: `VK_VERSION_1_0` up to the cap.
     pub fn enabled_versions(&self) -> Vec<String> {
         let minor = self.api_minor().unwrap_or(0);
@@ -72,6 +110,8 @@ mod tests {
         let c = Config {
             api_version: "3".into(),
             extensions: vec![],
+            all_extensions: false,
+            reference_registry: None,
             scene_sources: vec![],
         };
         assert!(c.api_minor().is_err());
@@ -82,6 +122,8 @@ mod tests {
         let c = Config {
             api_version: "1.2".into(),
             extensions: vec![],
+            all_extensions: false,
+            reference_registry: None,
             scene_sources: vec![],
         };
         assert_eq!(

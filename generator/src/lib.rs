@@ -91,6 +91,9 @@ pub struct Generation {
     pub registry: report::Table,
     /// Derived against listed implicit rules, when validusage.json was given.
     pub comparison: Option<validity::Comparison>,
+    /// The extensions the config wants that the reference registry lacks or
+    /// defines otherwise, with the reason.
+    pub left_out: Vec<model::reference::LeftOut>,
 }
 
 /// The method names the programs in the config's `scene_sources` call (every
@@ -144,7 +147,11 @@ pub fn generate(opts: &Options) -> Result<Generation> {
             });
         }
     }
-    let model = model::Model::build(&reg, &config, &opts.config)?;
+    let reference = match config.reference_path(&opts.config) {
+        Some(path) => Some(registry::load_registry(&path)?),
+        None => None,
+    };
+    let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
     let validity = validity::analyze(&model, vu.as_ref());
     let cx = plan::Context::new(&model, &validity);
     let plans = plan::Plans::build(&cx);
@@ -163,6 +170,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         emitted: report.emitted,
         registry: report.registry,
         comparison: validity.comparison.clone(),
+        left_out: model.left_out.clone(),
     })
 }
 
@@ -183,6 +191,8 @@ mod tests {
         let config = config::Config {
             api_version: "1.3".into(),
             extensions: vec![],
+            all_extensions: false,
+            reference_registry: None,
             scene_sources: vec!["scenes".into(), "missing".into()],
         };
         let calls = scene_calls(&dir.path().join("tuff-gen.toml"), &config);

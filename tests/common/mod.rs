@@ -37,7 +37,7 @@ pub fn load(dir: &Path, implicit_only: bool) -> Loaded {
     let validusage = (!implicit_only).then(|| {
         registry::load_validusage(&dir.join("validusage.json")).expect("validusage loads")
     });
-    let model = Model::build(&reg, &config, &opts.config).expect("model builds");
+    let model = Model::build(&reg, None, &config, &opts.config).expect("model builds");
     let validity = validity::analyze(&model, validusage.as_ref());
     Loaded {
         model,

@@ -10,6 +10,7 @@
 pub mod attrs;
 pub mod expr;
 mod item;
+pub mod reference;
 
 use crate::config::Config;
 use crate::error::{Error, Result};
@@ -89,6 +90,12 @@ pub struct Model {
     pub extension_depends: BTreeMap<String, String>,
     /// The instance extensions (`type="instance"`); the others are device ones.
     pub instance_extensions: BTreeSet<String>,
+    /// The reference registry's version (the one the `ash` release the crate builds
+    /// on was generated from), when the config names one.
+    pub reference_version: Option<String>,
+    /// The extensions the config wants that the reference lacks or defines
+    /// otherwise, with the reason, in name order.
+    pub left_out: Vec<reference::LeftOut>,
 }
 
 /// A handle type and what the registry says about its lifetime.
@@ -109,7 +116,18 @@ pub struct Handle {
 impl Model {
     /// Resolve `registry` and select the emitted API with `config`. Fails if the
     /// config names a version or an extension the registry lacks.
-    pub fn build(registry: &Registry, config: &Config, config_path: &Path) -> Result<Model> {
+    pub fn build(
+        registry: &Registry,
+        reference: Option<&Registry>,
+        config: &Config,
+        config_path: &Path,
+    ) -> Result<Model> {
+        let (extensions, left_out) = reference::select(
+            registry,
+            reference,
+            &config.enabled_versions(),
+            &config.wanted_extensions(registry),
+        );
         let types: BTreeMap<String, TypeDef> = registry
             .types
             .iter()
@@ -144,7 +162,7 @@ impl Model {
             }
             enabled.insert(version);
         }
-        for ext in &config.extensions {
+        for ext in &extensions {
             match registry.extensions.iter().find(|e| &e.name == ext) {
                 Some(e) if is_supported(e.supported.as_deref()) => {
                     enabled.insert(ext.clone());
@@ -170,7 +188,7 @@ impl Model {
         }
         // An enabled extension whose own dependencies are not enabled would be
         // unusable: say which one is missing.
-        for ext in &config.extensions {
+        for ext in &extensions {
             let depends = registry
                 .extensions
                 .iter()
@@ -326,6 +344,8 @@ impl Model {
 
         let handles = resolve_handles(&types, &commands);
         Ok(Model {
+            reference_version: reference.map(|r| r.version.clone()),
+            left_out,
             version: registry.version.clone(),
             types,
             commands,

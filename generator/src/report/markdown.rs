@@ -101,6 +101,7 @@ pub(super) fn render(r: &Report) -> String {
         );
     }
     explicit_section(&mut s, r);
+    reference_section(&mut s, r);
     let _ = writeln!(s, "\n## Whole registry\n");
     table(&mut s, &r.registry);
     if v.explicit_known {
@@ -380,5 +381,29 @@ fn methods_section(s: &mut String, r: &Report) {
             "| `{}` | {scenes} | {safe} | {n} | {st} | {dy} | {user} | {} |",
             m.method, m.owned
         );
+    }
+}
+
+/// What the reference registry left out of the emitted API.
+fn reference_section(s: &mut String, r: &Report<'_>) {
+    let Some(version) = &r.reference_version else {
+        return;
+    };
+    let _ = writeln!(s, "\n## Left out: what ash lacks\n");
+    let _ = writeln!(
+        s,
+        "The emitted code builds on `ash`, which is generated from one registry; the \
+         config's `reference_registry` is that registry (Vulkan {version}). An extension \
+         the config asks for is left out when the reference lacks it or defines one of \
+         its types, commands or values otherwise (every member and parameter is \
+         compared, aliases resolved), or when it depends on one left out."
+    );
+    if r.left_out.is_empty() {
+        let _ = writeln!(s, "\nNothing the config asks for is left out.");
+        return;
+    }
+    let _ = writeln!(s, "\n| Extension | Why it is left out |\n|---|---|");
+    for l in &r.left_out {
+        let _ = writeln!(s, "| `{}` | {} |", l.name, l.reason.replace('|', "\\|"));
     }
 }

@@ -97,6 +97,11 @@ pub struct Report<'a> {
     pub methods: Vec<MethodTally>,
     /// The reviewed classes with their rules; empty unless [`Report::add_methods`] ran.
     pub classes: Vec<ClassTally>,
+    /// The reference registry's version, when the config names one.
+    pub reference_version: Option<String>,
+    /// The extensions left out because the reference lacks them or defines them
+    /// otherwise, with the reason.
+    pub left_out: Vec<crate::model::reference::LeftOut>,
 }
 
 /// The rules that apply to one emitted method: its command's and those of every
@@ -214,6 +219,8 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         validity,
         methods: Vec::new(),
         classes: Vec::new(),
+        reference_version: model.reference_version.clone(),
+        left_out: model.left_out.clone(),
     };
     let known: std::collections::BTreeSet<&str> =
         validity.rules.iter().map(|r| r.vuid.as_str()).collect();

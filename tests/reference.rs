@@ -1,0 +1,118 @@
+//! The reference registry: extensions the registry `ash` is generated from lacks, or
+//! defines otherwise, are left out of the emitted API with the reason, and nothing
+//! else is.
+
+mod common;
+
+use common::{cli, root};
+use tuff_gen::model::reference::select;
+use tuff_gen::registry::{load_registry, Registry};
+
+fn registries() -> (Registry, Registry) {
+    let pinned = load_registry(&root().join("vk.xml")).expect("pinned registry");
+    let reference = load_registry(&root().join("reference/vk.xml")).expect("reference");
+    (pinned, reference)
+}
+
+fn versions() -> Vec<String> {
+    (0..=3).map(|m| format!("VK_VERSION_1_{m}")).collect()
+}
+
+#[test]
+fn every_extension_ash_lacks_or_defines_otherwise_is_left_out_with_its_reason() {
+    let (pinned, reference) = registries();
+    let all: Vec<String> = pinned
+        .extensions
+        .iter()
+        .filter(|e| {
+            e.supported
+                .as_deref()
+                .is_some_and(|s| s.split(',').any(|a| a == "vulkan"))
+        })
+        .map(|e| e.name.clone())
+        .collect();
+    let (kept, left) = select(&pinned, Some(&reference), &versions(), &all);
+    let reasons: Vec<(&str, &str)> = left
+        .iter()
+        .map(|l| (l.name.as_str(), l.reason.as_str()))
+        .collect();
+    let names: Vec<&str> = reasons.iter().map(|(n, _)| *n).collect();
+    assert_eq!(
+        names,
+        [
+            // Members were added or renamed before 1.3.281.
+            "VK_EXT_device_fault",
+            // Removed (the provisional H.264 and H.265 encoders were replaced by KHR
+            // ones).
+            "VK_EXT_video_encode_h264",
+            "VK_EXT_video_encode_h265",
+            "VK_HUAWEI_cluster_culling_shader",
+            "VK_KHR_video_encode_queue",
+        ]
+    );
+    assert!(reasons[0]
+        .1
+        .contains("VkDeviceFaultVendorBinaryHeaderVersionOneEXT"));
+    assert!(reasons[1].1.contains("has no such extension"));
+    assert!(reasons[4].1.contains("`VkBuffer dstBuffer` there"));
+    assert_eq!(kept.len() + left.len(), all.len());
+    // Aliases resolved: the EXT names 1.3.281 made aliases of KHR ones are kept.
+    for name in ["VK_EXT_calibrated_timestamps", "VK_EXT_line_rasterization"] {
+        assert!(kept.iter().any(|k| k == name), "{name} was left out");
+    }
+    // Without a reference, everything wanted is kept.
+    let (kept, left) = select(&pinned, None, &versions(), &all);
+    assert_eq!((kept.len(), left.len()), (all.len(), 0));
+}
+
+#[test]
+fn an_extension_that_depends_on_one_left_out_goes_too() {
+    let (pinned, mut reference) = registries();
+    // A reference without VK_KHR_surface, on which VK_KHR_swapchain depends.
+    reference.extensions.retain(|e| e.name != "VK_KHR_surface");
+    let wanted: Vec<String> = ["VK_KHR_surface", "VK_KHR_swapchain", "VK_EXT_debug_utils"]
+        .map(String::from)
+        .to_vec();
+    let (kept, left) = select(&pinned, Some(&reference), &versions(), &wanted);
+    assert_eq!(kept, ["VK_EXT_debug_utils"], "{left:?}");
+    assert_eq!(left[0].name, "VK_KHR_surface");
+    assert!(left[0].reason.contains("has no such extension"), "{left:?}");
+    assert_eq!(left[1].name, "VK_KHR_swapchain");
+    assert!(
+        left[1].reason.contains("depends on `VK_KHR_surface`"),
+        "{left:?}"
+    );
+    // A dependency the config never asked for is not a reason to leave one out:
+    // the model refuses that config with its own error.
+    let (kept, left) = select(&pinned, Some(&reference), &versions(), &wanted[1..]);
+    assert_eq!((kept.len(), left.len()), (2, 0), "{left:?}");
+}
+
+#[test]
+fn the_pinned_config_loses_nothing_and_says_so() {
+    let report = std::fs::read_to_string(root().join("generated/VALIDATION.md")).unwrap();
+    assert!(report.contains("## Left out: what ash lacks"));
+    assert!(report.contains("(Vulkan 1.3.281)"));
+    assert!(report.contains("Nothing the config asks for is left out."));
+}
+
+#[test]
+fn a_missing_reference_registry_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let cfg = dir.path().join("tuff-gen.toml");
+    std::fs::write(
+        &cfg,
+        "api_version = \"1.3\"\nreference_registry = \"nope/vk.xml\"\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let (code, _, stderr) = cli(&[
+        "--config",
+        &cfg.display().to_string(),
+        "--out",
+        &out.display().to_string(),
+    ]);
+    assert_ne!(code, 0);
+    assert!(stderr.contains("nope/vk.xml"), "{stderr}");
+    assert!(!out.exists(), "nothing is written");
+}
