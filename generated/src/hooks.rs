@@ -2636,13 +2636,14 @@ pub(crate) fn device_extensions_emitted(create_info: &DeviceCreateInfo<'_>) -> R
 
 fn extensions_emitted(names: &[&core::ffi::CStr]) -> Result<()> {
     for name in names {
-        let known = name
-            .to_str()
-            .is_ok_and(|n| crate::api_info::EXTENSIONS.contains(&n));
-        if !known {
-            return Err(Error::ExtensionNotEmitted(
-                name.to_string_lossy().into_owned(),
-            ));
+        let name = name.to_string_lossy();
+        if !crate::api_info::EXTENSIONS.contains(&name.as_ref()) {
+            return Err(Error::ExtensionNotEmitted(name.into_owned()));
+        }
+        // An emitted extension whose rules on other methods are not all checked
+        // would leave them to callers of safe methods.
+        if !crate::api_info::CHECKED_EXTENSIONS.contains(&name.as_ref()) {
+            return Err(Error::ExtensionUnchecked(name.into_owned()));
         }
     }
     Ok(())

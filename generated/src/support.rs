@@ -33,6 +33,12 @@ pub enum Error {
     /// checks them on; the `unsafe` `_unchecked` constructor enables it.
     #[error("extension {0} is outside tuff's emitted API (`api_info::EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it")]
     ExtensionNotEmitted(String),
+    /// A safe `create_instance` or `create_device` was asked to enable an emitted
+    /// extension that brings rules to methods outside it which no check enforces
+    /// (not in `api_info::CHECKED_EXTENSIONS`; `generated/VALIDATION.md` lists the
+    /// rules); the `unsafe` `_unchecked` constructor enables it.
+    #[error("extension {0} brings rules to other methods that tuff does not check (it is not in `api_info::CHECKED_EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it")]
+    ExtensionUnchecked(String),
     /// A mapped-memory access did not fit in the mapping, or its flush or
     /// invalidate range could not be formed.
     #[error("mapped memory: {0}")]

@@ -96,6 +96,31 @@ pub struct Generation {
     pub left_out: Vec<model::reference::LeftOut>,
 }
 
+/// The rules as they apply in programs that enable only what the safe constructors
+/// allow. Which extensions those are depends on the checks the plan can make, and
+/// those on which rules apply (a rule filed under the absence of an extension is
+/// read, and checked, only where that extension cannot be enabled), so the two are
+/// decided together: plan with everything the config emits, then again with what
+/// that plan allows, until the allowed set stays the same (a few rounds at most).
+pub fn enabled_validity(
+    model: &model::Model,
+    vu: Option<&registry::ValidUsage>,
+) -> validity::Validity {
+    let mut reach = model.enabled.clone();
+    for _ in 0..4 {
+        let validity = validity::analyze_with(model, vu, &reach);
+        let allowed = {
+            let cx = plan::Context::new(model, &validity);
+            plan::Plans::build(&cx).enabling.allowed
+        };
+        if allowed == reach {
+            return validity;
+        }
+        reach = allowed;
+    }
+    validity::analyze_with(model, vu, &reach)
+}
+
 /// The method names the programs in the config's `scene_sources` call (every
 /// `.name(` in their `.rs` files). A folder that cannot be read names nothing.
 fn scene_calls(config_path: &Path, config: &config::Config) -> std::collections::BTreeSet<String> {
@@ -152,7 +177,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         None => None,
     };
     let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
-    let validity = validity::analyze(&model, vu.as_ref());
+    let validity = enabled_validity(&model, vu.as_ref());
     let cx = plan::Context::new(&model, &validity);
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans, &config);
@@ -160,6 +185,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     report.add_methods(
         &plans.methods,
         &plans.safety,
+        &plans.enabling,
         &scene_calls(&opts.config, &config),
     );
     let mut files = emission.files;

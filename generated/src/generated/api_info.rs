@@ -8,28 +8,43 @@ pub const API_VERSION: (u32, u32) = (1, 3);
 
 /// The extensions the crate emits besides core.
 pub const EXTENSIONS: &[&str] = &[
+    "VK_EXT_debug_utils",
+    "VK_EXT_metal_surface",
     "VK_KHR_surface",
     "VK_KHR_swapchain",
-    "VK_KHR_xlib_surface",
-    "VK_KHR_xcb_surface",
     "VK_KHR_wayland_surface",
     "VK_KHR_win32_surface",
-    "VK_EXT_metal_surface",
+    "VK_KHR_xcb_surface",
+    "VK_KHR_xlib_surface",
+];
+
+/// The emitted extensions the safe `create_instance` and `create_device` enable:
+/// each of the others brings rules to methods outside it that no check enforces
+/// (`generated/VALIDATION.md` lists them), so only the `unsafe` `_unchecked`
+/// constructors enable it.
+pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_EXT_debug_utils",
+    "VK_EXT_metal_surface",
+    "VK_KHR_surface",
+    "VK_KHR_swapchain",
+    "VK_KHR_wayland_surface",
+    "VK_KHR_win32_surface",
+    "VK_KHR_xcb_surface",
+    "VK_KHR_xlib_surface",
 ];
 
 /// What each emitted extension needs beside it (vk.xml's `depends`): any one of
 /// the alternatives, each a list of extensions enabled with it and core versions
 /// (`VK_VERSION_1_x`) the API version reaches.
 pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[
+    ("VK_EXT_debug_utils", &[&[]]),
+    ("VK_EXT_metal_surface", &[&["VK_KHR_surface"]]),
     ("VK_KHR_surface", &[&[]]),
     ("VK_KHR_swapchain", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_xlib_surface", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_xcb_surface", &[&["VK_KHR_surface"]]),
     ("VK_KHR_wayland_surface", &[&["VK_KHR_surface"]]),
     ("VK_KHR_win32_surface", &[&["VK_KHR_surface"]]),
-    ("VK_EXT_metal_surface", &[&["VK_KHR_surface"]]),
-    ("VK_EXT_debug_utils", &[&[]]),
+    ("VK_KHR_xcb_surface", &[&["VK_KHR_surface"]]),
+    ("VK_KHR_xlib_surface", &[&["VK_KHR_surface"]]),
 ];
 
 /// The members of `VkPhysicalDeviceFeatures`, in order: each is a `VkBool32`.

@@ -5,8 +5,18 @@ use super::{Emission, OutputFile};
 use crate::config::Config;
 use crate::model::Model;
 
-pub(super) fn emit(model: &Model, config: &Config, out: &mut Emission) {
+pub(super) fn emit(
+    model: &Model,
+    config: &Config,
+    enabling: &crate::plan::safety::Enabling,
+    out: &mut Emission,
+) {
     let minor = config.api_minor().unwrap_or(0);
+    let extensions: Vec<&String> = model
+        .enabled
+        .iter()
+        .filter(|e| !e.starts_with("VK_VERSION_"))
+        .collect();
     let mut s = String::new();
     s.push_str(super::HEADER);
     s.push_str("\n\n");
@@ -21,11 +31,22 @@ pub(super) fn emit(model: &Model, config: &Config, out: &mut Emission) {
     ));
     s.push_str("/// The extensions the crate emits besides core.\n");
     s.push_str("pub const EXTENSIONS: &[&str] = &[\n");
-    for ext in &config.extensions {
+    for ext in &extensions {
+        s.push_str(&format!("    {ext:?},\n"));
+    }
+    s.push_str("];\n\n");
+    s.push_str(
+        "/// The emitted extensions the safe `create_instance` and `create_device` enable:\n\
+         /// each of the others brings rules to methods outside it that no check enforces\n\
+         /// (`generated/VALIDATION.md` lists them), so only the `unsafe` `_unchecked`\n\
+         /// constructors enable it.\n",
+    );
+    s.push_str("pub const CHECKED_EXTENSIONS: &[&str] = &[\n");
+    for ext in extensions.iter().filter(|e| enabling.allowed.contains(**e)) {
         s.push_str(&format!("    {ext:?},\n"));
     }
     s.push_str("];\n");
-    extension_requires(model, config, &mut s);
+    extension_requires(model, &extensions, &mut s);
     device_features(model, &mut s);
     out.files.push(OutputFile {
         path: format!("{}/api_info.rs", super::GENERATED_DIR).into(),
@@ -37,15 +58,15 @@ pub(super) fn emit(model: &Model, config: &Config, out: &mut Emission) {
 /// (or `requires`): the alternatives, each a list of names that must all hold (an
 /// extension enabled with it, or a core version `VK_VERSION_1_x` the API version
 /// reaches). An extension with no dependency has one empty alternative.
-fn extension_requires(model: &Model, config: &Config, s: &mut String) {
+fn extension_requires(model: &Model, extensions: &[&String], s: &mut String) {
     s.push_str(
         "\n/// What each emitted extension needs beside it (vk.xml's `depends`): any one of\n\
          /// the alternatives, each a list of extensions enabled with it and core versions\n\
          /// (`VK_VERSION_1_x`) the API version reaches.\n",
     );
     s.push_str("pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[\n");
-    for ext in &config.extensions {
-        let sets = match model.extension_depends.get(ext) {
+    for ext in extensions {
+        let sets = match model.extension_depends.get(*ext) {
             // A dependency with a negation (none in any registry yet) is written as
             // no alternative: enabling the extension is then refused, never let by.
             Some(depends) => {

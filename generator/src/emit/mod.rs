@@ -270,7 +270,7 @@ fn safety_comments(text: &str) -> String {
 pub fn emit(plans: &Plans, config: &Config) -> Emission {
     let cx = plans.cx;
     let mut emission = Emission::default();
-    api_info::emit(cx.model, config, &mut emission);
+    api_info::emit(cx.model, config, &plans.enabling, &mut emission);
     let ok = plans.ok();
     let (commands, command_checks) = commands::emit(plans, &ok);
     let mut files = vec![

@@ -104,6 +104,8 @@ pub struct Plans<'c, 'm> {
     pub records: Vec<Record>,
     /// Each method's safety, by command name.
     pub safety: BTreeMap<String, safety::MethodSafety>,
+    /// The extensions the safe constructors let a program enable.
+    pub enabling: safety::Enabling,
     /// The same records by the item (command or struct) each rule belongs to.
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
 }
@@ -117,7 +119,8 @@ impl<'c, 'm> Plans<'c, 'm> {
         let oracle = oracle::cases(cx, &checker);
         let methods = methods::rows(cx, &ok);
         let records = settle::records(cx, &checker, &commands, &oracle);
-        let safety = safety::decide(cx, &methods, &records);
+        let enabling = safety::enabling(cx, &methods, &records);
+        let safety = safety::decide(cx, &methods, &records, &enabling);
         let item_of: BTreeMap<&str, &str> = cx
             .validity
             .rules
@@ -141,6 +144,7 @@ impl<'c, 'm> Plans<'c, 'm> {
             methods,
             records,
             safety,
+            enabling,
             by_item,
         }
     }

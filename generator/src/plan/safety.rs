@@ -27,11 +27,13 @@ pub struct Class {
 /// of its registry entry or by its VUID, never by a guess at its text.
 pub const REVIEWED: &[Class] = &[
     Class {
-        name: "needs an extension tuff does not emit",
-        reason: "validusage.json files the rule under extensions outside the emitted API, so \
-                 it applies only on an instance or device that enables one of them; the safe \
-                 `create_instance` and `create_device` refuse every extension outside the \
-                 emitted API (`Error::ExtensionNotEmitted`), so only `unsafe` code can reach it",
+        name: "needs an extension the safe constructors refuse",
+        reason: "the rule applies only on an instance or device that enables an extension \
+                 (validusage.json files it under one, or its item belongs to one) that the \
+                 safe `create_instance` and `create_device` refuse: every extension outside \
+                 the emitted API (`Error::ExtensionNotEmitted`), and every emitted one that \
+                 brings rules no check enforces to methods outside it, listed below \
+                 (`Error::ExtensionUnchecked`); only `unsafe` code can reach it",
         holds: |r| r.key_holds == Some(false),
     },
     Class {
@@ -120,26 +122,277 @@ pub fn enforced(s: &Settlement) -> bool {
     }
 }
 
-/// The safety of every method of `rows`, by command name.
+/// Which emitted extensions the safe `create_instance` and `create_device` let a
+/// program enable. Enabling an extension makes its rules reachable, on its own
+/// methods and on every other method whose structs or values it extends (a core
+/// struct's rule about an extension's flag, an extension struct chained to a core
+/// create info). Its own methods answer for their rules (they are `unsafe` where
+/// one is the caller's); a rule it brings to another method that no code enforces
+/// would make that method unsafe in every program, so the extension is refused
+/// instead and the method stays safe, and only the `unsafe` `_unchecked`
+/// constructors enable it. Refusing one can make rules that need it unreachable,
+/// which can free another: repeated until nothing changes.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Enabling {
+    /// The versions and extensions a safe program can enable.
+    pub allowed: std::collections::BTreeSet<String>,
+    /// Each emitted extension the safe constructors refuse, with the rules it would
+    /// leave to the callers of other methods, in name order.
+    pub refused: Vec<(String, Vec<Owned>)>,
+}
+
+impl Enabling {
+    /// Whether `rule` can apply to a call in a program that enables only what the
+    /// safe constructors allow: the condition validusage.json files it under, and
+    /// its item's, hold.
+    pub fn reachable(&self, cx: &Context, rule: &Rule) -> bool {
+        reachable(cx, rule, &self.allowed)
+    }
+}
+
+/// Rules whose registry key says `core` but that only a program enabling an
+/// extension can break, by VUID ending: a video coding scope begins only with
+/// `vkCmdBeginVideoCodingKHR`.
+const REACHED_ONLY_WITH: &[(&str, &str)] = &[("-videocoding", "VK_KHR_video_queue")];
+
+fn reachable(cx: &Context, rule: &Rule, allowed: &std::collections::BTreeSet<String>) -> bool {
+    let item = cx.model.condition(&rule.item);
+    (item.is_core() || item.expr().eval(allowed))
+        && rule
+            .key
+            .as_deref()
+            .is_none_or(|k| crate::model::expr::eval(k, allowed))
+        && REACHED_ONLY_WITH
+            .iter()
+            .all(|(tail, x)| !rule.vuid.ends_with(tail) || allowed.contains(*x))
+}
+
+/// The rules that apply to each item of the emitted API: those a registry lists (the
+/// derived ones it does not list belong to items it leaves out).
+fn rules_by_item<'a>(cx: &'a Context) -> BTreeMap<&'a str, Vec<&'a Rule>> {
+    let mut by_item: BTreeMap<&str, Vec<&Rule>> = BTreeMap::new();
+    for rule in &cx.validity.rules {
+        if rule.emitted && (rule.listed || !cx.validity.explicit_known) {
+            by_item.entry(rule.item.as_str()).or_default().push(rule);
+        }
+    }
+    by_item
+}
+
+/// Whether a rule that applies, unenforced, to a method is still the caller's once
+/// the reviewed classes other than the extension one have taken theirs.
+fn unclassed(rule: &Rule) -> bool {
+    !REVIEWED[1..].iter().any(|c| (c.holds)(rule))
+}
+
+/// The versions and extensions a call of `command` already needs: those its
+/// condition names, and what they depend on, transitively. The rules they make
+/// reachable are the method's own.
+fn own_names(
+    cx: &Context,
+    command: &str,
+    allowed: &std::collections::BTreeSet<String>,
+) -> std::collections::BTreeSet<String> {
+    let condition = cx.model.condition(command);
+    let holds = |set: &std::collections::BTreeSet<String>| {
+        condition.is_core() || condition.expr().eval(set)
+    };
+    // Those the command cannot be called without; all it names for the method of an
+    // extension the safe constructors refuse.
+    let mut own: std::collections::BTreeSet<String> = condition
+        .expr()
+        .names()
+        .into_iter()
+        .filter(|x| {
+            let mut without = allowed.clone();
+            without.remove(*x);
+            !holds(allowed) || !holds(&without)
+        })
+        .map(str::to_owned)
+        .collect();
+    let mut todo: Vec<String> = own.iter().cloned().collect();
+    while let Some(x) = todo.pop() {
+        let Some(depends) = cx.model.extension_depends.get(&x) else {
+            continue;
+        };
+        let Ok(e) = crate::model::expr::Expr::parse(depends) else {
+            continue;
+        };
+        for n in e.names() {
+            if own.insert(n.to_owned()) {
+                todo.push(n.to_owned());
+            }
+        }
+    }
+    own
+}
+
+/// The emitted extensions to refuse so that `rule` cannot apply to a method whose
+/// own names are `own`: none where it applies without any extension foreign to the
+/// method (the method answers for it); else each one whose absence alone makes it
+/// unreachable, or, where none does alone (an alternative of several), all of them.
+fn needed<'a>(
+    cx: &Context,
+    rule: &Rule,
+    allowed: &'a std::collections::BTreeSet<String>,
+    own: &std::collections::BTreeSet<String>,
+) -> Vec<&'a str> {
+    let mut named: std::collections::BTreeSet<String> = cx
+        .model
+        .condition(&rule.item)
+        .expr()
+        .names()
+        .into_iter()
+        .map(str::to_owned)
+        .collect();
+    if let Some(e) = rule
+        .key
+        .as_deref()
+        .and_then(|k| crate::model::expr::Expr::parse(k).ok())
+    {
+        named.extend(e.names().into_iter().map(str::to_owned));
+    }
+    for (tail, x) in REACHED_ONLY_WITH {
+        if rule.vuid.ends_with(tail) {
+            named.insert((*x).to_owned());
+        }
+    }
+    let foreign_of = |named: &std::collections::BTreeSet<String>| -> Vec<&'a str> {
+        allowed
+            .iter()
+            .filter(|x| named.contains(*x) && !x.starts_with("VK_VERSION_") && !own.contains(*x))
+            .map(String::as_str)
+            .collect()
+    };
+    let foreign = foreign_of(&named);
+    let without = |xs: &[&str]| {
+        let mut set = allowed.clone();
+        for x in xs {
+            set.remove(*x);
+        }
+        set
+    };
+    if foreign.is_empty() || reachable(cx, rule, &without(&foreign)) {
+        // A rule that applies without them may still speak of an extension's struct
+        // or value (`not containing VkCopyCommandTransformInfoQCOM`): it is read, and
+        // checked, as written only where no program can enable that extension.
+        return foreign_of(&mentioned(cx, &rule.text));
+    }
+    let alone: Vec<&str> = foreign
+        .iter()
+        .copied()
+        .filter(|x| !reachable(cx, rule, &without(&[x])))
+        .collect();
+    if alone.is_empty() {
+        foreign
+    } else {
+        alone
+    }
+}
+
+/// The versions and extensions that define the types and values a rule's text
+/// names.
+fn mentioned(cx: &Context, text: &str) -> std::collections::BTreeSet<String> {
+    let mut out = std::collections::BTreeSet::new();
+    for word in text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')) {
+        if word.starts_with("Vk") && cx.model.types.contains_key(word) {
+            let c = cx.model.condition(word);
+            if !c.is_core() {
+                out.extend(c.expr().names().into_iter().map(str::to_owned));
+            }
+        } else if word.starts_with("VK_") {
+            for origin in cx.model.enum_origins.get(word).into_iter().flatten() {
+                out.insert(origin.clone());
+            }
+        }
+    }
+    out
+}
+
+/// Decide [`Enabling`] for the methods of `rows`. An extension is refused only for a
+/// method that it alone would make unsafe: one whose every rule left to the caller
+/// needs it (or another extension foreign to the method); a method that owns a rule
+/// without them is `unsafe` anyway, and lists the extension's rules with its own.
+pub fn enabling(cx: &Context, rows: &[MethodRow], records: &[Record]) -> Enabling {
+    let settlement: BTreeMap<&str, &Settlement> = records
+        .iter()
+        .map(|r| (r.vuid.as_str(), &r.settlement))
+        .collect();
+    let by_item = rules_by_item(cx);
+    let mut out = Enabling {
+        allowed: cx.model.enabled.clone(),
+        refused: Vec::new(),
+    };
+    loop {
+        let owns: Vec<std::collections::BTreeSet<String>> = rows
+            .iter()
+            .map(|r| own_names(cx, &r.command, &out.allowed))
+            .collect();
+        let mut blocked: BTreeMap<String, Vec<Owned>> = BTreeMap::new();
+        for (row, own) in rows.iter().zip(&owns) {
+            let left: Vec<&Rule> = row
+                .items
+                .iter()
+                .flat_map(|i| by_item.get(i.as_str()).into_iter().flatten())
+                .copied()
+                .filter(|rule| {
+                    !settlement
+                        .get(rule.vuid.as_str())
+                        .is_some_and(|s| enforced(s))
+                        && unclassed(rule)
+                        && reachable(cx, rule, &out.allowed)
+                })
+                .collect();
+            let foreign: Vec<Vec<&str>> = left
+                .iter()
+                .map(|rule| needed(cx, rule, &out.allowed, own))
+                .collect();
+            if left.is_empty() || foreign.iter().any(Vec::is_empty) {
+                continue;
+            }
+            for (rule, xs) in left.iter().zip(&foreign) {
+                for x in xs {
+                    let list = blocked.entry((*x).to_owned()).or_default();
+                    if !list.iter().any(|o| o.vuid == rule.vuid) {
+                        list.push(Owned {
+                            vuid: rule.vuid.clone(),
+                            text: crate::validity::explicit::plain(&rule.text),
+                        });
+                    }
+                }
+            }
+        }
+        if blocked.is_empty() {
+            break;
+        }
+        for (x, rules) in blocked {
+            out.allowed.remove(&x);
+            out.refused.push((x, rules));
+        }
+    }
+    out.refused.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+/// The safety of every method of `rows`, by command name, in programs that enable
+/// only what `enabling` allows.
 pub fn decide(
     cx: &Context,
     rows: &[MethodRow],
     records: &[Record],
+    enabling: &Enabling,
 ) -> BTreeMap<String, MethodSafety> {
     let settlement: BTreeMap<&str, &Settlement> = records
         .iter()
         .map(|r| (r.vuid.as_str(), &r.settlement))
         .collect();
-    let mut by_item: BTreeMap<&str, Vec<&Rule>> = BTreeMap::new();
-    for rule in &cx.validity.rules {
-        // Rules a registry lists for an item are the rules; derived ones it does not
-        // list belong to items it leaves out.
-        if rule.emitted && (rule.listed || !cx.validity.explicit_known) {
-            by_item.entry(rule.item.as_str()).or_default().push(rule);
-        }
-    }
+    let by_item = rules_by_item(cx);
     rows.iter()
         .map(|row| {
+            // A refused extension's own methods still answer for its rules: a
+            // program that enables it through `unsafe` code calls them.
+            let mut reach = enabling.allowed.clone();
+            reach.extend(own_names(cx, &row.command, &enabling.allowed));
             let mut out = MethodSafety::default();
             for rule in row
                 .items
@@ -152,7 +405,13 @@ pub fn decide(
                 {
                     continue;
                 }
-                match REVIEWED.iter().position(|c| (c.holds)(rule)) {
+                // A rule only an extension the safe constructors refuse can reach is
+                // the extension class's.
+                let class = match reachable(cx, rule, &reach) {
+                    false => Some(0),
+                    true => REVIEWED.iter().position(|c| (c.holds)(rule)),
+                };
+                match class {
                     Some(class) => out.classed.push((rule.vuid.clone(), class)),
                     None => out.owned.push(Owned {
                         vuid: rule.vuid.clone(),
@@ -180,6 +439,7 @@ mod tests {
             derived: false,
             text: "x".into(),
             key_holds,
+            key: None,
         }
     }
 

@@ -362,6 +362,7 @@ fn methods_section(s: &mut String, r: &Report) {
             c.reason
         );
     }
+    refused_section(s, r);
     let _ = writeln!(
         s,
         "\n## Per method (emitted API)\n\n\
@@ -405,5 +406,35 @@ fn reference_section(s: &mut String, r: &Report<'_>) {
     let _ = writeln!(s, "\n| Extension | Why it is left out |\n|---|---|");
     for l in &r.left_out {
         let _ = writeln!(s, "| `{}` | {} |", l.name, l.reason.replace('|', "\\|"));
+    }
+}
+
+/// The emitted extensions the safe constructors refuse, each with the rules it would
+/// bring to methods outside it.
+fn refused_section(s: &mut String, r: &Report) {
+    let _ = writeln!(
+        s,
+        "\n### Extensions only `unsafe` code enables\n\n\
+         An emitted extension makes its rules reachable on its own methods and on every \
+         other method whose structs or values it extends. Where such a rule is not \
+         enforced and would be the only thing keeping another method from being safe, the \
+         extension is refused by the safe `create_instance` and `create_device` \
+         (`Error::ExtensionUnchecked`; `api_info::CHECKED_EXTENSIONS` lists the others), \
+         so that method stays safe; the `unsafe` `_unchecked` constructors enable it, and \
+         their caller owns these rules. Refusing one can free another, so this is decided \
+         to a fixed point (`plan/safety.rs`, `enabling`)."
+    );
+    if r.refused.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nEvery emitted extension is enabled by the safe constructors."
+        );
+        return;
+    }
+    for (ext, rules) in &r.refused {
+        let _ = writeln!(s, "\n- `{ext}` ({} rules):", rules.len());
+        for o in rules {
+            let _ = writeln!(s, "  - `{}`: {}", o.vuid, o.text);
+        }
     }
 }

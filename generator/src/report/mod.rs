@@ -102,6 +102,9 @@ pub struct Report<'a> {
     /// The extensions left out because the reference lacks them or defines them
     /// otherwise, with the reason.
     pub left_out: Vec<crate::model::reference::LeftOut>,
+    /// The emitted extensions the safe constructors refuse, with the rules each
+    /// would bring to other methods; empty unless [`Report::add_methods`] ran.
+    pub refused: Vec<(String, Vec<crate::plan::safety::Owned>)>,
 }
 
 /// The rules that apply to one emitted method: its command's and those of every
@@ -138,8 +141,10 @@ impl Report<'_> {
         &mut self,
         rows: &[crate::plan::methods::MethodRow],
         safety: &BTreeMap<String, crate::plan::safety::MethodSafety>,
+        enabling: &crate::plan::safety::Enabling,
         scene_calls: &std::collections::BTreeSet<String>,
     ) {
+        self.refused = enabling.refused.clone();
         let mut classes: Vec<ClassTally> = crate::plan::safety::REVIEWED
             .iter()
             .map(|c| ClassTally {
@@ -221,6 +226,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         classes: Vec::new(),
         reference_version: model.reference_version.clone(),
         left_out: model.left_out.clone(),
+        refused: Vec::new(),
     };
     let known: std::collections::BTreeSet<&str> =
         validity.rules.iter().map(|r| r.vuid.as_str()).collect();

@@ -478,7 +478,11 @@ pub const NOT_AS_WRITTEN: &[(&str, &str)] = &[
 
 /// Recognise every explicit rule of `rules` whose item is an emitted struct or
 /// command.
-pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
+pub fn recognise(
+    model: &Model,
+    rules: &[super::Rule],
+    reach: &std::collections::BTreeSet<String>,
+) -> Vec<Recognised> {
     let mut out = Vec::new();
     for rule in rules {
         if rule.category == super::Category::Implicit
@@ -491,7 +495,7 @@ pub fn recognise(model: &Model, rules: &[super::Rule]) -> Vec<Recognised> {
             continue;
         }
         let text = plain(&rule.text);
-        let Some((each, body)) = elements(model, &rule.item, &text) else {
+        let Some((each, body)) = elements(model, &rule.item, &text, reach) else {
             continue;
         };
         let body = normalised(&body);
@@ -732,8 +736,14 @@ fn requirement(input: &Input, req: &str) -> Option<(&'static str, Pred)> {
 /// member of each element of A must ...`, `The x + y of each element of A must
 /// ...`. Returns the array and its element type (if any) and the rule's text;
 /// `None` when the array is not an array of structs of the item, or the rule
-/// excludes elements by a chained struct the emitted API has.
-fn elements(model: &Model, item: &str, text: &str) -> Option<(Option<(String, String)>, String)> {
+/// excludes elements by a chained struct that a program enabling only `reach` can
+/// chain.
+fn elements(
+    model: &Model,
+    item: &str,
+    text: &str,
+    reach: &std::collections::BTreeSet<String>,
+) -> Option<(Option<(String, String)>, String)> {
     static R: OnceLock<[Regex; 5]> = OnceLock::new();
     let [each, each_not, then_each, member_of, its] = R.get_or_init(|| {
         [
@@ -752,8 +762,10 @@ fn elements(model: &Model, item: &str, text: &str) -> Option<(Option<(String, St
         .map(|r| r.expect("element pattern"))
     });
     let (array, body) = if let Some(c) = each_not.captures(text) {
-        // Elements that chain a struct tuff does not emit are none of them.
-        (!model.is_emitted(&c[2]) && model.types.contains_key(&c[2])).then_some(())?;
+        // Elements that chain a struct no such program can chain are none of them.
+        let condition = model.condition(&c[2]);
+        let chainable = condition.is_core() || condition.expr().eval(reach);
+        (!chainable && model.types.contains_key(&c[2])).then_some(())?;
         (c[1].to_owned(), capitalised(&c[3]))
     } else if let Some(c) = each.captures(text) {
         (c[1].to_owned(), capitalised(&c[2]))

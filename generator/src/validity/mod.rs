@@ -64,6 +64,10 @@ pub struct Rule {
     /// emitted API; `None` where the file's keys carry no conditions (every rule
     /// under `core`, as from 1.3.255 on) or the rule is not listed.
     pub key_holds: Option<bool>,
+    /// That condition as validusage.json writes it (an expression of versions and
+    /// extensions), where [`Rule::key_holds`] is known.
+    #[serde(skip)]
+    pub key: Option<String>,
 }
 
 /// Derived against listed implicit rules, over the items validusage.json lists.
@@ -123,6 +127,17 @@ pub struct Validity {
 
 /// Run the pass. Without `validusage`, only the derived implicit rules are known.
 pub fn analyze(model: &Model, validusage: Option<&ValidUsage>) -> Validity {
+    analyze_with(model, validusage, &model.enabled)
+}
+
+/// [`analyze`], with the conditions validusage.json files rules under evaluated
+/// against `reach` (the versions and extensions a safe program can enable) instead
+/// of everything the config emits.
+pub fn analyze_with(
+    model: &Model,
+    validusage: Option<&ValidUsage>,
+    reach: &BTreeSet<String>,
+) -> Validity {
     let toolchain = Toolchain::for_version(&model.version);
     let derived = implicit::derive_all(model, toolchain);
     let derived_by_vuid: BTreeMap<&str, &DerivedRule> =
@@ -158,8 +173,8 @@ pub fn analyze(model: &Model, validusage: Option<&ValidUsage>) -> Validity {
                 listed: true,
                 derived: derived_by_vuid.contains_key(e.vuid.as_str()),
                 text: e.text.trim().to_owned(),
-                key_holds: keys_informative
-                    .then(|| crate::model::expr::eval(&e.key, &model.enabled)),
+                key_holds: keys_informative.then(|| crate::model::expr::eval(&e.key, reach)),
+                key: keys_informative.then(|| e.key.clone()),
             });
         }
         for r in &derived {
@@ -186,10 +201,11 @@ pub fn analyze(model: &Model, validusage: Option<&ValidUsage>) -> Validity {
                 derived: true,
                 text: r.text.clone(),
                 key_holds: None,
+                key: None,
             });
         }
     }
-    let recognised = explicit::recognise(model, &rules);
+    let recognised = explicit::recognise(model, &rules, reach);
     Validity {
         rules,
         comparison,
