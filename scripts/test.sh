@@ -12,6 +12,11 @@ cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy -p tuff-runtime -p tuff-tests --all-targets --features tuff-runtime/multi_thread -- -D warnings
 cargo clippy -p tuff-tests --all-targets --features multi_thread -- -D warnings
+# The tuff crate alone, as a dependency builds it: default features, one extension,
+# and every extension it emits.
+cargo clippy -p tuff -- -D warnings
+cargo clippy -p tuff --features khr_swapchain -- -D warnings
+cargo clippy -p tuff --features all_extensions -- -D warnings
 cargo test --workspace
 # The runtime again with Vrc = Arc and Vutex = a mutex.
 cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread

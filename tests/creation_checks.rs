@@ -1919,3 +1919,40 @@ fn framebuffer_rules_are_refused_and_the_layer_agrees() {
     }
     v.finish("framebuffers");
 }
+
+/// A chained struct of an extension the device does not enable is no valid node of
+/// the chain: tuff refuses it as the parent's `pNext-pNext` rule (the 1.3.239 layer
+/// lets this one through: the error alone proves it). The fixture's device enables
+/// no swapchain extension.
+#[test]
+fn a_struct_of_an_extension_not_enabled_is_refused_in_a_chain() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    tuff_setup::breaks(
+        &s,
+        "VUID-VkImageCreateInfo-pNext-pNext",
+        tuff_setup::Layer::Silent,
+        |unchecked| {
+            let mut swapchain = tuff::ImageSwapchainCreateInfoKHR::new();
+            let info = tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::SAMPLED)
+                .push_next(&mut swapchain);
+            match unchecked {
+                // SAFETY: the layer skips the call it reports; the chain breaks only
+                // the rule under test.
+                true => unsafe { s.device.create_image_unchecked(&info) }.map(drop),
+                false => s.device.create_image(&info).map(drop),
+            }
+        },
+    );
+}

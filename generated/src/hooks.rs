@@ -2496,6 +2496,13 @@ pub(crate) fn instance_extensions_emitted(create_info: &InstanceCreateInfo<'_>) 
     extensions_emitted(&create_info.enabled_extensions())
 }
 
+/// [`instance_extensions_emitted`], then [`create_instance_checks`]: the checks
+/// `vkCreateInstance` runs before the implicit ones.
+pub(crate) fn create_instance_first(create_info: &InstanceCreateInfo<'_>) -> Result<()> {
+    instance_extensions_emitted(create_info)?;
+    create_instance_checks(create_info)
+}
+
 /// An instance names a real API version, enables what its extensions depend on, and
 /// chains a debug messenger only with the extension that defines it.
 pub(crate) fn create_instance_checks(create_info: &InstanceCreateInfo<'_>) -> Result<()> {

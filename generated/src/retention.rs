@@ -128,6 +128,7 @@ pub(crate) struct Live {
     /// The format properties asked of the physical device, by format.
     formats: Vutex<HashMap<i32, vk::FormatProperties>>,
     /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, read once.
+    #[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
     present_masks: Vutex<Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]>>,
     /// The device's timeline semaphores (the others are binary).
     timelines: Vutex<HashMap<u64, crate::submission::Timeline>>,
@@ -730,6 +731,7 @@ pub(crate) struct ImageRecord {
     pub sharing: vk::SharingMode,
     /// The queue families of a concurrent image, as bits (`u64::MAX` when one is 64
     /// or more, which matches no other set).
+    #[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
     pub families: u64,
     /// Whether memory is bound to it.
     pub bound: bool,
@@ -1796,11 +1798,13 @@ impl Live {
     }
 
     /// `VkDeviceGroupPresentCapabilitiesKHR::presentMask`, once read.
+    #[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
     pub(crate) fn present_masks(&self) -> Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]> {
         *self.present_masks.lock()
     }
 
     /// Records `VkDeviceGroupPresentCapabilitiesKHR::presentMask`.
+    #[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
     pub(crate) fn set_present_masks(&self, masks: [u32; vk::MAX_DEVICE_GROUP_SIZE]) {
         *self.present_masks.lock() = Some(masks);
     }

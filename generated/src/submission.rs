@@ -531,6 +531,7 @@ pub(crate) const SUBMIT2: SubmitRules = SubmitRules {
 };
 
 /// The rules of `vkAcquireNextImageKHR` for its fence (it has no command buffers).
+#[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
 pub(crate) const ACQUIRE: SubmitRules = SubmitRules {
     fence_signalled: "VUID-vkAcquireNextImageKHR-fence-01287",
     fence_pending: "VUID-vkAcquireNextImageKHR-fence-01287",
@@ -1306,6 +1307,7 @@ pub(crate) const BIND_SPARSE_BINARY: BinaryRules = BinaryRules {
 };
 
 /// The rules of `vkQueuePresentKHR` (it only waits).
+#[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
 pub(crate) const PRESENT_BINARY: BinaryRules = BinaryRules {
     wait_unsignaled: "VUID-vkQueuePresentKHR-pWaitSemaphores-03268",
     signal_signaled: "",
@@ -1313,6 +1315,7 @@ pub(crate) const PRESENT_BINARY: BinaryRules = BinaryRules {
 };
 
 /// The rules of `vkAcquireNextImageKHR` (it only signals, on no queue).
+#[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
 pub(crate) const ACQUIRE_BINARY: BinaryRules = BinaryRules {
     wait_unsignaled: "",
     signal_signaled: "VUID-vkAcquireNextImageKHR-semaphore-01286",
@@ -1320,6 +1323,7 @@ pub(crate) const ACQUIRE_BINARY: BinaryRules = BinaryRules {
 };
 
 /// The rules of `vkAcquireNextImage2KHR`.
+#[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
 pub(crate) const ACQUIRE2_BINARY: BinaryRules = BinaryRules {
     wait_unsignaled: "",
     signal_signaled: "VUID-VkAcquireNextImageInfoKHR-semaphore-01288",

@@ -53,7 +53,8 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     for c in checker.command_cache.values().flatten() {
         needs.extend(c.needs());
     }
-    let origins = Origins::new(model, &needs);
+    let mut origins = Origins::new(model, &needs);
+    origins.add(gated_structs(model).flat_map(|(_, names)| names.into_iter().flatten()));
     let mut values = Vec::new();
     for t in &needs {
         values.push(match model.category(t) {
@@ -61,7 +62,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
             _ => flags_fn(checker.cx, &origins, t),
         });
     }
-    let chain = chain_fn(checker);
+    let chain = chain_fn(checker, &origins);
     let members = quote! {
         /// The array a struct member points to, `count` long; empty when the
         /// pointer is NULL, as an optional array that shares its count may be.
@@ -123,9 +124,75 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     files
 }
 
-/// The `pNext` walk: uniqueness of structure types, then each struct's own checks.
-fn chain_fn(checker: &Checker) -> TokenStream {
+/// Each emitted struct that extends another and needs more than Vulkan 1.0, with the
+/// alternatives of its condition (each a set of versions and extensions that must
+/// all be enabled).
+fn gated_structs(
+    model: &crate::model::Model,
+) -> impl Iterator<Item = (&String, Vec<BTreeSet<String>>)> + '_ {
+    model
+        .types
+        .values()
+        .filter(|t| {
+            t.alias.is_none()
+                && !t.struct_extends.is_empty()
+                && model.emitted.contains(&t.name)
+                && !model.condition(&t.name).is_core()
+        })
+        .map(|t| {
+            let sets = model
+                .condition(&t.name)
+                .expr()
+                .minimal_sets(&|_| None)
+                .unwrap_or_default();
+            (&t.name, sets)
+        })
+}
+
+/// The `pNext` walk: uniqueness of structure types, the version or extension of
+/// each node enabled, then each struct's own checks.
+fn chain_fn(checker: &Checker, origins: &Origins) -> TokenStream {
     let model = checker.cx.model;
+    let mut gates = Vec::new();
+    for (name, sets) in gated_structs(model) {
+        let Some(stype) = struct_type_value(checker.cx, name) else {
+            continue;
+        };
+        let lit = Literal::i32_unsuffixed(stype);
+        let cfg = crate::names::cfg_of(model, model.condition(name));
+        // Each alternative is a set that must all be enabled; an empty list is
+        // never enabled.
+        let alts: Vec<TokenStream> = sets
+            .iter()
+            .map(|set| {
+                let idx: Vec<u16> = set
+                    .iter()
+                    .map(|n| origins.names.iter().position(|o| o == n).map(|i| i as u16))
+                    .collect::<Option<Vec<_>>>()
+                    .unwrap_or_default();
+                if idx.is_empty() {
+                    return quote!(false);
+                }
+                let has = idx.iter().map(|i| {
+                    let i = Literal::u16_unsuffixed(*i);
+                    quote!(s.exts.has(#i))
+                });
+                match idx.len() {
+                    1 => quote!(#(#has)*),
+                    _ => quote!((#(#has)&&*)),
+                }
+            })
+            .collect();
+        let body = if alts.is_empty() {
+            quote!(false)
+        } else {
+            quote!(#(#alts)||*)
+        };
+        gates.push(quote! {
+            #cfg
+            #lit => #body,
+        });
+    }
     let mut arms = Vec::new();
     let mut duplicates = Vec::new();
     for name in &checker.checked {
@@ -159,14 +226,30 @@ fn chain_fn(checker: &Checker) -> TokenStream {
         /// Structure types that may appear more than once in a chain.
         const DUPLICATES_ALLOWED: &[i32] = &[#(#duplicates),*];
 
+        /// Whether the version or extension that defines structure type `ty` is
+        /// enabled in the scope (any type of Vulkan 1.0, or one no gate names, is).
+        fn node_enabled(ty: i32, s: &Scope<'_>) -> bool {
+            match ty {
+                #(#gates)*
+                _ => true,
+            }
+        }
+
         /// Walks a `pNext` chain: no structure type twice (when `unique` names that
-        /// rule), and each node's own checks.
-        pub(crate) fn chain(next: *const core::ffi::c_void, s: &Scope<'_>, unique: Option<&'static str>) -> Result<()> {
+        /// rule), with `pnext` (the struct's `pNext-pNext` rule) no node of a
+        /// version or extension the scope does not enable, and each node's own
+        /// checks.
+        pub(crate) fn chain(next: *const core::ffi::c_void, s: &Scope<'_>, pnext: Option<&'static str>, unique: Option<&'static str>) -> Result<()> {
             let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
             __safety!("chains are built by `push_next` from safe structs, each a live struct that begins with `sType` and `pNext`.");
             for base in unsafe { crate::support::chain_nodes(next) } {
                 let p = base as *const vk::BaseInStructure<'_>;
                 let ty = base.s_type.as_raw();
+                if let Some(vuid) = pnext {
+                    if !node_enabled(ty, s) {
+                        return Err(fail(vuid, format!("{:?} belongs to a version or extension that this instance or device does not enable", base.s_type)));
+                    }
+                }
                 if let Some(vuid) = unique {
                     if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
                         return Err(fail(vuid, format!("{:?} appears twice in the pNext chain", base.s_type)));
@@ -215,6 +298,16 @@ impl Origins {
         let minors = versions.iter().map(|(m, _)| *m).collect();
         names.extend(all.into_iter().filter(|n| !n.starts_with("VK_VERSION_")));
         Origins { names, minors }
+    }
+
+    /// Adds extensions (not versions: every version is numbered already) that no
+    /// enum value named.
+    fn add(&mut self, names: impl Iterator<Item = String>) {
+        for n in names {
+            if !n.starts_with("VK_VERSION_") && !self.names.contains(&n) {
+                self.names.push(n);
+            }
+        }
     }
 
     fn indices(&self, origins: &BTreeSet<String>) -> Vec<u16> {
@@ -544,12 +637,16 @@ pub fn render(check: &Check) -> TokenStream {
                 }
             }
         }
-        CheckKind::Chain => {
+        CheckKind::Chain { pnext } => {
             let unique = match &check.vuid {
                 Some(v) => quote!(Some(#v)),
                 None => quote!(None),
             };
-            quote!(crate::checks::chain(v.p_next, s, #unique)?;)
+            let pnext = match pnext {
+                Some(v) => quote!(Some(#v)),
+                None => quote!(None),
+            };
+            quote!(crate::checks::chain(v.p_next, s, #pnext, #unique)?;)
         }
         CheckKind::Explicit(r) => super::explicit::render(r),
     }

@@ -137,10 +137,24 @@ fn module_title(module: &str) -> String {
 /// The `cfg` of a whole extension module: its feature, when every item in it (named
 /// by `items`) exists only with that extension, so the module is empty without it.
 fn module_cfg(model: &Model, module: &str, items: &[String]) -> Option<TokenStream> {
-    let ext = model
+    let Some(ext) = model
         .enabled
         .iter()
-        .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module)?;
+        .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module)
+    else {
+        // A module of no emitted extension (the items an extension's interaction
+        // with another adds) is gated as its items all are, if they agree.
+        let cfgs: Vec<Option<String>> = items
+            .iter()
+            .map(|i| names::cfg_of(model, model.condition(i)).map(|c| c.to_string()))
+            .collect();
+        let first = cfgs.first()?.clone()?;
+        return cfgs
+            .iter()
+            .all(|c| c.as_deref() == Some(first.as_str()))
+            .then(|| names::cfg_of(model, model.condition(&items[0])))
+            .flatten();
+    };
     let needs_ext = |item: &String| {
         model
             .condition(item)

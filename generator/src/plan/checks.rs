@@ -197,9 +197,14 @@ pub enum CheckKind {
         /// Where it is.
         at: StructAt,
     },
-    /// The `pNext` chain: each node's checks, and no structure type twice when the
-    /// rule's VUID is the check's.
-    Chain,
+    /// The `pNext` chain: each node's checks, no structure type twice when the
+    /// rule's VUID is the check's, and with `pnext` (the struct's `pNext-pNext`
+    /// rule) no node of a version or extension the scope does not enable.
+    Chain {
+        /// The struct's `pNext-pNext` VUID, where an emitted struct that extends it
+        /// needs more than Vulkan 1.0.
+        pnext: Option<String>,
+    },
     /// An explicit rule the recognisers read, over the checked struct's members.
     Explicit(Box<crate::validity::explicit::Recognised>),
 }
@@ -592,11 +597,20 @@ impl<'c, 'm> Checker<'c, 'm> {
             .extended_by
             .get(name)
             .is_some_and(|e| e.iter().any(|x| self.checked.contains(x)));
-        if unique.is_some() || chain_checked {
+        // A struct of a version or extension the instance or device does not enable
+        // is not a valid node (the layer names it under the struct's pNext-pNext).
+        let pnext_vuid = format!("VUID-{name}-pNext-pNext");
+        let gated = model.extended_by.get(name).is_some_and(|e| {
+            e.iter()
+                .any(|x| model.emitted.contains(x) && !model.condition(x).is_core())
+        }) && self.cx.validity.rules.iter().any(|r| r.vuid == pnext_vuid);
+        if unique.is_some() || chain_checked || gated {
             out.push(Check {
                 vuid: unique,
                 what: "walks the chain and checks no structure type appears twice".into(),
-                kind: CheckKind::Chain,
+                kind: CheckKind::Chain {
+                    pnext: gated.then_some(pnext_vuid),
+                },
             });
         }
         out

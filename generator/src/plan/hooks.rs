@@ -3035,8 +3035,10 @@ pub const SPECIALS: &[Special] = &[
     },
     Special {
         command: "vkCreateInstance",
-        check: call("hooks::instance_extensions_emitted", &["create_info"]),
-        check_last: call("hooks::create_instance_checks", &["create_info"]),
+        // The instance's own rules before the implicit ones: a messenger chained
+        // without its extension is refused as the rule that names that case
+        // (pNext-04926), not as the chain's general pNext-pNext.
+        check: call("hooks::create_instance_first", &["create_info"]),
         created: call("hooks::instance_created", &["self", "out", "create_info"]),
         error: call("presence::instance_error", &["self", "create_info", "r"]),
         scope: call("hooks::create_instance_scope", &["create_info"]),

@@ -290,9 +290,17 @@ fn implicit(
     }
     match (d.kind, member) {
         (K::SType, _) => Settlement::Static("the safe struct's constructor sets `sType`".into()),
-        (K::PNext, Some(Member::PNext)) => Settlement::Static(
-            "`push_next` accepts only structs that implement `Extends` for the head".into(),
-        ),
+        (K::PNext, Some(Member::PNext)) => {
+            let model = cx.model;
+            let gated = model.extended_by.get(&d.item).is_some_and(|e| {
+                e.iter()
+                    .any(|x| model.emitted.contains(x) && !model.condition(x).is_core())
+            });
+            Settlement::Static(match gated {
+                true => "`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs)".into(),
+                false => "`push_next` accepts only structs that implement `Extends` for the head".into(),
+            })
+        }
         (K::Parameter, Some(Member::Value)) if plain_numbers(cx, d) => {
             Settlement::Static("a union of plain numbers: every value is valid".into())
         }

@@ -19,7 +19,7 @@ pub(crate) use structs::*;
 pub(crate) use values::*;
 /// Names of the versions and extensions that define enum values: the
 /// versions first, in order, then the extensions.
-const ORIGINS: [&str; 120usize] = [
+const ORIGINS: [&str; 149usize] = [
     "VK_VERSION_1_0",
     "VK_VERSION_1_1",
     "VK_VERSION_1_2",
@@ -140,13 +140,42 @@ const ORIGINS: [&str; 120usize] = [
     "VK_QCOM_render_pass_store_ops",
     "VK_QCOM_render_pass_transform",
     "VK_VALVE_mutable_descriptor_type",
+    "VK_KHR_device_group_creation",
+    "VK_KHR_external_fence",
+    "VK_KHR_external_memory",
+    "VK_KHR_external_semaphore",
+    "VK_KHR_format_feature_flags2",
+    "VK_KHR_image_format_list",
+    "VK_EXT_separate_stencil_usage",
+    "VK_KHR_dedicated_allocation",
+    "VK_KHR_16bit_storage",
+    "VK_KHR_8bit_storage",
+    "VK_KHR_driver_properties",
+    "VK_KHR_get_physical_device_properties2",
+    "VK_KHR_shader_float_controls",
+    "VK_EXT_host_query_reset",
+    "VK_EXT_image_robustness",
+    "VK_KHR_maintenance3",
+    "VK_EXT_scalar_block_layout",
+    "VK_KHR_shader_atomic_int64",
+    "VK_EXT_shader_demote_to_helper_invocation",
+    "VK_KHR_shader_float16_int8",
+    "VK_KHR_shader_integer_dot_product",
+    "VK_KHR_shader_subgroup_extended_types",
+    "VK_KHR_shader_terminate_invocation",
+    "VK_EXT_texel_buffer_alignment",
+    "VK_KHR_uniform_buffer_standard_layout",
+    "VK_KHR_variable_pointers",
+    "VK_KHR_vulkan_memory_model",
+    "VK_KHR_zero_initialize_workgroup_memory",
+    "VK_EXT_pipeline_creation_feedback",
 ];
 /// The minor version of each leading version entry of `ORIGINS`.
 const VERSION_MINORS: [u32; 4usize] = [0u32, 1u32, 2u32, 3u32];
 /// The versions and extensions enabled on an instance or device, as a bit
 /// set over `ORIGINS`.
 #[derive(Clone, Copy, Default, Debug)]
-pub(crate) struct Exts([u64; 2usize]);
+pub(crate) struct Exts([u64; 3usize]);
 impl Exts {
     /// Versions up to 1.`minor` and the extensions named.
     pub(crate) fn new(minor: u32, names: &[&core::ffi::CStr]) -> Exts {
@@ -218,11 +247,147 @@ unsafe fn members<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
 }
 /// Structure types that may appear more than once in a chain.
 const DUPLICATES_ALLOWED: &[i32] = &[1000128004, 1000295001];
+/// Whether the version or extension that defines structure type `ty` is
+/// enabled in the scope (any type of Vulkan 1.0, or one no gate names, is).
+fn node_enabled(ty: i32, s: &Scope<'_>) -> bool {
+    match ty {
+        1000241002 => s.exts.has(91) || s.exts.has(2),
+        1000241001 => s.exts.has(91) || s.exts.has(2),
+        1000060013 => s.exts.has(1) || (s.exts.has(65) && s.exts.has(70)),
+        1000060014 => s.exts.has(1) || (s.exts.has(65) && s.exts.has(70)),
+        #[cfg(feature = "khr_swapchain")]
+        1000060009 => {
+            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+        }
+        1000156002 => s.exts.has(90) || s.exts.has(1),
+        1000257002 => s.exts.has(66) || s.exts.has(2),
+        1000044004 => s.exts.has(72) || s.exts.has(3),
+        #[cfg(feature = "ext_debug_utils")]
+        1000128004 => s.exts.has(14),
+        #[cfg(feature = "ext_debug_utils")]
+        1000128000 => s.exts.has(14),
+        1000138003 => s.exts.has(31) || s.exts.has(3),
+        1000161000 => s.exts.has(16) || s.exts.has(2),
+        1000161003 => s.exts.has(16) || s.exts.has(2),
+        1000161004 => s.exts.has(16) || s.exts.has(2),
+        1000060006 => s.exts.has(70) || s.exts.has(1),
+        1000060004 => s.exts.has(70) || s.exts.has(1),
+        1000070001 => s.exts.has(120) || s.exts.has(1),
+        #[cfg(feature = "khr_swapchain")]
+        1000060011 => {
+            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+        }
+        1000060003 => s.exts.has(70) || s.exts.has(1),
+        1000060005 => s.exts.has(70) || s.exts.has(1),
+        #[cfg(feature = "khr_swapchain")]
+        1000060012 => {
+            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+        }
+        1000295001 => s.exts.has(43) || s.exts.has(3),
+        1000113000 => s.exts.has(121) || s.exts.has(1),
+        1000072002 => s.exts.has(122) || s.exts.has(1),
+        1000077000 => s.exts.has(123) || s.exts.has(1),
+        1000071001 => s.exts.has(74) || s.exts.has(1),
+        1000072000 => s.exts.has(122) || s.exts.has(1),
+        1000072001 => s.exts.has(122) || s.exts.has(1),
+        1000360000 => s.exts.has(124) || s.exts.has(3),
+        1000108001 => s.exts.has(77) || s.exts.has(2),
+        1000147000 => s.exts.has(125) || s.exts.has(2),
+        1000156003 => s.exts.has(90) || s.exts.has(1),
+        1000246000 => s.exts.has(126) || s.exts.has(2),
+        #[cfg(feature = "khr_swapchain")]
+        1000060008 => {
+            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+        }
+        1000117002 => s.exts.has(79) || s.exts.has(1),
+        1000060000 => s.exts.has(70) || s.exts.has(1),
+        1000314000 => s.exts.has(96) || s.exts.has(3),
+        1000127001 => s.exts.has(127) || s.exts.has(1),
+        1000127000 => s.exts.has(127) || s.exts.has(1),
+        1000257003 => s.exts.has(66) || s.exts.has(2),
+        1000083000 => s.exts.has(128) || s.exts.has(1),
+        1000177000 => s.exts.has(129) || s.exts.has(2),
+        1000257000 => s.exts.has(66) || s.exts.has(2),
+        1000199000 => s.exts.has(68) || s.exts.has(2),
+        1000161001 => s.exts.has(16) || s.exts.has(2),
+        1000161002 => s.exts.has(16) || s.exts.has(2),
+        1000196000 => s.exts.has(130) || s.exts.has(2),
+        1000044003 => s.exts.has(72) || s.exts.has(3),
+        1000071000 => s.exts.has(74) || s.exts.has(1),
+        1000059000 => s.exts.has(131) || s.exts.has(1),
+        1000197000 => s.exts.has(132) || s.exts.has(2),
+        1000261000 => s.exts.has(133) || s.exts.has(2),
+        1000071004 => s.exts.has(73) || s.exts.has(74) || s.exts.has(75) || s.exts.has(1),
+        1000335000 => s.exts.has(134) || s.exts.has(3),
+        1000108000 => s.exts.has(77) || s.exts.has(2),
+        1000138000 => s.exts.has(31) || s.exts.has(3),
+        1000138001 => s.exts.has(31) || s.exts.has(3),
+        1000168000 => s.exts.has(135) || s.exts.has(1),
+        1000413000 => s.exts.has(80) || s.exts.has(3),
+        1000413001 => s.exts.has(80) || s.exts.has(3),
+        1000053001 => s.exts.has(81) || s.exts.has(1),
+        1000053002 => s.exts.has(81) || s.exts.has(1),
+        1000297000 => s.exts.has(40) || s.exts.has(3),
+        1000117000 => s.exts.has(79) || s.exts.has(1),
+        1000295000 => s.exts.has(43) || s.exts.has(3),
+        1000145001 => s.exts.has(1),
+        1000145002 => s.exts.has(1),
+        1000130000 => s.exts.has(46) || s.exts.has(2),
+        1000156004 => s.exts.has(90) || s.exts.has(1),
+        1000221000 => s.exts.has(136) || s.exts.has(2),
+        1000241000 => s.exts.has(91) || s.exts.has(2),
+        1000180000 => s.exts.has(137) || s.exts.has(2),
+        1000276000 => s.exts.has(138) || s.exts.has(3),
+        1000063000 => s.exts.has(1),
+        1000082000 => s.exts.has(139) || s.exts.has(2),
+        1000280000 => s.exts.has(140) || s.exts.has(3),
+        1000280001 => s.exts.has(140) || s.exts.has(3),
+        1000175000 => s.exts.has(141) || s.exts.has(2),
+        1000215000 => s.exts.has(142) || s.exts.has(3),
+        1000094000 => s.exts.has(1),
+        1000225002 => s.exts.has(47) || s.exts.has(3),
+        1000225000 => s.exts.has(47) || s.exts.has(3),
+        1000314007 => s.exts.has(96) || s.exts.has(3),
+        1000281001 => s.exts.has(143) || s.exts.has(3),
+        1000066000 => s.exts.has(50) || s.exts.has(3),
+        1000207000 => s.exts.has(97) || s.exts.has(2),
+        1000207001 => s.exts.has(97) || s.exts.has(2),
+        1000253000 => s.exts.has(144) || s.exts.has(2),
+        1000120000 => s.exts.has(145) || s.exts.has(1),
+        49 => s.exts.has(2),
+        50 => s.exts.has(2),
+        51 => s.exts.has(2),
+        52 => s.exts.has(2),
+        53 => s.exts.has(3),
+        54 => s.exts.has(3),
+        1000211000 => s.exts.has(146) || s.exts.has(2),
+        1000325000 => s.exts.has(147) || s.exts.has(3),
+        1000192000 => s.exts.has(148) || s.exts.has(3),
+        1000044002 => s.exts.has(72) || s.exts.has(3),
+        1000225001 => s.exts.has(47) || s.exts.has(3),
+        1000117003 => s.exts.has(79) || s.exts.has(1),
+        1000145000 => s.exts.has(1),
+        1000108003 => s.exts.has(77) || s.exts.has(2),
+        1000117001 => s.exts.has(79) || s.exts.has(1),
+        1000053000 => s.exts.has(81) || s.exts.has(1),
+        1000130001 => s.exts.has(46) || s.exts.has(2),
+        1000156005 => s.exts.has(90) || s.exts.has(1),
+        1000156001 => s.exts.has(90) || s.exts.has(1),
+        1000207002 => s.exts.has(97) || s.exts.has(2),
+        1000199001 => s.exts.has(68) || s.exts.has(2),
+        1000207003 => s.exts.has(97) || s.exts.has(2),
+        1000138002 => s.exts.has(31) || s.exts.has(3),
+        _ => true,
+    }
+}
 /// Walks a `pNext` chain: no structure type twice (when `unique` names that
-/// rule), and each node's own checks.
+/// rule), with `pnext` (the struct's `pNext-pNext` rule) no node of a
+/// version or extension the scope does not enable, and each node's own
+/// checks.
 pub(crate) fn chain(
     next: *const core::ffi::c_void,
     s: &Scope<'_>,
+    pnext: Option<&'static str>,
     unique: Option<&'static str>,
 ) -> Result<()> {
     let mut seen: smallvec::SmallVec<[i32; 8]> = smallvec::SmallVec::new();
@@ -231,6 +396,19 @@ pub(crate) fn chain(
     for base in unsafe { crate::support::chain_nodes(next) } {
         let p = base as *const vk::BaseInStructure<'_>;
         let ty = base.s_type.as_raw();
+        if let Some(vuid) = pnext {
+            if !node_enabled(ty, s) {
+                return Err(
+                    fail(
+                        vuid,
+                        format!(
+                            "{:?} belongs to a version or extension that this instance or device does not enable",
+                            base.s_type
+                        ),
+                    ),
+                );
+            }
+        }
         if let Some(vuid) = unique {
             if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
                 return Err(

@@ -21,6 +21,7 @@ mod v1_3_recording;
 mod ext_debug_utils;
 #[cfg(feature = "ext_metal_surface")]
 mod ext_metal_surface;
+#[cfg(feature = "khr_swapchain")]
 mod khr_device_group;
 #[cfg(feature = "khr_surface")]
 mod khr_surface;

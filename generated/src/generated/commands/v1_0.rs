@@ -3244,12 +3244,11 @@ The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
-        crate::hooks::instance_extensions_emitted(create_info)?;
+        crate::hooks::create_instance_first(create_info)?;
         {
             let r = self.validate_create_instance(create_info);
             r?;
         }
-        crate::hooks::create_instance_checks(create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_instance_unchecked(create_info) }

@@ -10,7 +10,7 @@ The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.
 
 - `VUID-VkPresentInfoKHR-pImageIndices-01296`: dynamic (checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout))
 - `VUID-VkPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPresentInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkPresentInfoKHR-pSwapchains-parameter`: static (set from wrappers, which always hold valid handles)
@@ -79,7 +79,7 @@ The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.
 - `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: dynamic (checks oldSwapchain presents to the same surface and was not retired: the device records each swapchain's surface, and a creation retires its oldSwapchain before the call, whether or not it succeeds)
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSwapchainCreateInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSwapchainCreateInfoKHR-surface-parameter`: static (set from wrappers, which always hold valid handles)

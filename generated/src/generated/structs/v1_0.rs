@@ -165,7 +165,7 @@ impl<'a> BaseOutStructure<'a> {
 The rules are on [`VkBindSparseInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindSparseInfo.html). Settled by the wrappers:
 
 - `VUID-VkBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindSparseInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkBindSparseInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkBindSparseInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindSparseInfo-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindSparseInfo-pBufferBinds-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -235,7 +235,7 @@ The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkBufferCreateInfo-sharingMode-00913`: static (the setter takes a slice and stores its length in the count member)
 - `VUID-VkBufferCreateInfo-flags-00915`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkBufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkBufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkBufferCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -503,7 +503,7 @@ impl<'a> CommandBufferAllocateInfo<'a> {
 The rules are on [`VkCommandBufferBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferBeginInfo.html). Settled by the wrappers:
 
 - `VUID-VkCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCommandBufferBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkCommandBufferBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkCommandBufferBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferBeginInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
@@ -544,7 +544,7 @@ The rules are on [`VkCommandBufferInheritanceInfo`'s reference page](https://reg
 
 - `VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkCommandBufferInheritanceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCommandBufferInheritanceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkCommandBufferInheritanceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkCommandBufferInheritanceInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
@@ -640,7 +640,7 @@ The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://regist
 - `VUID-VkComputePipelineCreateInfo-stage-00701`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others)
 - `VUID-VkComputePipelineCreateInfo-layout-00703`: dynamic (checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage)
 - `VUID-VkComputePipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkComputePipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkComputePipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkComputePipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkComputePipelineCreateInfo-stage-parameter`: static (set from the safe counterpart, which the constructor requires)
@@ -904,7 +904,7 @@ The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registr
 
 - `VUID-VkDescriptorPoolCreateInfo-maxSets-00301`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkDescriptorPoolCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDescriptorPoolCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDescriptorPoolCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorPoolCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorPoolCreateInfo-pPoolSizes-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -945,7 +945,7 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
 The rules are on [`VkDescriptorSetAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetAllocateInfo.html). Settled by the wrappers:
 
 - `VUID-VkDescriptorSetAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDescriptorSetAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDescriptorSetAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetAllocateInfo-descriptorPool-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-parameter`: static (set from wrappers, which always hold valid handles)
@@ -1062,7 +1062,7 @@ The rules are on [`VkDescriptorSetLayoutCreateInfo`'s reference page](https://re
 
 - `VUID-VkDescriptorSetLayoutCreateInfo-binding-00279`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDescriptorSetLayoutCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDescriptorSetLayoutCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDescriptorSetLayoutCreateInfo-pBindings-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -1105,7 +1105,7 @@ The rules are on [`VkDeviceCreateInfo`'s reference page](https://registry.khrono
 - `VUID-VkDeviceCreateInfo-pNext-02830`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
 - `VUID-VkDeviceCreateInfo-pNext-06532`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
 - `VUID-VkDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDeviceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDeviceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDeviceCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDeviceCreateInfo-pQueueCreateInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -1240,7 +1240,7 @@ impl<'a> EventCreateInfo<'a> {
 The rules are on [`VkFenceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFenceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkFenceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkFenceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkFenceCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
@@ -1280,7 +1280,7 @@ The rules are on [`VkFramebufferCreateInfo`'s reference page](https://registry.k
 - `VUID-VkFramebufferCreateInfo-layers-00889`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkFramebufferCreateInfo-flags-04113`: dynamic (checks each attachment (the view's recorded format, range, swizzle, derived usage and its image's samples and extent, or an imageless framebuffer's chained attachment info) against the roles the render pass's subpasses give it, its format and samples, the framebuffer's size and layers, and the view masks, all recorded at creation)
 - `VUID-VkFramebufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFramebufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkFramebufferCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkFramebufferCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkFramebufferCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkFramebufferCreateInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
@@ -1397,7 +1397,7 @@ The rules are on [`VkGraphicsPipelineCreateInfo`'s reference page](https://regis
 - `VUID-VkGraphicsPipelineCreateInfo-pStages-06896`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-stage-06897`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
 - `VUID-VkGraphicsPipelineCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGraphicsPipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkGraphicsPipelineCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkGraphicsPipelineCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkGraphicsPipelineCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkGraphicsPipelineCreateInfo-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -1673,7 +1673,7 @@ The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos
 - `VUID-VkImageCreateInfo-flags-00969`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkImageCreateInfo-initialLayout-00993`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageCreateInfo-imageType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1929,7 +1929,7 @@ The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khr
 - `VUID-VkImageViewCreateInfo-viewType-02961`: dynamic (checks the rule as written (recogniser: number a multiple of a constant or limit))
 - `VUID-VkImageViewCreateInfo-viewType-02962`: dynamic (checks the subresource range's aspects, levels and layers against the image's type, flags, extent and layer count, recorded at its creation)
 - `VUID-VkImageViewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageViewCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageViewCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageViewCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageViewCreateInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
@@ -2027,7 +2027,7 @@ The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khro
 
 - `VUID-VkInstanceCreateInfo-pNext-04926`: dynamic (checks the application's API version, and a chained messenger against the enabled extensions (proven by the error alone: the layer cannot speak through a messenger whose extension is off, and the 1.3.239 loader crashes once the layer has refused an API version below 1.0))
 - `VUID-VkInstanceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkInstanceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkInstanceCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkInstanceCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkInstanceCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkInstanceCreateInfo-pApplicationInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -2132,7 +2132,7 @@ The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khro
 
 - `VUID-VkMemoryAllocateInfo-None-06657`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
 - `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkMemoryAllocateInfo-allocationSize-00638`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
 - `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
@@ -2692,7 +2692,7 @@ The rules are on [`VkPipelineShaderStageCreateInfo`'s reference page](https://re
 
 - `VUID-VkPipelineShaderStageCreateInfo-pName-00707`: dynamic (checks each stage of a graphics or compute pipeline names an entry point of its module with the stage's execution model (the module's entry points are read from its SPIR-V when it is made))
 - `VUID-VkPipelineShaderStageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPipelineShaderStageCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineShaderStageCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPipelineShaderStageCreateInfo-stage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -2781,7 +2781,7 @@ The rules are on [`VkPipelineTessellationStateCreateInfo`'s reference page](http
 
 - `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`: dynamic (checks each state struct on its own: dynamic states, vertex bindings and locations once each, every attribute's binding described and its format one the device reads vertices in (VERTEX_BUFFER among its buffer features), primitive restart only with strip and fan topologies, adjacency only with geometryShader, the patch size within maxTessellationPatchSize, minSampleShading within [0, 1], a defined logic operation, each stage's specialization constants once each (for compute pipelines too))
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPipelineTessellationStateCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
 #[repr(transparent)]
@@ -2993,7 +2993,7 @@ The rules are on [`VkRenderPassBeginInfo`'s reference page](https://registry.khr
 - `VUID-VkRenderPassBeginInfo-clearValueCount-04962`: static (set from a slice by the safe setter, which stores its pointer with its count)
 - `VUID-VkRenderPassBeginInfo-renderPass-00904`: dynamic (checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them)
 - `VUID-VkRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkRenderPassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkRenderPassBeginInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassBeginInfo-renderPass-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkRenderPassBeginInfo-framebuffer-parameter`: static (set from wrappers, which always hold valid handles)
@@ -3080,7 +3080,7 @@ The rules are on [`VkRenderPassCreateInfo`'s reference page](https://registry.kh
 - `VUID-VkRenderPassCreateInfo-pDependencies-06866`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-pDependencies-06867`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
 - `VUID-VkRenderPassCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkRenderPassCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkRenderPassCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderPassCreateInfo-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -3155,7 +3155,7 @@ The rules are on [`VkSamplerCreateInfo`'s reference page](https://registry.khron
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSamplerCreateInfo-addressModeU-01079`: dynamic (checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features)
 - `VUID-VkSamplerCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSamplerCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSamplerCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSamplerCreateInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerCreateInfo-magFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -3280,7 +3280,7 @@ impl<'a> SamplerCreateInfo<'a> {
 The rules are on [`VkSemaphoreCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSemaphoreCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSemaphoreCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSemaphoreCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 
@@ -3623,7 +3623,7 @@ The rules are on [`VkSubmitInfo`'s reference page](https://registry.khronos.org/
 - `VUID-VkSubmitInfo-pCommandBuffers-00075`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-00078`: dynamic (checks each wait stage mask: no host stage, no geometry or tessellation stage without its feature, not 0 without synchronization2, and each stage one the queue's capabilities (its family's flags, recorded when it was got) support)
 - `VUID-VkSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSubmitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSubmitInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSubmitInfo-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkSubmitInfo-pWaitDstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
@@ -3849,7 +3849,7 @@ The rules are on [`VkWriteDescriptorSet`'s reference page](https://registry.khro
 - `VUID-VkWriteDescriptorSet-descriptorType-00339`: dynamic (checks each image descriptor's view (its recorded type, aspects, usage and swizzle, and its image's type) and the layout against the lists its descriptor type allows)
 - `VUID-VkWriteDescriptorSet-descriptorType-02752`: dynamic (checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included)
 - `VUID-VkWriteDescriptorSet-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkWriteDescriptorSet-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkWriteDescriptorSet-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkWriteDescriptorSet-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkWriteDescriptorSet-descriptorCount-arraylength`: dynamic (checks the count is not 0)

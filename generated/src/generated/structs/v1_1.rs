@@ -41,7 +41,7 @@ The rules are on [`VkBindBufferMemoryInfo`'s reference page](https://registry.kh
 - `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
 - `VUID-VkBindBufferMemoryInfo-size-01037`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
 - `VUID-VkBindBufferMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindBufferMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkBindBufferMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkBindBufferMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindBufferMemoryInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindBufferMemoryInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
@@ -135,7 +135,7 @@ The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khr
 - `VUID-VkBindImageMemoryInfo-image-07460`: dynamic (refuses an object the device recorded as bound (and one an earlier info of the same call binds))
 - `VUID-VkBindImageMemoryInfo-memoryOffset-01046`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
 - `VUID-VkBindImageMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImageMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkBindImageMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkBindImageMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBindImageMemoryInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
@@ -256,7 +256,7 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
 The rules are on [`VkDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutSupport.html). Settled by the wrappers:
 
 - `VUID-VkDescriptorSetLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutSupport-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDescriptorSetLayoutSupport-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDescriptorSetLayoutSupport-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -757,7 +757,7 @@ safe_struct!(ExternalSemaphoreProperties, 'a; zeroed chained);
 The rules are on [`VkFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFormatProperties2.html). Settled by the wrappers:
 
 - `VUID-VkFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -773,7 +773,7 @@ safe_struct!(FormatProperties2, 'a; zeroed chained);
 The rules are on [`VkImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatProperties2.html). Settled by the wrappers:
 
 - `VUID-VkImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -790,7 +790,7 @@ The rules are on [`VkImageMemoryRequirementsInfo2`'s reference page](https://reg
 
 - `VUID-VkImageMemoryRequirementsInfo2-image-01590`: dynamic (checks a chained plane info against the image's create flags and format, kept from its creation)
 - `VUID-VkImageMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)
 
@@ -1011,7 +1011,7 @@ unsafe impl<'a> Extends<MemoryRequirements2<'a>> for MemoryDedicatedRequirements
 The rules are on [`VkMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryRequirements2.html). Settled by the wrappers:
 
 - `VUID-VkMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkMemoryRequirements2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1159,7 +1159,7 @@ for PhysicalDeviceExternalImageFormatInfo<'a> {}
 The rules are on [`VkPhysicalDeviceExternalSemaphoreInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalSemaphoreInfo.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPhysicalDeviceExternalSemaphoreInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
 #[repr(transparent)]
@@ -1238,7 +1238,7 @@ for PhysicalDeviceIDProperties<'a> {}
 The rules are on [`VkPhysicalDeviceImageFormatInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageFormatInfo2.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkPhysicalDeviceImageFormatInfo2-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
@@ -1397,7 +1397,7 @@ for PhysicalDevicePointClippingProperties<'a> {}
 The rules are on [`VkPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProperties2.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPhysicalDeviceProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPhysicalDeviceProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -2137,7 +2137,7 @@ The rules are on [`VkRenderingInfo`'s reference page](https://registry.khronos.o
 - `VUID-VkRenderingInfo-viewMask-06069`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkRenderingInfo-multiview-06127`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkRenderingInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderingInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkRenderingInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkRenderingInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderingInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderingInfo-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)

@@ -23,6 +23,7 @@ pub fn check_debug_utils_messenger_callback_data_ext(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique"),
     )?;
     Ok(())

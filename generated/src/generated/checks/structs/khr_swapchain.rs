@@ -37,7 +37,12 @@ pub fn check_present_info_khr(v: &vk::PresentInfoKHR<'_>, s: &Scope<'_>) -> Resu
             );
         }
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkPresentInfoKHR-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkPresentInfoKHR-pNext-pNext"),
+        Some("VUID-VkPresentInfoKHR-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSwapchainCreateInfoKHR` that are checked at run time.
@@ -126,6 +131,7 @@ pub fn check_swapchain_create_info_khr(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkSwapchainCreateInfoKHR-pNext-pNext"),
         Some("VUID-VkSwapchainCreateInfoKHR-sType-unique"),
     )?;
     Ok(())

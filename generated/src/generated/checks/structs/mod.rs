@@ -19,7 +19,9 @@ pub use ext_debug_utils::*;
 mod ext_metal_surface;
 #[cfg(feature = "ext_metal_surface")]
 pub use ext_metal_surface::*;
+#[cfg(feature = "khr_swapchain")]
 mod khr_device_group;
+#[cfg(feature = "khr_swapchain")]
 pub use khr_device_group::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_swapchain;

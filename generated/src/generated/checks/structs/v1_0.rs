@@ -388,7 +388,12 @@ pub fn check_bind_sparse_info(v: &vk::BindSparseInfo<'_>, s: &Scope<'_>) -> Resu
     for e in unsafe { members(v.p_image_binds, v.image_bind_count) } {
         crate::checks::check_sparse_image_memory_bind_info(e, s)?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBindSparseInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkBindSparseInfo-pNext-pNext"),
+        Some("VUID-VkBindSparseInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkBufferCreateInfo` that are checked at run time.
@@ -506,7 +511,12 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBufferCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkBufferCreateInfo-pNext-pNext"),
+        Some("VUID-VkBufferCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkBufferImageCopy` that are checked at run time.
@@ -665,7 +675,12 @@ pub fn check_buffer_view_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBufferViewCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkBufferViewCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkClearAttachment` that are checked at run time.
@@ -759,6 +774,7 @@ pub fn check_command_buffer_begin_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkCommandBufferBeginInfo-pNext-pNext"),
         Some("VUID-VkCommandBufferBeginInfo-sType-unique"),
     )?;
     Ok(())
@@ -801,6 +817,7 @@ pub fn check_command_buffer_inheritance_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkCommandBufferInheritanceInfo-pNext-pNext"),
         Some("VUID-VkCommandBufferInheritanceInfo-sType-unique"),
     )?;
     Ok(())
@@ -888,6 +905,7 @@ pub fn check_compute_pipeline_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkComputePipelineCreateInfo-pNext-pNext"),
         Some("VUID-VkComputePipelineCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1013,6 +1031,7 @@ pub fn check_descriptor_pool_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkDescriptorPoolCreateInfo-pNext-pNext"),
         Some("VUID-VkDescriptorPoolCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1088,6 +1107,7 @@ pub fn check_descriptor_set_allocate_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkDescriptorSetAllocateInfo-pNext-pNext"),
         Some("VUID-VkDescriptorSetAllocateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1145,6 +1165,7 @@ pub fn check_descriptor_set_layout_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkDescriptorSetLayoutCreateInfo-pNext-pNext"),
         Some("VUID-VkDescriptorSetLayoutCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1171,7 +1192,12 @@ pub fn check_device_create_info(
     for e in unsafe { members(v.p_queue_create_infos, v.queue_create_info_count) } {
         crate::checks::check_device_queue_create_info(e, s)?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkDeviceCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkDeviceCreateInfo-pNext-pNext"),
+        Some("VUID-VkDeviceCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkDeviceQueueCreateInfo` that are checked at run time.
@@ -1195,6 +1221,7 @@ pub fn check_device_queue_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkDeviceQueueCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1294,7 +1321,12 @@ pub fn check_event_create_info(
         s,
         "VUID-VkEventCreateInfo-flags-parameter",
     )?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkEventCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkEventCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkFenceCreateInfo` that are checked at run time.
@@ -1307,7 +1339,12 @@ pub fn check_fence_create_info(
         s,
         "VUID-VkFenceCreateInfo-flags-parameter",
     )?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkFenceCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkFenceCreateInfo-pNext-pNext"),
+        Some("VUID-VkFenceCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkFramebufferCreateInfo` that are checked at run time.
@@ -1419,6 +1456,7 @@ pub fn check_framebuffer_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkFramebufferCreateInfo-pNext-pNext"),
         Some("VUID-VkFramebufferCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1556,6 +1594,7 @@ pub fn check_graphics_pipeline_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkGraphicsPipelineCreateInfo-pNext-pNext"),
         Some("VUID-VkGraphicsPipelineCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1973,7 +2012,12 @@ pub fn check_image_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkImageCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkImageCreateInfo-pNext-pNext"),
+        Some("VUID-VkImageCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkImageMemoryBarrier` that are checked at run time.
@@ -2096,7 +2140,12 @@ pub fn check_image_memory_barrier(
         );
     }
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkImageMemoryBarrier-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkImageMemoryBarrier-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkImageResolve` that are checked at run time.
@@ -2312,7 +2361,12 @@ pub fn check_image_view_create_info(
     }
     crate::checks::check_component_mapping(&v.components, s)?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkImageViewCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkImageViewCreateInfo-pNext-pNext"),
+        Some("VUID-VkImageViewCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkInstanceCreateInfo` that are checked at run time.
@@ -2325,7 +2379,12 @@ pub fn check_instance_create_info(
         s,
         "VUID-VkInstanceCreateInfo-flags-parameter",
     )?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkInstanceCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkInstanceCreateInfo-pNext-pNext"),
+        Some("VUID-VkInstanceCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkMemoryAllocateInfo` that are checked at run time.
@@ -2344,7 +2403,12 @@ pub fn check_memory_allocate_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkMemoryAllocateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkMemoryAllocateInfo-pNext-pNext"),
+        Some("VUID-VkMemoryAllocateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkMemoryBarrier` that are checked at run time.
@@ -2539,6 +2603,7 @@ pub fn check_pipeline_color_blend_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPipelineColorBlendStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2689,6 +2754,7 @@ pub fn check_pipeline_multisample_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPipelineMultisampleStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2747,6 +2813,7 @@ pub fn check_pipeline_rasterization_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPipelineRasterizationStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2802,6 +2869,7 @@ pub fn check_pipeline_shader_stage_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkPipelineShaderStageCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineShaderStageCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2822,6 +2890,7 @@ pub fn check_pipeline_tessellation_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkPipelineTessellationStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineTessellationStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2888,6 +2957,7 @@ pub fn check_pipeline_vertex_input_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPipelineVertexInputStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2912,6 +2982,7 @@ pub fn check_pipeline_viewport_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPipelineViewportStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -3032,7 +3103,12 @@ pub fn check_query_pool_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkQueryPoolCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkQueryPoolCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkRenderPassBeginInfo` that are checked at run time.
@@ -3058,7 +3134,12 @@ pub fn check_render_pass_begin_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkRenderPassBeginInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkRenderPassBeginInfo-pNext-pNext"),
+        Some("VUID-VkRenderPassBeginInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkRenderPassCreateInfo` that are checked at run time.
@@ -3091,7 +3172,12 @@ pub fn check_render_pass_create_info(
     for e in unsafe { members(v.p_dependencies, v.dependency_count) } {
         crate::checks::check_subpass_dependency(e, s)?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkRenderPassCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkRenderPassCreateInfo-pNext-pNext"),
+        Some("VUID-VkRenderPassCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSamplerCreateInfo` that are checked at run time.
@@ -3255,7 +3341,12 @@ pub fn check_sampler_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSamplerCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSamplerCreateInfo-pNext-pNext"),
+        Some("VUID-VkSamplerCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSemaphoreCreateInfo` that are checked at run time.
@@ -3271,7 +3362,12 @@ pub fn check_semaphore_create_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSemaphoreCreateInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSemaphoreCreateInfo-pNext-pNext"),
+        Some("VUID-VkSemaphoreCreateInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkShaderModuleCreateInfo` that are checked at run time.
@@ -3503,7 +3599,12 @@ pub fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
             );
         }
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSubmitInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSubmitInfo-pNext-pNext"),
+        Some("VUID-VkSubmitInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSubpassDependency` that are checked at run time.
@@ -4155,6 +4256,11 @@ pub fn check_write_descriptor_set(
     for e in unsafe { members(v.p_buffer_info, v.descriptor_count) } {
         crate::checks::check_descriptor_buffer_info(e, s)?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkWriteDescriptorSet-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkWriteDescriptorSet-pNext-pNext"),
+        Some("VUID-VkWriteDescriptorSet-sType-unique"),
+    )?;
     Ok(())
 }

@@ -25,7 +25,12 @@ pub fn check_bind_buffer_memory_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBindBufferMemoryInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkBindBufferMemoryInfo-pNext-pNext"),
+        Some("VUID-VkBindBufferMemoryInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkBindImageMemoryInfo` that are checked at run time.
@@ -50,7 +55,12 @@ pub fn check_bind_image_memory_info(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBindImageMemoryInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkBindImageMemoryInfo-pNext-pNext"),
+        Some("VUID-VkBindImageMemoryInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkBindImagePlaneMemoryInfo` that are checked at run time.
@@ -73,6 +83,7 @@ pub fn check_descriptor_set_layout_support(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkDescriptorSetLayoutSupport-pNext-pNext"),
         Some("VUID-VkDescriptorSetLayoutSupport-sType-unique"),
     )?;
     Ok(())
@@ -254,7 +265,12 @@ pub fn check_format_properties2(
     v: &vk::FormatProperties2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    crate::checks::chain(v.p_next, s, Some("VUID-VkFormatProperties2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkFormatProperties2-pNext-pNext"),
+        Some("VUID-VkFormatProperties2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkImageFormatProperties2` that are checked at run time.
@@ -265,6 +281,7 @@ pub fn check_image_format_properties2(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkImageFormatProperties2-pNext-pNext"),
         Some("VUID-VkImageFormatProperties2-sType-unique"),
     )?;
     Ok(())
@@ -277,6 +294,7 @@ pub fn check_image_memory_requirements_info2(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkImageMemoryRequirementsInfo2-pNext-pNext"),
         Some("VUID-VkImageMemoryRequirementsInfo2-sType-unique"),
     )?;
     Ok(())
@@ -385,7 +403,12 @@ pub fn check_memory_requirements2(
     v: &vk::MemoryRequirements2<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    crate::checks::chain(v.p_next, s, Some("VUID-VkMemoryRequirements2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkMemoryRequirements2-pNext-pNext"),
+        Some("VUID-VkMemoryRequirements2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkPhysicalDeviceExternalBufferInfo` that are checked at run time.
@@ -455,6 +478,7 @@ pub fn check_physical_device_external_semaphore_info(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext"),
         Some("VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique"),
     )?;
     Ok(())
@@ -500,6 +524,7 @@ pub fn check_physical_device_image_format_info2(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext"),
         Some("VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique"),
     )?;
     Ok(())
@@ -512,6 +537,7 @@ pub fn check_physical_device_memory_properties2(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkPhysicalDeviceMemoryProperties2-sType-unique"),
     )?;
     Ok(())
@@ -524,6 +550,7 @@ pub fn check_physical_device_properties2(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkPhysicalDeviceProperties2-pNext-pNext"),
         Some("VUID-VkPhysicalDeviceProperties2-sType-unique"),
     )?;
     Ok(())
@@ -588,6 +615,7 @@ pub fn check_queue_family_properties2(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkQueueFamilyProperties2-sType-unique"),
     )?;
     Ok(())
@@ -651,6 +679,7 @@ pub fn check_sampler_ycbcr_conversion_create_info(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique"),
     )?;
     Ok(())

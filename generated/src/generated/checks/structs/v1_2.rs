@@ -268,6 +268,7 @@ pub fn check_attachment_description2(
     crate::checks::chain(
         v.p_next,
         s,
+        Some("VUID-VkAttachmentDescription2-pNext-pNext"),
         Some("VUID-VkAttachmentDescription2-sType-unique"),
     )?;
     Ok(())
@@ -362,7 +363,12 @@ pub fn check_attachment_reference2(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkAttachmentReference2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkAttachmentReference2-pNext-pNext"),
+        Some("VUID-VkAttachmentReference2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkAttachmentReferenceStencilLayout` that are checked at run time.
@@ -532,6 +538,7 @@ pub fn check_render_pass_create_info2(
     crate::checks::chain(
         v.p_next,
         s,
+        None,
         Some("VUID-VkRenderPassCreateInfo2-sType-unique"),
     )?;
     Ok(())
@@ -724,7 +731,12 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSubpassDependency2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSubpassDependency2-pNext-pNext"),
+        Some("VUID-VkSubpassDependency2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSubpassDescription2` that are checked at run time.
@@ -961,7 +973,12 @@ pub fn check_subpass_description2(
             s,
         )?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSubpassDescription2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSubpassDescription2-pNext-pNext"),
+        Some("VUID-VkSubpassDescription2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkSubpassDescriptionDepthStencilResolve` that are checked at run time.
@@ -980,6 +997,6 @@ pub fn check_subpass_description_depth_stencil_resolve(
 }
 ///The rules of `VkSubpassEndInfo` that are checked at run time.
 pub fn check_subpass_end_info(v: &vk::SubpassEndInfo<'_>, s: &Scope<'_>) -> Result<()> {
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSubpassEndInfo-sType-unique"))?;
+    crate::checks::chain(v.p_next, s, None, Some("VUID-VkSubpassEndInfo-sType-unique"))?;
     Ok(())
 }

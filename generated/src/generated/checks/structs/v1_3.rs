@@ -549,7 +549,12 @@ pub fn check_buffer_image_copy2(
         );
     }
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkBufferImageCopy2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkBufferImageCopy2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkBufferMemoryBarrier2` that are checked at run time.
@@ -2556,7 +2561,7 @@ pub fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkImageBlit2-sType-unique"))?;
+    crate::checks::chain(v.p_next, s, None, Some("VUID-VkImageBlit2-sType-unique"))?;
     Ok(())
 }
 ///The rules of `VkImageCopy2` that are checked at run time.
@@ -3254,7 +3259,12 @@ pub fn check_image_memory_barrier2(
         );
     }
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    crate::checks::chain(v.p_next, s, Some("VUID-VkImageMemoryBarrier2-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        None,
+        Some("VUID-VkImageMemoryBarrier2-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkImageResolve2` that are checked at run time.
@@ -3917,7 +3927,12 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
             s,
         )?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkRenderingInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkRenderingInfo-pNext-pNext"),
+        Some("VUID-VkRenderingInfo-sType-unique"),
+    )?;
     Ok(())
 }
 ///The rules of `VkResolveImageInfo2` that are checked at run time.
@@ -4430,7 +4445,7 @@ pub fn check_submit_info2(v: &vk::SubmitInfo2<'_>, s: &Scope<'_>) -> Result<()> 
     } {
         crate::checks::check_semaphore_submit_info(e, s)?;
     }
-    crate::checks::chain(v.p_next, s, Some("VUID-VkSubmitInfo2-sType-unique"))?;
+    crate::checks::chain(v.p_next, s, None, Some("VUID-VkSubmitInfo2-sType-unique"))?;
     Ok(())
 }
 ///The rules of `VkWriteDescriptorSetInlineUniformBlock` that are checked at run time.
