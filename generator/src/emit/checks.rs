@@ -177,8 +177,9 @@ fn chain_fn(checker: &Checker, origins: &Origins) -> TokenStream {
                     let i = Literal::u16_unsuffixed(*i);
                     quote!(s.exts.has(#i))
                 });
-                match idx.len() {
-                    1 => quote!(#(#has)*),
+                match (idx.len(), sets.len()) {
+                    (1, _) => quote!(#(#has)*),
+                    (_, 1) => quote!(#(#has)&&*),
                     _ => quote!((#(#has)&&*)),
                 }
             })

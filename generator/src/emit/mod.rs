@@ -19,7 +19,7 @@ use crate::model::Model;
 use crate::names;
 use crate::plan::{Plans, Settlement};
 use proc_macro2::TokenStream;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
 /// One file of the output, relative to the output folder.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -137,36 +137,36 @@ fn module_title(module: &str) -> String {
 /// The `cfg` of a whole extension module: its feature, when every item in it (named
 /// by `items`) exists only with that extension, so the module is empty without it.
 fn module_cfg(model: &Model, module: &str, items: &[String]) -> Option<TokenStream> {
-    let Some(ext) = model
+    let ext = model
         .enabled
         .iter()
-        .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module)
-    else {
-        // A module of no emitted extension (the items an extension's interaction
-        // with another adds) is gated as its items all are, if they agree.
-        let cfgs: Vec<Option<String>> = items
-            .iter()
-            .map(|i| names::cfg_of(model, model.condition(i)).map(|c| c.to_string()))
-            .collect();
-        let first = cfgs.first()?.clone()?;
-        return cfgs
-            .iter()
-            .all(|c| c.as_deref() == Some(first.as_str()))
-            .then(|| names::cfg_of(model, model.condition(&items[0])))
-            .flatten();
-    };
-    let needs_ext = |item: &String| {
-        model
-            .condition(item)
-            .expr()
-            .alternatives()
-            .iter()
-            .all(|alt| alt.names().contains(ext.as_str()))
-    };
-    items.iter().all(needs_ext).then(|| {
-        let feature = names::feature(ext);
-        quote::quote!(#[cfg(feature = #feature)])
-    })
+        .find(|e| !e.starts_with("VK_VERSION_") && names::feature(e) == module);
+    if let Some(ext) = ext {
+        let needs_ext = |item: &String| {
+            model
+                .condition(item)
+                .expr()
+                .alternatives()
+                .iter()
+                .all(|alt| alt.names().contains(ext.as_str()))
+        };
+        if items.iter().all(needs_ext) {
+            let feature = names::feature(ext);
+            return Some(quote::quote!(#[cfg(feature = #feature)]));
+        }
+    }
+    // Otherwise (a module of items an extension's interaction with another adds, or
+    // of items a promoted extension shares with its successor) the module is gated
+    // as its items all are, if they agree.
+    let cfgs: Vec<Option<String>> = items
+        .iter()
+        .map(|i| names::cfg_of(model, model.condition(i)).map(|c| c.to_string()))
+        .collect();
+    let first = cfgs.first()?.clone()?;
+    cfgs.iter()
+        .all(|c| c.as_deref() == Some(first.as_str()))
+        .then(|| names::cfg_of(model, model.condition(&items[0])))
+        .flatten()
 }
 
 /// One generated folder of modules: `dir/mod.rs` with `head` (its docs, lints and
@@ -184,11 +184,23 @@ pub(crate) fn split(
 ) -> Vec<(String, TokenStream)> {
     let mut order: Vec<&String> = modules.keys().collect();
     order.sort_by_key(|m| (!m.starts_with("v1_"), m.to_string()));
+    // A module whose items need different features, and no one feature they all
+    // share, can be empty in a build: its imports are then unused.
+    let partial = |m: &String| {
+        let names = &modules[m].0;
+        let module = module_cfg(model, m, names).map(|c| c.to_string());
+        names.iter().any(|i| {
+            let item = names::cfg_of(model, model.condition(i)).map(|c| c.to_string());
+            item.is_some() && item != module
+        })
+    };
     let decls = order.iter().map(|m| {
         let id = names::ident(m);
         let cfg = module_cfg(model, m, &modules[*m].0);
         if reexport {
-            quote::quote!(#cfg mod #id; #cfg pub use #id::*;)
+            // The folders re-exported crate-privately (`checks/structs`) may not use
+            // every item of a module, whose glob then goes unused.
+            quote::quote!(#cfg mod #id; #cfg #[allow(unused_imports)] pub use #id::*;)
         } else {
             quote::quote!(#cfg mod #id;)
         }
@@ -203,10 +215,12 @@ pub(crate) fn split(
     for m in order {
         let doc = format!("{what} of {}.", module_title(m));
         let items = &modules[m].1;
+        let allow = partial(m).then(|| quote::quote!(#[allow(unused_imports)]));
         out.push((
             format!("{dir}/{m}.rs"),
             quote::quote! {
                 #![doc = #doc]
+                #allow
                 use super::*;
                 #(#items)*
             },
@@ -315,6 +329,74 @@ pub fn emit(plans: &Plans, config: &Config) -> Emission {
     emission
 }
 
+/// The emitted extensions whose types the items of extension `ext` name (a member's
+/// or a parameter's type) where no core version defines them: `ext`'s feature
+/// turns theirs on, so that its items compile alone (`VkRayTracingPipelineCreateInfoKHR`
+/// points to `VkPipelineLibraryCreateInfoKHR`, which only `VK_KHR_pipeline_library`
+/// requires).
+fn referenced_extensions(model: &Model, ext: &str) -> Vec<String> {
+    // Items compiled whenever `ext`'s feature is on: one alternative of their
+    // condition needs `ext` and core versions alone.
+    let gated = |item: &str| {
+        let c = model.condition(item);
+        !c.is_core()
+            && c.expr()
+                .minimal_sets(&|_| None)
+                .unwrap_or_default()
+                .iter()
+                .any(|set| {
+                    set.contains(ext)
+                        && set.iter().all(|n| n == ext || n.starts_with("VK_VERSION_"))
+                })
+    };
+    let mut named: BTreeSet<&str> = BTreeSet::new();
+    for t in model
+        .types
+        .values()
+        .filter(|t| model.emitted.contains(&t.name))
+    {
+        if gated(&t.name) {
+            named.extend(t.members.iter().map(|m| m.type_name.as_str()));
+        }
+    }
+    for c in model
+        .commands
+        .values()
+        .filter(|c| model.emitted.contains(&c.name))
+    {
+        if gated(&c.name) {
+            named.extend(c.params.iter().map(|p| p.type_name.as_str()));
+        }
+    }
+    let mut out: BTreeSet<String> = BTreeSet::new();
+    for t in named {
+        if !model.emitted.contains(t) || !model.types.contains_key(t) {
+            continue;
+        }
+        let c = model.condition(t);
+        if c.is_core() {
+            continue;
+        }
+        let sets = c.expr().minimal_sets(&|_| None).unwrap_or_default();
+        // Defined by a core version, or by `ext` itself: nothing to add.
+        let free = sets
+            .iter()
+            .any(|set| set.iter().all(|n| n.starts_with("VK_VERSION_") || n == ext));
+        if free {
+            continue;
+        }
+        if let Some(smallest) = sets.iter().min_by_key(|set| set.len()) {
+            out.extend(
+                smallest
+                    .iter()
+                    .filter(|n| !n.starts_with("VK_VERSION_") && model.enabled.contains(*n))
+                    .cloned(),
+            );
+        }
+    }
+    out.into_iter().collect()
+}
+
 /// The generated crate's manifest, with one feature per extension (and the
 /// features of the extensions it depends on).
 fn cargo_toml(model: &Model) -> String {
@@ -367,7 +449,7 @@ all_extensions = ["#,
         .iter()
         .filter(|e| !e.starts_with("VK_VERSION_"))
     {
-        let deps: Vec<String> = model
+        let mut deps: Vec<String> = model
             .extension_depends
             .get(ext)
             .map(|d| {
@@ -381,6 +463,12 @@ all_extensions = ["#,
                     .collect()
             })
             .unwrap_or_default();
+        for e in referenced_extensions(model, ext) {
+            let f = format!("{:?}", names::feature(&e));
+            if !deps.contains(&f) {
+                deps.push(f);
+            }
+        }
         s.push_str(&format!(
             "{} = [{}]\n",
             names::feature(ext),

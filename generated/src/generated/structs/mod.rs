@@ -9,42 +9,54 @@ use crate::{
 use ash::vk;
 use core::marker::PhantomData;
 mod v1_0;
+#[allow(unused_imports)]
 pub use v1_0::*;
 mod v1_1;
+#[allow(unused_imports)]
 pub use v1_1::*;
 mod v1_2;
+#[allow(unused_imports)]
 pub use v1_2::*;
 mod v1_3;
+#[allow(unused_imports)]
 pub use v1_3::*;
 #[cfg(feature = "ext_debug_utils")]
 mod ext_debug_utils;
 #[cfg(feature = "ext_debug_utils")]
+#[allow(unused_imports)]
 pub use ext_debug_utils::*;
 #[cfg(feature = "ext_metal_surface")]
 mod ext_metal_surface;
 #[cfg(feature = "ext_metal_surface")]
+#[allow(unused_imports)]
 pub use ext_metal_surface::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_device_group;
 #[cfg(feature = "khr_swapchain")]
+#[allow(unused_imports)]
 pub use khr_device_group::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_swapchain;
 #[cfg(feature = "khr_swapchain")]
+#[allow(unused_imports)]
 pub use khr_swapchain::*;
 #[cfg(feature = "khr_wayland_surface")]
 mod khr_wayland_surface;
 #[cfg(feature = "khr_wayland_surface")]
+#[allow(unused_imports)]
 pub use khr_wayland_surface::*;
 #[cfg(feature = "khr_win32_surface")]
 mod khr_win32_surface;
 #[cfg(feature = "khr_win32_surface")]
+#[allow(unused_imports)]
 pub use khr_win32_surface::*;
 #[cfg(feature = "khr_xcb_surface")]
 mod khr_xcb_surface;
 #[cfg(feature = "khr_xcb_surface")]
+#[allow(unused_imports)]
 pub use khr_xcb_surface::*;
 #[cfg(feature = "khr_xlib_surface")]
 mod khr_xlib_surface;
 #[cfg(feature = "khr_xlib_surface")]
+#[allow(unused_imports)]
 pub use khr_xlib_surface::*;
