@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Compile time of the generated crate against ash alone, side by side in one run:
-# each is built (debug, default features) into its own empty target folder, so the
-# tuff figure includes building ash, tuff-runtime and their dependencies.
+# each is built (debug) into its own empty target folder, so the tuff figures
+# include building ash, tuff-runtime and their dependencies: tuff with default
+# features, then with every extension it emits.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
@@ -13,13 +14,15 @@ CARGO_TARGET_DIR="$work/ash" cargo build -q --offline -p ash
 t1=$(date +%s.%N)
 CARGO_TARGET_DIR="$work/tuff" cargo build -q --offline -p tuff
 t2=$(date +%s.%N)
-python3 - "$t0" "$t1" "$t2" <<'PY'
+CARGO_TARGET_DIR="$work/all" cargo build -q --offline -p tuff --features all_extensions
+t3=$(date +%s.%N)
+python3 - "$t0" "$t1" "$t2" "$t3" <<'PY'
 import sys
-t0, t1, t2 = map(float, sys.argv[1:])
-ash, tuff = t1 - t0, t2 - t1
-print("| build (debug, clean target) | seconds |")
-print("|---|---|")
-print(f"| ash alone | {ash:.1f} |")
-print(f"| tuff (with ash, tuff-runtime) | {tuff:.1f} |")
-print(f"| ratio tuff / ash | {tuff / ash:.2f}x |")
+t0, t1, t2, t3 = map(float, sys.argv[1:])
+ash, tuff, every = t1 - t0, t2 - t1, t3 - t2
+print("| build (debug, clean target) | seconds | ratio to ash |")
+print("|---|---|---|")
+print(f"| ash alone | {ash:.1f} | 1.00x |")
+print(f"| tuff, default features (with ash, tuff-runtime) | {tuff:.1f} | {tuff / ash:.2f}x |")
+print(f"| tuff, `--features all_extensions` | {every:.1f} | {every / ash:.2f}x |")
 PY

@@ -1,5 +1,5 @@
 //! Which extensions the safe constructors enable: over every extension ash has,
-//! enabling one never makes a method that is safe without it `unsafe`; each one
+//! emitting one never makes a method that is safe without it `unsafe`; each one
 //! refused brings an unenforced rule to a method outside it.
 
 mod common;
@@ -40,12 +40,12 @@ fn plan_for(config: &Config) -> (Safety, Refused) {
 
 #[test]
 fn enabling_every_extension_ash_has_makes_no_safe_method_unsafe() {
-    let pinned = Config::load(&Options::pinned().config).expect("pinned config");
+    let scenes = Config::load(&Options::pinned().config).expect("pinned config");
     let all = Config {
         all_extensions: true,
-        ..pinned.clone()
+        ..scenes.clone()
     };
-    let (few, refused_few) = plan_for(&pinned);
+    let (few, refused_few) = plan_for(&scenes);
     let (many, refused) = plan_for(&all);
     assert!(refused_few.is_empty(), "{refused_few:?}");
     let lost: Vec<&String> = few

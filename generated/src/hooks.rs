@@ -2496,6 +2496,23 @@ pub(crate) fn instance_extensions_emitted(create_info: &InstanceCreateInfo<'_>) 
     extensions_emitted(&create_info.enabled_extensions())
 }
 
+/// What emitted extension `ext` needs beside it: its name and the alternatives of
+/// `api_info::EXTENSION_REQUIRES` (none: it can never be enabled); `None` for an
+/// extension tuff does not emit.
+pub(crate) fn extension_requires(
+    ext: &core::ffi::CStr,
+) -> Option<(&'static str, Vec<Vec<&'static str>>)> {
+    let name = *crate::api_info::EXTENSIONS
+        .iter()
+        .find(|n| n.as_bytes() == ext.to_bytes())?;
+    let alternatives = crate::api_info::EXTENSION_REQUIRES
+        .iter()
+        .filter(|(n, _)| *n == name)
+        .map(|(_, all)| all.split('+').filter(|d| !d.is_empty()).collect())
+        .collect();
+    Some((name, alternatives))
+}
+
 /// [`instance_extensions_emitted`], then [`create_instance_checks`]: the checks
 /// `vkCreateInstance` runs before the implicit ones.
 pub(crate) fn create_instance_first(create_info: &InstanceCreateInfo<'_>) -> Result<()> {
@@ -2519,10 +2536,7 @@ pub(crate) fn create_instance_checks(create_info: &InstanceCreateInfo<'_>) -> Re
     let enabled = create_info.enabled_extensions();
     let has = |name: &str| enabled.iter().any(|e| e.to_bytes() == name.as_bytes());
     for ext in &enabled {
-        let Some((name, alternatives)) = crate::api_info::EXTENSION_REQUIRES
-            .iter()
-            .find(|(n, _)| n.as_bytes() == ext.to_bytes())
-        else {
+        let Some((name, alternatives)) = extension_requires(ext) else {
             continue;
         };
         let holds = |dep: &&str| match dep.strip_prefix("VK_VERSION_1_") {

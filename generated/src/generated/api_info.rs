@@ -33,18 +33,19 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_KHR_xlib_surface",
 ];
 
-/// What each emitted extension needs beside it (vk.xml's `depends`): any one of
-/// the alternatives, each a list of extensions enabled with it and core versions
-/// (`VK_VERSION_1_x`) the API version reaches.
-pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[
-    ("VK_EXT_debug_utils", &[&[]]),
-    ("VK_EXT_metal_surface", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_surface", &[&[]]),
-    ("VK_KHR_swapchain", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_wayland_surface", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_win32_surface", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_xcb_surface", &[&["VK_KHR_surface"]]),
-    ("VK_KHR_xlib_surface", &[&["VK_KHR_surface"]]),
+/// What each emitted extension needs beside it (vk.xml's `depends`): one row per
+/// alternative, the extensions enabled with it and core versions (`VK_VERSION_1_x`)
+/// the API version reaches, joined by `+` (empty: nothing). An extension with no
+/// row can never be enabled.
+pub const EXTENSION_REQUIRES: &[(&str, &str)] = &[
+    ("VK_EXT_debug_utils", ""),
+    ("VK_EXT_metal_surface", "VK_KHR_surface"),
+    ("VK_KHR_surface", ""),
+    ("VK_KHR_swapchain", "VK_KHR_surface"),
+    ("VK_KHR_wayland_surface", "VK_KHR_surface"),
+    ("VK_KHR_win32_surface", "VK_KHR_surface"),
+    ("VK_KHR_xcb_surface", "VK_KHR_surface"),
+    ("VK_KHR_xlib_surface", "VK_KHR_surface"),
 ];
 
 /// The members of `VkPhysicalDeviceFeatures`, in order: each is a `VkBool32`.

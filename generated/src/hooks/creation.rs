@@ -222,10 +222,7 @@ fn device_extension_requirements(
 ) -> Result<()> {
     let enabled = crate::hooks::create_device_scope(physical, create_info).exts;
     for ext in create_info.enabled_extensions() {
-        let Some((name, alternatives)) = crate::api_info::EXTENSION_REQUIRES
-            .iter()
-            .find(|(n, _)| n.as_bytes() == ext.to_bytes())
-        else {
+        let Some((name, alternatives)) = crate::hooks::extension_requires(ext) else {
             continue;
         };
         if !alternatives

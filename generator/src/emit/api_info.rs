@@ -54,34 +54,38 @@ pub(super) fn emit(
     });
 }
 
-/// What each emitted extension needs enabled beside it, from vk.xml's `depends`
-/// (or `requires`): the alternatives, each a list of names that must all hold (an
-/// extension enabled with it, or a core version `VK_VERSION_1_x` the API version
-/// reaches). An extension with no dependency has one empty alternative.
+/// What each emitted extension needs beside it, from vk.xml's `depends` (or
+/// `requires`): one row per alternative, the names that must all hold (an extension
+/// enabled with it, or a core version `VK_VERSION_1_x` the API version reaches)
+/// joined by `+`; an extension with no dependency has one empty row. The rows are
+/// laid out as rustfmt lays out a pair: on one line when the pair's contents are at
+/// most 60 characters wide, else one element per line.
 fn extension_requires(model: &Model, extensions: &[&String], s: &mut String) {
     s.push_str(
-        "\n/// What each emitted extension needs beside it (vk.xml's `depends`): any one of\n\
-         /// the alternatives, each a list of extensions enabled with it and core versions\n\
-         /// (`VK_VERSION_1_x`) the API version reaches.\n",
+        "\n/// What each emitted extension needs beside it (vk.xml's `depends`): one row per\n\
+         /// alternative, the extensions enabled with it and core versions (`VK_VERSION_1_x`)\n\
+         /// the API version reaches, joined by `+` (empty: nothing). An extension with no\n\
+         /// row can never be enabled.\n",
     );
-    s.push_str("pub const EXTENSION_REQUIRES: &[(&str, &[&[&str]])] = &[\n");
+    s.push_str("pub const EXTENSION_REQUIRES: &[(&str, &str)] = &[\n");
     for ext in extensions {
         let sets = match model.extension_depends.get(*ext) {
             // A dependency with a negation (none in any registry yet) is written as
-            // no alternative: enabling the extension is then refused, never let by.
+            // no row: enabling the extension is then refused, never let by.
             Some(depends) => {
                 crate::model::expr::minimal_sets(depends, &|_| None).unwrap_or_default()
             }
             None => vec![Default::default()],
         };
-        let alts: Vec<String> = sets
-            .iter()
-            .map(|set| {
-                let names: Vec<String> = set.iter().map(|n| format!("{n:?}")).collect();
-                format!("&[{}]", names.join(", "))
-            })
-            .collect();
-        s.push_str(&format!("    ({ext:?}, &[{}]),\n", alts.join(", ")));
+        for set in sets {
+            let names: Vec<&str> = set.iter().map(String::as_str).collect();
+            let (a, b) = (format!("{ext:?}"), format!("{:?}", names.join("+")));
+            if a.len() + b.len() + 2 <= 60 {
+                s.push_str(&format!("    ({a}, {b}),\n"));
+            } else {
+                s.push_str(&format!("    (\n        {a},\n        {b},\n    ),\n"));
+            }
+        }
     }
     s.push_str("];\n");
 }

@@ -43,6 +43,28 @@ impl Expr {
         }
     }
 
+    /// Whether the expression can hold for a program that enables some of `allowed`:
+    /// any extension may be left off (`!X` can hold while `X` is allowed), every
+    /// allowed core version is on. Names that occur twice are taken apart, which can
+    /// only answer yes more often.
+    pub fn may_hold(&self, allowed: &BTreeSet<String>) -> bool {
+        self.can(true, allowed)
+    }
+
+    fn can(&self, value: bool, allowed: &BTreeSet<String>) -> bool {
+        match (self, value) {
+            (Expr::Name(n), true) => n == "core" || allowed.contains(n),
+            // A core version the program may enable is taken as enabled: the
+            // wrappers read rules as for the newest version they emit.
+            (Expr::Name(n), false) => {
+                n != "core" && !(n.starts_with("VK_VERSION_") && allowed.contains(n))
+            }
+            (Expr::All(v), true) | (Expr::Any(v), false) => v.iter().all(|e| e.can(value, allowed)),
+            (Expr::All(v), false) | (Expr::Any(v), true) => v.iter().any(|e| e.can(value, allowed)),
+            (Expr::Not(e), _) => e.can(!value, allowed),
+        }
+    }
+
     /// The names the expression mentions.
     pub fn names(&self) -> BTreeSet<&str> {
         let mut out = BTreeSet::new();
@@ -116,6 +138,11 @@ impl Expr {
             Expr::Not(_) => return None,
         })
     }
+}
+
+/// [`Expr::may_hold`] over the text of an expression; a malformed one may hold.
+pub fn may_hold(expr: &str, allowed: &BTreeSet<String>) -> bool {
+    Expr::parse(expr).map_or(true, |e| e.may_hold(allowed))
 }
 
 /// Evaluate the text of an expression with the given names enabled; a malformed

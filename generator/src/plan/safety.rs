@@ -157,11 +157,11 @@ const REACHED_ONLY_WITH: &[(&str, &str)] = &[("-videocoding", "VK_KHR_video_queu
 
 fn reachable(cx: &Context, rule: &Rule, allowed: &std::collections::BTreeSet<String>) -> bool {
     let item = cx.model.condition(&rule.item);
-    (item.is_core() || item.expr().eval(allowed))
+    (item.is_core() || item.expr().may_hold(allowed))
         && rule
             .key
             .as_deref()
-            .is_none_or(|k| crate::model::expr::eval(k, allowed))
+            .is_none_or(|k| crate::model::expr::may_hold(k, allowed))
         && REACHED_ONLY_WITH
             .iter()
             .all(|(tail, x)| !rule.vuid.ends_with(tail) || allowed.contains(*x))

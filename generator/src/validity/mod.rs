@@ -173,7 +173,9 @@ pub fn analyze_with(
                 listed: true,
                 derived: derived_by_vuid.contains_key(e.vuid.as_str()),
                 text: e.text.trim().to_owned(),
-                key_holds: keys_informative.then(|| crate::model::expr::eval(&e.key, reach)),
+                // A rule filed under an extension's absence (`+!(X)`) applies to
+                // every program that leaves X off, whether or not X is emitted.
+                key_holds: keys_informative.then(|| crate::model::expr::may_hold(&e.key, reach)),
                 key: keys_informative.then(|| e.key.clone()),
             });
         }
