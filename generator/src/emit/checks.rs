@@ -55,6 +55,17 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     }
     let mut origins = Origins::new(model, &needs);
     origins.add(gated_structs(model).flat_map(|(_, names)| names.into_iter().flatten()));
+    // The extensions the keys of recognised rules name, which their checks ask the
+    // scope about.
+    origins.add(
+        checker
+            .explicit
+            .values()
+            .flatten()
+            .filter_map(|r| r.key.as_deref())
+            .filter_map(|k| crate::model::expr::Expr::parse(k).ok())
+            .flat_map(|e| e.names().into_iter().map(str::to_owned).collect::<Vec<_>>()),
+    );
     let mut values = Vec::new();
     for t in &needs {
         values.push(match model.category(t) {

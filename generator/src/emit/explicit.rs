@@ -425,19 +425,73 @@ fn level_extent(dim: &str, level: &TokenStream) -> TokenStream {
     quote!((r.extent.#d.checked_shr(#level).unwrap_or(0).max(1) as i128))
 }
 
-/// The check of one recognised rule.
+/// The check of one recognised rule, run only where the condition validusage.json
+/// files it under holds with what the scope enables (a rule for a program without
+/// an extension, and its sibling for one with it, are each checked where they
+/// apply).
 pub fn render(r: &Recognised) -> TokenStream {
+    let key = r
+        .key
+        .as_deref()
+        .and_then(|k| crate::model::expr::Expr::parse(k).ok());
+    match (key, &r.check.each) {
+        // A rule about each element: the loop runs only where the rule applies.
+        (Some(e), Some(_)) => {
+            let check = render_check(r, None);
+            let gate = match &e {
+                crate::model::expr::Expr::All(v) => {
+                    let v = v.iter().map(key_gate);
+                    quote!(#(#v)&&*)
+                }
+                crate::model::expr::Expr::Any(v) => {
+                    let v = v.iter().map(key_gate);
+                    quote!(#(#v)||*)
+                }
+                e => key_gate(e),
+            };
+            quote!(if #gate { #check })
+        }
+        // Otherwise the condition joins the check's own.
+        (Some(e), None) => render_check(r, Some(key_gate(&e))),
+        (None, _) => render_check(r, None),
+    }
+}
+
+/// An expression of validusage.json's key syntax over what the scope enables.
+fn key_gate(e: &crate::model::expr::Expr) -> TokenStream {
+    use crate::model::expr::Expr;
+    match e {
+        Expr::Name(n) if n == "core" => quote!(true),
+        Expr::Name(n) => quote!(s.exts.named(#n)),
+        Expr::All(v) => {
+            let v = v.iter().map(key_gate);
+            quote!((#(#v)&&*))
+        }
+        Expr::Any(v) => {
+            let v = v.iter().map(key_gate);
+            quote!((#(#v)||*))
+        }
+        Expr::Not(e) => {
+            let e = key_gate(e);
+            quote!(!(#e))
+        }
+    }
+}
+
+fn render_check(r: &Recognised, gate: Option<TokenStream>) -> TokenStream {
     let Check { when, must, each } = &r.check;
     let vuid = &r.vuid;
     let broken = match must {
         // Alone in the condition, a conjunction's negation needs no parentheses.
-        Pred::All(ps) if when.is_empty() => {
+        Pred::All(ps) if when.is_empty() && gate.is_none() => {
             let each = ps.iter().map(|p| pred(p, true, r.on_command));
             quote!(#(#each)||*)
         }
         _ => pred(must, true, r.on_command),
     };
-    let when = when.iter().map(|p| pred(p, false, r.on_command));
+    let when = gate
+        .into_iter()
+        .chain(when.iter().map(|p| pred(p, false, r.on_command)));
     let members = r.check.members();
     // An element's member is shown with its index: `pRegions[2].srcOffset.x`.
     let shown = members

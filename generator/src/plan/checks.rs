@@ -225,7 +225,7 @@ impl Check {
     /// or which objects the device and instance own.
     pub fn uses_scope(&self) -> bool {
         if let CheckKind::Explicit(r) = &self.kind {
-            return r.check.reads_device();
+            return r.check.reads_device() || r.key.is_some();
         }
         !matches!(
             self.kind,

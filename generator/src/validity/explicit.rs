@@ -28,6 +28,9 @@ pub struct Recognised {
     pub on_command: bool,
     /// What the rule asks.
     pub check: Check,
+    /// The condition validusage.json files the rule under, where it names an
+    /// extension: the check runs only where that condition holds.
+    pub key: Option<String>,
 }
 
 /// A rule as a check: when every `when` holds, `must` must hold (for each element
@@ -513,6 +516,13 @@ pub fn recognise(
                 text: text.clone(),
                 on_command: model.commands.contains_key(&rule.item),
                 check,
+                key: rule.key.clone().filter(|k| {
+                    crate::model::expr::Expr::parse(k).is_ok_and(|e| {
+                        e.names()
+                            .iter()
+                            .any(|n| *n != "core" && !n.starts_with("VK_VERSION_"))
+                    })
+                }),
             });
         }
     }

@@ -19,7 +19,7 @@ pub(crate) use structs::*;
 pub(crate) use values::*;
 /// Names of the versions and extensions that define enum values: the
 /// versions first, in order, then the extensions.
-const ORIGINS: [&str; 149usize] = [
+const ORIGINS: [&str; 154usize] = [
     "VK_VERSION_1_0",
     "VK_VERSION_1_1",
     "VK_VERSION_1_2",
@@ -169,6 +169,11 @@ const ORIGINS: [&str; 149usize] = [
     "VK_KHR_vulkan_memory_model",
     "VK_KHR_zero_initialize_workgroup_memory",
     "VK_EXT_pipeline_creation_feedback",
+    "VK_KHR_create_renderpass2",
+    "VK_KHR_copy_commands2",
+    "VK_EXT_depth_range_unrestricted",
+    "VK_AMD_negative_viewport_height",
+    "VK_KHR_draw_indirect_count",
 ];
 /// The minor version of each leading version entry of `ORIGINS`.
 const VERSION_MINORS: [u32; 4usize] = [0u32, 1u32, 2u32, 3u32];

@@ -493,6 +493,7 @@ impl<'c, S: State> Recorder<'c, S> {
         min_depth_bounds: f32,
         max_depth_bounds: f32,
     ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -505,8 +506,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
-            || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0
+        if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+            && ((min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
+                || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0)
         {
             return Err(
                 fail(
@@ -518,8 +520,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
-            || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0
+        if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+            && ((max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
+                || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0)
         {
             return Err(
                 fail(
@@ -889,7 +892,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) && matches!(pipeline_stage.as_raw(), 0)
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+            && matches!(pipeline_stage.as_raw(), 0)
         {
             return Err(
                 fail(
@@ -1386,7 +1391,9 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(src_image_layout.as_raw(), 1 | 6)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdBlitImage-srcImageLayout-00222",
@@ -1397,7 +1404,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(dst_image_layout.as_raw(), 1 | 7)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdBlitImage-dstImageLayout-00227",
@@ -1516,7 +1525,9 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !matches!(image_layout.as_raw(), 1 | 7) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(image_layout.as_raw(), 1 | 7)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdClearColorImage-imageLayout-00005",
@@ -1896,7 +1907,9 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(dst_image_layout.as_raw(), 1 | 7)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181",
@@ -2354,47 +2367,55 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        for (i, e) in regions.iter().enumerate() {
-            if s
-                .image(src_image.raw())
-                .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-                && s
-                    .image(dst_image.raw())
-                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-                && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
-            {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcImage-01791",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.extent.depth, i, e.src_subresource.layer_count
-                        ),
-                    ),
-                );
-            }
-        }
-        for (i, e) in regions.iter().enumerate() {
-            if s
-                .image(dst_image.raw())
-                .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-                && s
+        if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1") {
+            for (i, e) in regions.iter().enumerate() {
+                if s
                     .image(src_image.raw())
-                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-                && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
-            {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstImage-01792",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.extent.depth, i, e.dst_subresource.layer_count
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                    && s
+                        .image(dst_image.raw())
+                        .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                    && (e.extent.depth as i128)
+                        != (e.src_subresource.layer_count as i128)
+                {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-srcImage-01791",
+                            format!(
+                                "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                                i, e.extent.depth, i, e.src_subresource.layer_count
+                            ),
                         ),
-                    ),
-                );
+                    );
+                }
             }
         }
-        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+        if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1") {
+            for (i, e) in regions.iter().enumerate() {
+                if s
+                    .image(dst_image.raw())
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                    && s
+                        .image(src_image.raw())
+                        .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                    && (e.extent.depth as i128)
+                        != (e.dst_subresource.layer_count as i128)
+                {
+                    return Err(
+                        fail(
+                            "VUID-vkCmdCopyImage-dstImage-01792",
+                            format!(
+                                "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                                i, e.extent.depth, i, e.dst_subresource.layer_count
+                            ),
+                        ),
+                    );
+                }
+            }
+        }
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(src_image_layout.as_raw(), 1 | 6)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImage-srcImageLayout-00129",
@@ -2405,7 +2426,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(dst_image_layout.as_raw(), 1 | 7)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImage-dstImageLayout-00134",
@@ -2636,7 +2659,9 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(src_image_layout.as_raw(), 1 | 6)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190",
@@ -3428,7 +3453,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !matches!(src_image_layout.as_raw(), 1 | 6) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(src_image_layout.as_raw(), 1 | 6)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResolveImage-srcImageLayout-00261",
@@ -3439,7 +3466,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !matches!(dst_image_layout.as_raw(), 1 | 7) {
+        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+            && !matches!(dst_image_layout.as_raw(), 1 | 7)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResolveImage-dstImageLayout-00263",

@@ -56,7 +56,10 @@ impl Device {
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if !s.feature(|f| f.v11.sampler_ycbcr_conversion) {
+        if (s.exts.named("VK_VERSION_1_1")
+            || s.exts.named("VK_KHR_sampler_ycbcr_conversion"))
+            && !s.feature(|f| f.v11.sampler_ycbcr_conversion)
+        {
             return Err(
                 fail(
                     "VUID-vkCreateSamplerYcbcrConversion-None-01648",

@@ -23,11 +23,12 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if s
-            .limits()
-            .is_some_and(|l| {
-                (base_group_x as i128) >= (l.max_compute_work_group_count[0] as i128)
-            })
+        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_x as i128) >= (l.max_compute_work_group_count[0] as i128)
+                })
         {
             return Err(
                 fail(
@@ -39,11 +40,12 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if s
-            .limits()
-            .is_some_and(|l| {
-                (base_group_y as i128) >= (l.max_compute_work_group_count[1] as i128)
-            })
+        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_y as i128) >= (l.max_compute_work_group_count[1] as i128)
+                })
         {
             return Err(
                 fail(
@@ -55,11 +57,12 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if s
-            .limits()
-            .is_some_and(|l| {
-                (base_group_z as i128) >= (l.max_compute_work_group_count[2] as i128)
-            })
+        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_z as i128) >= (l.max_compute_work_group_count[2] as i128)
+                })
         {
             return Err(
                 fail(
@@ -77,6 +80,7 @@ impl<'c> Recorder<'c, Outside> {
 impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
     pub(crate) fn validate_cmd_set_device_mask(&self, device_mask: u32) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
@@ -89,7 +93,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if device_mask == 0 {
+        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+            && device_mask == 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdSetDeviceMask-deviceMask-00109",

@@ -15,7 +15,12 @@ impl Device {
     ///The dynamic checks of [`Self::get_buffer_device_address`], run before the call.
     pub(crate) fn validate_get_buffer_device_address(&self) -> Result<()> {
         let s = &self.scope();
-        if !s.feature(|f| f.v12.buffer_device_address) {
+        if ((s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_EXT_buffer_device_address")
+            || s.exts.named("VK_KHR_buffer_device_address"))
+            && !(s.exts.named("VK_EXT_buffer_device_address")))
+            && !s.feature(|f| f.v12.buffer_device_address)
+        {
             return Err(
                 fail(
                     "VUID-vkGetBufferDeviceAddress-None-06542",
@@ -28,7 +33,10 @@ impl Device {
     ///The dynamic checks of [`Self::get_buffer_opaque_capture_address`], run before the call.
     pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
         let s = &self.scope();
-        if !s.feature(|f| f.v12.buffer_device_address) {
+        if (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_buffer_device_address"))
+            && !s.feature(|f| f.v12.buffer_device_address)
+        {
             return Err(
                 fail(
                     "VUID-vkGetBufferOpaqueCaptureAddress-None-03326",
@@ -43,7 +51,10 @@ impl Device {
         &self,
     ) -> Result<()> {
         let s = &self.scope();
-        if !s.feature(|f| f.v12.buffer_device_address) {
+        if (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_buffer_device_address"))
+            && !s.feature(|f| f.v12.buffer_device_address)
+        {
             return Err(
                 fail(
                     "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334",
@@ -83,7 +94,9 @@ impl Device {
                 ),
             );
         }
-        if !s.feature(|f| f.v12.host_query_reset) {
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_host_query_reset"))
+            && !s.feature(|f| f.v12.host_query_reset)
+        {
             return Err(
                 fail(
                     "VUID-vkResetQueryPool-None-02665",

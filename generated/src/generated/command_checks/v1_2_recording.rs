@@ -75,9 +75,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(buffer.raw())
+                .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
             return Err(
                 fail(
@@ -87,9 +88,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(buffer.raw())
+                .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
             return Err(
                 fail(
@@ -99,7 +101,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if offset % 4 != 0 {
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && offset % 4 != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirectCount-offset-02710",
@@ -109,9 +113,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(count_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(count_buffer.raw())
+                .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
             return Err(
                 fail(
@@ -121,9 +126,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(count_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(count_buffer.raw())
+                .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
             return Err(
                 fail(
@@ -133,7 +139,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if count_buffer_offset % 4 != 0 {
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && count_buffer_offset % 4 != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716",
@@ -185,9 +193,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(buffer.raw())
+                .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
             return Err(
                 fail(
@@ -197,9 +206,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(buffer.raw())
+                .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
             return Err(
                 fail(
@@ -209,7 +219,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if offset % 4 != 0 {
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && offset % 4 != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirectCount-offset-02710",
@@ -219,9 +231,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(count_buffer.raw())
-            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(count_buffer.raw())
+                .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
             return Err(
                 fail(
@@ -231,9 +244,10 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if s
-            .buffer(count_buffer.raw())
-            .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && s
+                .buffer(count_buffer.raw())
+                .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
             return Err(
                 fail(
@@ -243,7 +257,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if count_buffer_offset % 4 != 0 {
+        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+            && count_buffer_offset % 4 != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdDrawIndirectCount-countBufferOffset-02716",

@@ -9,7 +9,9 @@ impl Device {
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if !s.feature(|f| f.v13.private_data) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_private_data"))
+            && !s.feature(|f| f.v13.private_data)
+        {
             return Err(
                 fail(
                     "VUID-vkCreatePrivateDataSlot-privateData-04564",
@@ -113,7 +115,9 @@ impl Queue {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkQueueSubmit2-synchronization2-03866",

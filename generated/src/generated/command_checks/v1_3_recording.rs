@@ -21,7 +21,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.dynamic_rendering) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_dynamic_rendering"))
+            && !s.feature(|f| f.v13.dynamic_rendering)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdBeginRendering-dynamicRendering-06446",
@@ -170,7 +172,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-stageMask-03929",
@@ -181,7 +185,10 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v10.tessellation_shader)
+            && (stage_mask.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-stageMask-03930",
@@ -192,7 +199,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-synchronization2-03829",
@@ -200,7 +209,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (stage_mask.as_raw() & 16384) != 0 {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && (stage_mask.as_raw() & 16384) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdResetEvent2-stageMask-03830",
@@ -262,7 +273,9 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdSetEvent2-synchronization2-03824",
@@ -313,11 +326,13 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
-        if s
-            .limits()
-            .is_some_and(|l| {
-                (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
-            })
+        if (s.exts.named("VK_VERSION_1_3")
+            || s.exts.named("VK_EXT_extended_dynamic_state"))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
+                })
         {
             return Err(
                 fail(
@@ -349,7 +364,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
@@ -725,7 +742,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWaitEvents2-synchronization2-03836",
@@ -771,7 +790,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0 {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-stage-03929",
@@ -782,7 +803,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0 {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-stage-03930",
@@ -793,7 +816,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !s.feature(|f| f.v13.synchronization2) {
+        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
             return Err(
                 fail(
                     "VUID-vkCmdWriteTimestamp2-synchronization2-03858",

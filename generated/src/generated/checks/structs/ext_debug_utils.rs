@@ -89,7 +89,9 @@ pub fn check_debug_utils_object_name_info_ext(
         s,
         "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter",
     )?;
-    if matches!(v.object_type.as_raw(), 0) && v.object_handle == 0 {
+    if s.exts.named("VK_EXT_debug_utils") && matches!(v.object_type.as_raw(), 0)
+        && v.object_handle == 0
+    {
         return Err(
             fail(
                 "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589",
@@ -121,7 +123,7 @@ pub fn check_debug_utils_object_tag_info_ext(
             ),
         );
     }
-    if matches!(v.object_type.as_raw(), 0) {
+    if s.exts.named("VK_EXT_debug_utils") && matches!(v.object_type.as_raw(), 0) {
         return Err(
             fail(
                 "VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908",

@@ -34,7 +34,10 @@ pub fn check_acquire_next_image_info_khr(
             ),
         );
     }
-    if v.device_mask == 0 {
+    if (s.exts.named("VK_KHR_surface") && s.exts.named("VK_KHR_swapchain")
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group")))
+        && v.device_mask == 0
+    {
         return Err(
             fail(
                 "VUID-VkAcquireNextImageInfoKHR-deviceMask-01291",

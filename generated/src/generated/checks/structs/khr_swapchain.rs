@@ -117,7 +117,9 @@ pub fn check_swapchain_create_info_khr(
             ),
         );
     }
-    if matches!(v.image_sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1 {
+    if (s.exts.named("VK_KHR_surface") && s.exts.named("VK_KHR_swapchain"))
+        && matches!(v.image_sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1
+    {
         return Err(
             fail(
                 "VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01278",

@@ -190,11 +190,12 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
     {
         return Err(
             fail(
@@ -206,11 +207,12 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
     {
         return Err(
             fail(
@@ -222,7 +224,9 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -235,7 +239,9 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -248,11 +254,13 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
             fail(
@@ -264,11 +272,13 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
             fail(
@@ -280,11 +290,13 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
     {
         return Err(
             fail(
@@ -296,11 +308,13 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
     {
         return Err(
             fail(
@@ -335,7 +349,10 @@ pub fn check_attachment_reference(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts) && v.attachment != u32::MAX
+    if (s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -498,7 +515,10 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    if (v.flags.as_raw() & 16) != 0
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_buffer_device_address")
+        || s.exts.named("VK_KHR_buffer_device_address"))
+        && !(s.exts.named("VK_EXT_buffer_device_address")))
+        && (v.flags.as_raw() & 16) != 0
         && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
     {
         return Err(
@@ -725,10 +745,11 @@ pub fn check_clear_attachment(v: &vk::ClearAttachment, s: &Scope<'_>) -> Result<
 ///The rules of `VkClearDepthStencilValue` that are checked at run time.
 pub fn check_clear_depth_stencil_value(
     v: &vk::ClearDepthStencilValue,
-    _s: &Scope<'_>,
+    s: &Scope<'_>,
 ) -> Result<()> {
-    if (v.depth as f64).is_nan() || v.depth < 0.0 || (v.depth as f64).is_nan()
-        || v.depth > 1.0
+    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+        && ((v.depth as f64).is_nan() || v.depth < 0.0 || (v.depth as f64).is_nan()
+            || v.depth > 1.0)
     {
         return Err(
             fail(
@@ -888,7 +909,9 @@ pub fn check_compute_pipeline_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+    if (s.exts.named("VK_VERSION_1_3")
+        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+        && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
         return Err(
@@ -1057,7 +1080,9 @@ pub fn check_descriptor_pool_size(
             ),
         );
     }
-    if matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0
+    {
         return Err(
             fail(
                 "VUID-VkDescriptorPoolSize-type-02218",
@@ -1122,7 +1147,8 @@ pub fn check_descriptor_set_layout_binding(
         s,
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter",
     )?;
-    if !s.feature(|f| f.v13.inline_uniform_block)
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && !s.feature(|f| f.v13.inline_uniform_block)
         && matches!(v.descriptor_type.as_raw(), 1000138000)
     {
         return Err(
@@ -1135,7 +1161,10 @@ pub fn check_descriptor_set_layout_binding(
             ),
         );
     }
-    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && matches!(v.descriptor_type.as_raw(), 1000138000)
+        && v.descriptor_count % 4 != 0
+    {
         return Err(
             fail(
                 "VUID-VkDescriptorSetLayoutBinding-descriptorType-02209",
@@ -1442,7 +1471,9 @@ pub fn check_framebuffer_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0 {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_imageless_framebuffer"))
+        && !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0
+    {
         return Err(
             fail(
                 "VUID-VkFramebufferCreateInfo-flags-03189",
@@ -1500,7 +1531,9 @@ pub fn check_graphics_pipeline_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+    if (s.exts.named("VK_VERSION_1_3")
+        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+        && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
         return Err(
@@ -1513,7 +1546,7 @@ pub fn check_graphics_pipeline_create_info(
             ),
         );
     }
-    if v.stage_count == 0 {
+    if !(s.exts.named("VK_EXT_graphics_pipeline_library")) && v.stage_count == 0 {
         return Err(
             fail(
                 "VUID-VkGraphicsPipelineCreateInfo-stageCount-06604",
@@ -1968,7 +2001,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if matches!(v.format.as_raw(), 0) {
+    if !(s.exts.named("VK_ANDROID_external_memory_android_hardware_buffer"))
+        && matches!(v.format.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkImageCreateInfo-format-00943",
@@ -1979,7 +2014,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2) {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1"))
+        && (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2)
+    {
         return Err(
             fail(
                 "VUID-VkImageCreateInfo-flags-00950",
@@ -2001,7 +2038,9 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0 {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+        && (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0
+    {
         return Err(
             fail(
                 "VUID-VkImageCreateInfo-flags-01573",
@@ -2113,7 +2152,8 @@ pub fn check_image_memory_barrier(
             ),
         );
     }
-    if !s.feature(|f| f.v13.synchronization2)
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -2126,7 +2166,8 @@ pub fn check_image_memory_barrier(
             ),
         );
     }
-    if !s.feature(|f| f.v13.synchronization2)
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -2392,7 +2433,9 @@ pub fn check_memory_allocate_info(
     v: &vk::MemoryAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if v.allocation_size == 0 {
+    if !(s.exts.named("VK_ANDROID_external_memory_android_hardware_buffer"))
+        && v.allocation_size == 0
+    {
         return Err(
             fail(
                 "VUID-VkMemoryAllocateInfo-allocationSize-00638",
@@ -2435,7 +2478,9 @@ pub fn check_pipeline_cache_create_info(
         s,
         "VUID-VkPipelineCacheCreateInfo-flags-parameter",
     )?;
-    if !s.feature(|f| f.v13.pipeline_creation_cache_control)
+    if (s.exts.named("VK_VERSION_1_3")
+        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+        && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 1) != 0
     {
         return Err(
@@ -2798,7 +2843,9 @@ pub fn check_pipeline_rasterization_state_create_info(
             ),
         );
     }
-    if !s.feature(|f| f.v10.fill_mode_non_solid) && !matches!(v.polygon_mode.as_raw(), 0)
+    if !(s.exts.named("VK_NV_fill_rectangle"))
+        && !s.feature(|f| f.v10.fill_mode_non_solid)
+        && !matches!(v.polygon_mode.as_raw(), 0)
     {
         return Err(
             fail(
@@ -3680,7 +3727,9 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview"))
+        && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-dependencyFlags-02520",
@@ -3691,7 +3740,9 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview"))
+        && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency-dependencyFlags-02521",
@@ -3792,112 +3843,130 @@ pub fn check_subpass_description(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+    if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06916",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06916",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+    if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06917",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06917",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06918",
-                    format!(
-                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06918",
+                        format!(
+                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06919",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06919",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_2")
+        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06920",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06920",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    if !matches!(v.pipeline_bind_point.as_raw(), 0) {
+    if !(s.exts.named("VK_HUAWEI_subpass_shading"))
+        && !matches!(v.pipeline_bind_point.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDescription-pipelineBindPoint-00844",
@@ -4129,7 +4198,8 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (v.y as f64).is_nan()
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1")
+        || s.exts.named("VK_AMD_negative_viewport_height")) && (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
     {
         return Err(
@@ -4142,12 +4212,15 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if s
-        .limits()
-        .is_some_and(|l| {
-            (v.y as f64 + v.height as f64).is_nan()
-                || (v.y as f64 + v.height as f64) < (l.viewport_bounds_range[0] as f64)
-        })
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1")
+        || s.exts.named("VK_AMD_negative_viewport_height"))
+        && s
+            .limits()
+            .is_some_and(|l| {
+                (v.y as f64 + v.height as f64).is_nan()
+                    || (v.y as f64 + v.height as f64)
+                        < (l.viewport_bounds_range[0] as f64)
+            })
     {
         return Err(
             fail(
@@ -4159,8 +4232,9 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (v.min_depth as f64).is_nan() || v.min_depth < 0.0
-        || (v.min_depth as f64).is_nan() || v.min_depth > 1.0
+    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+        && ((v.min_depth as f64).is_nan() || v.min_depth < 0.0
+            || (v.min_depth as f64).is_nan() || v.min_depth > 1.0)
     {
         return Err(
             fail(
@@ -4172,8 +4246,9 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (v.max_depth as f64).is_nan() || v.max_depth < 0.0
-        || (v.max_depth as f64).is_nan() || v.max_depth > 1.0
+    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+        && ((v.max_depth as f64).is_nan() || v.max_depth < 0.0
+            || (v.max_depth as f64).is_nan() || v.max_depth > 1.0)
     {
         return Err(
             fail(
@@ -4226,7 +4301,10 @@ pub fn check_write_descriptor_set(
             );
         }
     }
-    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.dst_array_element % 4 != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && matches!(v.descriptor_type.as_raw(), 1000138000)
+        && v.dst_array_element % 4 != 0
+    {
         return Err(
             fail(
                 "VUID-VkWriteDescriptorSet-descriptorType-02219",
@@ -4237,7 +4315,10 @@ pub fn check_write_descriptor_set(
             ),
         );
     }
-    if matches!(v.descriptor_type.as_raw(), 1000138000) && v.descriptor_count % 4 != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && matches!(v.descriptor_type.as_raw(), 1000138000)
+        && v.descriptor_count % 4 != 0
+    {
         return Err(
             fail(
                 "VUID-VkWriteDescriptorSet-descriptorType-02220",

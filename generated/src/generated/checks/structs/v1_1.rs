@@ -157,9 +157,11 @@ pub fn check_descriptor_update_template_entry(
 ///The rules of `VkDeviceGroupCommandBufferBeginInfo` that are checked at run time.
 pub fn check_device_group_command_buffer_begin_info(
     v: &vk::DeviceGroupCommandBufferBeginInfo<'_>,
-    _s: &Scope<'_>,
+    s: &Scope<'_>,
 ) -> Result<()> {
-    if v.device_mask == 0 {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+        && v.device_mask == 0
+    {
         return Err(
             fail(
                 "VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107",
@@ -174,9 +176,11 @@ pub fn check_device_group_command_buffer_begin_info(
 ///The rules of `VkDeviceGroupRenderPassBeginInfo` that are checked at run time.
 pub fn check_device_group_render_pass_begin_info(
     v: &vk::DeviceGroupRenderPassBeginInfo<'_>,
-    _s: &Scope<'_>,
+    s: &Scope<'_>,
 ) -> Result<()> {
-    if v.device_mask == 0 {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+        && v.device_mask == 0
+    {
         return Err(
             fail(
                 "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906",
@@ -349,7 +353,9 @@ pub fn check_input_attachment_aspect_reference(
             ),
         );
     }
-    if (v.aspect_mask.as_raw() & 8) != 0 {
+    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+        && (v.aspect_mask.as_raw() & 8) != 0
+    {
         return Err(
             fail(
                 "VUID-VkInputAttachmentAspectReference-aspectMask-01964",

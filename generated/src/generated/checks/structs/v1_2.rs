@@ -52,11 +52,13 @@ pub fn check_attachment_description2(
         s,
         "VUID-VkAttachmentDescription2-finalLayout-parameter",
     )?;
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::COLOR)
-                || a.contains(vk::ImageAspectFlags::DEPTH)
-        }) && matches!(v.load_op.as_raw(), 0) && matches!(v.initial_layout.as_raw(), 0)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::COLOR)
+                    || a.contains(vk::ImageAspectFlags::DEPTH)
+            }) && matches!(v.load_op.as_raw(), 0)
+        && matches!(v.initial_layout.as_raw(), 0)
     {
         return Err(
             fail(
@@ -68,7 +70,9 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if matches!(v.final_layout.as_raw(), 0 | 8) {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && matches!(v.final_layout.as_raw(), 0 | 8)
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentDescription2-finalLayout-00843",
@@ -79,11 +83,12 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 3 | 4)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 3 | 4)
     {
         return Err(
             fail(
@@ -95,11 +100,12 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                || a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 2)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    || a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 2)
     {
         return Err(
             fail(
@@ -111,11 +117,12 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 3 | 4)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 3 | 4)
     {
         return Err(
             fail(
@@ -127,11 +134,12 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                || a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 2)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    || a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 2)
     {
         return Err(
             fail(
@@ -143,11 +151,13 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
     {
         return Err(
             fail(
@@ -159,11 +169,13 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
     {
         return Err(
             fail(
@@ -175,7 +187,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -188,7 +203,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -201,11 +219,14 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
             fail(
@@ -217,11 +238,14 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            !a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                !a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
             fail(
@@ -233,11 +257,14 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
     {
         return Err(
             fail(
@@ -249,11 +276,14 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if crate::formats::aspects(v.format)
-        .is_some_and(|a| {
-            a.contains(vk::ImageAspectFlags::DEPTH)
-                && !a.contains(vk::ImageAspectFlags::STENCIL)
-        }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && crate::formats::aspects(v.format)
+            .is_some_and(|a| {
+                a.contains(vk::ImageAspectFlags::DEPTH)
+                    && !a.contains(vk::ImageAspectFlags::STENCIL)
+            }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
     {
         return Err(
             fail(
@@ -288,10 +318,14 @@ pub fn check_attachment_description_stencil_layout(
         s,
         "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter",
     )?;
-    if matches!(
-        v.stencil_initial_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 | 1000241000
-        | 1000241001
-    ) {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && matches!(
+            v.stencil_initial_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
+            1000241000 | 1000241001
+        )
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308",
@@ -302,10 +336,14 @@ pub fn check_attachment_description_stencil_layout(
             ),
         );
     }
-    if matches!(
-        v.stencil_final_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 | 1000241000 |
-        1000241001
-    ) {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && matches!(
+            v.stencil_final_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
+            1000241000 | 1000241001
+        )
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309",
@@ -316,7 +354,11 @@ pub fn check_attachment_description_stencil_layout(
             ),
         );
     }
-    if matches!(v.stencil_final_layout.as_raw(), 0 | 8) {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && matches!(v.stencil_final_layout.as_raw(), 0 | 8)
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310",
@@ -339,7 +381,9 @@ pub fn check_attachment_reference2(
         s,
         "VUID-VkAttachmentReference2-layout-parameter",
     )?;
-    if v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002) {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentReference2-layout-03077",
@@ -350,7 +394,11 @@ pub fn check_attachment_reference2(
             ),
         );
     }
-    if !s.feature(|f| f.v12.separate_depth_stencil_layouts) && v.attachment != u32::MAX
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
+        && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
     {
         return Err(
@@ -381,10 +429,14 @@ pub fn check_attachment_reference_stencil_layout(
         s,
         "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter",
     )?;
-    if matches!(
-        v.stencil_layout.as_raw(), 0 | 2..= 4 | 8 | 1000001002 | 1000117000 | 1000117001
-        | 1000241000 | 1000241001
-    ) {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+        && matches!(
+            v.stencil_layout.as_raw(), 0 | 2..= 4 | 8 | 1000001002 | 1000117000 |
+            1000117001 | 1000241000 | 1000241001
+        )
+    {
         return Err(
             fail(
                 "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318",
@@ -491,7 +543,9 @@ pub fn check_image_stencil_usage_create_info(
             ),
         );
     }
-    if (v.stencil_usage.as_raw() & 64) != 0 && (v.stencil_usage.as_raw() & 3997471) != 0
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_separate_stencil_usage"))
+        && (v.stencil_usage.as_raw() & 64) != 0
+        && (v.stencil_usage.as_raw() & 3997471) != 0
     {
         return Err(
             fail(
@@ -565,7 +619,9 @@ pub fn check_semaphore_type_create_info(
         s,
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter",
     )?;
-    if !s.feature(|f| f.v12.timeline_semaphore) && matches!(v.semaphore_type.as_raw(), 1)
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_timeline_semaphore"))
+        && !s.feature(|f| f.v12.timeline_semaphore)
+        && matches!(v.semaphore_type.as_raw(), 1)
     {
         return Err(
             fail(
@@ -577,7 +633,9 @@ pub fn check_semaphore_type_create_info(
             ),
         );
     }
-    if matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0 {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_timeline_semaphore"))
+        && matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0
+    {
         return Err(
             fail(
                 "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279",
@@ -652,7 +710,9 @@ pub fn check_subpass_dependency2(
         s,
         "VUID-VkSubpassDependency2-dependencyFlags-parameter",
     )?;
-    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-srcStageMask-04090",
@@ -663,7 +723,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.src_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -675,7 +737,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dstStageMask-04090",
@@ -686,7 +750,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.dst_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -698,7 +764,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dependencyFlags-03090",
@@ -709,7 +777,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dependencyFlags-03091",
@@ -720,7 +790,9 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0 {
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDependency2-dependencyFlags-03092",
@@ -754,68 +826,75 @@ pub fn check_subpass_description2(
         s,
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06912",
-                    format!(
-                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06912",
+                        format!(
+                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06913",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06913",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06914",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06914",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    if s
-        .limits()
-        .is_some_and(|l| {
-            (v.color_attachment_count as i128) > (l.max_color_attachments as i128)
-        })
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && s
+            .limits()
+            .is_some_and(|l| {
+                (v.color_attachment_count as i128) > (l.max_color_attachments as i128)
+            })
     {
         return Err(
             fail(
@@ -827,112 +906,138 @@ pub fn check_subpass_description2(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06916",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06916",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06917",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06917",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_input_attachments, v.input_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06918",
-                    format!(
-                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06918",
+                        format!(
+                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06919",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06919",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_2")
+            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
     {
-        if e.attachment != u32::MAX
-            && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription2-attachment-06920",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
+            if e.attachment != u32::MAX
+                && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06920",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    if !matches!(v.pipeline_bind_point.as_raw(), 0) {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && !(s.exts.named("VK_HUAWEI_subpass_shading")))
+        && !matches!(v.pipeline_bind_point.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDescription2-pipelineBindPoint-03062",
@@ -943,7 +1048,10 @@ pub fn check_subpass_description2(
             ),
         );
     }
-    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview")))
+        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
+    {
         return Err(
             fail(
                 "VUID-VkSubpassDescription2-multiview-06558",

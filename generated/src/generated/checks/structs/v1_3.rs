@@ -41,7 +41,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
+    {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-srcImage-00219",
@@ -50,7 +52,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.src_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-srcImage-00220",
@@ -59,7 +65,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
+    {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-dstImage-00224",
@@ -68,7 +76,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.dst_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-dstImage-00225",
@@ -77,411 +89,444 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-srcSubresource-01705",
-                    format!(
-                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_subresource.mip_level
-                    ),
-                ),
-            );
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
         }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-dstSubresource-01706",
-                    format!(
-                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.base_array_layer as i128
-                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-srcSubresource-01707",
-                    format!(
-                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                        i, e.src_subresource.base_array_layer, i, e.src_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.base_array_layer as i128
-                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-dstSubresource-01708",
-                    format!(
-                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-aspectMask-00241",
-                    format!(
-                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                        i, e.src_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-aspectMask-00242",
-                    format!(
-                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                        i, e.dst_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offsets[0].x < 0 || e.src_offsets[1].x < 0
-            || s
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.src_offsets[0].x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
-            || s
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-srcSubresource-01705",
+                        format!(
+                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-dstSubresource-01706",
+                        format!(
+                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.src_offsets[1].x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.src_subresource.base_array_layer as i128
+                        + e.src_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
                 })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-srcOffset-00243",
-                    format!(
-                        "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
-                        .src_subresource.mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-srcSubresource-01707",
+                        format!(
+                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.src_subresource.base_array_layer, i, e.src_subresource
+                            .layer_count
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.base_array_layer as i128
+                        + e.dst_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-dstSubresource-01708",
+                        format!(
+                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                            .layer_count
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offsets[0].y < 0 || e.src_offsets[1].y < 0
-            || s
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
                 .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offsets[0].y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offsets[1].y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-srcOffset-00244",
-                    format!(
-                        "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
-                        .src_subresource.mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-aspectMask-00241",
+                        format!(
+                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                            i, e.src_subresource.aspect_mask
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-aspectMask-00242",
+                        format!(
+                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                            i, e.dst_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offsets[0].x < 0 || e.src_offsets[1].x < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[0].x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[1].x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-srcOffset-00243",
+                        format!(
+                            "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
+                            .src_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offsets[0].y < 0 || e.src_offsets[1].y < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[0].y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[1].y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-srcOffset-00244",
+                        format!(
+                            "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
+                            .src_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offsets[0].z < 0 || e.src_offsets[1].z < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[0].z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offsets[1].z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-srcOffset-00246",
+                        format!(
+                            "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
+                            .src_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offsets[0].x < 0 || e.dst_offsets[1].x < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[0].x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[1].x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-dstOffset-00248",
+                        format!(
+                            "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
+                            .dst_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offsets[0].y < 0 || e.dst_offsets[1].y < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[0].y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[1].y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-dstOffset-00249",
+                        format!(
+                            "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
+                            .dst_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offsets[0].z < 0 || e.dst_offsets[1].z < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[0].z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offsets[1].z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkBlitImageInfo2-dstOffset-00251",
+                        format!(
+                            "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
+                            .dst_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        if e.src_offsets[0].z < 0 || e.src_offsets[1].z < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offsets[0].z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offsets[1].z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-srcOffset-00246",
-                    format!(
-                        "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
-                        .src_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offsets[0].x < 0 || e.dst_offsets[1].x < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[0].x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[1].x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-dstOffset-00248",
-                    format!(
-                        "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
-                        .dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offsets[0].y < 0 || e.dst_offsets[1].y < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[0].y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[1].y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-dstOffset-00249",
-                    format!(
-                        "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
-                        .dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offsets[0].z < 0 || e.dst_offsets[1].z < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[0].z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offsets[1].z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkBlitImageInfo2-dstOffset-00251",
-                    format!(
-                        "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
-                        .dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-srcImageLayout-00222",
@@ -492,7 +537,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
+    {
         return Err(
             fail(
                 "VUID-VkBlitImageInfo2-dstImageLayout-00227",
@@ -515,7 +563,9 @@ pub fn check_buffer_image_copy2(
     s: &Scope<'_>,
 ) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
-    if v.image_extent.width == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.image_extent.width == 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferImageCopy2-imageExtent-06659",
@@ -526,7 +576,9 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if v.image_extent.height == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.image_extent.height == 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferImageCopy2-imageExtent-06660",
@@ -537,7 +589,9 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if v.image_extent.depth == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.image_extent.depth == 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferImageCopy2-imageExtent-06661",
@@ -582,7 +636,9 @@ pub fn check_buffer_memory_barrier2(
         s,
         "VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter",
     )?;
-    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-srcStageMask-03929",
@@ -593,7 +649,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.src_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -605,7 +663,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -618,7 +677,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -631,7 +691,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -644,7 +705,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -657,7 +719,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -670,7 +733,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -683,7 +747,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -696,7 +761,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -709,7 +775,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -722,7 +789,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -735,7 +803,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -748,7 +817,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -761,7 +831,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -774,7 +845,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -787,7 +859,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -800,7 +873,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -813,7 +887,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -826,7 +901,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-dstStageMask-03929",
@@ -837,7 +914,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.dst_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -849,7 +928,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -862,7 +942,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -875,7 +956,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -888,7 +970,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -901,7 +984,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -914,7 +998,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -927,7 +1012,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -940,7 +1026,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -953,7 +1040,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -966,7 +1054,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -979,7 +1068,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -992,7 +1082,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -1005,7 +1096,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -1018,7 +1110,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -1031,7 +1124,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -1044,7 +1138,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -1057,7 +1152,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -1070,7 +1166,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128))
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-offset-01187",
@@ -1081,7 +1179,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if v.size != u64::MAX && v.size == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && v.size != u64::MAX && v.size == 0
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-size-01188",
@@ -1092,7 +1192,8 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if v.size != u64::MAX
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && v.size != u64::MAX
         && s
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
@@ -1107,7 +1208,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkBufferMemoryBarrier2-buffer-01931",
@@ -1116,7 +1219,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -1129,7 +1234,9 @@ pub fn check_buffer_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -1177,7 +1284,9 @@ pub fn check_command_buffer_inheritance_rendering_info(
         s,
         "VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter",
     )?;
-    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_dynamic_rendering"))
+        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
+    {
         return Err(
             fail(
                 "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008",
@@ -1221,95 +1330,109 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .buffer(v.src_buffer)
-            .is_some_and(|r| (e.src_offset as i128) >= (r.size as i128))
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferInfo2-srcOffset-00113",
-                    format!(
-                        "The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer` (`pRegions[{}].srcOffset` = {:?})",
-                        i, e.src_offset
+            if s
+                .buffer(v.src_buffer)
+                .is_some_and(|r| (e.src_offset as i128) >= (r.size as i128))
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferInfo2-srcOffset-00113",
+                        format!(
+                            "The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer` (`pRegions[{}].srcOffset` = {:?})",
+                            i, e.src_offset
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .buffer(v.dst_buffer)
-            .is_some_and(|r| (e.dst_offset as i128) >= (r.size as i128))
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferInfo2-dstOffset-00114",
-                    format!(
-                        "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
-                        i, e.dst_offset
+            if s
+                .buffer(v.dst_buffer)
+                .is_some_and(|r| (e.dst_offset as i128) >= (r.size as i128))
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferInfo2-dstOffset-00114",
+                        format!(
+                            "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
+                            i, e.dst_offset
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .buffer(v.src_buffer)
-            .is_some_and(|r| (e.src_offset as i128 + e.size as i128) > (r.size as i128))
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferInfo2-size-00115",
-                    format!(
-                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset` (`pRegions[{}].srcOffset` = {:?}, `pRegions[{}].size` = {:?})",
-                        i, e.src_offset, i, e.size
+            if s
+                .buffer(v.src_buffer)
+                .is_some_and(|r| {
+                    (e.src_offset as i128 + e.size as i128) > (r.size as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferInfo2-size-00115",
+                        format!(
+                            "The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset` (`pRegions[{}].srcOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                            i, e.src_offset, i, e.size
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .buffer(v.dst_buffer)
-            .is_some_and(|r| (e.dst_offset as i128 + e.size as i128) > (r.size as i128))
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferInfo2-size-00116",
-                    format!(
-                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset` (`pRegions[{}].dstOffset` = {:?}, `pRegions[{}].size` = {:?})",
-                        i, e.dst_offset, i, e.size
+            if s
+                .buffer(v.dst_buffer)
+                .is_some_and(|r| {
+                    (e.dst_offset as i128 + e.size as i128) > (r.size as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferInfo2-size-00116",
+                        format!(
+                            "The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset` (`pRegions[{}].dstOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                            i, e.dst_offset, i, e.size
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    if s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
+    {
         return Err(
             fail(
                 "VUID-VkCopyBufferInfo2-srcBuffer-00118",
@@ -1318,7 +1441,10 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if s.buffer(v.src_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .buffer(v.src_buffer)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
             fail(
@@ -1328,7 +1454,9 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
+    {
         return Err(
             fail(
                 "VUID-VkCopyBufferInfo2-dstBuffer-00120",
@@ -1337,7 +1465,10 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if s.buffer(v.dst_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .buffer(v.dst_buffer)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
             fail(
@@ -1385,7 +1516,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
+    {
         return Err(
             fail(
                 "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174",
@@ -1394,7 +1527,10 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.buffer(v.src_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .buffer(v.src_buffer)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
             fail(
@@ -1404,7 +1540,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
+    {
         return Err(
             fail(
                 "VUID-VkCopyBufferToImageInfo2-dstImage-00177",
@@ -1413,7 +1551,11 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.dst_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkCopyBufferToImageInfo2-dstImage-00178",
@@ -1422,214 +1564,230 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701",
-                    format!(
-                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_subresource.mip_level
-                    ),
-                ),
-            );
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
         }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.image_subresource.base_array_layer as i128
-                    + e.image_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702",
-                    format!(
-                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                        i, e.image_subresource.base_array_layer, i, e.image_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.image_offset.x < 0
-            || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
-            || s
+            if s
                 .image(v.dst_image)
                 .is_some_and(|r| {
-                    (e.image_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.image_offset.x as i128 + e.image_extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-pRegions-06223",
-                    format!(
-                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.x, i, e.image_extent.width, i, e
-                        .image_subresource.mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701",
+                        format!(
+                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_subresource.mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.image_subresource.base_array_layer as i128
+                        + e.image_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702",
+                        format!(
+                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                            i, e.image_subresource.base_array_layer, i, e
+                            .image_subresource.layer_count
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.x < 0
+                || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.x as i128 + e.image_extent.width as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-pRegions-06223",
+                        format!(
+                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.x, i, e.image_extent.width, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.y < 0
+                || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.y as i128 + e.image_extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-pRegions-06224",
+                        format!(
+                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.y, i, e.image_extent.height, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.z < 0
+                || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.z as i128 + e.image_extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-imageOffset-00200",
+                        format!(
+                            "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.z, i, e.image_extent.depth, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyBufferToImageInfo2-aspectMask-00211",
+                        format!(
+                            "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                            i, e.image_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
-        if e.image_offset.y < 0
-            || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.image_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.image_offset.y as i128 + e.image_extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-pRegions-06224",
-                    format!(
-                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.y, i, e.image_extent.height, i, e
-                        .image_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.image_offset.z < 0
-            || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.image_offset.z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.image_offset.z as i128 + e.image_extent.depth as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-imageOffset-00200",
-                    format!(
-                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.z, i, e.image_extent.depth, i, e
-                        .image_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| {
-                (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyBufferToImageInfo2-aspectMask-00211",
-                    format!(
-                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
-                        i, e.image_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
         return Err(
             fail(
                 "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181",
@@ -1684,255 +1842,187 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcSubresource-01696",
-                    format!(
-                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_subresource.mip_level
-                    ),
-                ),
-            );
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
         }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstSubresource-01697",
-                    format!(
-                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.base_array_layer as i128
-                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcSubresource-01698",
-                    format!(
-                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                        i, e.src_subresource.base_array_layer, i, e.src_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.base_array_layer as i128
-                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstSubresource-01699",
-                    format!(
-                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-aspectMask-00142",
-                    format!(
-                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                        i, e.src_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0)
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-aspectMask-00143",
-                    format!(
-                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                        i, e.dst_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offset.x < 0 || (e.src_offset.x as i128 + e.extent.width as i128) < 0
-            || s
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.src_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.x as i128 + e.extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcOffset-00144",
-                    format!(
-                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                        .mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcSubresource-01696",
+                        format!(
+                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_subresource.mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offset.y < 0 || (e.src_offset.y as i128 + e.extent.height as i128) < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.y as i128 + e.extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcOffset-00145",
-                    format!(
-                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                        .mip_level
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstSubresource-01697",
+                        format!(
+                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_subresource.mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.src_subresource.base_array_layer as i128
+                        + e.src_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcSubresource-01698",
+                        format!(
+                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.src_subresource.base_array_layer, i, e.src_subresource
+                            .layer_count
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
-    {
-        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-            && (e.src_offset.z < 0
-                || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.base_array_layer as i128
+                        + e.dst_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstSubresource-01699",
+                        format!(
+                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                            .layer_count
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.src_image)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-aspectMask-00142",
+                        format!(
+                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                            i, e.src_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-aspectMask-00143",
+                        format!(
+                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                            i, e.dst_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offset.x < 0
+                || (e.src_offset.x as i128 + e.extent.width as i128) < 0
                 || s
                     .image(v.src_image)
                     .is_some_and(|r| {
-                        (e.src_offset.z as i128)
+                        (e.src_offset.x as i128)
                             > (r
                                 .extent
-                                .depth
+                                .width
                                 .checked_shr(e.src_subresource.mip_level)
                                 .unwrap_or(0)
                                 .max(1) as i128)
@@ -1940,172 +2030,184 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                 || s
                     .image(v.src_image)
                     .is_some_and(|r| {
-                        (e.src_offset.z as i128 + e.extent.depth as i128)
+                        (e.src_offset.x as i128 + e.extent.width as i128)
                             > (r
                                 .extent
-                                .depth
+                                .width
                                 .checked_shr(e.src_subresource.mip_level)
                                 .unwrap_or(0)
                                 .max(1) as i128)
-                    }))
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcOffset-00147",
-                    format!(
-                        "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                        .mip_level
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcOffset-00144",
+                        format!(
+                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                            .mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-            && e.src_offset.z != 0
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcImage-01787",
-                    format!(
-                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
-                        i, e.src_offset.z
+            if e.src_offset.y < 0
+                || (e.src_offset.y as i128 + e.extent.height as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.y as i128 + e.extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcOffset-00145",
+                        format!(
+                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                            .mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-            && e.dst_offset.z != 0
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstImage-01788",
-                    format!(
-                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
-                        i, e.dst_offset.z
+            if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.src_offset.z < 0
+                    || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
+                    || s
+                        .image(v.src_image)
+                        .is_some_and(|r| {
+                            (e.src_offset.z as i128)
+                                > (r
+                                    .extent
+                                    .depth
+                                    .checked_shr(e.src_subresource.mip_level)
+                                    .unwrap_or(0)
+                                    .max(1) as i128)
+                        })
+                    || s
+                        .image(v.src_image)
+                        .is_some_and(|r| {
+                            (e.src_offset.z as i128 + e.extent.depth as i128)
+                                > (r
+                                    .extent
+                                    .depth
+                                    .checked_shr(e.src_subresource.mip_level)
+                                    .unwrap_or(0)
+                                    .max(1) as i128)
+                        }))
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcOffset-00147",
+                        format!(
+                            "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                            .mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offset.x < 0 || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.x as i128 + e.extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstOffset-00150",
-                    format!(
-                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                        .mip_level
+            if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && e.src_offset.z != 0
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcImage-01787",
+                        format!(
+                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
+                            i, e.src_offset.z
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offset.y < 0 || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.y as i128 + e.extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstOffset-00151",
-                    format!(
-                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                        .mip_level
+            if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && e.dst_offset.z != 0
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstImage-01788",
+                        format!(
+                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
+                            i, e.dst_offset.z
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-            && (e.dst_offset.z < 0
-                || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offset.x < 0
+                || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
                 || s
                     .image(v.dst_image)
                     .is_some_and(|r| {
-                        (e.dst_offset.z as i128)
+                        (e.dst_offset.x as i128)
                             > (r
                                 .extent
-                                .depth
+                                .width
                                 .checked_shr(e.dst_subresource.mip_level)
                                 .unwrap_or(0)
                                 .max(1) as i128)
@@ -2113,72 +2215,181 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                 || s
                     .image(v.dst_image)
                     .is_some_and(|r| {
-                        (e.dst_offset.z as i128 + e.extent.depth as i128)
+                        (e.dst_offset.x as i128 + e.extent.width as i128)
                             > (r
                                 .extent
-                                .depth
+                                .width
                                 .checked_shr(e.dst_subresource.mip_level)
                                 .unwrap_or(0)
                                 .max(1) as i128)
-                    }))
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstOffset-00153",
-                    format!(
-                        "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                        .mip_level
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstOffset-00150",
+                        format!(
+                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                            .mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offset.y < 0
+                || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.y as i128 + e.extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstOffset-00151",
+                        format!(
+                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.dst_offset.z < 0
+                    || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
+                    || s
+                        .image(v.dst_image)
+                        .is_some_and(|r| {
+                            (e.dst_offset.z as i128)
+                                > (r
+                                    .extent
+                                    .depth
+                                    .checked_shr(e.dst_subresource.mip_level)
+                                    .unwrap_or(0)
+                                    .max(1) as i128)
+                        })
+                    || s
+                        .image(v.dst_image)
+                        .is_some_and(|r| {
+                            (e.dst_offset.z as i128 + e.extent.depth as i128)
+                                > (r
+                                    .extent
+                                    .depth
+                                    .checked_shr(e.dst_subresource.mip_level)
+                                    .unwrap_or(0)
+                                    .max(1) as i128)
+                        }))
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstOffset-00153",
+                        format!(
+                            "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1"))
     {
-        if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-            && s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-            && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-srcImage-01791",
-                    format!(
-                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                        i, e.extent.depth, i, e.src_subresource.layer_count
+            if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && s
+                    .image(v.dst_image)
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-srcImage-01791",
+                        format!(
+                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.src_subresource.layer_count
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1"))
     {
-        if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
-            && s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 2))
-            && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageInfo2-dstImage-01792",
-                    format!(
-                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                        i, e.extent.depth, i, e.dst_subresource.layer_count
+            if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
+                && s
+                    .image(v.src_image)
+                    .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
+                && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageInfo2-dstImage-01792",
+                        format!(
+                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.dst_subresource.layer_count
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.src_image_layout.as_raw(), 1 | 6)
+    {
         return Err(
             fail(
                 "VUID-VkCopyImageInfo2-srcImageLayout-00129",
@@ -2189,7 +2400,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
+    {
         return Err(
             fail(
                 "VUID-VkCopyImageInfo2-dstImageLayout-00134",
@@ -2242,7 +2456,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
+    {
         return Err(
             fail(
                 "VUID-VkCopyImageToBufferInfo2-srcImage-00186",
@@ -2251,7 +2467,11 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.src_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkCopyImageToBufferInfo2-srcImage-00187",
@@ -2260,7 +2480,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
+    {
         return Err(
             fail(
                 "VUID-VkCopyImageToBufferInfo2-dstBuffer-00191",
@@ -2269,7 +2491,10 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.buffer(v.dst_buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .buffer(v.dst_buffer)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
             fail(
@@ -2279,214 +2504,230 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01703",
-                    format!(
-                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_subresource.mip_level
-                    ),
-                ),
-            );
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
         }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.image_subresource.base_array_layer as i128
-                    + e.image_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704",
-                    format!(
-                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                        i, e.image_subresource.base_array_layer, i, e.image_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.image_offset.x < 0
-            || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
-            || s
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.image_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.image_offset.x as i128 + e.image_extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00197",
-                    format!(
-                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.x, i, e.image_extent.width, i, e
-                        .image_subresource.mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-imageSubresource-01703",
+                        format!(
+                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_subresource.mip_level
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.src_image)
+                .is_some_and(|r| {
+                    (e.image_subresource.base_array_layer as i128
+                        + e.image_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704",
+                        format!(
+                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                            i, e.image_subresource.base_array_layer, i, e
+                            .image_subresource.layer_count
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.x < 0
+                || (e.image_offset.x as i128 + e.image_extent.width as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.x as i128 + e.image_extent.width as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00197",
+                        format!(
+                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.x, i, e.image_extent.width, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.y < 0
+                || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.y as i128 + e.image_extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00198",
+                        format!(
+                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.y, i, e.image_extent.height, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.image_offset.z < 0
+                || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.image_offset.z as i128 + e.image_extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.image_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00200",
+                        format!(
+                            "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                            i, e.image_offset.z, i, e.image_extent.depth, i, e
+                            .image_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.src_image)
+                .and_then(|r| crate::formats::aspects(r.format))
+                .is_some_and(|a| {
+                    (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
+                        format!(
+                            "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                            i, e.image_subresource.aspect_mask
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        if e.image_offset.y < 0
-            || (e.image_offset.y as i128 + e.image_extent.height as i128) < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.image_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.image_offset.y as i128 + e.image_extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00198",
-                    format!(
-                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.y, i, e.image_extent.height, i, e
-                        .image_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.image_offset.z < 0
-            || (e.image_offset.z as i128 + e.image_extent.depth as i128) < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.image_offset.z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.image_offset.z as i128 + e.image_extent.depth as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.image_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00200",
-                    format!(
-                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                        i, e.image_offset.z, i, e.image_extent.depth, i, e
-                        .image_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .and_then(|r| crate::formats::aspects(r.format))
-            .is_some_and(|a| {
-                (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
-                    format!(
-                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
-                        i, e.image_subresource.aspect_mask
-                    ),
-                ),
-            );
-        }
-    }
-    if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
         return Err(
             fail(
                 "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190",
@@ -2568,7 +2809,9 @@ pub fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
 pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
-    if v.extent.width == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.extent.width == 0
+    {
         return Err(
             fail(
                 "VUID-VkImageCopy2-extent-06668",
@@ -2579,7 +2822,9 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if v.extent.height == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.extent.height == 0
+    {
         return Err(
             fail(
                 "VUID-VkImageCopy2-extent-06669",
@@ -2590,7 +2835,9 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if v.extent.depth == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && v.extent.depth == 0
+    {
         return Err(
             fail(
                 "VUID-VkImageCopy2-extent-06670",
@@ -2641,7 +2888,9 @@ pub fn check_image_memory_barrier2(
         "VUID-VkImageMemoryBarrier2-newLayout-parameter",
     )?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
-    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-srcStageMask-03929",
@@ -2652,7 +2901,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.src_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -2664,7 +2915,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -2677,7 +2929,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -2690,7 +2943,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -2703,7 +2957,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -2716,7 +2971,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2729,7 +2985,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2742,7 +2999,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2755,7 +3013,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2768,7 +3027,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2781,7 +3041,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -2794,7 +3055,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -2807,7 +3069,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -2820,7 +3083,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -2833,7 +3097,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -2846,7 +3111,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -2859,7 +3125,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -2872,7 +3139,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -2885,7 +3153,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-dstStageMask-03929",
@@ -2896,7 +3166,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.dst_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -2908,7 +3180,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -2921,7 +3194,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -2934,7 +3208,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -2947,7 +3222,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -2960,7 +3236,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2973,7 +3250,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2986,7 +3264,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -2999,7 +3278,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3012,7 +3292,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3025,7 +3306,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3038,7 +3320,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3051,7 +3334,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3064,7 +3348,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3077,7 +3362,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -3090,7 +3376,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -3103,7 +3390,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3116,7 +3404,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3129,11 +3418,12 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if s
-        .image(v.image)
-        .is_some_and(|r| {
-            (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
-        })
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
+            })
     {
         return Err(
             fail(
@@ -3145,7 +3435,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if v.subresource_range.level_count != u32::MAX
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && v.subresource_range.level_count != u32::MAX
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -3163,11 +3454,13 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if s
-        .image(v.image)
-        .is_some_and(|r| {
-            (v.subresource_range.base_array_layer as i128) >= (r.array_layers as i128)
-        })
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && s
+            .image(v.image)
+            .is_some_and(|r| {
+                (v.subresource_range.base_array_layer as i128)
+                    >= (r.array_layers as i128)
+            })
     {
         return Err(
             fail(
@@ -3179,7 +3472,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if v.subresource_range.layer_count != u32::MAX
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && v.subresource_range.layer_count != u32::MAX
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -3197,7 +3491,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkImageMemoryBarrier2-image-01932",
@@ -3206,7 +3502,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -3219,7 +3517,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -3232,7 +3532,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v13.synchronization2)
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2")))
+        && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -3245,7 +3547,9 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if !s.feature(|f| f.v13.synchronization2)
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2")))
+        && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -3297,7 +3601,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         s,
         "VUID-VkMemoryBarrier2-dstAccessMask-parameter",
     )?;
-    if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-srcStageMask-03929",
@@ -3308,7 +3614,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.src_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -3320,7 +3628,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -3333,7 +3642,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -3346,7 +3656,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -3359,7 +3670,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -3372,7 +3684,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3385,7 +3698,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3398,7 +3712,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3411,7 +3726,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3424,7 +3740,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3437,7 +3754,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3450,7 +3768,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3463,7 +3782,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3476,7 +3796,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3489,7 +3810,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -3502,7 +3824,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -3515,7 +3838,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3528,7 +3852,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3541,7 +3866,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkMemoryBarrier2-dstStageMask-03929",
@@ -3552,7 +3879,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader)
+        && (v.dst_stage_mask.as_raw() & 48) != 0
     {
         return Err(
             fail(
@@ -3564,7 +3893,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
         return Err(
@@ -3577,7 +3907,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
         return Err(
@@ -3590,7 +3921,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
         return Err(
@@ -3603,7 +3935,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
         return Err(
@@ -3616,7 +3949,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3629,7 +3963,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4294967296) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3642,7 +3977,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8589934592) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3655,7 +3991,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 17179869184) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3668,7 +4005,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 64) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
         return Err(
@@ -3681,7 +4019,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 128) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3694,7 +4033,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 256) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
         return Err(
@@ -3707,7 +4047,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 512) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3720,7 +4061,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 1024) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
         return Err(
@@ -3733,7 +4075,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 2048) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
         return Err(
@@ -3746,7 +4089,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 4096) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
         return Err(
@@ -3759,7 +4103,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 8192) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3772,7 +4117,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 16384) != 0
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
         return Err(
@@ -3785,7 +4131,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.src_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -3798,7 +4146,9 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
             ),
         );
     }
-    if (v.dst_access_mask.as_raw() & 32) != 0
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !(s.exts.named("VK_EXT_opacity_micromap")))
+        && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
         return Err(
@@ -3887,7 +4237,9 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         s,
         "VUID-VkRenderingInfo-flags-parameter",
     )?;
-    if v.view_mask == 0 && v.layer_count == 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_dynamic_rendering"))
+        && v.view_mask == 0 && v.layer_count == 0
+    {
         return Err(
             fail(
                 "VUID-VkRenderingInfo-viewMask-06069",
@@ -3898,7 +4250,9 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
             ),
         );
     }
-    if !s.feature(|f| f.v11.multiview) && v.view_mask != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_dynamic_rendering"))
+        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
+    {
         return Err(
             fail(
                 "VUID-VkRenderingInfo-multiview-06127",
@@ -3976,7 +4330,11 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if s.image(v.src_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.src_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-srcImage-00256",
@@ -3985,7 +4343,11 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s
+            .image(v.dst_image)
+            .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
+    {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-dstImage-00258",
@@ -3994,365 +4356,395 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-srcSubresource-01709",
-                    format!(
-                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_subresource.mip_level
-                    ),
-                ),
-            );
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
         }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
-            })
+            .iter()
+            .enumerate()
         {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-dstSubresource-01710",
-                    format!(
-                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_subresource.mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.src_image)
-            .is_some_and(|r| {
-                (e.src_subresource.base_array_layer as i128
-                    + e.src_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-srcSubresource-01711",
-                    format!(
-                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                        i, e.src_subresource.base_array_layer, i, e.src_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if s
-            .image(v.dst_image)
-            .is_some_and(|r| {
-                (e.dst_subresource.base_array_layer as i128
-                    + e.dst_subresource.layer_count as i128) > (r.array_layers as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-dstSubresource-01712",
-                    format!(
-                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                        .layer_count
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offset.x < 0 || (e.src_offset.x as i128 + e.extent.width as i128) < 0
-            || s
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.src_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
-            || s
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-srcSubresource-01709",
+                        format!(
+                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-dstSubresource-01710",
+                        format!(
+                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_subresource.mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
                 .image(v.src_image)
                 .is_some_and(|r| {
-                    (e.src_offset.x as i128 + e.extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
+                    (e.src_subresource.base_array_layer as i128
+                        + e.src_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
                 })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-srcOffset-00269",
-                    format!(
-                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                        .mip_level
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-srcSubresource-01711",
+                        format!(
+                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.src_subresource.base_array_layer, i, e.src_subresource
+                            .layer_count
+                        ),
                     ),
-                ),
-            );
+                );
+            }
         }
     }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if s
+                .image(v.dst_image)
+                .is_some_and(|r| {
+                    (e.dst_subresource.base_array_layer as i128
+                        + e.dst_subresource.layer_count as i128)
+                        > (r.array_layers as i128)
+                })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-dstSubresource-01712",
+                        format!(
+                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                            .layer_count
+                        ),
+                    ),
+                );
+            }
+        }
     }
-        .iter()
-        .enumerate()
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offset.x < 0
+                || (e.src_offset.x as i128 + e.extent.width as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.x as i128 + e.extent.width as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-srcOffset-00269",
+                        format!(
+                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offset.y < 0
+                || (e.src_offset.y as i128 + e.extent.height as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.y as i128 + e.extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-srcOffset-00270",
+                        format!(
+                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.src_offset.z < 0
+                || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.src_image)
+                    .is_some_and(|r| {
+                        (e.src_offset.z as i128 + e.extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.src_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-srcOffset-00272",
+                        format!(
+                            "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offset.x < 0
+                || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.x as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.x as i128 + e.extent.width as i128)
+                            > (r
+                                .extent
+                                .width
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-dstOffset-00274",
+                        format!(
+                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offset.y < 0
+                || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.y as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.y as i128 + e.extent.height as i128)
+                            > (r
+                                .extent
+                                .height
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-dstOffset-00275",
+                        format!(
+                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2") {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_regions, v.region_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.dst_offset.z < 0
+                || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.z as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+                || s
+                    .image(v.dst_image)
+                    .is_some_and(|r| {
+                        (e.dst_offset.z as i128 + e.extent.depth as i128)
+                            > (r
+                                .extent
+                                .depth
+                                .checked_shr(e.dst_subresource.mip_level)
+                                .unwrap_or(0)
+                                .max(1) as i128)
+                    })
+            {
+                return Err(
+                    fail(
+                        "VUID-VkResolveImageInfo2-dstOffset-00277",
+                        format!(
+                            "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                            .mip_level
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        if e.src_offset.y < 0 || (e.src_offset.y as i128 + e.extent.height as i128) < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.y as i128 + e.extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-srcOffset-00270",
-                    format!(
-                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                        .mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.src_offset.z < 0 || (e.src_offset.z as i128 + e.extent.depth as i128) < 0
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.src_image)
-                .is_some_and(|r| {
-                    (e.src_offset.z as i128 + e.extent.depth as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.src_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-srcOffset-00272",
-                    format!(
-                        "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                        .mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offset.x < 0 || (e.dst_offset.x as i128 + e.extent.width as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.x as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.x as i128 + e.extent.width as i128)
-                        > (r
-                            .extent
-                            .width
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-dstOffset-00274",
-                    format!(
-                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                        .mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offset.y < 0 || (e.dst_offset.y as i128 + e.extent.height as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.y as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.y as i128 + e.extent.height as i128)
-                        > (r
-                            .extent
-                            .height
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-dstOffset-00275",
-                    format!(
-                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                        .mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    for (i, e) in {
-        // SAFETY: the safe setter stored this array and its count.
-        unsafe { members(v.p_regions, v.region_count) }
-    }
-        .iter()
-        .enumerate()
-    {
-        if e.dst_offset.z < 0 || (e.dst_offset.z as i128 + e.extent.depth as i128) < 0
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.z as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-            || s
-                .image(v.dst_image)
-                .is_some_and(|r| {
-                    (e.dst_offset.z as i128 + e.extent.depth as i128)
-                        > (r
-                            .extent
-                            .depth
-                            .checked_shr(e.dst_subresource.mip_level)
-                            .unwrap_or(0)
-                            .max(1) as i128)
-                })
-        {
-            return Err(
-                fail(
-                    "VUID-VkResolveImageInfo2-dstOffset-00277",
-                    format!(
-                        "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                        .mip_level
-                    ),
-                ),
-            );
-        }
-    }
-    if s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1) {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-srcImage-06762",
@@ -4361,7 +4753,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
+    {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-dstImage-06764",
@@ -4370,7 +4764,10 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if !matches!(v.src_image_layout.as_raw(), 1 | 6) {
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.src_image_layout.as_raw(), 1 | 6)
+    {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-srcImageLayout-00261",
@@ -4381,7 +4778,10 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if !matches!(v.dst_image_layout.as_raw(), 1 | 7) {
+    if ((s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_copy_commands2"))
+        && !(s.exts.named("VK_KHR_shared_presentable_image")))
+        && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
+    {
         return Err(
             fail(
                 "VUID-VkResolveImageInfo2-dstImageLayout-00263",
@@ -4408,7 +4808,9 @@ pub fn check_semaphore_submit_info(
         s,
         "VUID-VkSemaphoreSubmitInfo-stageMask-parameter",
     )?;
-    if !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSemaphoreSubmitInfo-stageMask-03929",
@@ -4419,7 +4821,9 @@ pub fn check_semaphore_submit_info(
             ),
         );
     }
-    if !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        && !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0
+    {
         return Err(
             fail(
                 "VUID-VkSemaphoreSubmitInfo-stageMask-03930",
@@ -4451,7 +4855,7 @@ pub fn check_submit_info2(v: &vk::SubmitInfo2<'_>, s: &Scope<'_>) -> Result<()> 
 ///The rules of `VkWriteDescriptorSetInlineUniformBlock` that are checked at run time.
 pub fn check_write_descriptor_set_inline_uniform_block(
     v: &vk::WriteDescriptorSetInlineUniformBlock<'_>,
-    _s: &Scope<'_>,
+    s: &Scope<'_>,
 ) -> Result<()> {
     if v.data_size == 0 {
         return Err(
@@ -4461,7 +4865,9 @@ pub fn check_write_descriptor_set_inline_uniform_block(
             ),
         );
     }
-    if v.data_size % 4 != 0 {
+    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+        && v.data_size % 4 != 0
+    {
         return Err(
             fail(
                 "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222",
