@@ -182,6 +182,20 @@ impl Default for Parts {
 }
 
 impl Parts {
+    /// The parts of a pipeline of points through a geometry stage (on a device that
+    /// has the feature).
+    fn through_geometry() -> Parts {
+        Parts {
+            stages: vec![
+                vk::ShaderStageFlags::VERTEX,
+                vk::ShaderStageFlags::GEOMETRY,
+                vk::ShaderStageFlags::FRAGMENT,
+            ],
+            topology: Some(vk::PrimitiveTopology::POINT_LIST),
+            ..Parts::default()
+        }
+    }
+
     /// The parts of a pipeline with tessellation (on a device that has the feature).
     fn tessellated() -> Parts {
         Parts {
@@ -807,26 +821,20 @@ const CASES: &[Case] = &[
     Case {
         on: On::Full,
         ..case("VUID-VkGraphicsPipelineCreateInfo-Geometry-07725", |p| {
-            p.stages = vec![
-                vk::ShaderStageFlags::VERTEX,
-                vk::ShaderStageFlags::GEOMETRY,
-                vk::ShaderStageFlags::FRAGMENT,
-            ];
-            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
-            p.unsized_geometry = true;
+            *p = Parts {
+                unsized_geometry: true,
+                ..Parts::through_geometry()
+            };
         })
     },
     // The points geometry shader does not write PrimitiveId.
     Case {
         on: On::Full,
         ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00740", |p| {
-            p.stages = vec![
-                vk::ShaderStageFlags::VERTEX,
-                vk::ShaderStageFlags::GEOMETRY,
-                vk::ShaderStageFlags::FRAGMENT,
-            ];
-            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
-            p.primitive_fragment = true;
+            *p = Parts {
+                primitive_fragment: true,
+                ..Parts::through_geometry()
+            };
         })
     },
     // The test vertex shader writes nothing at location 0, which the fragment
@@ -854,13 +862,10 @@ const CASES: &[Case] = &[
         on: On::Full,
         also: &["UNASSIGNED-CoreValidation-Shader-InputNotProduced"],
         ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00742", |p| {
-            p.stages = vec![
-                vk::ShaderStageFlags::VERTEX,
-                vk::ShaderStageFlags::GEOMETRY,
-                vk::ShaderStageFlags::FRAGMENT,
-            ];
-            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
-            p.named = vec![(vk::ShaderStageFlags::GEOMETRY, "varying.geom")];
+            *p = Parts {
+                named: vec![(vk::ShaderStageFlags::GEOMETRY, "varying.geom")],
+                ..Parts::through_geometry()
+            };
         })
     },
     // A built-in output block of gl_Position alone, and the geometry stage's full
@@ -869,13 +874,10 @@ const CASES: &[Case] = &[
         on: On::Full,
         also: &["UNASSIGNED-CoreValidation-Shader-InterfaceTypeMismatch"],
         ..case("VUID-VkGraphicsPipelineCreateInfo-pStages-00742", |p| {
-            p.stages = vec![
-                vk::ShaderStageFlags::VERTEX,
-                vk::ShaderStageFlags::GEOMETRY,
-                vk::ShaderStageFlags::FRAGMENT,
-            ];
-            p.topology = Some(vk::PrimitiveTopology::POINT_LIST);
-            p.named = vec![(vk::ShaderStageFlags::VERTEX, "position_only.vert")];
+            *p = Parts {
+                named: vec![(vk::ShaderStageFlags::VERTEX, "position_only.vert")],
+                ..Parts::through_geometry()
+            };
         })
     },
     // The fragment stage reads the depth aspect of an input attachment that the
@@ -1443,18 +1445,12 @@ fn the_cases_start_from_valid_pipelines() {
         (
             &full,
             Parts {
-                stages: vec![
-                    vk::ShaderStageFlags::VERTEX,
-                    vk::ShaderStageFlags::GEOMETRY,
-                    vk::ShaderStageFlags::FRAGMENT,
-                ],
-                topology: Some(vk::PrimitiveTopology::POINT_LIST),
                 named: vec![
                     (vk::ShaderStageFlags::VERTEX, "varying.vert"),
                     (vk::ShaderStageFlags::GEOMETRY, "varying.geom"),
                     (vk::ShaderStageFlags::FRAGMENT, "varying.frag"),
                 ],
-                ..Parts::default()
+                ..Parts::through_geometry()
             },
             "a color passed through a geometry stage",
         ),

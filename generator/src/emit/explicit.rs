@@ -438,43 +438,38 @@ pub fn render(r: &Recognised) -> TokenStream {
         // A rule about each element: the loop runs only where the rule applies.
         (Some(e), Some(_)) => {
             let check = render_check(r, None);
-            let gate = match &e {
-                crate::model::expr::Expr::All(v) => {
-                    let v = v.iter().map(key_gate);
-                    quote!(#(#v)&&*)
-                }
-                crate::model::expr::Expr::Any(v) => {
-                    let v = v.iter().map(key_gate);
-                    quote!(#(#v)||*)
-                }
-                e => key_gate(e),
-            };
+            let gate = key_gate(&e, true);
             quote!(if #gate { #check })
         }
         // Otherwise the condition joins the check's own.
-        (Some(e), None) => render_check(r, Some(key_gate(&e))),
+        (Some(e), None) => render_check(r, Some(key_gate(&e, false))),
         (None, _) => render_check(r, None),
     }
 }
 
-/// An expression of validusage.json's key syntax over what the scope enables.
-fn key_gate(e: &crate::model::expr::Expr) -> TokenStream {
+/// An expression of validusage.json's key syntax over what the scope enables; a
+/// conjunction or disjunction is parenthesised unless it stands alone (`alone`).
+fn key_gate(e: &crate::model::expr::Expr, alone: bool) -> TokenStream {
     use crate::model::expr::Expr;
-    match e {
-        Expr::Name(n) if n == "core" => quote!(true),
-        Expr::Name(n) => quote!(s.exts.named(#n)),
+    let joined = match e {
+        Expr::Name(n) if n == "core" => return quote!(true),
+        Expr::Name(n) => return quote!(s.exts.named(#n)),
+        Expr::Not(e) => {
+            let e = key_gate(e, false);
+            return quote!(!(#e));
+        }
         Expr::All(v) => {
-            let v = v.iter().map(key_gate);
-            quote!((#(#v)&&*))
+            let v = v.iter().map(|e| key_gate(e, false));
+            quote!(#(#v)&&*)
         }
         Expr::Any(v) => {
-            let v = v.iter().map(key_gate);
-            quote!((#(#v)||*))
+            let v = v.iter().map(|e| key_gate(e, false));
+            quote!(#(#v)||*)
         }
-        Expr::Not(e) => {
-            let e = key_gate(e);
-            quote!(!(#e))
-        }
+    };
+    match alone {
+        true => joined,
+        false => quote!((#joined)),
     }
 }
 

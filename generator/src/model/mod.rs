@@ -405,6 +405,15 @@ impl Model {
         self.conditions.get(item).unwrap_or(&CORE)
     }
 
+    /// Whether an emitted struct that extends `name` needs more than Vulkan 1.0: a
+    /// chain of `name` may then hold a node of a version or extension not enabled.
+    pub fn has_gated_extenders(&self, name: &str) -> bool {
+        self.extended_by.get(name).is_some_and(|e| {
+            e.iter()
+                .any(|x| self.emitted.contains(x) && !self.condition(x).is_core())
+        })
+    }
+
     /// Whether an item is in the emitted API. Entities that are not registry items
     /// (SPIR-V environment rules) apply to every API that accepts shaders.
     pub fn is_emitted(&self, item: &str) -> bool {

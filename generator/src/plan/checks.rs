@@ -600,10 +600,8 @@ impl<'c, 'm> Checker<'c, 'm> {
         // A struct of a version or extension the instance or device does not enable
         // is not a valid node (the layer names it under the struct's pNext-pNext).
         let pnext_vuid = format!("VUID-{name}-pNext-pNext");
-        let gated = model.extended_by.get(name).is_some_and(|e| {
-            e.iter()
-                .any(|x| model.emitted.contains(x) && !model.condition(x).is_core())
-        }) && self.cx.validity.rules.iter().any(|r| r.vuid == pnext_vuid);
+        let gated = model.has_gated_extenders(name)
+            && self.rules_of(name).iter().any(|r| r.vuid == pnext_vuid);
         if unique.is_some() || chain_checked || gated {
             out.push(Check {
                 vuid: unique,

@@ -291,12 +291,7 @@ fn implicit(
     match (d.kind, member) {
         (K::SType, _) => Settlement::Static("the safe struct's constructor sets `sType`".into()),
         (K::PNext, Some(Member::PNext)) => {
-            let model = cx.model;
-            let gated = model.extended_by.get(&d.item).is_some_and(|e| {
-                e.iter()
-                    .any(|x| model.emitted.contains(x) && !model.condition(x).is_core())
-            });
-            Settlement::Static(match gated {
+            Settlement::Static(match cx.model.has_gated_extenders(&d.item) {
                 true => "`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs)".into(),
                 false => "`push_next` accepts only structs that implement `Extends` for the head".into(),
             })
