@@ -33,6 +33,23 @@ pub struct Loaded {
 pub fn load(dir: &Path, implicit_only: bool) -> Loaded {
     let opts = Options::pinned();
     let config = tuff_gen::config::Config::load(&opts.config).expect("pinned config");
+    load_config(dir, implicit_only, config)
+}
+
+/// As [`load`], with the pinned config's extensions list alone (the scenes' eight),
+/// not every extension.
+pub fn load_scenes(dir: &Path) -> Loaded {
+    let opts = Options::pinned();
+    let config = tuff_gen::config::Config::load(&opts.config).expect("pinned config");
+    let config = tuff_gen::config::Config {
+        all_extensions: false,
+        ..config
+    };
+    load_config(dir, false, config)
+}
+
+fn load_config(dir: &Path, implicit_only: bool, config: tuff_gen::config::Config) -> Loaded {
+    let opts = Options::pinned();
     let reg = registry::load_registry(&dir.join("vk.xml")).expect("registry loads");
     let validusage = (!implicit_only).then(|| {
         registry::load_validusage(&dir.join("validusage.json")).expect("validusage loads")

@@ -53,6 +53,19 @@ pub(crate) unsafe fn add_chained(
             |= s.buffer_device_address_capture_replay;
         f.v12.buffer_device_address_multi_device |= s.buffer_device_address_multi_device;
     } else if s_type
+        == <vk::PhysicalDeviceBufferDeviceAddressFeaturesEXT<
+            '_,
+        > as vk::TaggedStructure>::STRUCTURE_TYPE
+    {
+        // SAFETY: the sType says which struct this is.
+        let s = unsafe {
+            &*node.cast::<vk::PhysicalDeviceBufferDeviceAddressFeaturesEXT<'_>>()
+        };
+        f.v12.buffer_device_address |= s.buffer_device_address;
+        f.v12.buffer_device_address_capture_replay
+            |= s.buffer_device_address_capture_replay;
+        f.v12.buffer_device_address_multi_device |= s.buffer_device_address_multi_device;
+    } else if s_type
         == <vk::PhysicalDeviceDescriptorIndexingFeatures<
             '_,
         > as vk::TaggedStructure>::STRUCTURE_TYPE

@@ -6,6 +6,144 @@
 use crate::{support::child_handle, Entry, Handle};
 use ash::vk;
 use tuff_runtime::{Retained, Vrc, Vutex};
+///A `VkAccelerationStructureKHR`. Clones share it; the last one to go calls `vkDestroyAccelerationStructureKHR`, after every submission that used it has completed.
+#[cfg(feature = "khr_acceleration_structure")]
+#[derive(Clone)]
+pub struct AccelerationStructureKHR {
+    inner: Vrc<AccelerationStructureKHRInner>,
+}
+#[cfg(feature = "khr_acceleration_structure")]
+#[allow(dead_code)]
+struct AccelerationStructureKHRInner {
+    raw: vk::AccelerationStructureKHR,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_acceleration_structure")]
+impl AccelerationStructureKHR {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::AccelerationStructureKHR,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(AccelerationStructureKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_acceleration_structure")] AccelerationStructureKHR);
+#[cfg(feature = "khr_acceleration_structure")]
+impl Drop for AccelerationStructureKHRInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().khr_acceleration_structure.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_acceleration_structure_khr)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkAccelerationStructureNV`. Clones share it; the last one to go calls `vkDestroyAccelerationStructureNV`, after every submission that used it has completed.
+#[cfg(feature = "nv_ray_tracing")]
+#[derive(Clone)]
+pub struct AccelerationStructureNV {
+    inner: Vrc<AccelerationStructureNVInner>,
+}
+#[cfg(feature = "nv_ray_tracing")]
+#[allow(dead_code)]
+struct AccelerationStructureNVInner {
+    raw: vk::AccelerationStructureNV,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "nv_ray_tracing")]
+impl AccelerationStructureNV {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::AccelerationStructureNV,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(AccelerationStructureNVInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "nv_ray_tracing")] AccelerationStructureNV);
+#[cfg(feature = "nv_ray_tracing")]
+impl Drop for AccelerationStructureNVInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().nv_ray_tracing.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_acceleration_structure_nv)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
 ///A `VkBuffer`. Clones share it; the last one to go calls `vkDestroyBuffer`, after every submission that used it has completed.
 #[derive(Clone)]
 pub struct Buffer {
@@ -70,6 +208,75 @@ impl Drop for BufferInner {
                 .fns()
                 .fp_v1_0()
                 .destroy_buffer)(self.parent.raw(), self.raw, core::ptr::null());
+        }
+    }
+}
+///A `VkBufferCollectionFUCHSIA`. Clones share it; the last one to go calls `vkDestroyBufferCollectionFUCHSIA`, after every submission that used it has completed.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[derive(Clone)]
+pub struct BufferCollectionFUCHSIA {
+    inner: Vrc<BufferCollectionFUCHSIAInner>,
+}
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[allow(dead_code)]
+struct BufferCollectionFUCHSIAInner {
+    raw: vk::BufferCollectionFUCHSIA,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "fuchsia_buffer_collection")]
+impl BufferCollectionFUCHSIA {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::BufferCollectionFUCHSIA,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(BufferCollectionFUCHSIAInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "fuchsia_buffer_collection")] BufferCollectionFUCHSIA);
+#[cfg(feature = "fuchsia_buffer_collection")]
+impl Drop for BufferCollectionFUCHSIAInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().fuchsia_buffer_collection.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_buffer_collection_fuchsia)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
         }
     }
 }
@@ -374,6 +581,207 @@ impl Drop for CommandPoolInner {
         }
     }
 }
+///A `VkCuFunctionNVX`. Clones share it; the last one to go calls `vkDestroyCuFunctionNVX`, after every submission that used it has completed.
+#[cfg(feature = "nvx_binary_import")]
+#[derive(Clone)]
+pub struct CuFunctionNVX {
+    inner: Vrc<CuFunctionNVXInner>,
+}
+#[cfg(feature = "nvx_binary_import")]
+#[allow(dead_code)]
+struct CuFunctionNVXInner {
+    raw: vk::CuFunctionNVX,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "nvx_binary_import")]
+impl CuFunctionNVX {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::CuFunctionNVX,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(CuFunctionNVXInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "nvx_binary_import")] CuFunctionNVX);
+#[cfg(feature = "nvx_binary_import")]
+impl Drop for CuFunctionNVXInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().nvx_binary_import.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_cu_function_nvx)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkCuModuleNVX`. Clones share it; the last one to go calls `vkDestroyCuModuleNVX`, after every submission that used it has completed.
+#[cfg(feature = "nvx_binary_import")]
+#[derive(Clone)]
+pub struct CuModuleNVX {
+    inner: Vrc<CuModuleNVXInner>,
+}
+#[cfg(feature = "nvx_binary_import")]
+#[allow(dead_code)]
+struct CuModuleNVXInner {
+    raw: vk::CuModuleNVX,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "nvx_binary_import")]
+impl CuModuleNVX {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::CuModuleNVX,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(CuModuleNVXInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "nvx_binary_import")] CuModuleNVX);
+#[cfg(feature = "nvx_binary_import")]
+impl Drop for CuModuleNVXInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().nvx_binary_import.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_cu_module_nvx)(self.parent.raw(), self.raw, core::ptr::null());
+        }
+    }
+}
+///A `VkDebugReportCallbackEXT`. Clones share it; the last one to go calls `vkDestroyDebugReportCallbackEXT`, after every submission that used it has completed.
+#[cfg(feature = "ext_debug_report")]
+#[derive(Clone)]
+pub struct DebugReportCallbackEXT {
+    inner: Vrc<DebugReportCallbackEXTInner>,
+}
+#[cfg(feature = "ext_debug_report")]
+#[allow(dead_code)]
+struct DebugReportCallbackEXTInner {
+    raw: vk::DebugReportCallbackEXT,
+    parent: Instance,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "ext_debug_report")]
+impl DebugReportCallbackEXT {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::DebugReportCallbackEXT,
+        parent: &Instance,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(DebugReportCallbackEXTInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: tuff_runtime::HostSync::new(),
+            }),
+        };
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Instance {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "ext_debug_report")] DebugReportCallbackEXT);
+#[cfg(feature = "ext_debug_report")]
+impl Drop for DebugReportCallbackEXTInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().ext_debug_report.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_debug_report_callback_ext)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
 ///A `VkDebugUtilsMessengerEXT`. Clones share it; the last one to go calls `vkDestroyDebugUtilsMessengerEXT`, after every submission that used it has completed.
 #[cfg(feature = "ext_debug_utils")]
 #[derive(Clone)]
@@ -434,6 +842,75 @@ impl Drop for DebugUtilsMessengerEXTInner {
                 None => return,
             }
                 .destroy_debug_utils_messenger_ext)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkDeferredOperationKHR`. Clones share it; the last one to go calls `vkDestroyDeferredOperationKHR`, after every submission that used it has completed.
+#[cfg(feature = "khr_deferred_host_operations")]
+#[derive(Clone)]
+pub struct DeferredOperationKHR {
+    inner: Vrc<DeferredOperationKHRInner>,
+}
+#[cfg(feature = "khr_deferred_host_operations")]
+#[allow(dead_code)]
+struct DeferredOperationKHRInner {
+    raw: vk::DeferredOperationKHR,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_deferred_host_operations")]
+impl DeferredOperationKHR {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::DeferredOperationKHR,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(DeferredOperationKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_deferred_host_operations")] DeferredOperationKHR);
+#[cfg(feature = "khr_deferred_host_operations")]
+impl Drop for DeferredOperationKHRInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().khr_deferred_host_operations.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_deferred_operation_khr)(
                 self.parent.raw(),
                 self.raw,
                 core::ptr::null(),
@@ -803,12 +1280,267 @@ impl Drop for DescriptorUpdateTemplateInner {
 #[derive(Clone, Default)]
 #[allow(missing_copy_implementations)]
 pub struct DeviceExtensions {
+    #[cfg(feature = "amd_buffer_marker")]
+    ///`VK_AMD_buffer_marker`'s commands, when the extension is enabled.
+    pub amd_buffer_marker: Option<ash::amd::buffer_marker::DeviceFn>,
+    #[cfg(feature = "amd_display_native_hdr")]
+    ///`VK_AMD_display_native_hdr`'s commands, when the extension is enabled.
+    pub amd_display_native_hdr: Option<ash::amd::display_native_hdr::DeviceFn>,
+    #[cfg(feature = "amd_shader_info")]
+    ///`VK_AMD_shader_info`'s commands, when the extension is enabled.
+    pub amd_shader_info: Option<ash::amd::shader_info::DeviceFn>,
+    #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+    ///`VK_ANDROID_external_memory_android_hardware_buffer`'s commands, when the extension is enabled.
+    pub android_external_memory_android_hardware_buffer: Option<
+        ash::android::external_memory_android_hardware_buffer::DeviceFn,
+    >,
+    #[cfg(feature = "ext_calibrated_timestamps")]
+    ///`VK_EXT_calibrated_timestamps`'s commands, when the extension is enabled.
+    pub ext_calibrated_timestamps: Option<ash::ext::calibrated_timestamps::DeviceFn>,
+    #[cfg(feature = "ext_color_write_enable")]
+    ///`VK_EXT_color_write_enable`'s commands, when the extension is enabled.
+    pub ext_color_write_enable: Option<ash::ext::color_write_enable::DeviceFn>,
+    #[cfg(feature = "ext_conditional_rendering")]
+    ///`VK_EXT_conditional_rendering`'s commands, when the extension is enabled.
+    pub ext_conditional_rendering: Option<ash::ext::conditional_rendering::DeviceFn>,
+    #[cfg(feature = "ext_debug_marker")]
+    ///`VK_EXT_debug_marker`'s commands, when the extension is enabled.
+    pub ext_debug_marker: Option<ash::ext::debug_marker::DeviceFn>,
     #[cfg(feature = "ext_debug_utils")]
     ///`VK_EXT_debug_utils`'s commands, when the extension is enabled.
     pub ext_debug_utils: Option<ash::ext::debug_utils::DeviceFn>,
+    #[cfg(feature = "ext_descriptor_buffer")]
+    ///`VK_EXT_descriptor_buffer`'s commands, when the extension is enabled.
+    pub ext_descriptor_buffer: Option<ash::ext::descriptor_buffer::DeviceFn>,
+    #[cfg(feature = "ext_discard_rectangles")]
+    ///`VK_EXT_discard_rectangles`'s commands, when the extension is enabled.
+    pub ext_discard_rectangles: Option<ash::ext::discard_rectangles::DeviceFn>,
+    #[cfg(feature = "ext_display_control")]
+    ///`VK_EXT_display_control`'s commands, when the extension is enabled.
+    pub ext_display_control: Option<ash::ext::display_control::DeviceFn>,
+    #[cfg(feature = "ext_extended_dynamic_state2")]
+    ///`VK_EXT_extended_dynamic_state2`'s commands, when the extension is enabled.
+    pub ext_extended_dynamic_state2: Option<ash::ext::extended_dynamic_state2::DeviceFn>,
+    #[cfg(feature = "ext_extended_dynamic_state3")]
+    ///`VK_EXT_extended_dynamic_state3`'s commands, when the extension is enabled.
+    pub ext_extended_dynamic_state3: Option<ash::ext::extended_dynamic_state3::DeviceFn>,
+    #[cfg(feature = "ext_external_memory_host")]
+    ///`VK_EXT_external_memory_host`'s commands, when the extension is enabled.
+    pub ext_external_memory_host: Option<ash::ext::external_memory_host::DeviceFn>,
+    #[cfg(feature = "ext_full_screen_exclusive")]
+    ///`VK_EXT_full_screen_exclusive`'s commands, when the extension is enabled.
+    pub ext_full_screen_exclusive: Option<ash::ext::full_screen_exclusive::DeviceFn>,
+    #[cfg(feature = "ext_hdr_metadata")]
+    ///`VK_EXT_hdr_metadata`'s commands, when the extension is enabled.
+    pub ext_hdr_metadata: Option<ash::ext::hdr_metadata::DeviceFn>,
+    #[cfg(feature = "ext_image_compression_control")]
+    ///`VK_EXT_image_compression_control`'s commands, when the extension is enabled.
+    pub ext_image_compression_control: Option<
+        ash::ext::image_compression_control::DeviceFn,
+    >,
+    #[cfg(feature = "ext_image_drm_format_modifier")]
+    ///`VK_EXT_image_drm_format_modifier`'s commands, when the extension is enabled.
+    pub ext_image_drm_format_modifier: Option<
+        ash::ext::image_drm_format_modifier::DeviceFn,
+    >,
+    #[cfg(feature = "ext_line_rasterization")]
+    ///`VK_EXT_line_rasterization`'s commands, when the extension is enabled.
+    pub ext_line_rasterization: Option<ash::ext::line_rasterization::DeviceFn>,
+    #[cfg(feature = "ext_mesh_shader")]
+    ///`VK_EXT_mesh_shader`'s commands, when the extension is enabled.
+    pub ext_mesh_shader: Option<ash::ext::mesh_shader::DeviceFn>,
+    #[cfg(feature = "ext_metal_objects")]
+    ///`VK_EXT_metal_objects`'s commands, when the extension is enabled.
+    pub ext_metal_objects: Option<ash::ext::metal_objects::DeviceFn>,
+    #[cfg(feature = "ext_multi_draw")]
+    ///`VK_EXT_multi_draw`'s commands, when the extension is enabled.
+    pub ext_multi_draw: Option<ash::ext::multi_draw::DeviceFn>,
+    #[cfg(feature = "ext_opacity_micromap")]
+    ///`VK_EXT_opacity_micromap`'s commands, when the extension is enabled.
+    pub ext_opacity_micromap: Option<ash::ext::opacity_micromap::DeviceFn>,
+    #[cfg(feature = "ext_pageable_device_local_memory")]
+    ///`VK_EXT_pageable_device_local_memory`'s commands, when the extension is enabled.
+    pub ext_pageable_device_local_memory: Option<
+        ash::ext::pageable_device_local_memory::DeviceFn,
+    >,
+    #[cfg(feature = "ext_pipeline_properties")]
+    ///`VK_EXT_pipeline_properties`'s commands, when the extension is enabled.
+    pub ext_pipeline_properties: Option<ash::ext::pipeline_properties::DeviceFn>,
+    #[cfg(feature = "ext_sample_locations")]
+    ///`VK_EXT_sample_locations`'s commands, when the extension is enabled.
+    pub ext_sample_locations: Option<ash::ext::sample_locations::DeviceFn>,
+    #[cfg(feature = "ext_shader_module_identifier")]
+    ///`VK_EXT_shader_module_identifier`'s commands, when the extension is enabled.
+    pub ext_shader_module_identifier: Option<
+        ash::ext::shader_module_identifier::DeviceFn,
+    >,
+    #[cfg(feature = "ext_swapchain_maintenance1")]
+    ///`VK_EXT_swapchain_maintenance1`'s commands, when the extension is enabled.
+    pub ext_swapchain_maintenance1: Option<ash::ext::swapchain_maintenance1::DeviceFn>,
+    #[cfg(feature = "ext_transform_feedback")]
+    ///`VK_EXT_transform_feedback`'s commands, when the extension is enabled.
+    pub ext_transform_feedback: Option<ash::ext::transform_feedback::DeviceFn>,
+    #[cfg(feature = "ext_validation_cache")]
+    ///`VK_EXT_validation_cache`'s commands, when the extension is enabled.
+    pub ext_validation_cache: Option<ash::ext::validation_cache::DeviceFn>,
+    #[cfg(feature = "ext_vertex_input_dynamic_state")]
+    ///`VK_EXT_vertex_input_dynamic_state`'s commands, when the extension is enabled.
+    pub ext_vertex_input_dynamic_state: Option<
+        ash::ext::vertex_input_dynamic_state::DeviceFn,
+    >,
+    #[cfg(feature = "fuchsia_buffer_collection")]
+    ///`VK_FUCHSIA_buffer_collection`'s commands, when the extension is enabled.
+    pub fuchsia_buffer_collection: Option<ash::fuchsia::buffer_collection::DeviceFn>,
+    #[cfg(feature = "fuchsia_external_memory")]
+    ///`VK_FUCHSIA_external_memory`'s commands, when the extension is enabled.
+    pub fuchsia_external_memory: Option<ash::fuchsia::external_memory::DeviceFn>,
+    #[cfg(feature = "fuchsia_external_semaphore")]
+    ///`VK_FUCHSIA_external_semaphore`'s commands, when the extension is enabled.
+    pub fuchsia_external_semaphore: Option<ash::fuchsia::external_semaphore::DeviceFn>,
+    #[cfg(feature = "google_display_timing")]
+    ///`VK_GOOGLE_display_timing`'s commands, when the extension is enabled.
+    pub google_display_timing: Option<ash::google::display_timing::DeviceFn>,
+    #[cfg(feature = "huawei_invocation_mask")]
+    ///`VK_HUAWEI_invocation_mask`'s commands, when the extension is enabled.
+    pub huawei_invocation_mask: Option<ash::huawei::invocation_mask::DeviceFn>,
+    #[cfg(feature = "huawei_subpass_shading")]
+    ///`VK_HUAWEI_subpass_shading`'s commands, when the extension is enabled.
+    pub huawei_subpass_shading: Option<ash::huawei::subpass_shading::DeviceFn>,
+    #[cfg(feature = "intel_performance_query")]
+    ///`VK_INTEL_performance_query`'s commands, when the extension is enabled.
+    pub intel_performance_query: Option<ash::intel::performance_query::DeviceFn>,
+    #[cfg(feature = "khr_acceleration_structure")]
+    ///`VK_KHR_acceleration_structure`'s commands, when the extension is enabled.
+    pub khr_acceleration_structure: Option<ash::khr::acceleration_structure::DeviceFn>,
+    #[cfg(feature = "khr_deferred_host_operations")]
+    ///`VK_KHR_deferred_host_operations`'s commands, when the extension is enabled.
+    pub khr_deferred_host_operations: Option<
+        ash::khr::deferred_host_operations::DeviceFn,
+    >,
+    #[cfg(feature = "khr_display_swapchain")]
+    ///`VK_KHR_display_swapchain`'s commands, when the extension is enabled.
+    pub khr_display_swapchain: Option<ash::khr::display_swapchain::DeviceFn>,
+    #[cfg(feature = "khr_external_fence_fd")]
+    ///`VK_KHR_external_fence_fd`'s commands, when the extension is enabled.
+    pub khr_external_fence_fd: Option<ash::khr::external_fence_fd::DeviceFn>,
+    #[cfg(feature = "khr_external_fence_win32")]
+    ///`VK_KHR_external_fence_win32`'s commands, when the extension is enabled.
+    pub khr_external_fence_win32: Option<ash::khr::external_fence_win32::DeviceFn>,
+    #[cfg(feature = "khr_external_memory_fd")]
+    ///`VK_KHR_external_memory_fd`'s commands, when the extension is enabled.
+    pub khr_external_memory_fd: Option<ash::khr::external_memory_fd::DeviceFn>,
+    #[cfg(feature = "khr_external_memory_win32")]
+    ///`VK_KHR_external_memory_win32`'s commands, when the extension is enabled.
+    pub khr_external_memory_win32: Option<ash::khr::external_memory_win32::DeviceFn>,
+    #[cfg(feature = "khr_external_semaphore_fd")]
+    ///`VK_KHR_external_semaphore_fd`'s commands, when the extension is enabled.
+    pub khr_external_semaphore_fd: Option<ash::khr::external_semaphore_fd::DeviceFn>,
+    #[cfg(feature = "khr_external_semaphore_win32")]
+    ///`VK_KHR_external_semaphore_win32`'s commands, when the extension is enabled.
+    pub khr_external_semaphore_win32: Option<
+        ash::khr::external_semaphore_win32::DeviceFn,
+    >,
+    #[cfg(feature = "khr_fragment_shading_rate")]
+    ///`VK_KHR_fragment_shading_rate`'s commands, when the extension is enabled.
+    pub khr_fragment_shading_rate: Option<ash::khr::fragment_shading_rate::DeviceFn>,
+    #[cfg(feature = "khr_performance_query")]
+    ///`VK_KHR_performance_query`'s commands, when the extension is enabled.
+    pub khr_performance_query: Option<ash::khr::performance_query::DeviceFn>,
+    #[cfg(feature = "khr_pipeline_executable_properties")]
+    ///`VK_KHR_pipeline_executable_properties`'s commands, when the extension is enabled.
+    pub khr_pipeline_executable_properties: Option<
+        ash::khr::pipeline_executable_properties::DeviceFn,
+    >,
+    #[cfg(feature = "khr_present_wait")]
+    ///`VK_KHR_present_wait`'s commands, when the extension is enabled.
+    pub khr_present_wait: Option<ash::khr::present_wait::DeviceFn>,
+    #[cfg(feature = "khr_push_descriptor")]
+    ///`VK_KHR_push_descriptor`'s commands, when the extension is enabled.
+    pub khr_push_descriptor: Option<ash::khr::push_descriptor::DeviceFn>,
+    #[cfg(feature = "khr_ray_tracing_maintenance1")]
+    ///`VK_KHR_ray_tracing_maintenance1`'s commands, when the extension is enabled.
+    pub khr_ray_tracing_maintenance1: Option<
+        ash::khr::ray_tracing_maintenance1::DeviceFn,
+    >,
+    #[cfg(feature = "khr_ray_tracing_pipeline")]
+    ///`VK_KHR_ray_tracing_pipeline`'s commands, when the extension is enabled.
+    pub khr_ray_tracing_pipeline: Option<ash::khr::ray_tracing_pipeline::DeviceFn>,
+    #[cfg(feature = "khr_shared_presentable_image")]
+    ///`VK_KHR_shared_presentable_image`'s commands, when the extension is enabled.
+    pub khr_shared_presentable_image: Option<
+        ash::khr::shared_presentable_image::DeviceFn,
+    >,
     #[cfg(feature = "khr_swapchain")]
     ///`VK_KHR_swapchain`'s commands, when the extension is enabled.
     pub khr_swapchain: Option<ash::khr::swapchain::DeviceFn>,
+    #[cfg(feature = "khr_synchronization2")]
+    ///`VK_KHR_synchronization2`'s commands, when the extension is enabled.
+    pub khr_synchronization2: Option<ash::khr::synchronization2::DeviceFn>,
+    #[cfg(feature = "khr_video_decode_queue")]
+    ///`VK_KHR_video_decode_queue`'s commands, when the extension is enabled.
+    pub khr_video_decode_queue: Option<ash::khr::video_decode_queue::DeviceFn>,
+    #[cfg(feature = "khr_video_queue")]
+    ///`VK_KHR_video_queue`'s commands, when the extension is enabled.
+    pub khr_video_queue: Option<ash::khr::video_queue::DeviceFn>,
+    #[cfg(feature = "nvx_binary_import")]
+    ///`VK_NVX_binary_import`'s commands, when the extension is enabled.
+    pub nvx_binary_import: Option<ash::nvx::binary_import::DeviceFn>,
+    #[cfg(feature = "nvx_image_view_handle")]
+    ///`VK_NVX_image_view_handle`'s commands, when the extension is enabled.
+    pub nvx_image_view_handle: Option<ash::nvx::image_view_handle::DeviceFn>,
+    #[cfg(feature = "nv_clip_space_w_scaling")]
+    ///`VK_NV_clip_space_w_scaling`'s commands, when the extension is enabled.
+    pub nv_clip_space_w_scaling: Option<ash::nv::clip_space_w_scaling::DeviceFn>,
+    #[cfg(feature = "nv_copy_memory_indirect")]
+    ///`VK_NV_copy_memory_indirect`'s commands, when the extension is enabled.
+    pub nv_copy_memory_indirect: Option<ash::nv::copy_memory_indirect::DeviceFn>,
+    #[cfg(feature = "nv_device_diagnostic_checkpoints")]
+    ///`VK_NV_device_diagnostic_checkpoints`'s commands, when the extension is enabled.
+    pub nv_device_diagnostic_checkpoints: Option<
+        ash::nv::device_diagnostic_checkpoints::DeviceFn,
+    >,
+    #[cfg(feature = "nv_device_generated_commands")]
+    ///`VK_NV_device_generated_commands`'s commands, when the extension is enabled.
+    pub nv_device_generated_commands: Option<
+        ash::nv::device_generated_commands::DeviceFn,
+    >,
+    #[cfg(feature = "nv_external_memory_rdma")]
+    ///`VK_NV_external_memory_rdma`'s commands, when the extension is enabled.
+    pub nv_external_memory_rdma: Option<ash::nv::external_memory_rdma::DeviceFn>,
+    #[cfg(feature = "nv_external_memory_win32")]
+    ///`VK_NV_external_memory_win32`'s commands, when the extension is enabled.
+    pub nv_external_memory_win32: Option<ash::nv::external_memory_win32::DeviceFn>,
+    #[cfg(feature = "nv_fragment_shading_rate_enums")]
+    ///`VK_NV_fragment_shading_rate_enums`'s commands, when the extension is enabled.
+    pub nv_fragment_shading_rate_enums: Option<
+        ash::nv::fragment_shading_rate_enums::DeviceFn,
+    >,
+    #[cfg(feature = "nv_memory_decompression")]
+    ///`VK_NV_memory_decompression`'s commands, when the extension is enabled.
+    pub nv_memory_decompression: Option<ash::nv::memory_decompression::DeviceFn>,
+    #[cfg(feature = "nv_mesh_shader")]
+    ///`VK_NV_mesh_shader`'s commands, when the extension is enabled.
+    pub nv_mesh_shader: Option<ash::nv::mesh_shader::DeviceFn>,
+    #[cfg(feature = "nv_optical_flow")]
+    ///`VK_NV_optical_flow`'s commands, when the extension is enabled.
+    pub nv_optical_flow: Option<ash::nv::optical_flow::DeviceFn>,
+    #[cfg(feature = "nv_ray_tracing")]
+    ///`VK_NV_ray_tracing`'s commands, when the extension is enabled.
+    pub nv_ray_tracing: Option<ash::nv::ray_tracing::DeviceFn>,
+    #[cfg(feature = "nv_scissor_exclusive")]
+    ///`VK_NV_scissor_exclusive`'s commands, when the extension is enabled.
+    pub nv_scissor_exclusive: Option<ash::nv::scissor_exclusive::DeviceFn>,
+    #[cfg(feature = "nv_shading_rate_image")]
+    ///`VK_NV_shading_rate_image`'s commands, when the extension is enabled.
+    pub nv_shading_rate_image: Option<ash::nv::shading_rate_image::DeviceFn>,
+    #[cfg(feature = "qcom_tile_properties")]
+    ///`VK_QCOM_tile_properties`'s commands, when the extension is enabled.
+    pub qcom_tile_properties: Option<ash::qcom::tile_properties::DeviceFn>,
+    #[cfg(feature = "valve_descriptor_set_host_mapping")]
+    ///`VK_VALVE_descriptor_set_host_mapping`'s commands, when the extension is enabled.
+    pub valve_descriptor_set_host_mapping: Option<
+        ash::valve::descriptor_set_host_mapping::DeviceFn,
+    >,
 }
 /// A logical device: its function tables and the extensions enabled on it.
 /// Clones share it; the last one waits for the device to go idle and destroys it.
@@ -839,6 +1571,93 @@ impl Device {
         #[allow(unused_mut)]
         let mut ext = DeviceExtensions::default();
         let _ = enabled;
+        #[cfg(feature = "amd_buffer_marker")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_AMD_buffer_marker".as_bytes()) {
+            ext.amd_buffer_marker = Some(
+                ash::amd::buffer_marker::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "amd_display_native_hdr")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_AMD_display_native_hdr".as_bytes())
+        {
+            ext.amd_display_native_hdr = Some(
+                ash::amd::display_native_hdr::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "amd_shader_info")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_AMD_shader_info".as_bytes()) {
+            ext.amd_shader_info = Some(
+                ash::amd::shader_info::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+        if enabled
+            .iter()
+            .any(|n| {
+                n.to_bytes()
+                    == "VK_ANDROID_external_memory_android_hardware_buffer".as_bytes()
+            })
+        {
+            ext.android_external_memory_android_hardware_buffer = Some(
+                ash::android::external_memory_android_hardware_buffer::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_calibrated_timestamps")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_calibrated_timestamps".as_bytes())
+        {
+            ext.ext_calibrated_timestamps = Some(
+                ash::ext::calibrated_timestamps::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_color_write_enable")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_color_write_enable".as_bytes())
+        {
+            ext.ext_color_write_enable = Some(
+                ash::ext::color_write_enable::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_conditional_rendering")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_conditional_rendering".as_bytes())
+        {
+            ext.ext_conditional_rendering = Some(
+                ash::ext::conditional_rendering::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_debug_marker")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_marker".as_bytes()) {
+            ext.ext_debug_marker = Some(
+                ash::ext::debug_marker::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
         #[cfg(feature = "ext_debug_utils")]
         if physical.parent().ext().ext_debug_utils.is_some() {
             ext.ext_debug_utils = Some(
@@ -847,10 +1666,749 @@ impl Device {
                     .clone(),
             );
         }
+        #[cfg(feature = "ext_descriptor_buffer")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_descriptor_buffer".as_bytes())
+        {
+            ext.ext_descriptor_buffer = Some(
+                ash::ext::descriptor_buffer::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_discard_rectangles")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_discard_rectangles".as_bytes())
+        {
+            ext.ext_discard_rectangles = Some(
+                ash::ext::discard_rectangles::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_display_control")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_display_control".as_bytes()) {
+            ext.ext_display_control = Some(
+                ash::ext::display_control::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_extended_dynamic_state2")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_extended_dynamic_state2".as_bytes())
+        {
+            ext.ext_extended_dynamic_state2 = Some(
+                ash::ext::extended_dynamic_state2::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_extended_dynamic_state3")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_extended_dynamic_state3".as_bytes())
+        {
+            ext.ext_extended_dynamic_state3 = Some(
+                ash::ext::extended_dynamic_state3::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_external_memory_host")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_external_memory_host".as_bytes())
+        {
+            ext.ext_external_memory_host = Some(
+                ash::ext::external_memory_host::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_full_screen_exclusive")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_full_screen_exclusive".as_bytes())
+        {
+            ext.ext_full_screen_exclusive = Some(
+                ash::ext::full_screen_exclusive::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_hdr_metadata")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_hdr_metadata".as_bytes()) {
+            ext.ext_hdr_metadata = Some(
+                ash::ext::hdr_metadata::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_image_compression_control")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_image_compression_control".as_bytes())
+        {
+            ext.ext_image_compression_control = Some(
+                ash::ext::image_compression_control::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_image_drm_format_modifier")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_image_drm_format_modifier".as_bytes())
+        {
+            ext.ext_image_drm_format_modifier = Some(
+                ash::ext::image_drm_format_modifier::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_line_rasterization")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_line_rasterization".as_bytes())
+        {
+            ext.ext_line_rasterization = Some(
+                ash::ext::line_rasterization::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_mesh_shader")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_mesh_shader".as_bytes()) {
+            ext.ext_mesh_shader = Some(
+                ash::ext::mesh_shader::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_metal_objects")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_metal_objects".as_bytes()) {
+            ext.ext_metal_objects = Some(
+                ash::ext::metal_objects::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_multi_draw")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_multi_draw".as_bytes()) {
+            ext.ext_multi_draw = Some(
+                ash::ext::multi_draw::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_opacity_micromap")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_opacity_micromap".as_bytes()) {
+            ext.ext_opacity_micromap = Some(
+                ash::ext::opacity_micromap::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_pageable_device_local_memory")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_pageable_device_local_memory".as_bytes())
+        {
+            ext.ext_pageable_device_local_memory = Some(
+                ash::ext::pageable_device_local_memory::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_pipeline_properties")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_pipeline_properties".as_bytes())
+        {
+            ext.ext_pipeline_properties = Some(
+                ash::ext::pipeline_properties::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_sample_locations")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_sample_locations".as_bytes()) {
+            ext.ext_sample_locations = Some(
+                ash::ext::sample_locations::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_shader_module_identifier")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_shader_module_identifier".as_bytes())
+        {
+            ext.ext_shader_module_identifier = Some(
+                ash::ext::shader_module_identifier::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_swapchain_maintenance1".as_bytes())
+        {
+            ext.ext_swapchain_maintenance1 = Some(
+                ash::ext::swapchain_maintenance1::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_transform_feedback")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_transform_feedback".as_bytes())
+        {
+            ext.ext_transform_feedback = Some(
+                ash::ext::transform_feedback::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_validation_cache")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_validation_cache".as_bytes()) {
+            ext.ext_validation_cache = Some(
+                ash::ext::validation_cache::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_vertex_input_dynamic_state")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_vertex_input_dynamic_state".as_bytes())
+        {
+            ext.ext_vertex_input_dynamic_state = Some(
+                ash::ext::vertex_input_dynamic_state::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "fuchsia_buffer_collection")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_FUCHSIA_buffer_collection".as_bytes())
+        {
+            ext.fuchsia_buffer_collection = Some(
+                ash::fuchsia::buffer_collection::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "fuchsia_external_memory")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_FUCHSIA_external_memory".as_bytes())
+        {
+            ext.fuchsia_external_memory = Some(
+                ash::fuchsia::external_memory::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "fuchsia_external_semaphore")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_FUCHSIA_external_semaphore".as_bytes())
+        {
+            ext.fuchsia_external_semaphore = Some(
+                ash::fuchsia::external_semaphore::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "google_display_timing")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_GOOGLE_display_timing".as_bytes())
+        {
+            ext.google_display_timing = Some(
+                ash::google::display_timing::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "huawei_invocation_mask")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_HUAWEI_invocation_mask".as_bytes())
+        {
+            ext.huawei_invocation_mask = Some(
+                ash::huawei::invocation_mask::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "huawei_subpass_shading")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_HUAWEI_subpass_shading".as_bytes())
+        {
+            ext.huawei_subpass_shading = Some(
+                ash::huawei::subpass_shading::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "intel_performance_query")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_INTEL_performance_query".as_bytes())
+        {
+            ext.intel_performance_query = Some(
+                ash::intel::performance_query::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_acceleration_structure")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_acceleration_structure".as_bytes())
+        {
+            ext.khr_acceleration_structure = Some(
+                ash::khr::acceleration_structure::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_deferred_host_operations")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_deferred_host_operations".as_bytes())
+        {
+            ext.khr_deferred_host_operations = Some(
+                ash::khr::deferred_host_operations::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_display_swapchain")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_display_swapchain".as_bytes())
+        {
+            ext.khr_display_swapchain = Some(
+                ash::khr::display_swapchain::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_fence_fd")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_external_fence_fd".as_bytes())
+        {
+            ext.khr_external_fence_fd = Some(
+                ash::khr::external_fence_fd::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_fence_win32")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_external_fence_win32".as_bytes())
+        {
+            ext.khr_external_fence_win32 = Some(
+                ash::khr::external_fence_win32::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_memory_fd")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_external_memory_fd".as_bytes())
+        {
+            ext.khr_external_memory_fd = Some(
+                ash::khr::external_memory_fd::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_memory_win32")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_external_memory_win32".as_bytes())
+        {
+            ext.khr_external_memory_win32 = Some(
+                ash::khr::external_memory_win32::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_semaphore_fd")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_external_semaphore_fd".as_bytes())
+        {
+            ext.khr_external_semaphore_fd = Some(
+                ash::khr::external_semaphore_fd::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_external_semaphore_win32")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_external_semaphore_win32".as_bytes())
+        {
+            ext.khr_external_semaphore_win32 = Some(
+                ash::khr::external_semaphore_win32::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_fragment_shading_rate".as_bytes())
+        {
+            ext.khr_fragment_shading_rate = Some(
+                ash::khr::fragment_shading_rate::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_performance_query")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_performance_query".as_bytes())
+        {
+            ext.khr_performance_query = Some(
+                ash::khr::performance_query::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_pipeline_executable_properties")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_pipeline_executable_properties".as_bytes())
+        {
+            ext.khr_pipeline_executable_properties = Some(
+                ash::khr::pipeline_executable_properties::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_present_wait")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_present_wait".as_bytes()) {
+            ext.khr_present_wait = Some(
+                ash::khr::present_wait::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_push_descriptor")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_push_descriptor".as_bytes()) {
+            ext.khr_push_descriptor = Some(
+                ash::khr::push_descriptor::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_ray_tracing_maintenance1")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_ray_tracing_maintenance1".as_bytes())
+        {
+            ext.khr_ray_tracing_maintenance1 = Some(
+                ash::khr::ray_tracing_maintenance1::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_ray_tracing_pipeline")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_ray_tracing_pipeline".as_bytes())
+        {
+            ext.khr_ray_tracing_pipeline = Some(
+                ash::khr::ray_tracing_pipeline::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_shared_presentable_image")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_shared_presentable_image".as_bytes())
+        {
+            ext.khr_shared_presentable_image = Some(
+                ash::khr::shared_presentable_image::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
         #[cfg(feature = "khr_swapchain")]
         if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes()) {
             ext.khr_swapchain = Some(
                 ash::khr::swapchain::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_synchronization2")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_synchronization2".as_bytes()) {
+            ext.khr_synchronization2 = Some(
+                ash::khr::synchronization2::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_video_decode_queue")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_video_decode_queue".as_bytes())
+        {
+            ext.khr_video_decode_queue = Some(
+                ash::khr::video_decode_queue::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_video_queue")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_video_queue".as_bytes()) {
+            ext.khr_video_queue = Some(
+                ash::khr::video_queue::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nvx_binary_import")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NVX_binary_import".as_bytes()) {
+            ext.nvx_binary_import = Some(
+                ash::nvx::binary_import::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nvx_image_view_handle")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NVX_image_view_handle".as_bytes())
+        {
+            ext.nvx_image_view_handle = Some(
+                ash::nvx::image_view_handle::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_clip_space_w_scaling")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_clip_space_w_scaling".as_bytes())
+        {
+            ext.nv_clip_space_w_scaling = Some(
+                ash::nv::clip_space_w_scaling::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_copy_memory_indirect")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_copy_memory_indirect".as_bytes())
+        {
+            ext.nv_copy_memory_indirect = Some(
+                ash::nv::copy_memory_indirect::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_device_diagnostic_checkpoints")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_device_diagnostic_checkpoints".as_bytes())
+        {
+            ext.nv_device_diagnostic_checkpoints = Some(
+                ash::nv::device_diagnostic_checkpoints::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_device_generated_commands")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_device_generated_commands".as_bytes())
+        {
+            ext.nv_device_generated_commands = Some(
+                ash::nv::device_generated_commands::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_external_memory_rdma")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_external_memory_rdma".as_bytes())
+        {
+            ext.nv_external_memory_rdma = Some(
+                ash::nv::external_memory_rdma::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_external_memory_win32")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_external_memory_win32".as_bytes())
+        {
+            ext.nv_external_memory_win32 = Some(
+                ash::nv::external_memory_win32::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_fragment_shading_rate_enums")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_fragment_shading_rate_enums".as_bytes())
+        {
+            ext.nv_fragment_shading_rate_enums = Some(
+                ash::nv::fragment_shading_rate_enums::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_memory_decompression")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_memory_decompression".as_bytes())
+        {
+            ext.nv_memory_decompression = Some(
+                ash::nv::memory_decompression::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_mesh_shader")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_mesh_shader".as_bytes()) {
+            ext.nv_mesh_shader = Some(
+                ash::nv::mesh_shader::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_optical_flow")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_optical_flow".as_bytes()) {
+            ext.nv_optical_flow = Some(
+                ash::nv::optical_flow::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_ray_tracing")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_ray_tracing".as_bytes()) {
+            ext.nv_ray_tracing = Some(
+                ash::nv::ray_tracing::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_scissor_exclusive")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_scissor_exclusive".as_bytes()) {
+            ext.nv_scissor_exclusive = Some(
+                ash::nv::scissor_exclusive::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_shading_rate_image")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_shading_rate_image".as_bytes())
+        {
+            ext.nv_shading_rate_image = Some(
+                ash::nv::shading_rate_image::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "qcom_tile_properties")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_QCOM_tile_properties".as_bytes()) {
+            ext.qcom_tile_properties = Some(
+                ash::qcom::tile_properties::Device::new(physical.parent().fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "valve_descriptor_set_host_mapping")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_VALVE_descriptor_set_host_mapping".as_bytes())
+        {
+            ext.valve_descriptor_set_host_mapping = Some(
+                ash::valve::descriptor_set_host_mapping::Device::new(
+                        physical.parent().fns(),
+                        &fns,
+                    )
                     .fp()
                     .clone(),
             );
@@ -1027,6 +2585,106 @@ impl Drop for DeviceMemoryInner {
                 .fp_v1_0()
                 .free_memory)(self.parent.raw(), self.raw, core::ptr::null());
         }
+    }
+}
+///A `VkDisplayKHR`, owned by the implementation: the wrapper keeps its parent alive and never destroys it.
+#[cfg(feature = "khr_display")]
+#[derive(Clone)]
+pub struct DisplayKHR {
+    inner: Vrc<DisplayKHRInner>,
+}
+#[cfg(feature = "khr_display")]
+#[allow(dead_code)]
+struct DisplayKHRInner {
+    raw: vk::DisplayKHR,
+    parent: PhysicalDevice,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_display")]
+impl DisplayKHR {
+    ///Wraps a handle created from `parent`; it is not destroyed (the implementation owns it) when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::DisplayKHR,
+        parent: &PhysicalDevice,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.parent().objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(DisplayKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: tuff_runtime::HostSync::new(),
+            }),
+        };
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &PhysicalDevice {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_display")] DisplayKHR);
+#[cfg(feature = "khr_display")]
+impl Drop for DisplayKHRInner {
+    fn drop(&mut self) {
+        self.parent.parent().objects().remove(self.raw);
+    }
+}
+///A `VkDisplayModeKHR`, owned by the implementation: the wrapper keeps its parent alive and never destroys it.
+#[cfg(feature = "khr_display")]
+#[derive(Clone)]
+pub struct DisplayModeKHR {
+    inner: Vrc<DisplayModeKHRInner>,
+}
+#[cfg(feature = "khr_display")]
+#[allow(dead_code)]
+struct DisplayModeKHRInner {
+    raw: vk::DisplayModeKHR,
+    parent: DisplayKHR,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_display")]
+impl DisplayModeKHR {
+    ///Wraps a handle created from `parent`; it is not destroyed (the implementation owns it) when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::DisplayModeKHR,
+        parent: &DisplayKHR,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.parent().parent().objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(DisplayModeKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: tuff_runtime::HostSync::new(),
+            }),
+        };
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &DisplayKHR {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_display")] DisplayModeKHR);
+#[cfg(feature = "khr_display")]
+impl Drop for DisplayModeKHRInner {
+    fn drop(&mut self) {
+        self.parent.parent().parent().objects().remove(self.raw);
     }
 }
 ///A `VkEvent`. Clones share it; the last one to go calls `vkDestroyEvent`, after every submission that used it has completed.
@@ -1384,22 +3042,156 @@ impl Drop for ImageViewInner {
         }
     }
 }
+///A `VkIndirectCommandsLayoutNV`. Clones share it; the last one to go calls `vkDestroyIndirectCommandsLayoutNV`, after every submission that used it has completed.
+#[cfg(feature = "nv_device_generated_commands")]
+#[derive(Clone)]
+pub struct IndirectCommandsLayoutNV {
+    inner: Vrc<IndirectCommandsLayoutNVInner>,
+}
+#[cfg(feature = "nv_device_generated_commands")]
+#[allow(dead_code)]
+struct IndirectCommandsLayoutNVInner {
+    raw: vk::IndirectCommandsLayoutNV,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "nv_device_generated_commands")]
+impl IndirectCommandsLayoutNV {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::IndirectCommandsLayoutNV,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(IndirectCommandsLayoutNVInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "nv_device_generated_commands")] IndirectCommandsLayoutNV);
+#[cfg(feature = "nv_device_generated_commands")]
+impl Drop for IndirectCommandsLayoutNVInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().nv_device_generated_commands.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_indirect_commands_layout_nv)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
 ///The function tables of the enabled instance extensions.
 #[derive(Clone, Default)]
 #[allow(missing_copy_implementations)]
 pub struct InstanceExtensions {
+    #[cfg(feature = "ext_acquire_drm_display")]
+    ///`VK_EXT_acquire_drm_display`'s commands, when the extension is enabled.
+    pub ext_acquire_drm_display: Option<ash::ext::acquire_drm_display::InstanceFn>,
+    #[cfg(feature = "ext_acquire_xlib_display")]
+    ///`VK_EXT_acquire_xlib_display`'s commands, when the extension is enabled.
+    pub ext_acquire_xlib_display: Option<ash::ext::acquire_xlib_display::InstanceFn>,
+    #[cfg(feature = "ext_calibrated_timestamps")]
+    ///`VK_EXT_calibrated_timestamps`'s commands, when the extension is enabled.
+    pub ext_calibrated_timestamps: Option<ash::ext::calibrated_timestamps::InstanceFn>,
+    #[cfg(feature = "ext_debug_report")]
+    ///`VK_EXT_debug_report`'s commands, when the extension is enabled.
+    pub ext_debug_report: Option<ash::ext::debug_report::InstanceFn>,
     #[cfg(feature = "ext_debug_utils")]
     ///`VK_EXT_debug_utils`'s commands, when the extension is enabled.
     pub ext_debug_utils: Option<ash::ext::debug_utils::InstanceFn>,
+    #[cfg(feature = "ext_direct_mode_display")]
+    ///`VK_EXT_direct_mode_display`'s commands, when the extension is enabled.
+    pub ext_direct_mode_display: Option<ash::ext::direct_mode_display::InstanceFn>,
+    #[cfg(feature = "ext_directfb_surface")]
+    ///`VK_EXT_directfb_surface`'s commands, when the extension is enabled.
+    pub ext_directfb_surface: Option<ash::ext::directfb_surface::InstanceFn>,
+    #[cfg(feature = "ext_display_surface_counter")]
+    ///`VK_EXT_display_surface_counter`'s commands, when the extension is enabled.
+    pub ext_display_surface_counter: Option<
+        ash::ext::display_surface_counter::InstanceFn,
+    >,
+    #[cfg(feature = "ext_full_screen_exclusive")]
+    ///`VK_EXT_full_screen_exclusive`'s commands, when the extension is enabled.
+    pub ext_full_screen_exclusive: Option<ash::ext::full_screen_exclusive::InstanceFn>,
+    #[cfg(feature = "ext_headless_surface")]
+    ///`VK_EXT_headless_surface`'s commands, when the extension is enabled.
+    pub ext_headless_surface: Option<ash::ext::headless_surface::InstanceFn>,
     #[cfg(feature = "ext_metal_surface")]
     ///`VK_EXT_metal_surface`'s commands, when the extension is enabled.
     pub ext_metal_surface: Option<ash::ext::metal_surface::InstanceFn>,
+    #[cfg(feature = "ext_sample_locations")]
+    ///`VK_EXT_sample_locations`'s commands, when the extension is enabled.
+    pub ext_sample_locations: Option<ash::ext::sample_locations::InstanceFn>,
+    #[cfg(feature = "fuchsia_imagepipe_surface")]
+    ///`VK_FUCHSIA_imagepipe_surface`'s commands, when the extension is enabled.
+    pub fuchsia_imagepipe_surface: Option<ash::fuchsia::imagepipe_surface::InstanceFn>,
+    #[cfg(feature = "ggp_stream_descriptor_surface")]
+    ///`VK_GGP_stream_descriptor_surface`'s commands, when the extension is enabled.
+    pub ggp_stream_descriptor_surface: Option<
+        ash::ggp::stream_descriptor_surface::InstanceFn,
+    >,
+    #[cfg(feature = "khr_android_surface")]
+    ///`VK_KHR_android_surface`'s commands, when the extension is enabled.
+    pub khr_android_surface: Option<ash::khr::android_surface::InstanceFn>,
+    #[cfg(feature = "khr_display")]
+    ///`VK_KHR_display`'s commands, when the extension is enabled.
+    pub khr_display: Option<ash::khr::display::InstanceFn>,
+    #[cfg(feature = "khr_fragment_shading_rate")]
+    ///`VK_KHR_fragment_shading_rate`'s commands, when the extension is enabled.
+    pub khr_fragment_shading_rate: Option<ash::khr::fragment_shading_rate::InstanceFn>,
+    #[cfg(feature = "khr_get_display_properties2")]
+    ///`VK_KHR_get_display_properties2`'s commands, when the extension is enabled.
+    pub khr_get_display_properties2: Option<
+        ash::khr::get_display_properties2::InstanceFn,
+    >,
+    #[cfg(feature = "khr_get_surface_capabilities2")]
+    ///`VK_KHR_get_surface_capabilities2`'s commands, when the extension is enabled.
+    pub khr_get_surface_capabilities2: Option<
+        ash::khr::get_surface_capabilities2::InstanceFn,
+    >,
+    #[cfg(feature = "khr_performance_query")]
+    ///`VK_KHR_performance_query`'s commands, when the extension is enabled.
+    pub khr_performance_query: Option<ash::khr::performance_query::InstanceFn>,
     #[cfg(feature = "khr_surface")]
     ///`VK_KHR_surface`'s commands, when the extension is enabled.
     pub khr_surface: Option<ash::khr::surface::InstanceFn>,
     #[cfg(feature = "khr_swapchain")]
     ///`VK_KHR_swapchain`'s commands, when the extension is enabled.
     pub khr_swapchain: Option<ash::khr::swapchain::InstanceFn>,
+    #[cfg(feature = "khr_video_queue")]
+    ///`VK_KHR_video_queue`'s commands, when the extension is enabled.
+    pub khr_video_queue: Option<ash::khr::video_queue::InstanceFn>,
     #[cfg(feature = "khr_wayland_surface")]
     ///`VK_KHR_wayland_surface`'s commands, when the extension is enabled.
     pub khr_wayland_surface: Option<ash::khr::wayland_surface::InstanceFn>,
@@ -1412,6 +3204,35 @@ pub struct InstanceExtensions {
     #[cfg(feature = "khr_xlib_surface")]
     ///`VK_KHR_xlib_surface`'s commands, when the extension is enabled.
     pub khr_xlib_surface: Option<ash::khr::xlib_surface::InstanceFn>,
+    #[cfg(feature = "mvk_ios_surface")]
+    ///`VK_MVK_ios_surface`'s commands, when the extension is enabled.
+    pub mvk_ios_surface: Option<ash::mvk::ios_surface::InstanceFn>,
+    #[cfg(feature = "mvk_macos_surface")]
+    ///`VK_MVK_macos_surface`'s commands, when the extension is enabled.
+    pub mvk_macos_surface: Option<ash::mvk::macos_surface::InstanceFn>,
+    #[cfg(feature = "nn_vi_surface")]
+    ///`VK_NN_vi_surface`'s commands, when the extension is enabled.
+    pub nn_vi_surface: Option<ash::nn::vi_surface::InstanceFn>,
+    #[cfg(feature = "nv_acquire_winrt_display")]
+    ///`VK_NV_acquire_winrt_display`'s commands, when the extension is enabled.
+    pub nv_acquire_winrt_display: Option<ash::nv::acquire_winrt_display::InstanceFn>,
+    #[cfg(feature = "nv_cooperative_matrix")]
+    ///`VK_NV_cooperative_matrix`'s commands, when the extension is enabled.
+    pub nv_cooperative_matrix: Option<ash::nv::cooperative_matrix::InstanceFn>,
+    #[cfg(feature = "nv_coverage_reduction_mode")]
+    ///`VK_NV_coverage_reduction_mode`'s commands, when the extension is enabled.
+    pub nv_coverage_reduction_mode: Option<ash::nv::coverage_reduction_mode::InstanceFn>,
+    #[cfg(feature = "nv_external_memory_capabilities")]
+    ///`VK_NV_external_memory_capabilities`'s commands, when the extension is enabled.
+    pub nv_external_memory_capabilities: Option<
+        ash::nv::external_memory_capabilities::InstanceFn,
+    >,
+    #[cfg(feature = "nv_optical_flow")]
+    ///`VK_NV_optical_flow`'s commands, when the extension is enabled.
+    pub nv_optical_flow: Option<ash::nv::optical_flow::InstanceFn>,
+    #[cfg(feature = "qnx_screen_surface")]
+    ///`VK_QNX_screen_surface`'s commands, when the extension is enabled.
+    pub qnx_screen_surface: Option<ash::qnx::screen_surface::InstanceFn>,
 }
 /// A Vulkan instance: the loader's function tables and the extensions enabled on
 /// it. Clones share it; the last one destroys it.
@@ -1440,16 +3261,182 @@ impl Instance {
         #[allow(unused_mut)]
         let mut ext = InstanceExtensions::default();
         let _ = enabled;
+        #[cfg(feature = "ext_acquire_drm_display")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_acquire_drm_display".as_bytes())
+        {
+            ext.ext_acquire_drm_display = Some(
+                ash::ext::acquire_drm_display::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_acquire_xlib_display")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_acquire_xlib_display".as_bytes())
+        {
+            ext.ext_acquire_xlib_display = Some(
+                ash::ext::acquire_xlib_display::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_calibrated_timestamps")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_calibrated_timestamps".as_bytes())
+        {
+            ext.ext_calibrated_timestamps = Some(
+                ash::ext::calibrated_timestamps::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_debug_report")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_report".as_bytes()) {
+            ext.ext_debug_report = Some(
+                ash::ext::debug_report::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
         #[cfg(feature = "ext_debug_utils")]
         if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_debug_utils".as_bytes()) {
             ext.ext_debug_utils = Some(
                 ash::ext::debug_utils::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
+        #[cfg(feature = "ext_direct_mode_display")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_direct_mode_display".as_bytes())
+        {
+            ext.ext_direct_mode_display = Some(
+                ash::ext::direct_mode_display::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_directfb_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_directfb_surface".as_bytes()) {
+            ext.ext_directfb_surface = Some(
+                ash::ext::directfb_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "ext_display_surface_counter")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_display_surface_counter".as_bytes())
+        {
+            ext.ext_display_surface_counter = Some(
+                ash::ext::display_surface_counter::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_full_screen_exclusive")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_EXT_full_screen_exclusive".as_bytes())
+        {
+            ext.ext_full_screen_exclusive = Some(
+                ash::ext::full_screen_exclusive::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ext_headless_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_headless_surface".as_bytes()) {
+            ext.ext_headless_surface = Some(
+                ash::ext::headless_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
         #[cfg(feature = "ext_metal_surface")]
         if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_metal_surface".as_bytes()) {
             ext.ext_metal_surface = Some(
                 ash::ext::metal_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "ext_sample_locations")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_EXT_sample_locations".as_bytes()) {
+            ext.ext_sample_locations = Some(
+                ash::ext::sample_locations::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "fuchsia_imagepipe_surface")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_FUCHSIA_imagepipe_surface".as_bytes())
+        {
+            ext.fuchsia_imagepipe_surface = Some(
+                ash::fuchsia::imagepipe_surface::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "ggp_stream_descriptor_surface")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_GGP_stream_descriptor_surface".as_bytes())
+        {
+            ext.ggp_stream_descriptor_surface = Some(
+                ash::ggp::stream_descriptor_surface::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_android_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_android_surface".as_bytes()) {
+            ext.khr_android_surface = Some(
+                ash::khr::android_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "khr_display")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_display".as_bytes()) {
+            ext.khr_display = Some(
+                ash::khr::display::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_fragment_shading_rate".as_bytes())
+        {
+            ext.khr_fragment_shading_rate = Some(
+                ash::khr::fragment_shading_rate::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_get_display_properties2")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_get_display_properties2".as_bytes())
+        {
+            ext.khr_get_display_properties2 = Some(
+                ash::khr::get_display_properties2::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_get_surface_capabilities2")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_KHR_get_surface_capabilities2".as_bytes())
+        {
+            ext.khr_get_surface_capabilities2 = Some(
+                ash::khr::get_surface_capabilities2::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "khr_performance_query")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_performance_query".as_bytes())
+        {
+            ext.khr_performance_query = Some(
+                ash::khr::performance_query::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
             );
         }
         #[cfg(feature = "khr_surface")]
@@ -1462,6 +3449,12 @@ impl Instance {
         if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_swapchain".as_bytes()) {
             ext.khr_swapchain = Some(
                 ash::khr::swapchain::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "khr_video_queue")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_video_queue".as_bytes()) {
+            ext.khr_video_queue = Some(
+                ash::khr::video_queue::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         #[cfg(feature = "khr_wayland_surface")]
@@ -1486,6 +3479,78 @@ impl Instance {
         if enabled.iter().any(|n| n.to_bytes() == "VK_KHR_xlib_surface".as_bytes()) {
             ext.khr_xlib_surface = Some(
                 ash::khr::xlib_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "mvk_ios_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_MVK_ios_surface".as_bytes()) {
+            ext.mvk_ios_surface = Some(
+                ash::mvk::ios_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "mvk_macos_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_MVK_macos_surface".as_bytes()) {
+            ext.mvk_macos_surface = Some(
+                ash::mvk::macos_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "nn_vi_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NN_vi_surface".as_bytes()) {
+            ext.nn_vi_surface = Some(
+                ash::nn::vi_surface::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "nv_acquire_winrt_display")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_acquire_winrt_display".as_bytes())
+        {
+            ext.nv_acquire_winrt_display = Some(
+                ash::nv::acquire_winrt_display::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_cooperative_matrix")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_cooperative_matrix".as_bytes())
+        {
+            ext.nv_cooperative_matrix = Some(
+                ash::nv::cooperative_matrix::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_coverage_reduction_mode")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_coverage_reduction_mode".as_bytes())
+        {
+            ext.nv_coverage_reduction_mode = Some(
+                ash::nv::coverage_reduction_mode::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_external_memory_capabilities")]
+        if enabled
+            .iter()
+            .any(|n| n.to_bytes() == "VK_NV_external_memory_capabilities".as_bytes())
+        {
+            ext.nv_external_memory_capabilities = Some(
+                ash::nv::external_memory_capabilities::Instance::new(entry.fns(), &fns)
+                    .fp()
+                    .clone(),
+            );
+        }
+        #[cfg(feature = "nv_optical_flow")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_NV_optical_flow".as_bytes()) {
+            ext.nv_optical_flow = Some(
+                ash::nv::optical_flow::Instance::new(entry.fns(), &fns).fp().clone(),
+            );
+        }
+        #[cfg(feature = "qnx_screen_surface")]
+        if enabled.iter().any(|n| n.to_bytes() == "VK_QNX_screen_surface".as_bytes()) {
+            ext.qnx_screen_surface = Some(
+                ash::qnx::screen_surface::Instance::new(entry.fns(), &fns).fp().clone(),
             );
         }
         let _ = api_version;
@@ -1548,6 +3613,192 @@ impl Drop for InstanceInner {
         unsafe {
             (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null())
         };
+    }
+}
+///A `VkMicromapEXT`. Clones share it; the last one to go calls `vkDestroyMicromapEXT`, after every submission that used it has completed.
+#[cfg(feature = "ext_opacity_micromap")]
+#[derive(Clone)]
+pub struct MicromapEXT {
+    inner: Vrc<MicromapEXTInner>,
+}
+#[cfg(feature = "ext_opacity_micromap")]
+#[allow(dead_code)]
+struct MicromapEXTInner {
+    raw: vk::MicromapEXT,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "ext_opacity_micromap")]
+impl MicromapEXT {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::MicromapEXT,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(MicromapEXTInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "ext_opacity_micromap")] MicromapEXT);
+#[cfg(feature = "ext_opacity_micromap")]
+impl Drop for MicromapEXTInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().ext_opacity_micromap.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_micromap_ext)(self.parent.raw(), self.raw, core::ptr::null());
+        }
+    }
+}
+///A `VkOpticalFlowSessionNV`. Clones share it; the last one to go calls `vkDestroyOpticalFlowSessionNV`, after every submission that used it has completed.
+#[cfg(feature = "nv_optical_flow")]
+#[derive(Clone)]
+pub struct OpticalFlowSessionNV {
+    inner: Vrc<OpticalFlowSessionNVInner>,
+}
+#[cfg(feature = "nv_optical_flow")]
+#[allow(dead_code)]
+struct OpticalFlowSessionNVInner {
+    raw: vk::OpticalFlowSessionNV,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "nv_optical_flow")]
+impl OpticalFlowSessionNV {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::OpticalFlowSessionNV,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(OpticalFlowSessionNVInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "nv_optical_flow")] OpticalFlowSessionNV);
+#[cfg(feature = "nv_optical_flow")]
+impl Drop for OpticalFlowSessionNVInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().nv_optical_flow.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_optical_flow_session_nv)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkPerformanceConfigurationINTEL`, owned by the implementation: the wrapper keeps its parent alive and never destroys it.
+#[cfg(feature = "intel_performance_query")]
+#[derive(Clone)]
+pub struct PerformanceConfigurationINTEL {
+    inner: Vrc<PerformanceConfigurationINTELInner>,
+}
+#[cfg(feature = "intel_performance_query")]
+#[allow(dead_code)]
+struct PerformanceConfigurationINTELInner {
+    raw: vk::PerformanceConfigurationINTEL,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "intel_performance_query")]
+impl PerformanceConfigurationINTEL {
+    ///Wraps a handle created from `parent`; it is not destroyed (the implementation owns it) when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::PerformanceConfigurationINTEL,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(PerformanceConfigurationINTELInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "intel_performance_query")] PerformanceConfigurationINTEL);
+#[cfg(feature = "intel_performance_query")]
+impl Drop for PerformanceConfigurationINTELInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
     }
 }
 ///A `VkPhysicalDevice`, owned by the implementation: the wrapper keeps its parent alive and never destroys it.
@@ -2431,6 +4682,213 @@ impl Drop for SwapchainKHRInner {
                 None => return,
             }
                 .destroy_swapchain_khr)(self.parent.raw(), self.raw, core::ptr::null());
+        }
+    }
+}
+///A `VkValidationCacheEXT`. Clones share it; the last one to go calls `vkDestroyValidationCacheEXT`, after every submission that used it has completed.
+#[cfg(feature = "ext_validation_cache")]
+#[derive(Clone)]
+pub struct ValidationCacheEXT {
+    inner: Vrc<ValidationCacheEXTInner>,
+}
+#[cfg(feature = "ext_validation_cache")]
+#[allow(dead_code)]
+struct ValidationCacheEXTInner {
+    raw: vk::ValidationCacheEXT,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "ext_validation_cache")]
+impl ValidationCacheEXT {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::ValidationCacheEXT,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(ValidationCacheEXTInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "ext_validation_cache")] ValidationCacheEXT);
+#[cfg(feature = "ext_validation_cache")]
+impl Drop for ValidationCacheEXTInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().ext_validation_cache.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_validation_cache_ext)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkVideoSessionKHR`. Clones share it; the last one to go calls `vkDestroyVideoSessionKHR`, after every submission that used it has completed.
+#[cfg(feature = "khr_video_queue")]
+#[derive(Clone)]
+pub struct VideoSessionKHR {
+    inner: Vrc<VideoSessionKHRInner>,
+}
+#[cfg(feature = "khr_video_queue")]
+#[allow(dead_code)]
+struct VideoSessionKHRInner {
+    raw: vk::VideoSessionKHR,
+    parent: Device,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_video_queue")]
+impl VideoSessionKHR {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::VideoSessionKHR,
+        parent: &Device,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(VideoSessionKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.live().sync_for(raw),
+            }),
+        };
+        parent.live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &Device {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_video_queue")] VideoSessionKHR);
+#[cfg(feature = "khr_video_queue")]
+impl Drop for VideoSessionKHRInner {
+    fn drop(&mut self) {
+        self.parent.objects().remove(self.raw);
+        self.parent.live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.ext().khr_video_queue.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_video_session_khr)(
+                self.parent.raw(),
+                self.raw,
+                core::ptr::null(),
+            );
+        }
+    }
+}
+///A `VkVideoSessionParametersKHR`. Clones share it; the last one to go calls `vkDestroyVideoSessionParametersKHR`, after every submission that used it has completed.
+#[cfg(feature = "khr_video_queue")]
+#[derive(Clone)]
+pub struct VideoSessionParametersKHR {
+    inner: Vrc<VideoSessionParametersKHRInner>,
+}
+#[cfg(feature = "khr_video_queue")]
+#[allow(dead_code)]
+struct VideoSessionParametersKHRInner {
+    raw: vk::VideoSessionParametersKHR,
+    parent: VideoSessionKHR,
+    keep: Option<Retained>,
+    destroy: bool,
+    sync: tuff_runtime::HostSync,
+}
+#[cfg(feature = "khr_video_queue")]
+impl VideoSessionParametersKHR {
+    ///Wraps a handle created from `parent`; it is destroyed when the last clone goes.
+    #[allow(dead_code)]
+    pub(crate) fn from_raw(
+        raw: vk::VideoSessionParametersKHR,
+        parent: &VideoSessionKHR,
+        keep: Option<Retained>,
+        destroy: bool,
+    ) -> Self {
+        parent.parent().objects().add(raw);
+        let this = Self {
+            inner: Vrc::new(VideoSessionParametersKHRInner {
+                raw,
+                parent: parent.clone(),
+                keep,
+                destroy,
+                sync: parent.parent().live().sync_for(raw),
+            }),
+        };
+        parent.parent().live().add(raw, &this.retained(), &this.inner.sync);
+        this
+    }
+    /// The object this one was created from, which it keeps alive.
+    #[inline]
+    pub fn parent(&self) -> &VideoSessionKHR {
+        &self.inner.parent
+    }
+}
+child_handle!(#[cfg(feature = "khr_video_queue")] VideoSessionParametersKHR);
+#[cfg(feature = "khr_video_queue")]
+impl Drop for VideoSessionParametersKHRInner {
+    fn drop(&mut self) {
+        self.parent.parent().objects().remove(self.raw);
+        self.parent.parent().live().remove(self.raw);
+        if !self.destroy {
+            return;
+        }
+        // SAFETY: the last clone is gone, so no host reference is left, and every submission that
+        // used the object held a clone until its fence signalled; it is destroyed with the parent
+        // it came from and no allocator, as it was created without one.
+        unsafe {
+            (match self.parent.parent().ext().khr_video_queue.as_ref() {
+                Some(t) => t,
+                None => return,
+            }
+                .destroy_video_session_parameters_khr)(
+                self.parent.parent().raw(),
+                self.raw,
+                core::ptr::null(),
+            );
         }
     }
 }

@@ -21,6 +21,20 @@ pub(crate) unsafe fn next(
     for node in unsafe { crate::support::chain_nodes(p) } {
         #[allow(clippy::single_match)]
         match node.s_type.as_raw() {
+            #[cfg(feature = "ext_opacity_micromap")]
+            1000396009 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    acceleration_structure_triangles_opacity_micromap_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<
+                                vk::AccelerationStructureTrianglesOpacityMicromapEXT<'_>,
+                            >(),
+                        live,
+                        out,
+                    )
+                }
+            }
             #[cfg(feature = "khr_swapchain")]
             1000060009 => {
                 // SAFETY: a node with this structure type is this struct.
@@ -33,12 +47,134 @@ pub(crate) unsafe fn next(
                     )
                 }
             }
+            #[cfg(feature = "fuchsia_buffer_collection")]
+            1000366005 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    buffer_collection_buffer_create_info_fuchsia(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::BufferCollectionBufferCreateInfoFUCHSIA<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "fuchsia_buffer_collection")]
+            1000366002 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    buffer_collection_image_create_info_fuchsia(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::BufferCollectionImageCreateInfoFUCHSIA<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "nv_dedicated_allocation")]
+            1000026002 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    dedicated_allocation_memory_allocate_info_nv(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::DedicatedAllocationMemoryAllocateInfoNV<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_descriptor_buffer")]
+            1000316012 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    descriptor_buffer_binding_push_descriptor_buffer_handle_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<
+                                vk::DescriptorBufferBindingPushDescriptorBufferHandleEXT<'_>,
+                            >(),
+                        live,
+                        out,
+                    )
+                }
+            }
             1000070001 => {
                 // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     device_group_device_create_info(
                         &*(node as *const vk::BaseInStructure<'_>)
                             .cast::<vk::DeviceGroupDeviceCreateInfo<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311004 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    export_metal_buffer_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ExportMetalBufferInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311003 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    export_metal_command_queue_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ExportMetalCommandQueueInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311008 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    export_metal_io_surface_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ExportMetalIOSurfaceInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311010 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    export_metal_shared_event_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ExportMetalSharedEventInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311006 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    export_metal_texture_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ExportMetalTextureInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "nv_device_generated_commands")]
+            1000277002 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    graphics_pipeline_shader_groups_create_info_nv(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::GraphicsPipelineShaderGroupsCreateInfoNV<'_>>(),
                         live,
                         out,
                     )
@@ -56,12 +192,36 @@ pub(crate) unsafe fn next(
                     )
                 }
             }
+            #[cfg(feature = "fuchsia_buffer_collection")]
+            1000366001 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    import_memory_buffer_collection_fuchsia(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ImportMemoryBufferCollectionFUCHSIA<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
             1000127001 => {
                 // SAFETY: a node with this structure type is this struct.
                 unsafe {
                     memory_dedicated_allocate_info(
                         &*(node as *const vk::BaseInStructure<'_>)
                             .cast::<vk::MemoryDedicatedAllocateInfo<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "khr_pipeline_library")]
+            1000290000 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    pipeline_library_create_info_khr(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::PipelineLibraryCreateInfoKHR<'_>>(),
                         live,
                         out,
                     )
@@ -78,6 +238,44 @@ pub(crate) unsafe fn next(
                     )
                 }
             }
+            #[cfg(
+                all(
+                    feature = "ext_fragment_density_map",
+                    feature = "khr_dynamic_rendering"
+                )
+            )]
+            1000044007 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    rendering_fragment_density_map_attachment_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<
+                                vk::RenderingFragmentDensityMapAttachmentInfoEXT<'_>,
+                            >(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(
+                all(
+                    feature = "khr_dynamic_rendering",
+                    feature = "khr_fragment_shading_rate"
+                )
+            )]
+            1000044006 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    rendering_fragment_shading_rate_attachment_info_khr(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<
+                                vk::RenderingFragmentShadingRateAttachmentInfoKHR<'_>,
+                            >(),
+                        live,
+                        out,
+                    )
+                }
+            }
             1000156001 => {
                 // SAFETY: a node with this structure type is this struct.
                 unsafe {
@@ -89,9 +287,254 @@ pub(crate) unsafe fn next(
                     )
                 }
             }
+            16 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    shader_module_create_info(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ShaderModuleCreateInfo<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_validation_cache")]
+            1000160001 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    shader_module_validation_cache_create_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::ShaderModuleValidationCacheCreateInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "huawei_subpass_shading")]
+            1000369000 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    subpass_shading_pipeline_create_info_huawei(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::SubpassShadingPipelineCreateInfoHUAWEI<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "ext_swapchain_maintenance1")]
+            1000275001 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    swapchain_present_fence_info_ext(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::SwapchainPresentFenceInfoEXT<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "khr_win32_keyed_mutex")]
+            1000075000 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    win32_keyed_mutex_acquire_release_info_khr(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::Win32KeyedMutexAcquireReleaseInfoKHR<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "nv_win32_keyed_mutex")]
+            1000058000 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    win32_keyed_mutex_acquire_release_info_nv(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::Win32KeyedMutexAcquireReleaseInfoNV<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "khr_acceleration_structure")]
+            1000150007 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    write_descriptor_set_acceleration_structure_khr(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<
+                                vk::WriteDescriptorSetAccelerationStructureKHR<'_>,
+                            >(),
+                        live,
+                        out,
+                    )
+                }
+            }
+            #[cfg(feature = "nv_ray_tracing")]
+            1000165007 => {
+                // SAFETY: a node with this structure type is this struct.
+                unsafe {
+                    write_descriptor_set_acceleration_structure_nv(
+                        &*(node as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::WriteDescriptorSetAccelerationStructureNV<'_>>(),
+                        live,
+                        out,
+                    )
+                }
+            }
             _ => {}
         }
     }
+}
+///The live objects a `VkAccelerationStructureBuildGeometryInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_build_geometry_info_khr(
+    x: &vk::AccelerationStructureBuildGeometryInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src_acceleration_structure));
+    out.extend(live.get(x.dst_acceleration_structure));
+}
+///The live objects a `VkAccelerationStructureCaptureDescriptorDataInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(
+    any(
+        all(feature = "ext_descriptor_buffer", feature = "khr_acceleration_structure"),
+        all(feature = "ext_descriptor_buffer", feature = "nv_ray_tracing")
+    )
+)]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_capture_descriptor_data_info_ext(
+    x: &vk::AccelerationStructureCaptureDescriptorDataInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.acceleration_structure));
+    out.extend(live.get(x.acceleration_structure_nv));
+}
+///The live objects a `VkAccelerationStructureCreateInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_create_info_khr(
+    x: &vk::AccelerationStructureCreateInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
+}
+///The live objects a `VkAccelerationStructureCreateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_create_info_nv(
+    x: &vk::AccelerationStructureCreateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::acceleration_structure_info_nv(&x.info, live, out) };
+}
+///The live objects a `VkAccelerationStructureDeviceAddressInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_device_address_info_khr(
+    x: &vk::AccelerationStructureDeviceAddressInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.acceleration_structure));
+}
+///The live objects a `VkAccelerationStructureGeometryTrianglesDataKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_geometry_triangles_data_khr(
+    x: &vk::AccelerationStructureGeometryTrianglesDataKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
+}
+///The live objects a `VkAccelerationStructureInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_info_nv(
+    x: &vk::AccelerationStructureInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_geometries, x.geometry_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::geometry_nv(y, live, out) };
+    }
+}
+///The live objects a `VkAccelerationStructureMemoryRequirementsInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_memory_requirements_info_nv(
+    x: &vk::AccelerationStructureMemoryRequirementsInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.acceleration_structure));
+}
+///The live objects a `VkAccelerationStructureTrianglesOpacityMicromapEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn acceleration_structure_triangles_opacity_micromap_ext(
+    x: &vk::AccelerationStructureTrianglesOpacityMicromapEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.micromap));
 }
 ///The live objects a `VkAcquireNextImageInfoKHR` names, directly or through what it points to.
 ///
@@ -109,6 +552,22 @@ pub(crate) unsafe fn acquire_next_image_info_khr(
     out.extend(live.get(x.swapchain));
     out.extend(live.get(x.semaphore));
     out.extend(live.get(x.fence));
+}
+///The live objects a `VkBindAccelerationStructureMemoryInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn bind_acceleration_structure_memory_info_nv(
+    x: &vk::BindAccelerationStructureMemoryInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.acceleration_structure));
+    out.extend(live.get(x.memory));
 }
 ///The live objects a `VkBindBufferMemoryInfo` names, directly or through what it points to.
 ///
@@ -208,6 +667,21 @@ pub(crate) unsafe fn bind_sparse_info(
             }),
     );
 }
+///The live objects a `VkBindVideoSessionMemoryInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_queue")]
+#[inline]
+pub(crate) unsafe fn bind_video_session_memory_info_khr(
+    x: &vk::BindVideoSessionMemoryInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
 ///The live objects a `VkBlitImageInfo2` names, directly or through what it points to.
 ///
 /// # Safety
@@ -222,6 +696,82 @@ pub(crate) unsafe fn blit_image_info2(
 ) {
     out.extend(live.get(x.src_image));
     out.extend(live.get(x.dst_image));
+}
+///The live objects a `VkBufferCaptureDescriptorDataInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn buffer_capture_descriptor_data_info_ext(
+    x: &vk::BufferCaptureDescriptorDataInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
+}
+///The live objects a `VkBufferCollectionBufferCreateInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn buffer_collection_buffer_create_info_fuchsia(
+    x: &vk::BufferCollectionBufferCreateInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.collection));
+}
+///The live objects a `VkBufferCollectionImageCreateInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn buffer_collection_image_create_info_fuchsia(
+    x: &vk::BufferCollectionImageCreateInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.collection));
+}
+///The live objects a `VkBufferConstraintsInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn buffer_constraints_info_fuchsia(
+    x: &vk::BufferConstraintsInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::buffer_create_info(&x.create_info, live, out) };
+}
+///The live objects a `VkBufferCreateInfo` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[inline]
+pub(crate) unsafe fn buffer_create_info(
+    x: &vk::BufferCreateInfo<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
 }
 ///The live objects a `VkBufferDeviceAddressInfo` names, directly or through what it points to.
 ///
@@ -366,10 +916,58 @@ pub(crate) unsafe fn compute_pipeline_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: a nested struct of a live struct, with the same guarantees.
     unsafe { crate::reach::pipeline_shader_stage_create_info(&x.stage, live, out) };
     out.extend(live.get(x.layout));
     out.extend(live.get(x.base_pipeline_handle));
+}
+///The live objects a `VkConditionalRenderingBeginInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_conditional_rendering")]
+#[inline]
+pub(crate) unsafe fn conditional_rendering_begin_info_ext(
+    x: &vk::ConditionalRenderingBeginInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
+}
+///The live objects a `VkCopyAccelerationStructureInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn copy_acceleration_structure_info_khr(
+    x: &vk::CopyAccelerationStructureInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src));
+    out.extend(live.get(x.dst));
+}
+///The live objects a `VkCopyAccelerationStructureToMemoryInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn copy_acceleration_structure_to_memory_info_khr(
+    x: &vk::CopyAccelerationStructureToMemoryInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src));
 }
 ///The live objects a `VkCopyBufferInfo2` names, directly or through what it points to.
 ///
@@ -446,6 +1044,113 @@ pub(crate) unsafe fn copy_image_to_buffer_info2(
     out.extend(live.get(x.src_image));
     out.extend(live.get(x.dst_buffer));
 }
+///The live objects a `VkCopyMemoryToAccelerationStructureInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn copy_memory_to_acceleration_structure_info_khr(
+    x: &vk::CopyMemoryToAccelerationStructureInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.dst));
+}
+///The live objects a `VkCopyMemoryToMicromapInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn copy_memory_to_micromap_info_ext(
+    x: &vk::CopyMemoryToMicromapInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.dst));
+}
+///The live objects a `VkCopyMicromapInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn copy_micromap_info_ext(
+    x: &vk::CopyMicromapInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src));
+    out.extend(live.get(x.dst));
+}
+///The live objects a `VkCopyMicromapToMemoryInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn copy_micromap_to_memory_info_ext(
+    x: &vk::CopyMicromapToMemoryInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src));
+}
+///The live objects a `VkCuFunctionCreateInfoNVX` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nvx_binary_import")]
+#[inline]
+pub(crate) unsafe fn cu_function_create_info_nvx(
+    x: &vk::CuFunctionCreateInfoNVX<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.module));
+}
+///The live objects a `VkCuLaunchInfoNVX` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nvx_binary_import")]
+#[inline]
+pub(crate) unsafe fn cu_launch_info_nvx(
+    x: &vk::CuLaunchInfoNVX<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.function));
+}
+///The live objects a `VkDedicatedAllocationMemoryAllocateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_dedicated_allocation")]
+#[inline]
+pub(crate) unsafe fn dedicated_allocation_memory_allocate_info_nv(
+    x: &vk::DedicatedAllocationMemoryAllocateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image));
+    out.extend(live.get(x.buffer));
+}
 ///The live objects a `VkDependencyInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -478,6 +1183,37 @@ pub(crate) unsafe fn dependency_info(
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::image_memory_barrier2(y, live, out) };
     }
+}
+///The live objects a `VkDescriptorBufferBindingInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn descriptor_buffer_binding_info_ext(
+    x: &vk::DescriptorBufferBindingInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
+}
+///The live objects a `VkDescriptorBufferBindingPushDescriptorBufferHandleEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn descriptor_buffer_binding_push_descriptor_buffer_handle_ext(
+    x: &vk::DescriptorBufferBindingPushDescriptorBufferHandleEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
 }
 ///The live objects a `VkDescriptorBufferInfo` names, directly or through what it points to.
 ///
@@ -528,6 +1264,21 @@ pub(crate) unsafe fn descriptor_set_allocate_info(
                 crate::retention::raw_slice(x.p_set_layouts, x.descriptor_set_count)
             }),
     );
+}
+///The live objects a `VkDescriptorSetBindingReferenceVALVE` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "valve_descriptor_set_host_mapping")]
+#[inline]
+pub(crate) unsafe fn descriptor_set_binding_reference_valve(
+    x: &vk::DescriptorSetBindingReferenceVALVE<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.descriptor_set_layout));
 }
 ///The live objects a `VkDescriptorSetLayoutBinding` names, directly or through what it points to.
 ///
@@ -581,6 +1332,24 @@ pub(crate) unsafe fn descriptor_update_template_create_info(
 ) {
     out.extend(live.get(x.descriptor_set_layout));
     out.extend(live.get(x.pipeline_layout));
+}
+///The live objects a `VkDeviceBufferMemoryRequirements` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[inline]
+pub(crate) unsafe fn device_buffer_memory_requirements(
+    x: &vk::DeviceBufferMemoryRequirements<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored a reference that outlives `x`.
+    if let Some(y) = unsafe { x.p_create_info.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::buffer_create_info(y, live, out) };
+    }
 }
 ///The live objects a `VkDeviceCreateInfo` names, directly or through what it points to.
 ///
@@ -652,6 +1421,261 @@ pub(crate) unsafe fn device_memory_opaque_capture_address_info(
 ) {
     out.extend(live.get(x.memory));
 }
+///The live objects a `VkDisplayModeProperties2KHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_get_display_properties2")]
+#[inline]
+pub(crate) unsafe fn display_mode_properties2_khr(
+    x: &vk::DisplayModeProperties2KHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe {
+        crate::reach::display_mode_properties_khr(&x.display_mode_properties, live, out)
+    };
+}
+///The live objects a `VkDisplayModePropertiesKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_display")]
+#[inline]
+pub(crate) unsafe fn display_mode_properties_khr(
+    x: &vk::DisplayModePropertiesKHR,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.display_mode));
+}
+///The live objects a `VkDisplayPlaneInfo2KHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_get_display_properties2")]
+#[inline]
+pub(crate) unsafe fn display_plane_info2_khr(
+    x: &vk::DisplayPlaneInfo2KHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.mode));
+}
+///The live objects a `VkDisplayPlaneProperties2KHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_get_display_properties2")]
+#[inline]
+pub(crate) unsafe fn display_plane_properties2_khr(
+    x: &vk::DisplayPlaneProperties2KHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe {
+        crate::reach::display_plane_properties_khr(
+            &x.display_plane_properties,
+            live,
+            out,
+        )
+    };
+}
+///The live objects a `VkDisplayPlanePropertiesKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_display")]
+#[inline]
+pub(crate) unsafe fn display_plane_properties_khr(
+    x: &vk::DisplayPlanePropertiesKHR,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.current_display));
+}
+///The live objects a `VkDisplayProperties2KHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_get_display_properties2")]
+#[inline]
+pub(crate) unsafe fn display_properties2_khr(
+    x: &vk::DisplayProperties2KHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::display_properties_khr(&x.display_properties, live, out) };
+}
+///The live objects a `VkDisplayPropertiesKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_display")]
+#[inline]
+pub(crate) unsafe fn display_properties_khr(
+    x: &vk::DisplayPropertiesKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.display));
+}
+///The live objects a `VkDisplaySurfaceCreateInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_display")]
+#[inline]
+pub(crate) unsafe fn display_surface_create_info_khr(
+    x: &vk::DisplaySurfaceCreateInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.display_mode));
+}
+///The live objects a `VkExportMetalBufferInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_buffer_info_ext(
+    x: &vk::ExportMetalBufferInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkExportMetalCommandQueueInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_command_queue_info_ext(
+    x: &vk::ExportMetalCommandQueueInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.queue));
+}
+///The live objects a `VkExportMetalIOSurfaceInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_io_surface_info_ext(
+    x: &vk::ExportMetalIOSurfaceInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image));
+}
+///The live objects a `VkExportMetalObjectsInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_objects_info_ext(
+    x: &vk::ExportMetalObjectsInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
+}
+///The live objects a `VkExportMetalSharedEventInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_shared_event_info_ext(
+    x: &vk::ExportMetalSharedEventInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+    out.extend(live.get(x.event));
+}
+///The live objects a `VkExportMetalTextureInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_metal_objects")]
+#[inline]
+pub(crate) unsafe fn export_metal_texture_info_ext(
+    x: &vk::ExportMetalTextureInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image));
+    out.extend(live.get(x.image_view));
+    out.extend(live.get(x.buffer_view));
+}
+///The live objects a `VkFenceGetFdInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_fence_fd")]
+#[inline]
+pub(crate) unsafe fn fence_get_fd_info_khr(
+    x: &vk::FenceGetFdInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.fence));
+}
+///The live objects a `VkFenceGetWin32HandleInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_fence_win32")]
+#[inline]
+pub(crate) unsafe fn fence_get_win32_handle_info_khr(
+    x: &vk::FenceGetWin32HandleInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.fence));
+}
 ///The live objects a `VkFramebufferCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -673,6 +1697,112 @@ pub(crate) unsafe fn framebuffer_create_info(
             }),
     );
 }
+///The live objects a `VkGeneratedCommandsInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn generated_commands_info_nv(
+    x: &vk::GeneratedCommandsInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.pipeline));
+    out.extend(live.get(x.indirect_commands_layout));
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_streams, x.stream_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::indirect_commands_stream_nv(y, live, out) };
+    }
+    out.extend(live.get(x.preprocess_buffer));
+    out.extend(live.get(x.sequences_count_buffer));
+    out.extend(live.get(x.sequences_index_buffer));
+}
+///The live objects a `VkGeneratedCommandsMemoryRequirementsInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn generated_commands_memory_requirements_info_nv(
+    x: &vk::GeneratedCommandsMemoryRequirementsInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.pipeline));
+    out.extend(live.get(x.indirect_commands_layout));
+}
+///The live objects a `VkGeometryAABBNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn geometry_aabbnv(
+    x: &vk::GeometryAABBNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.aabb_data));
+}
+///The live objects a `VkGeometryDataNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn geometry_data_nv(
+    x: &vk::GeometryDataNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::geometry_triangles_nv(&x.triangles, live, out) };
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::geometry_aabbnv(&x.aabbs, live, out) };
+}
+///The live objects a `VkGeometryNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn geometry_nv(
+    x: &vk::GeometryNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::geometry_data_nv(&x.geometry, live, out) };
+}
+///The live objects a `VkGeometryTrianglesNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn geometry_triangles_nv(
+    x: &vk::GeometryTrianglesNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.vertex_data));
+    out.extend(live.get(x.index_data));
+    out.extend(live.get(x.transform_data));
+}
 ///The live objects a `VkGraphicsPipelineCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -685,6 +1815,8 @@ pub(crate) unsafe fn graphics_pipeline_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
@@ -693,6 +1825,87 @@ pub(crate) unsafe fn graphics_pipeline_create_info(
     out.extend(live.get(x.layout));
     out.extend(live.get(x.render_pass));
     out.extend(live.get(x.base_pipeline_handle));
+}
+///The live objects a `VkGraphicsPipelineShaderGroupsCreateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn graphics_pipeline_shader_groups_create_info_nv(
+    x: &vk::GraphicsPipelineShaderGroupsCreateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_groups, x.group_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::graphics_shader_group_create_info_nv(y, live, out) };
+    }
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(x.p_pipelines, x.pipeline_count)
+            }),
+    );
+}
+///The live objects a `VkGraphicsShaderGroupCreateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn graphics_shader_group_create_info_nv(
+    x: &vk::GraphicsShaderGroupCreateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
+    }
+}
+///The live objects a `VkImageCaptureDescriptorDataInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn image_capture_descriptor_data_info_ext(
+    x: &vk::ImageCaptureDescriptorDataInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image));
+}
+///The live objects a `VkImageConstraintsInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn image_constraints_info_fuchsia(
+    x: &vk::ImageConstraintsInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe {
+        crate::retention::raw_slice(x.p_format_constraints, x.format_constraints_count)
+    } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::image_format_constraints_info_fuchsia(y, live, out) };
+    }
 }
 ///The live objects a `VkImageCreateInfo` names, directly or through what it points to.
 ///
@@ -708,6 +1921,22 @@ pub(crate) unsafe fn image_create_info(
 ) {
     // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
+}
+///The live objects a `VkImageFormatConstraintsInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn image_format_constraints_info_fuchsia(
+    x: &vk::ImageFormatConstraintsInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe { crate::reach::image_create_info(&x.image_create_info, live, out) };
 }
 ///The live objects a `VkImageMemoryBarrier` names, directly or through what it points to.
 ///
@@ -780,6 +2009,21 @@ pub(crate) unsafe fn image_swapchain_create_info_khr(
 ) {
     out.extend(live.get(x.swapchain));
 }
+///The live objects a `VkImageViewCaptureDescriptorDataInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn image_view_capture_descriptor_data_info_ext(
+    x: &vk::ImageViewCaptureDescriptorDataInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image_view));
+}
 ///The live objects a `VkImageViewCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -795,6 +2039,161 @@ pub(crate) unsafe fn image_view_create_info(
     // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.image));
+}
+///The live objects a `VkImageViewHandleInfoNVX` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nvx_image_view_handle")]
+#[inline]
+pub(crate) unsafe fn image_view_handle_info_nvx(
+    x: &vk::ImageViewHandleInfoNVX<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image_view));
+    out.extend(live.get(x.sampler));
+}
+///The live objects a `VkImportFenceFdInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_fence_fd")]
+#[inline]
+pub(crate) unsafe fn import_fence_fd_info_khr(
+    x: &vk::ImportFenceFdInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.fence));
+}
+///The live objects a `VkImportFenceWin32HandleInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_fence_win32")]
+#[inline]
+pub(crate) unsafe fn import_fence_win32_handle_info_khr(
+    x: &vk::ImportFenceWin32HandleInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.fence));
+}
+///The live objects a `VkImportMemoryBufferCollectionFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[inline]
+pub(crate) unsafe fn import_memory_buffer_collection_fuchsia(
+    x: &vk::ImportMemoryBufferCollectionFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.collection));
+}
+///The live objects a `VkImportSemaphoreFdInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_semaphore_fd")]
+#[inline]
+pub(crate) unsafe fn import_semaphore_fd_info_khr(
+    x: &vk::ImportSemaphoreFdInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+}
+///The live objects a `VkImportSemaphoreWin32HandleInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_semaphore_win32")]
+#[inline]
+pub(crate) unsafe fn import_semaphore_win32_handle_info_khr(
+    x: &vk::ImportSemaphoreWin32HandleInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+}
+///The live objects a `VkImportSemaphoreZirconHandleInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_external_semaphore")]
+#[inline]
+pub(crate) unsafe fn import_semaphore_zircon_handle_info_fuchsia(
+    x: &vk::ImportSemaphoreZirconHandleInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+}
+///The live objects a `VkIndirectCommandsLayoutCreateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn indirect_commands_layout_create_info_nv(
+    x: &vk::IndirectCommandsLayoutCreateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_tokens, x.token_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::indirect_commands_layout_token_nv(y, live, out) };
+    }
+}
+///The live objects a `VkIndirectCommandsLayoutTokenNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn indirect_commands_layout_token_nv(
+    x: &vk::IndirectCommandsLayoutTokenNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.pushconstant_pipeline_layout));
+}
+///The live objects a `VkIndirectCommandsStreamNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_device_generated_commands")]
+#[inline]
+pub(crate) unsafe fn indirect_commands_stream_nv(
+    x: &vk::IndirectCommandsStreamNV,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
 }
 ///The live objects a `VkMappedMemoryRange` names, directly or through what it points to.
 ///
@@ -840,6 +2239,161 @@ pub(crate) unsafe fn memory_dedicated_allocate_info(
     out.extend(live.get(x.image));
     out.extend(live.get(x.buffer));
 }
+///The live objects a `VkMemoryGetAndroidHardwareBufferInfoANDROID` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+#[inline]
+pub(crate) unsafe fn memory_get_android_hardware_buffer_info_android(
+    x: &vk::MemoryGetAndroidHardwareBufferInfoANDROID<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkMemoryGetFdInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_memory_fd")]
+#[inline]
+pub(crate) unsafe fn memory_get_fd_info_khr(
+    x: &vk::MemoryGetFdInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkMemoryGetRemoteAddressInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_external_memory_rdma")]
+#[inline]
+pub(crate) unsafe fn memory_get_remote_address_info_nv(
+    x: &vk::MemoryGetRemoteAddressInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkMemoryGetWin32HandleInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_memory_win32")]
+#[inline]
+pub(crate) unsafe fn memory_get_win32_handle_info_khr(
+    x: &vk::MemoryGetWin32HandleInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkMemoryGetZirconHandleInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_external_memory")]
+#[inline]
+pub(crate) unsafe fn memory_get_zircon_handle_info_fuchsia(
+    x: &vk::MemoryGetZirconHandleInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.memory));
+}
+///The live objects a `VkMicromapBuildInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn micromap_build_info_ext(
+    x: &vk::MicromapBuildInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.dst_micromap));
+}
+///The live objects a `VkMicromapCreateInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_opacity_micromap")]
+#[inline]
+pub(crate) unsafe fn micromap_create_info_ext(
+    x: &vk::MicromapCreateInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.buffer));
+}
+///The live objects a `VkPhysicalDeviceSurfaceInfo2KHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_get_surface_capabilities2")]
+#[inline]
+pub(crate) unsafe fn physical_device_surface_info2_khr(
+    x: &vk::PhysicalDeviceSurfaceInfo2KHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.surface));
+}
+///The live objects a `VkPipelineExecutableInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_pipeline_executable_properties")]
+#[inline]
+pub(crate) unsafe fn pipeline_executable_info_khr(
+    x: &vk::PipelineExecutableInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.pipeline));
+}
+///The live objects a `VkPipelineInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(
+    any(
+        feature = "ext_pipeline_properties",
+        feature = "khr_pipeline_executable_properties"
+    )
+)]
+#[inline]
+pub(crate) unsafe fn pipeline_info_khr(
+    x: &vk::PipelineInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.pipeline));
+}
 ///The live objects a `VkPipelineLayoutCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -860,6 +2414,24 @@ pub(crate) unsafe fn pipeline_layout_create_info(
             }),
     );
 }
+///The live objects a `VkPipelineLibraryCreateInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_pipeline_library")]
+#[inline]
+pub(crate) unsafe fn pipeline_library_create_info_khr(
+    x: &vk::PipelineLibraryCreateInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live.keep(unsafe { crate::retention::raw_slice(x.p_libraries, x.library_count) }),
+    );
+}
 ///The live objects a `VkPipelineShaderStageCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -872,6 +2444,8 @@ pub(crate) unsafe fn pipeline_shader_stage_create_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.module));
 }
 ///The live objects a `VkPresentInfoKHR` names, directly or through what it points to.
@@ -887,6 +2461,8 @@ pub(crate) unsafe fn present_info_khr(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
@@ -901,6 +2477,68 @@ pub(crate) unsafe fn present_info_khr(
                 crate::retention::raw_slice(x.p_swapchains, x.swapchain_count)
             }),
     );
+}
+///The live objects a `VkRayTracingPipelineCreateInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+#[inline]
+pub(crate) unsafe fn ray_tracing_pipeline_create_info_khr(
+    x: &vk::RayTracingPipelineCreateInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
+    }
+    // SAFETY: the safe setter stored a reference that outlives `x`.
+    if let Some(y) = unsafe { x.p_library_info.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::pipeline_library_create_info_khr(y, live, out) };
+    }
+    out.extend(live.get(x.layout));
+    out.extend(live.get(x.base_pipeline_handle));
+}
+///The live objects a `VkRayTracingPipelineCreateInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn ray_tracing_pipeline_create_info_nv(
+    x: &vk::RayTracingPipelineCreateInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
+    }
+    out.extend(live.get(x.layout));
+    out.extend(live.get(x.base_pipeline_handle));
+}
+///The live objects a `VkReleaseSwapchainImagesInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_swapchain_maintenance1")]
+#[inline]
+pub(crate) unsafe fn release_swapchain_images_info_ext(
+    x: &vk::ReleaseSwapchainImagesInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.swapchain));
 }
 ///The live objects a `VkRenderPassAttachmentBeginInfo` names, directly or through what it points to.
 ///
@@ -954,6 +2592,36 @@ pub(crate) unsafe fn rendering_attachment_info(
     out.extend(live.get(x.image_view));
     out.extend(live.get(x.resolve_image_view));
 }
+///The live objects a `VkRenderingFragmentDensityMapAttachmentInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(all(feature = "ext_fragment_density_map", feature = "khr_dynamic_rendering"))]
+#[inline]
+pub(crate) unsafe fn rendering_fragment_density_map_attachment_info_ext(
+    x: &vk::RenderingFragmentDensityMapAttachmentInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image_view));
+}
+///The live objects a `VkRenderingFragmentShadingRateAttachmentInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(all(feature = "khr_dynamic_rendering", feature = "khr_fragment_shading_rate"))]
+#[inline]
+pub(crate) unsafe fn rendering_fragment_shading_rate_attachment_info_khr(
+    x: &vk::RenderingFragmentShadingRateAttachmentInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image_view));
+}
 ///The live objects a `VkRenderingInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -966,6 +2634,8 @@ pub(crate) unsafe fn rendering_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(x.p_color_attachments, x.color_attachment_count)
@@ -999,6 +2669,21 @@ pub(crate) unsafe fn resolve_image_info2(
     out.extend(live.get(x.src_image));
     out.extend(live.get(x.dst_image));
 }
+///The live objects a `VkSamplerCaptureDescriptorDataInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[inline]
+pub(crate) unsafe fn sampler_capture_descriptor_data_info_ext(
+    x: &vk::SamplerCaptureDescriptorDataInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.sampler));
+}
 ///The live objects a `VkSamplerCreateInfo` names, directly or through what it points to.
 ///
 /// # Safety
@@ -1027,6 +2712,51 @@ pub(crate) unsafe fn sampler_ycbcr_conversion_info(
     out: &mut Vec<Retained>,
 ) {
     out.extend(live.get(x.conversion));
+}
+///The live objects a `VkSemaphoreGetFdInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_semaphore_fd")]
+#[inline]
+pub(crate) unsafe fn semaphore_get_fd_info_khr(
+    x: &vk::SemaphoreGetFdInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+}
+///The live objects a `VkSemaphoreGetWin32HandleInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_external_semaphore_win32")]
+#[inline]
+pub(crate) unsafe fn semaphore_get_win32_handle_info_khr(
+    x: &vk::SemaphoreGetWin32HandleInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
+}
+///The live objects a `VkSemaphoreGetZirconHandleInfoFUCHSIA` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "fuchsia_external_semaphore")]
+#[inline]
+pub(crate) unsafe fn semaphore_get_zircon_handle_info_fuchsia(
+    x: &vk::SemaphoreGetZirconHandleInfoFUCHSIA<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.semaphore));
 }
 ///The live objects a `VkSemaphoreSignalInfo` names, directly or through what it points to.
 ///
@@ -1075,6 +2805,36 @@ pub(crate) unsafe fn semaphore_wait_info(
                 crate::retention::raw_slice(x.p_semaphores, x.semaphore_count)
             }),
     );
+}
+///The live objects a `VkShaderModuleCreateInfo` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[inline]
+pub(crate) unsafe fn shader_module_create_info(
+    x: &vk::ShaderModuleCreateInfo<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
+}
+///The live objects a `VkShaderModuleValidationCacheCreateInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_validation_cache")]
+#[inline]
+pub(crate) unsafe fn shader_module_validation_cache_create_info_ext(
+    x: &vk::ShaderModuleValidationCacheCreateInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.validation_cache));
 }
 ///The live objects a `VkSparseBufferMemoryBindInfo` names, directly or through what it points to.
 ///
@@ -1173,6 +2933,8 @@ pub(crate) unsafe fn submit_info(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
@@ -1210,6 +2972,8 @@ pub(crate) unsafe fn submit_info2(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
         crate::retention::raw_slice(
@@ -1241,6 +3005,21 @@ pub(crate) unsafe fn submit_info2(
         unsafe { crate::reach::semaphore_submit_info(y, live, out) };
     }
 }
+///The live objects a `VkSubpassShadingPipelineCreateInfoHUAWEI` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "huawei_subpass_shading")]
+#[inline]
+pub(crate) unsafe fn subpass_shading_pipeline_create_info_huawei(
+    x: &vk::SubpassShadingPipelineCreateInfoHUAWEI<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.render_pass));
+}
 ///The live objects a `VkSwapchainCreateInfoKHR` names, directly or through what it points to.
 ///
 /// # Safety
@@ -1257,6 +3036,184 @@ pub(crate) unsafe fn swapchain_create_info_khr(
     out.extend(live.get(x.surface));
     out.extend(live.get(x.old_swapchain));
 }
+///The live objects a `VkSwapchainPresentFenceInfoEXT` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "ext_swapchain_maintenance1")]
+#[inline]
+pub(crate) unsafe fn swapchain_present_fence_info_ext(
+    x: &vk::SwapchainPresentFenceInfoEXT<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live.keep(unsafe { crate::retention::raw_slice(x.p_fences, x.swapchain_count) }),
+    );
+}
+///The live objects a `VkVideoBeginCodingInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_queue")]
+#[inline]
+pub(crate) unsafe fn video_begin_coding_info_khr(
+    x: &vk::VideoBeginCodingInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.video_session));
+    out.extend(live.get(x.video_session_parameters));
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe {
+        crate::retention::raw_slice(x.p_reference_slots, x.reference_slot_count)
+    } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::video_reference_slot_info_khr(y, live, out) };
+    }
+}
+///The live objects a `VkVideoDecodeInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_decode_queue")]
+#[inline]
+pub(crate) unsafe fn video_decode_info_khr(
+    x: &vk::VideoDecodeInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.src_buffer));
+    // SAFETY: a nested struct of a live struct, with the same guarantees.
+    unsafe {
+        crate::reach::video_picture_resource_info_khr(&x.dst_picture_resource, live, out)
+    };
+    // SAFETY: the safe setter stored a reference that outlives `x`.
+    if let Some(y) = unsafe { x.p_setup_reference_slot.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::video_reference_slot_info_khr(y, live, out) };
+    }
+    // SAFETY: the safe setter stored this array with its length.
+    for y in unsafe {
+        crate::retention::raw_slice(x.p_reference_slots, x.reference_slot_count)
+    } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::video_reference_slot_info_khr(y, live, out) };
+    }
+}
+///The live objects a `VkVideoPictureResourceInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_queue")]
+#[inline]
+pub(crate) unsafe fn video_picture_resource_info_khr(
+    x: &vk::VideoPictureResourceInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.image_view_binding));
+}
+///The live objects a `VkVideoReferenceSlotInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_queue")]
+#[inline]
+pub(crate) unsafe fn video_reference_slot_info_khr(
+    x: &vk::VideoReferenceSlotInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored a reference that outlives `x`.
+    if let Some(y) = unsafe { x.p_picture_resource.as_ref() } {
+        // SAFETY: `y` is a live safe struct, as the walk requires.
+        unsafe { crate::reach::video_picture_resource_info_khr(y, live, out) };
+    }
+}
+///The live objects a `VkVideoSessionParametersCreateInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_video_queue")]
+#[inline]
+pub(crate) unsafe fn video_session_parameters_create_info_khr(
+    x: &vk::VideoSessionParametersCreateInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    out.extend(live.get(x.video_session_parameters_template));
+    out.extend(live.get(x.video_session));
+}
+///The live objects a `VkWin32KeyedMutexAcquireReleaseInfoKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_win32_keyed_mutex")]
+#[inline]
+pub(crate) unsafe fn win32_keyed_mutex_acquire_release_info_khr(
+    x: &vk::Win32KeyedMutexAcquireReleaseInfoKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(x.p_acquire_syncs, x.acquire_count)
+            }),
+    );
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(x.p_release_syncs, x.release_count)
+            }),
+    );
+}
+///The live objects a `VkWin32KeyedMutexAcquireReleaseInfoNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_win32_keyed_mutex")]
+#[inline]
+pub(crate) unsafe fn win32_keyed_mutex_acquire_release_info_nv(
+    x: &vk::Win32KeyedMutexAcquireReleaseInfoNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(x.p_acquire_syncs, x.acquire_count)
+            }),
+    );
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(x.p_release_syncs, x.release_count)
+            }),
+    );
+}
 ///The live objects a `VkWriteDescriptorSet` names, directly or through what it points to.
 ///
 /// # Safety
@@ -1269,6 +3226,8 @@ pub(crate) unsafe fn write_descriptor_set(
     live: &Live,
     out: &mut Vec<Retained>,
 ) {
+    // SAFETY: the chain was built by `push_next` from live safe structs.
+    unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.dst_set));
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe { crate::retention::raw_slice(x.p_image_info, x.descriptor_count) } {
@@ -1287,6 +3246,54 @@ pub(crate) unsafe fn write_descriptor_set(
         live
             .keep(unsafe {
                 crate::retention::raw_slice(x.p_texel_buffer_view, x.descriptor_count)
+            }),
+    );
+}
+///The live objects a `VkWriteDescriptorSetAccelerationStructureKHR` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "khr_acceleration_structure")]
+#[inline]
+pub(crate) unsafe fn write_descriptor_set_acceleration_structure_khr(
+    x: &vk::WriteDescriptorSetAccelerationStructureKHR<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(
+                    x.p_acceleration_structures,
+                    x.acceleration_structure_count,
+                )
+            }),
+    );
+}
+///The live objects a `VkWriteDescriptorSetAccelerationStructureNV` names, directly or through what it points to.
+///
+/// # Safety
+///
+/// `x` was built through its safe counterpart, whose setters store every
+/// pointer with its length and borrow what it points to.
+#[cfg(feature = "nv_ray_tracing")]
+#[inline]
+pub(crate) unsafe fn write_descriptor_set_acceleration_structure_nv(
+    x: &vk::WriteDescriptorSetAccelerationStructureNV<'_>,
+    live: &Live,
+    out: &mut Vec<Retained>,
+) {
+    // SAFETY: the safe setter stored this array with its length.
+    out.extend(
+        live
+            .keep(unsafe {
+                crate::retention::raw_slice(
+                    x.p_acceleration_structures,
+                    x.acceleration_structure_count,
+                )
             }),
     );
 }

@@ -336,10 +336,21 @@ impl Origins {
         let n = names.len();
         let minors = &self.minors;
         let nv = minors.len();
+        let consts = names.iter().enumerate().map(|(i, n)| {
+            let id = ident(&n.to_uppercase());
+            let i = i as u16;
+            quote!(pub(crate) const #id: u16 = #i;)
+        });
         quote! {
             /// Names of the versions and extensions that define enum values: the
             /// versions first, in order, then the extensions.
             const ORIGINS: [&str; #n] = [#(#names),*];
+            /// Each entry's index in `ORIGINS`: the explicit checks' conditions test
+            /// `Exts::has(origin::NAME)`, a bit, where a name would be a search.
+            #[allow(dead_code)]
+            pub(crate) mod origin {
+                #(#consts)*
+            }
             /// The minor version of each leading version entry of `ORIGINS`.
             const VERSION_MINORS: [u32; #nv] = [#(#minors),*];
 

@@ -168,6 +168,8 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
         //! method per checked command,
         //! beside it on the same receiver, which the checked method calls first;
         //! one module per core version and extension, as the commands are.
+        #[allow(unused_imports)]
+        use crate::checks::origin;
         use crate::handles::*;
         use crate::structs::*;
         use crate::validation::fail;

@@ -453,7 +453,10 @@ fn key_gate(e: &crate::model::expr::Expr, alone: bool) -> TokenStream {
     use crate::model::expr::Expr;
     let joined = match e {
         Expr::Name(n) if n == "core" => return quote!(true),
-        Expr::Name(n) => return quote!(s.exts.named(#n)),
+        Expr::Name(n) => {
+            let id = crate::names::ident(&n.to_uppercase());
+            return quote!(s.exts.has(origin::#id));
+        }
         Expr::Not(e) => {
             let e = key_gate(e, false);
             return quote!(!(#e));

@@ -169,11 +169,16 @@ fn module_cfg(model: &Model, module: &str, items: &[String]) -> Option<TokenStre
         .flatten()
 }
 
+/// The most source text (as tokens print) one generated file holds: about 3,500
+/// formatted lines, so that no file grows past 5,000 as the registry grows.
+const FILE_BUDGET: usize = 160_000;
+
 /// One generated folder of modules: `dir/mod.rs` with `head` (its docs, lints and
 /// imports, which the modules share through `use super::*`) and one file per core
 /// version and extension, with the items and the names of the registry items they
 /// come from. Versions come first, in order; `reexport` makes the modules' items the
-/// folder's own.
+/// folder's own. A module too long for one file is split in parts
+/// (`v1_3.rs`, `v1_3_part2.rs`, ..), each gated as the whole.
 pub(crate) fn split(
     model: &Model,
     dir: &str,
@@ -194,17 +199,36 @@ pub(crate) fn split(
             item.is_some() && item != module
         })
     };
-    let decls = order.iter().map(|m| {
-        let id = names::ident(m);
+    // Each module with its files: each part's file name and items.
+    type Parts<'a> = Vec<(String, &'a [TokenStream])>;
+    let files: Vec<(&String, Parts)> = order
+        .iter()
+        .map(|m| {
+            let named = parts(&modules[*m].1)
+                .into_iter()
+                .enumerate()
+                .map(|(i, items)| match i {
+                    0 => ((*m).clone(), items),
+                    _ => (format!("{m}_part{}", i + 1), items),
+                })
+                .collect();
+            (*m, named)
+        })
+        .collect();
+    let decls = files.iter().flat_map(|(m, parts)| {
         let cfg = module_cfg(model, m, &modules[*m].0);
-        if reexport {
-            // The folders re-exported crate-privately (`checks/structs`) may not use
-            // every item of a module, whose glob then goes unused.
-            quote::quote!(#cfg mod #id; #cfg #[allow(unused_imports)] pub use #id::*;)
-        } else {
-            quote::quote!(#cfg mod #id;)
-        }
+        parts.iter().map(move |(file, _)| {
+            let id = names::ident(file);
+            if reexport {
+                // The folders re-exported crate-privately (`checks/structs`) may not
+                // use every item of a module, whose glob then goes unused.
+                quote::quote!(#cfg mod #id; #cfg #[allow(unused_imports)] pub use #id::*;)
+            } else {
+                quote::quote!(#cfg mod #id;)
+            }
+        })
     });
+    let decls: Vec<TokenStream> = decls.collect();
     let mut out = vec![(
         format!("{dir}/mod.rs"),
         quote::quote! {
@@ -212,21 +236,43 @@ pub(crate) fn split(
             #(#decls)*
         },
     )];
-    for m in order {
-        let doc = format!("{what} of {}.", module_title(m));
-        let items = &modules[m].1;
+    for (m, parts) in &files {
+        let n = parts.len();
         let allow = partial(m).then(|| quote::quote!(#[allow(unused_imports)]));
-        out.push((
-            format!("{dir}/{m}.rs"),
-            quote::quote! {
-                #![doc = #doc]
-                #allow
-                use super::*;
-                #(#items)*
-            },
-        ));
+        for (i, (file, items)) in parts.iter().enumerate() {
+            let doc = match n {
+                1 => format!("{what} of {}.", module_title(m)),
+                _ => format!("{what} of {} (part {} of {n}).", module_title(m), i + 1),
+            };
+            out.push((
+                format!("{dir}/{file}.rs"),
+                quote::quote! {
+                    #![doc = #doc]
+                    #allow
+                    use super::*;
+                    #(#items)*
+                },
+            ));
+        }
     }
     out
+}
+
+/// `items` in consecutive parts of at most [`FILE_BUDGET`] printed characters each
+/// (an item larger than that alone in its part).
+fn parts(items: &[TokenStream]) -> Vec<&[TokenStream]> {
+    let mut parts = Vec::new();
+    let (mut start, mut size) = (0, 0);
+    for (i, item) in items.iter().enumerate() {
+        let len = item.to_string().len();
+        if size + len > FILE_BUDGET && i > start {
+            parts.push(&items[start..i]);
+            (start, size) = (i, 0);
+        }
+        size += len;
+    }
+    parts.push(&items[start..]);
+    parts
 }
 
 /// Format a generated module.

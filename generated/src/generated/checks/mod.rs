@@ -19,7 +19,7 @@ pub(crate) use structs::*;
 pub(crate) use values::*;
 /// Names of the versions and extensions that define enum values: the
 /// versions first, in order, then the extensions.
-const ORIGINS: [&str; 154usize] = [
+const ORIGINS: [&str; 261usize] = [
     "VK_VERSION_1_0",
     "VK_VERSION_1_1",
     "VK_VERSION_1_2",
@@ -74,6 +74,8 @@ const ORIGINS: [&str; 154usize] = [
     "VK_EXT_transform_feedback",
     "VK_EXT_validation_cache",
     "VK_EXT_vertex_input_dynamic_state",
+    "VK_EXT_video_encode_h264",
+    "VK_EXT_video_encode_h265",
     "VK_EXT_ycbcr_2plane_444_formats",
     "VK_FUCHSIA_buffer_collection",
     "VK_FUCHSIA_external_memory",
@@ -93,8 +95,10 @@ const ORIGINS: [&str; 154usize] = [
     "VK_KHR_device_group",
     "VK_KHR_display",
     "VK_KHR_dynamic_rendering",
+    "VK_KHR_external_fence",
     "VK_KHR_external_fence_capabilities",
     "VK_KHR_external_memory_capabilities",
+    "VK_KHR_external_semaphore",
     "VK_KHR_external_semaphore_capabilities",
     "VK_KHR_fragment_shading_rate",
     "VK_KHR_imageless_framebuffer",
@@ -118,6 +122,8 @@ const ORIGINS: [&str; 154usize] = [
     "VK_KHR_swapchain_mutable_format",
     "VK_KHR_synchronization2",
     "VK_KHR_timeline_semaphore",
+    "VK_KHR_video_decode_h264",
+    "VK_KHR_video_decode_h265",
     "VK_KHR_video_decode_queue",
     "VK_KHR_video_encode_queue",
     "VK_KHR_video_queue",
@@ -140,47 +146,414 @@ const ORIGINS: [&str; 154usize] = [
     "VK_QCOM_render_pass_store_ops",
     "VK_QCOM_render_pass_transform",
     "VK_VALVE_mutable_descriptor_type",
-    "VK_KHR_device_group_creation",
-    "VK_KHR_external_fence",
-    "VK_KHR_external_memory",
-    "VK_KHR_external_semaphore",
+    "VK_SEC_amigo_profiling",
     "VK_KHR_format_feature_flags2",
+    "VK_AMD_mixed_attachment_samples",
+    "VK_NV_framebuffer_mixed_samples",
+    "VK_NV_inherited_viewport_scissor",
+    "VK_QCOM_rotated_copy_commands",
+    "VK_KHR_external_semaphore_win32",
+    "VK_NV_dedicated_allocation",
+    "VK_EXT_device_memory_report",
+    "VK_NV_device_diagnostics_config",
+    "VK_KHR_device_group_creation",
+    "VK_AMD_memory_overallocation_behavior",
+    "VK_EXT_global_priority",
+    "VK_KHR_global_priority",
+    "VK_LUNARG_direct_driver_loading",
+    "VK_KHR_display_swapchain",
+    "VK_KHR_external_fence_win32",
+    "VK_KHR_external_memory",
+    "VK_NV_external_memory",
+    "VK_KHR_external_memory_win32",
+    "VK_NV_external_memory_win32",
+    "VK_EXT_metal_objects",
+    "VK_EXT_image_compression_control",
     "VK_KHR_image_format_list",
     "VK_EXT_separate_stencil_usage",
+    "VK_EXT_astc_decode_mode",
+    "VK_EXT_image_view_min_lod",
+    "VK_KHR_external_memory_fd",
     "VK_KHR_dedicated_allocation",
+    "VK_EXT_memory_priority",
     "VK_KHR_16bit_storage",
     "VK_KHR_8bit_storage",
+    "VK_EXT_border_color_swizzle",
+    "VK_AMD_device_coherent_memory",
+    "VK_NV_compute_shader_derivatives",
+    "VK_EXT_conservative_rasterization",
+    "VK_NV_cooperative_matrix",
+    "VK_NV_copy_memory_indirect",
+    "VK_NV_coverage_reduction_mode",
+    "VK_EXT_custom_border_color",
+    "VK_NV_dedicated_allocation_image_aliasing",
+    "VK_EXT_depth_clamp_zero_one",
+    "VK_EXT_depth_clip_control",
+    "VK_EXT_depth_clip_enable",
+    "VK_VALVE_descriptor_set_host_mapping",
     "VK_KHR_driver_properties",
+    "VK_EXT_physical_device_drm",
     "VK_KHR_get_physical_device_properties2",
     "VK_KHR_shader_float_controls",
+    "VK_KHR_fragment_shader_barycentric",
+    "VK_NV_fragment_shader_barycentric",
+    "VK_EXT_fragment_shader_interlock",
+    "VK_NV_fragment_shading_rate_enums",
+    "VK_EXT_global_priority_query",
     "VK_EXT_host_query_reset",
+    "VK_EXT_image_compression_control_swapchain",
     "VK_EXT_image_robustness",
+    "VK_NV_linear_color_attachment",
     "VK_KHR_maintenance3",
+    "VK_EXT_memory_budget",
+    "VK_NV_memory_decompression",
+    "VK_EXT_multi_draw",
+    "VK_QCOM_multiview_per_view_viewports",
+    "VK_EXT_pci_bus_info",
+    "VK_EXT_pageable_device_local_memory",
+    "VK_EXT_pipeline_properties",
+    "VK_EXT_pipeline_robustness",
+    "VK_KHR_portability_subset",
+    "VK_NV_present_barrier",
+    "VK_KHR_present_id",
+    "VK_KHR_present_wait",
+    "VK_EXT_primitive_topology_list_restart",
+    "VK_EXT_provoking_vertex",
+    "VK_EXT_rgba10x6_formats",
+    "VK_KHR_ray_query",
+    "VK_NV_ray_tracing_invocation_reorder",
+    "VK_NV_representative_fragment_test",
+    "VK_EXT_robustness2",
     "VK_EXT_scalar_block_layout",
+    "VK_EXT_shader_atomic_float2",
+    "VK_EXT_shader_atomic_float",
     "VK_KHR_shader_atomic_int64",
+    "VK_KHR_shader_clock",
+    "VK_ARM_shader_core_builtins",
+    "VK_AMD_shader_core_properties2",
+    "VK_AMD_shader_core_properties",
     "VK_EXT_shader_demote_to_helper_invocation",
+    "VK_AMD_shader_early_and_late_fragment_tests",
     "VK_KHR_shader_float16_int8",
+    "VK_EXT_shader_image_atomic_int64",
+    "VK_NV_shader_image_footprint",
     "VK_KHR_shader_integer_dot_product",
+    "VK_INTEL_shader_integer_functions2",
+    "VK_EXT_shader_module_identifier",
+    "VK_NV_shader_sm_builtins",
     "VK_KHR_shader_subgroup_extended_types",
+    "VK_KHR_shader_subgroup_uniform_control_flow",
     "VK_KHR_shader_terminate_invocation",
+    "VK_EXT_subpass_merge_feedback",
     "VK_EXT_texel_buffer_alignment",
+    "VK_QCOM_tile_properties",
     "VK_KHR_uniform_buffer_standard_layout",
     "VK_KHR_variable_pointers",
+    "VK_EXT_vertex_attribute_divisor",
     "VK_KHR_vulkan_memory_model",
+    "VK_KHR_workgroup_memory_explicit_layout",
+    "VK_EXT_ycbcr_image_arrays",
     "VK_KHR_zero_initialize_workgroup_memory",
+    "VK_AMD_pipeline_compiler_control",
+    "VK_NV_fragment_coverage_to_color",
     "VK_EXT_pipeline_creation_feedback",
+    "VK_AMD_rasterization_order",
+    "VK_NV_viewport_swizzle",
+    "VK_GGP_frame_token",
+    "VK_KHR_incremental_present",
+    "VK_GOOGLE_display_timing",
+    "VK_NV_device_diagnostic_checkpoints",
+    "VK_EXT_full_screen_exclusive",
+    "VK_KHR_win32_surface",
+    "VK_EXT_surface_maintenance1",
+    "VK_KHR_surface_protected_capabilities",
+    "VK_EXT_display_control",
+    "VK_AMD_texture_gather_bias_lod",
+    "VK_EXT_validation_features",
+    "VK_EXT_validation_flags",
+    "VK_KHR_win32_keyed_mutex",
+    "VK_NV_win32_keyed_mutex",
     "VK_KHR_create_renderpass2",
     "VK_KHR_copy_commands2",
     "VK_EXT_depth_range_unrestricted",
+    "VK_EXT_debug_marker",
+    "VK_NVX_image_view_handle",
     "VK_AMD_negative_viewport_height",
     "VK_KHR_draw_indirect_count",
+    "VK_AMD_buffer_marker",
 ];
+/// Each entry's index in `ORIGINS`: the explicit checks' conditions test
+/// `Exts::has(origin::NAME)`, a bit, where a name would be a search.
+#[allow(dead_code)]
+pub(crate) mod origin {
+    pub(crate) const VK_VERSION_1_0: u16 = 0u16;
+    pub(crate) const VK_VERSION_1_1: u16 = 1u16;
+    pub(crate) const VK_VERSION_1_2: u16 = 2u16;
+    pub(crate) const VK_VERSION_1_3: u16 = 3u16;
+    pub(crate) const VK_AMD_DISPLAY_NATIVE_HDR: u16 = 4u16;
+    pub(crate) const VK_ANDROID_EXTERNAL_MEMORY_ANDROID_HARDWARE_BUFFER: u16 = 5u16;
+    pub(crate) const VK_ARM_RASTERIZATION_ORDER_ATTACHMENT_ACCESS: u16 = 6u16;
+    pub(crate) const VK_EXT_4444_FORMATS: u16 = 7u16;
+    pub(crate) const VK_EXT_ATTACHMENT_FEEDBACK_LOOP_LAYOUT: u16 = 8u16;
+    pub(crate) const VK_EXT_BLEND_OPERATION_ADVANCED: u16 = 9u16;
+    pub(crate) const VK_EXT_BUFFER_DEVICE_ADDRESS: u16 = 10u16;
+    pub(crate) const VK_EXT_COLOR_WRITE_ENABLE: u16 = 11u16;
+    pub(crate) const VK_EXT_CONDITIONAL_RENDERING: u16 = 12u16;
+    pub(crate) const VK_EXT_DEBUG_REPORT: u16 = 13u16;
+    pub(crate) const VK_EXT_DEBUG_UTILS: u16 = 14u16;
+    pub(crate) const VK_EXT_DESCRIPTOR_BUFFER: u16 = 15u16;
+    pub(crate) const VK_EXT_DESCRIPTOR_INDEXING: u16 = 16u16;
+    pub(crate) const VK_EXT_DEVICE_ADDRESS_BINDING_REPORT: u16 = 17u16;
+    pub(crate) const VK_EXT_DISCARD_RECTANGLES: u16 = 18u16;
+    pub(crate) const VK_EXT_EXTENDED_DYNAMIC_STATE: u16 = 19u16;
+    pub(crate) const VK_EXT_EXTENDED_DYNAMIC_STATE2: u16 = 20u16;
+    pub(crate) const VK_EXT_EXTENDED_DYNAMIC_STATE3: u16 = 21u16;
+    pub(crate) const VK_EXT_EXTERNAL_MEMORY_DMA_BUF: u16 = 22u16;
+    pub(crate) const VK_EXT_EXTERNAL_MEMORY_HOST: u16 = 23u16;
+    pub(crate) const VK_EXT_FILTER_CUBIC: u16 = 24u16;
+    pub(crate) const VK_EXT_FRAGMENT_DENSITY_MAP: u16 = 25u16;
+    pub(crate) const VK_EXT_FRAGMENT_DENSITY_MAP2: u16 = 26u16;
+    pub(crate) const VK_EXT_GRAPHICS_PIPELINE_LIBRARY: u16 = 27u16;
+    pub(crate) const VK_EXT_IMAGE_2D_VIEW_OF_3D: u16 = 28u16;
+    pub(crate) const VK_EXT_IMAGE_DRM_FORMAT_MODIFIER: u16 = 29u16;
+    pub(crate) const VK_EXT_INDEX_TYPE_UINT8: u16 = 30u16;
+    pub(crate) const VK_EXT_INLINE_UNIFORM_BLOCK: u16 = 31u16;
+    pub(crate) const VK_EXT_LEGACY_DITHERING: u16 = 32u16;
+    pub(crate) const VK_EXT_LINE_RASTERIZATION: u16 = 33u16;
+    pub(crate) const VK_EXT_LOAD_STORE_OP_NONE: u16 = 34u16;
+    pub(crate) const VK_EXT_MESH_SHADER: u16 = 35u16;
+    pub(crate) const VK_EXT_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED: u16 = 36u16;
+    pub(crate) const VK_EXT_MUTABLE_DESCRIPTOR_TYPE: u16 = 37u16;
+    pub(crate) const VK_EXT_NON_SEAMLESS_CUBE_MAP: u16 = 38u16;
+    pub(crate) const VK_EXT_OPACITY_MICROMAP: u16 = 39u16;
+    pub(crate) const VK_EXT_PIPELINE_CREATION_CACHE_CONTROL: u16 = 40u16;
+    pub(crate) const VK_EXT_PIPELINE_PROTECTED_ACCESS: u16 = 41u16;
+    pub(crate) const VK_EXT_PRIMITIVES_GENERATED_QUERY: u16 = 42u16;
+    pub(crate) const VK_EXT_PRIVATE_DATA: u16 = 43u16;
+    pub(crate) const VK_EXT_RASTERIZATION_ORDER_ATTACHMENT_ACCESS: u16 = 44u16;
+    pub(crate) const VK_EXT_SAMPLE_LOCATIONS: u16 = 45u16;
+    pub(crate) const VK_EXT_SAMPLER_FILTER_MINMAX: u16 = 46u16;
+    pub(crate) const VK_EXT_SUBGROUP_SIZE_CONTROL: u16 = 47u16;
+    pub(crate) const VK_EXT_SWAPCHAIN_COLORSPACE: u16 = 48u16;
+    pub(crate) const VK_EXT_SWAPCHAIN_MAINTENANCE1: u16 = 49u16;
+    pub(crate) const VK_EXT_TEXTURE_COMPRESSION_ASTC_HDR: u16 = 50u16;
+    pub(crate) const VK_EXT_TRANSFORM_FEEDBACK: u16 = 51u16;
+    pub(crate) const VK_EXT_VALIDATION_CACHE: u16 = 52u16;
+    pub(crate) const VK_EXT_VERTEX_INPUT_DYNAMIC_STATE: u16 = 53u16;
+    pub(crate) const VK_EXT_VIDEO_ENCODE_H264: u16 = 54u16;
+    pub(crate) const VK_EXT_VIDEO_ENCODE_H265: u16 = 55u16;
+    pub(crate) const VK_EXT_YCBCR_2PLANE_444_FORMATS: u16 = 56u16;
+    pub(crate) const VK_FUCHSIA_BUFFER_COLLECTION: u16 = 57u16;
+    pub(crate) const VK_FUCHSIA_EXTERNAL_MEMORY: u16 = 58u16;
+    pub(crate) const VK_FUCHSIA_EXTERNAL_SEMAPHORE: u16 = 59u16;
+    pub(crate) const VK_HUAWEI_CLUSTER_CULLING_SHADER: u16 = 60u16;
+    pub(crate) const VK_HUAWEI_INVOCATION_MASK: u16 = 61u16;
+    pub(crate) const VK_HUAWEI_SUBPASS_SHADING: u16 = 62u16;
+    pub(crate) const VK_IMG_FILTER_CUBIC: u16 = 63u16;
+    pub(crate) const VK_IMG_FORMAT_PVRTC: u16 = 64u16;
+    pub(crate) const VK_INTEL_PERFORMANCE_QUERY: u16 = 65u16;
+    pub(crate) const VK_KHR_ACCELERATION_STRUCTURE: u16 = 66u16;
+    pub(crate) const VK_KHR_BIND_MEMORY2: u16 = 67u16;
+    pub(crate) const VK_KHR_BUFFER_DEVICE_ADDRESS: u16 = 68u16;
+    pub(crate) const VK_KHR_DEFERRED_HOST_OPERATIONS: u16 = 69u16;
+    pub(crate) const VK_KHR_DEPTH_STENCIL_RESOLVE: u16 = 70u16;
+    pub(crate) const VK_KHR_DESCRIPTOR_UPDATE_TEMPLATE: u16 = 71u16;
+    pub(crate) const VK_KHR_DEVICE_GROUP: u16 = 72u16;
+    pub(crate) const VK_KHR_DISPLAY: u16 = 73u16;
+    pub(crate) const VK_KHR_DYNAMIC_RENDERING: u16 = 74u16;
+    pub(crate) const VK_KHR_EXTERNAL_FENCE: u16 = 75u16;
+    pub(crate) const VK_KHR_EXTERNAL_FENCE_CAPABILITIES: u16 = 76u16;
+    pub(crate) const VK_KHR_EXTERNAL_MEMORY_CAPABILITIES: u16 = 77u16;
+    pub(crate) const VK_KHR_EXTERNAL_SEMAPHORE: u16 = 78u16;
+    pub(crate) const VK_KHR_EXTERNAL_SEMAPHORE_CAPABILITIES: u16 = 79u16;
+    pub(crate) const VK_KHR_FRAGMENT_SHADING_RATE: u16 = 80u16;
+    pub(crate) const VK_KHR_IMAGELESS_FRAMEBUFFER: u16 = 81u16;
+    pub(crate) const VK_KHR_MAINTENANCE1: u16 = 82u16;
+    pub(crate) const VK_KHR_MAINTENANCE2: u16 = 83u16;
+    pub(crate) const VK_KHR_MAINTENANCE4: u16 = 84u16;
+    pub(crate) const VK_KHR_MULTIVIEW: u16 = 85u16;
+    pub(crate) const VK_KHR_PERFORMANCE_QUERY: u16 = 86u16;
+    pub(crate) const VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES: u16 = 87u16;
+    pub(crate) const VK_KHR_PIPELINE_LIBRARY: u16 = 88u16;
+    pub(crate) const VK_KHR_PORTABILITY_ENUMERATION: u16 = 89u16;
+    pub(crate) const VK_KHR_PUSH_DESCRIPTOR: u16 = 90u16;
+    pub(crate) const VK_KHR_RAY_TRACING_MAINTENANCE1: u16 = 91u16;
+    pub(crate) const VK_KHR_RAY_TRACING_PIPELINE: u16 = 92u16;
+    pub(crate) const VK_KHR_SAMPLER_MIRROR_CLAMP_TO_EDGE: u16 = 93u16;
+    pub(crate) const VK_KHR_SAMPLER_YCBCR_CONVERSION: u16 = 94u16;
+    pub(crate) const VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS: u16 = 95u16;
+    pub(crate) const VK_KHR_SHARED_PRESENTABLE_IMAGE: u16 = 96u16;
+    pub(crate) const VK_KHR_SURFACE: u16 = 97u16;
+    pub(crate) const VK_KHR_SWAPCHAIN: u16 = 98u16;
+    pub(crate) const VK_KHR_SWAPCHAIN_MUTABLE_FORMAT: u16 = 99u16;
+    pub(crate) const VK_KHR_SYNCHRONIZATION2: u16 = 100u16;
+    pub(crate) const VK_KHR_TIMELINE_SEMAPHORE: u16 = 101u16;
+    pub(crate) const VK_KHR_VIDEO_DECODE_H264: u16 = 102u16;
+    pub(crate) const VK_KHR_VIDEO_DECODE_H265: u16 = 103u16;
+    pub(crate) const VK_KHR_VIDEO_DECODE_QUEUE: u16 = 104u16;
+    pub(crate) const VK_KHR_VIDEO_ENCODE_QUEUE: u16 = 105u16;
+    pub(crate) const VK_KHR_VIDEO_QUEUE: u16 = 106u16;
+    pub(crate) const VK_NVX_BINARY_IMPORT: u16 = 107u16;
+    pub(crate) const VK_NVX_MULTIVIEW_PER_VIEW_ATTRIBUTES: u16 = 108u16;
+    pub(crate) const VK_NV_CLIP_SPACE_W_SCALING: u16 = 109u16;
+    pub(crate) const VK_NV_CORNER_SAMPLED_IMAGE: u16 = 110u16;
+    pub(crate) const VK_NV_DEVICE_GENERATED_COMMANDS: u16 = 111u16;
+    pub(crate) const VK_NV_EXTERNAL_MEMORY_RDMA: u16 = 112u16;
+    pub(crate) const VK_NV_FILL_RECTANGLE: u16 = 113u16;
+    pub(crate) const VK_NV_MESH_SHADER: u16 = 114u16;
+    pub(crate) const VK_NV_OPTICAL_FLOW: u16 = 115u16;
+    pub(crate) const VK_NV_RAY_TRACING: u16 = 116u16;
+    pub(crate) const VK_NV_RAY_TRACING_MOTION_BLUR: u16 = 117u16;
+    pub(crate) const VK_NV_SCISSOR_EXCLUSIVE: u16 = 118u16;
+    pub(crate) const VK_NV_SHADING_RATE_IMAGE: u16 = 119u16;
+    pub(crate) const VK_QCOM_FRAGMENT_DENSITY_MAP_OFFSET: u16 = 120u16;
+    pub(crate) const VK_QCOM_IMAGE_PROCESSING: u16 = 121u16;
+    pub(crate) const VK_QCOM_RENDER_PASS_SHADER_RESOLVE: u16 = 122u16;
+    pub(crate) const VK_QCOM_RENDER_PASS_STORE_OPS: u16 = 123u16;
+    pub(crate) const VK_QCOM_RENDER_PASS_TRANSFORM: u16 = 124u16;
+    pub(crate) const VK_VALVE_MUTABLE_DESCRIPTOR_TYPE: u16 = 125u16;
+    pub(crate) const VK_SEC_AMIGO_PROFILING: u16 = 126u16;
+    pub(crate) const VK_KHR_FORMAT_FEATURE_FLAGS2: u16 = 127u16;
+    pub(crate) const VK_AMD_MIXED_ATTACHMENT_SAMPLES: u16 = 128u16;
+    pub(crate) const VK_NV_FRAMEBUFFER_MIXED_SAMPLES: u16 = 129u16;
+    pub(crate) const VK_NV_INHERITED_VIEWPORT_SCISSOR: u16 = 130u16;
+    pub(crate) const VK_QCOM_ROTATED_COPY_COMMANDS: u16 = 131u16;
+    pub(crate) const VK_KHR_EXTERNAL_SEMAPHORE_WIN32: u16 = 132u16;
+    pub(crate) const VK_NV_DEDICATED_ALLOCATION: u16 = 133u16;
+    pub(crate) const VK_EXT_DEVICE_MEMORY_REPORT: u16 = 134u16;
+    pub(crate) const VK_NV_DEVICE_DIAGNOSTICS_CONFIG: u16 = 135u16;
+    pub(crate) const VK_KHR_DEVICE_GROUP_CREATION: u16 = 136u16;
+    pub(crate) const VK_AMD_MEMORY_OVERALLOCATION_BEHAVIOR: u16 = 137u16;
+    pub(crate) const VK_EXT_GLOBAL_PRIORITY: u16 = 138u16;
+    pub(crate) const VK_KHR_GLOBAL_PRIORITY: u16 = 139u16;
+    pub(crate) const VK_LUNARG_DIRECT_DRIVER_LOADING: u16 = 140u16;
+    pub(crate) const VK_KHR_DISPLAY_SWAPCHAIN: u16 = 141u16;
+    pub(crate) const VK_KHR_EXTERNAL_FENCE_WIN32: u16 = 142u16;
+    pub(crate) const VK_KHR_EXTERNAL_MEMORY: u16 = 143u16;
+    pub(crate) const VK_NV_EXTERNAL_MEMORY: u16 = 144u16;
+    pub(crate) const VK_KHR_EXTERNAL_MEMORY_WIN32: u16 = 145u16;
+    pub(crate) const VK_NV_EXTERNAL_MEMORY_WIN32: u16 = 146u16;
+    pub(crate) const VK_EXT_METAL_OBJECTS: u16 = 147u16;
+    pub(crate) const VK_EXT_IMAGE_COMPRESSION_CONTROL: u16 = 148u16;
+    pub(crate) const VK_KHR_IMAGE_FORMAT_LIST: u16 = 149u16;
+    pub(crate) const VK_EXT_SEPARATE_STENCIL_USAGE: u16 = 150u16;
+    pub(crate) const VK_EXT_ASTC_DECODE_MODE: u16 = 151u16;
+    pub(crate) const VK_EXT_IMAGE_VIEW_MIN_LOD: u16 = 152u16;
+    pub(crate) const VK_KHR_EXTERNAL_MEMORY_FD: u16 = 153u16;
+    pub(crate) const VK_KHR_DEDICATED_ALLOCATION: u16 = 154u16;
+    pub(crate) const VK_EXT_MEMORY_PRIORITY: u16 = 155u16;
+    pub(crate) const VK_KHR_16BIT_STORAGE: u16 = 156u16;
+    pub(crate) const VK_KHR_8BIT_STORAGE: u16 = 157u16;
+    pub(crate) const VK_EXT_BORDER_COLOR_SWIZZLE: u16 = 158u16;
+    pub(crate) const VK_AMD_DEVICE_COHERENT_MEMORY: u16 = 159u16;
+    pub(crate) const VK_NV_COMPUTE_SHADER_DERIVATIVES: u16 = 160u16;
+    pub(crate) const VK_EXT_CONSERVATIVE_RASTERIZATION: u16 = 161u16;
+    pub(crate) const VK_NV_COOPERATIVE_MATRIX: u16 = 162u16;
+    pub(crate) const VK_NV_COPY_MEMORY_INDIRECT: u16 = 163u16;
+    pub(crate) const VK_NV_COVERAGE_REDUCTION_MODE: u16 = 164u16;
+    pub(crate) const VK_EXT_CUSTOM_BORDER_COLOR: u16 = 165u16;
+    pub(crate) const VK_NV_DEDICATED_ALLOCATION_IMAGE_ALIASING: u16 = 166u16;
+    pub(crate) const VK_EXT_DEPTH_CLAMP_ZERO_ONE: u16 = 167u16;
+    pub(crate) const VK_EXT_DEPTH_CLIP_CONTROL: u16 = 168u16;
+    pub(crate) const VK_EXT_DEPTH_CLIP_ENABLE: u16 = 169u16;
+    pub(crate) const VK_VALVE_DESCRIPTOR_SET_HOST_MAPPING: u16 = 170u16;
+    pub(crate) const VK_KHR_DRIVER_PROPERTIES: u16 = 171u16;
+    pub(crate) const VK_EXT_PHYSICAL_DEVICE_DRM: u16 = 172u16;
+    pub(crate) const VK_KHR_GET_PHYSICAL_DEVICE_PROPERTIES2: u16 = 173u16;
+    pub(crate) const VK_KHR_SHADER_FLOAT_CONTROLS: u16 = 174u16;
+    pub(crate) const VK_KHR_FRAGMENT_SHADER_BARYCENTRIC: u16 = 175u16;
+    pub(crate) const VK_NV_FRAGMENT_SHADER_BARYCENTRIC: u16 = 176u16;
+    pub(crate) const VK_EXT_FRAGMENT_SHADER_INTERLOCK: u16 = 177u16;
+    pub(crate) const VK_NV_FRAGMENT_SHADING_RATE_ENUMS: u16 = 178u16;
+    pub(crate) const VK_EXT_GLOBAL_PRIORITY_QUERY: u16 = 179u16;
+    pub(crate) const VK_EXT_HOST_QUERY_RESET: u16 = 180u16;
+    pub(crate) const VK_EXT_IMAGE_COMPRESSION_CONTROL_SWAPCHAIN: u16 = 181u16;
+    pub(crate) const VK_EXT_IMAGE_ROBUSTNESS: u16 = 182u16;
+    pub(crate) const VK_NV_LINEAR_COLOR_ATTACHMENT: u16 = 183u16;
+    pub(crate) const VK_KHR_MAINTENANCE3: u16 = 184u16;
+    pub(crate) const VK_EXT_MEMORY_BUDGET: u16 = 185u16;
+    pub(crate) const VK_NV_MEMORY_DECOMPRESSION: u16 = 186u16;
+    pub(crate) const VK_EXT_MULTI_DRAW: u16 = 187u16;
+    pub(crate) const VK_QCOM_MULTIVIEW_PER_VIEW_VIEWPORTS: u16 = 188u16;
+    pub(crate) const VK_EXT_PCI_BUS_INFO: u16 = 189u16;
+    pub(crate) const VK_EXT_PAGEABLE_DEVICE_LOCAL_MEMORY: u16 = 190u16;
+    pub(crate) const VK_EXT_PIPELINE_PROPERTIES: u16 = 191u16;
+    pub(crate) const VK_EXT_PIPELINE_ROBUSTNESS: u16 = 192u16;
+    pub(crate) const VK_KHR_PORTABILITY_SUBSET: u16 = 193u16;
+    pub(crate) const VK_NV_PRESENT_BARRIER: u16 = 194u16;
+    pub(crate) const VK_KHR_PRESENT_ID: u16 = 195u16;
+    pub(crate) const VK_KHR_PRESENT_WAIT: u16 = 196u16;
+    pub(crate) const VK_EXT_PRIMITIVE_TOPOLOGY_LIST_RESTART: u16 = 197u16;
+    pub(crate) const VK_EXT_PROVOKING_VERTEX: u16 = 198u16;
+    pub(crate) const VK_EXT_RGBA10X6_FORMATS: u16 = 199u16;
+    pub(crate) const VK_KHR_RAY_QUERY: u16 = 200u16;
+    pub(crate) const VK_NV_RAY_TRACING_INVOCATION_REORDER: u16 = 201u16;
+    pub(crate) const VK_NV_REPRESENTATIVE_FRAGMENT_TEST: u16 = 202u16;
+    pub(crate) const VK_EXT_ROBUSTNESS2: u16 = 203u16;
+    pub(crate) const VK_EXT_SCALAR_BLOCK_LAYOUT: u16 = 204u16;
+    pub(crate) const VK_EXT_SHADER_ATOMIC_FLOAT2: u16 = 205u16;
+    pub(crate) const VK_EXT_SHADER_ATOMIC_FLOAT: u16 = 206u16;
+    pub(crate) const VK_KHR_SHADER_ATOMIC_INT64: u16 = 207u16;
+    pub(crate) const VK_KHR_SHADER_CLOCK: u16 = 208u16;
+    pub(crate) const VK_ARM_SHADER_CORE_BUILTINS: u16 = 209u16;
+    pub(crate) const VK_AMD_SHADER_CORE_PROPERTIES2: u16 = 210u16;
+    pub(crate) const VK_AMD_SHADER_CORE_PROPERTIES: u16 = 211u16;
+    pub(crate) const VK_EXT_SHADER_DEMOTE_TO_HELPER_INVOCATION: u16 = 212u16;
+    pub(crate) const VK_AMD_SHADER_EARLY_AND_LATE_FRAGMENT_TESTS: u16 = 213u16;
+    pub(crate) const VK_KHR_SHADER_FLOAT16_INT8: u16 = 214u16;
+    pub(crate) const VK_EXT_SHADER_IMAGE_ATOMIC_INT64: u16 = 215u16;
+    pub(crate) const VK_NV_SHADER_IMAGE_FOOTPRINT: u16 = 216u16;
+    pub(crate) const VK_KHR_SHADER_INTEGER_DOT_PRODUCT: u16 = 217u16;
+    pub(crate) const VK_INTEL_SHADER_INTEGER_FUNCTIONS2: u16 = 218u16;
+    pub(crate) const VK_EXT_SHADER_MODULE_IDENTIFIER: u16 = 219u16;
+    pub(crate) const VK_NV_SHADER_SM_BUILTINS: u16 = 220u16;
+    pub(crate) const VK_KHR_SHADER_SUBGROUP_EXTENDED_TYPES: u16 = 221u16;
+    pub(crate) const VK_KHR_SHADER_SUBGROUP_UNIFORM_CONTROL_FLOW: u16 = 222u16;
+    pub(crate) const VK_KHR_SHADER_TERMINATE_INVOCATION: u16 = 223u16;
+    pub(crate) const VK_EXT_SUBPASS_MERGE_FEEDBACK: u16 = 224u16;
+    pub(crate) const VK_EXT_TEXEL_BUFFER_ALIGNMENT: u16 = 225u16;
+    pub(crate) const VK_QCOM_TILE_PROPERTIES: u16 = 226u16;
+    pub(crate) const VK_KHR_UNIFORM_BUFFER_STANDARD_LAYOUT: u16 = 227u16;
+    pub(crate) const VK_KHR_VARIABLE_POINTERS: u16 = 228u16;
+    pub(crate) const VK_EXT_VERTEX_ATTRIBUTE_DIVISOR: u16 = 229u16;
+    pub(crate) const VK_KHR_VULKAN_MEMORY_MODEL: u16 = 230u16;
+    pub(crate) const VK_KHR_WORKGROUP_MEMORY_EXPLICIT_LAYOUT: u16 = 231u16;
+    pub(crate) const VK_EXT_YCBCR_IMAGE_ARRAYS: u16 = 232u16;
+    pub(crate) const VK_KHR_ZERO_INITIALIZE_WORKGROUP_MEMORY: u16 = 233u16;
+    pub(crate) const VK_AMD_PIPELINE_COMPILER_CONTROL: u16 = 234u16;
+    pub(crate) const VK_NV_FRAGMENT_COVERAGE_TO_COLOR: u16 = 235u16;
+    pub(crate) const VK_EXT_PIPELINE_CREATION_FEEDBACK: u16 = 236u16;
+    pub(crate) const VK_AMD_RASTERIZATION_ORDER: u16 = 237u16;
+    pub(crate) const VK_NV_VIEWPORT_SWIZZLE: u16 = 238u16;
+    pub(crate) const VK_GGP_FRAME_TOKEN: u16 = 239u16;
+    pub(crate) const VK_KHR_INCREMENTAL_PRESENT: u16 = 240u16;
+    pub(crate) const VK_GOOGLE_DISPLAY_TIMING: u16 = 241u16;
+    pub(crate) const VK_NV_DEVICE_DIAGNOSTIC_CHECKPOINTS: u16 = 242u16;
+    pub(crate) const VK_EXT_FULL_SCREEN_EXCLUSIVE: u16 = 243u16;
+    pub(crate) const VK_KHR_WIN32_SURFACE: u16 = 244u16;
+    pub(crate) const VK_EXT_SURFACE_MAINTENANCE1: u16 = 245u16;
+    pub(crate) const VK_KHR_SURFACE_PROTECTED_CAPABILITIES: u16 = 246u16;
+    pub(crate) const VK_EXT_DISPLAY_CONTROL: u16 = 247u16;
+    pub(crate) const VK_AMD_TEXTURE_GATHER_BIAS_LOD: u16 = 248u16;
+    pub(crate) const VK_EXT_VALIDATION_FEATURES: u16 = 249u16;
+    pub(crate) const VK_EXT_VALIDATION_FLAGS: u16 = 250u16;
+    pub(crate) const VK_KHR_WIN32_KEYED_MUTEX: u16 = 251u16;
+    pub(crate) const VK_NV_WIN32_KEYED_MUTEX: u16 = 252u16;
+    pub(crate) const VK_KHR_CREATE_RENDERPASS2: u16 = 253u16;
+    pub(crate) const VK_KHR_COPY_COMMANDS2: u16 = 254u16;
+    pub(crate) const VK_EXT_DEPTH_RANGE_UNRESTRICTED: u16 = 255u16;
+    pub(crate) const VK_EXT_DEBUG_MARKER: u16 = 256u16;
+    pub(crate) const VK_NVX_IMAGE_VIEW_HANDLE: u16 = 257u16;
+    pub(crate) const VK_AMD_NEGATIVE_VIEWPORT_HEIGHT: u16 = 258u16;
+    pub(crate) const VK_KHR_DRAW_INDIRECT_COUNT: u16 = 259u16;
+    pub(crate) const VK_AMD_BUFFER_MARKER: u16 = 260u16;
+}
 /// The minor version of each leading version entry of `ORIGINS`.
 const VERSION_MINORS: [u32; 4usize] = [0u32, 1u32, 2u32, 3u32];
 /// The versions and extensions enabled on an instance or device, as a bit
 /// set over `ORIGINS`.
 #[derive(Clone, Copy, Default, Debug)]
-pub(crate) struct Exts([u64; 3usize]);
+pub(crate) struct Exts([u64; 5usize]);
 impl Exts {
     /// Versions up to 1.`minor` and the extensions named.
     pub(crate) fn new(minor: u32, names: &[&core::ffi::CStr]) -> Exts {
@@ -251,136 +624,854 @@ unsafe fn members<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
     unsafe { core::slice::from_raw_parts(ptr, count as usize) }
 }
 /// Structure types that may appear more than once in a chain.
-const DUPLICATES_ALLOWED: &[i32] = &[1000128004, 1000295001];
+const DUPLICATES_ALLOWED: &[i32] = &[
+    1000128004, 1000284001, 1000295001, 1000311004, 1000311003, 1000311008, 1000311000,
+    1000311010, 1000311006, 1000311007,
+];
 /// Whether the version or extension that defines structure type `ty` is
 /// enabled in the scope (any type of Vulkan 1.0, or one no gate names, is).
 fn node_enabled(ty: i32, s: &Scope<'_>) -> bool {
     match ty {
-        1000241002 => s.exts.has(91) || s.exts.has(2),
-        1000241001 => s.exts.has(91) || s.exts.has(2),
-        1000060013 => s.exts.has(1) || (s.exts.has(65) && s.exts.has(70)),
-        1000060014 => s.exts.has(1) || (s.exts.has(65) && s.exts.has(70)),
+        #[cfg(feature = "nv_ray_tracing_motion_blur")]
+        1000327000 => s.exts.has(117),
+        #[cfg(feature = "nv_ray_tracing_motion_blur")]
+        1000327002 => s.exts.has(117),
+        #[cfg(feature = "ext_opacity_micromap")]
+        1000396009 => s.exts.has(39),
+        #[cfg(feature = "sec_amigo_profiling")]
+        1000485001 => s.exts.has(126),
+        #[cfg(
+            all(
+                feature = "android_external_memory_android_hardware_buffer",
+                feature = "khr_format_feature_flags2"
+            )
+        )]
+        1000129006 => s.exts.has(5) && s.exts.has(127),
+        #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+        1000129002 => s.exts.has(5),
+        #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+        1000129000 => s.exts.has(5),
+        1000241002 => s.exts.has(95) || s.exts.has(2),
+        1000241001 => s.exts.has(95) || s.exts.has(2),
+        #[cfg(
+            any(
+                all(
+                    feature = "amd_mixed_attachment_samples",
+                    feature = "khr_dynamic_rendering"
+                ),
+                all(
+                    feature = "khr_dynamic_rendering",
+                    feature = "nv_framebuffer_mixed_samples"
+                )
+            )
+        )]
+        1000044008 => {
+            (s.exts.has(128) && s.exts.has(74)) || (s.exts.has(74) && s.exts.has(129))
+        }
+        1000060013 => s.exts.has(1) || (s.exts.has(67) && s.exts.has(72)),
+        1000060014 => s.exts.has(1) || (s.exts.has(67) && s.exts.has(72)),
         #[cfg(feature = "khr_swapchain")]
         1000060009 => {
-            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+            (s.exts.has(72) && s.exts.has(98)) || (s.exts.has(98) && s.exts.has(1))
         }
-        1000156002 => s.exts.has(90) || s.exts.has(1),
-        1000257002 => s.exts.has(66) || s.exts.has(2),
-        1000044004 => s.exts.has(72) || s.exts.has(3),
+        1000156002 => s.exts.has(94) || s.exts.has(1),
+        #[cfg(feature = "fuchsia_buffer_collection")]
+        1000366005 => s.exts.has(57),
+        #[cfg(feature = "fuchsia_buffer_collection")]
+        1000366002 => s.exts.has(57),
+        #[cfg(feature = "ext_buffer_device_address")]
+        1000244002 => s.exts.has(10),
+        1000257002 => s.exts.has(68) || s.exts.has(2),
+        #[cfg(feature = "ext_conditional_rendering")]
+        1000081000 => s.exts.has(12),
+        #[cfg(feature = "qcom_render_pass_transform")]
+        1000282000 => s.exts.has(124),
+        1000044004 => s.exts.has(74) || s.exts.has(3),
+        #[cfg(feature = "nv_inherited_viewport_scissor")]
+        1000278001 => s.exts.has(130),
+        #[cfg(feature = "qcom_rotated_copy_commands")]
+        1000333000 => s.exts.has(131),
+        #[cfg(feature = "khr_external_semaphore_win32")]
+        1000078002 => s.exts.has(132),
+        #[cfg(feature = "ext_debug_report")]
+        1000011000 => s.exts.has(13),
         #[cfg(feature = "ext_debug_utils")]
         1000128004 => s.exts.has(14),
         #[cfg(feature = "ext_debug_utils")]
         1000128000 => s.exts.has(14),
+        #[cfg(feature = "nv_dedicated_allocation")]
+        1000026001 => s.exts.has(133),
+        #[cfg(feature = "nv_dedicated_allocation")]
+        1000026000 => s.exts.has(133),
+        #[cfg(feature = "nv_dedicated_allocation")]
+        1000026002 => s.exts.has(133),
+        #[cfg(feature = "ext_descriptor_buffer")]
+        1000316012 => s.exts.has(15),
         1000138003 => s.exts.has(31) || s.exts.has(3),
         1000161000 => s.exts.has(16) || s.exts.has(2),
         1000161003 => s.exts.has(16) || s.exts.has(2),
         1000161004 => s.exts.has(16) || s.exts.has(2),
-        1000060006 => s.exts.has(70) || s.exts.has(1),
-        1000060004 => s.exts.has(70) || s.exts.has(1),
-        1000070001 => s.exts.has(120) || s.exts.has(1),
+        #[cfg(feature = "ext_device_address_binding_report")]
+        1000354001 => s.exts.has(17),
+        #[cfg(feature = "ext_device_memory_report")]
+        1000284001 => s.exts.has(134),
+        #[cfg(feature = "nv_device_diagnostics_config")]
+        1000300001 => s.exts.has(135),
+        1000060006 => s.exts.has(72) || s.exts.has(1),
+        1000060004 => s.exts.has(72) || s.exts.has(1),
+        1000070001 => s.exts.has(136) || s.exts.has(1),
         #[cfg(feature = "khr_swapchain")]
         1000060011 => {
-            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+            (s.exts.has(72) && s.exts.has(98)) || (s.exts.has(98) && s.exts.has(1))
         }
-        1000060003 => s.exts.has(70) || s.exts.has(1),
-        1000060005 => s.exts.has(70) || s.exts.has(1),
+        1000060003 => s.exts.has(72) || s.exts.has(1),
+        1000060005 => s.exts.has(72) || s.exts.has(1),
         #[cfg(feature = "khr_swapchain")]
         1000060012 => {
-            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+            (s.exts.has(72) && s.exts.has(98)) || (s.exts.has(98) && s.exts.has(1))
         }
+        #[cfg(feature = "amd_memory_overallocation_behavior")]
+        1000189000 => s.exts.has(137),
         1000295001 => s.exts.has(43) || s.exts.has(3),
-        1000113000 => s.exts.has(121) || s.exts.has(1),
-        1000072002 => s.exts.has(122) || s.exts.has(1),
-        1000077000 => s.exts.has(123) || s.exts.has(1),
-        1000071001 => s.exts.has(74) || s.exts.has(1),
-        1000072000 => s.exts.has(122) || s.exts.has(1),
-        1000072001 => s.exts.has(122) || s.exts.has(1),
-        1000360000 => s.exts.has(124) || s.exts.has(3),
-        1000108001 => s.exts.has(77) || s.exts.has(2),
-        1000147000 => s.exts.has(125) || s.exts.has(2),
-        1000156003 => s.exts.has(90) || s.exts.has(1),
-        1000246000 => s.exts.has(126) || s.exts.has(2),
+        #[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+        1000174000 => s.exts.has(138) || s.exts.has(139),
+        #[cfg(feature = "lunarg_direct_driver_loading")]
+        1000459001 => s.exts.has(140),
+        #[cfg(feature = "amd_display_native_hdr")]
+        1000213000 => s.exts.has(4),
+        #[cfg(feature = "khr_display_swapchain")]
+        1000003000 => s.exts.has(141),
+        #[cfg(
+            all(
+                feature = "ext_image_drm_format_modifier",
+                feature = "khr_format_feature_flags2"
+            )
+        )]
+        1000158006 => s.exts.has(29) && s.exts.has(127),
+        #[cfg(feature = "ext_image_drm_format_modifier")]
+        1000158000 => s.exts.has(29),
+        1000113000 => s.exts.has(75) || s.exts.has(1),
+        #[cfg(feature = "khr_external_fence_win32")]
+        1000114001 => s.exts.has(142),
+        1000072002 => s.exts.has(143) || s.exts.has(1),
+        #[cfg(feature = "nv_external_memory")]
+        1000056001 => s.exts.has(144),
+        #[cfg(feature = "khr_external_memory_win32")]
+        1000073001 => s.exts.has(145),
+        #[cfg(feature = "nv_external_memory_win32")]
+        1000057001 => s.exts.has(146),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311004 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311003 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311002 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311008 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311000 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311010 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311006 => s.exts.has(147),
+        1000077000 => s.exts.has(78) || s.exts.has(1),
+        #[cfg(feature = "khr_external_semaphore_win32")]
+        1000078001 => s.exts.has(132),
+        #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+        1000129005 => s.exts.has(5),
+        1000071001 => s.exts.has(77) || s.exts.has(1),
+        1000072000 => s.exts.has(143) || s.exts.has(1),
+        1000072001 => s.exts.has(143) || s.exts.has(1),
+        #[cfg(feature = "nv_external_memory")]
+        1000056000 => s.exts.has(144),
+        #[cfg(feature = "ext_filter_cubic")]
+        1000170001 => s.exts.has(24),
+        1000360000 => s.exts.has(127) || s.exts.has(3),
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        1000226000 => s.exts.has(80),
+        1000108001 => s.exts.has(81) || s.exts.has(2),
+        #[cfg(feature = "ext_graphics_pipeline_library")]
+        1000320002 => s.exts.has(27),
+        #[cfg(feature = "nv_device_generated_commands")]
+        1000277002 => s.exts.has(111),
+        #[cfg(feature = "ext_image_compression_control")]
+        1000338001 => s.exts.has(148),
+        #[cfg(feature = "ext_image_compression_control")]
+        1000338004 => s.exts.has(148),
+        #[cfg(feature = "ext_image_drm_format_modifier")]
+        1000158004 => s.exts.has(29),
+        #[cfg(feature = "ext_image_drm_format_modifier")]
+        1000158003 => s.exts.has(29),
+        1000147000 => s.exts.has(149) || s.exts.has(2),
+        1000156003 => s.exts.has(94) || s.exts.has(1),
+        1000246000 => s.exts.has(150) || s.exts.has(2),
         #[cfg(feature = "khr_swapchain")]
         1000060008 => {
-            (s.exts.has(70) && s.exts.has(94)) || (s.exts.has(94) && s.exts.has(1))
+            (s.exts.has(72) && s.exts.has(98)) || (s.exts.has(98) && s.exts.has(1))
         }
-        1000117002 => s.exts.has(79) || s.exts.has(1),
-        1000060000 => s.exts.has(70) || s.exts.has(1),
-        1000314000 => s.exts.has(96) || s.exts.has(3),
-        1000127001 => s.exts.has(127) || s.exts.has(1),
-        1000127000 => s.exts.has(127) || s.exts.has(1),
-        1000257003 => s.exts.has(66) || s.exts.has(2),
-        1000083000 => s.exts.has(128) || s.exts.has(1),
-        1000177000 => s.exts.has(129) || s.exts.has(2),
-        1000257000 => s.exts.has(66) || s.exts.has(2),
-        1000199000 => s.exts.has(68) || s.exts.has(2),
+        #[cfg(feature = "ext_astc_decode_mode")]
+        1000067000 => s.exts.has(151),
+        #[cfg(feature = "ext_image_view_min_lod")]
+        1000391001 => s.exts.has(152),
+        #[cfg(feature = "qcom_image_processing")]
+        1000440002 => s.exts.has(121),
+        1000117002 => s.exts.has(83) || s.exts.has(1),
+        #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+        1000129003 => s.exts.has(5),
+        #[cfg(feature = "fuchsia_buffer_collection")]
+        1000366001 => s.exts.has(57),
+        #[cfg(feature = "khr_external_memory_fd")]
+        1000074000 => s.exts.has(153),
+        #[cfg(feature = "ext_external_memory_host")]
+        1000178000 => s.exts.has(23),
+        #[cfg(feature = "khr_external_memory_win32")]
+        1000073000 => s.exts.has(145),
+        #[cfg(feature = "nv_external_memory_win32")]
+        1000057000 => s.exts.has(146),
+        #[cfg(feature = "fuchsia_external_memory")]
+        1000364000 => s.exts.has(58),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311005 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311009 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311011 => s.exts.has(147),
+        #[cfg(feature = "ext_metal_objects")]
+        1000311007 => s.exts.has(147),
+        1000060000 => s.exts.has(72) || s.exts.has(1),
+        1000314000 => s.exts.has(100) || s.exts.has(3),
+        1000127001 => s.exts.has(154) || s.exts.has(1),
+        1000127000 => s.exts.has(154) || s.exts.has(1),
+        1000257003 => s.exts.has(68) || s.exts.has(2),
+        #[cfg(feature = "ext_memory_priority")]
+        1000238001 => s.exts.has(155),
+        #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+        1000376002 => s.exts.has(36),
+        #[cfg(
+            all(
+                feature = "khr_dynamic_rendering",
+                feature = "nvx_multiview_per_view_attributes"
+            )
+        )]
+        1000044009 => s.exts.has(74) && s.exts.has(108),
+        #[cfg(
+            any(
+                feature = "ext_mutable_descriptor_type",
+                feature = "valve_mutable_descriptor_type"
+            )
+        )]
+        1000351002 => s.exts.has(37) || s.exts.has(125),
+        #[cfg(feature = "ext_descriptor_buffer")]
+        1000316010 => s.exts.has(15),
+        #[cfg(feature = "nv_optical_flow")]
+        1000464002 => s.exts.has(115),
+        #[cfg(feature = "nv_optical_flow")]
+        1000464010 => s.exts.has(115),
+        #[cfg(feature = "khr_performance_query")]
+        1000116003 => s.exts.has(86),
+        1000083000 => s.exts.has(156) || s.exts.has(1),
+        #[cfg(feature = "ext_4444_formats")]
+        1000340000 => s.exts.has(7),
+        1000177000 => s.exts.has(157) || s.exts.has(2),
+        #[cfg(feature = "ext_astc_decode_mode")]
+        1000067001 => s.exts.has(151),
+        #[cfg(feature = "khr_acceleration_structure")]
+        1000150013 => s.exts.has(66),
+        #[cfg(feature = "khr_acceleration_structure")]
+        1000150014 => s.exts.has(66),
+        #[cfg(feature = "ext_device_address_binding_report")]
+        1000354000 => s.exts.has(17),
+        #[cfg(feature = "sec_amigo_profiling")]
+        1000485000 => s.exts.has(126),
+        #[cfg(feature = "ext_attachment_feedback_loop_layout")]
+        1000339000 => s.exts.has(8),
+        #[cfg(feature = "ext_blend_operation_advanced")]
+        1000148000 => s.exts.has(9),
+        #[cfg(feature = "ext_blend_operation_advanced")]
+        1000148001 => s.exts.has(9),
+        #[cfg(feature = "ext_border_color_swizzle")]
+        1000411000 => s.exts.has(158),
+        1000257000 => s.exts.has(68) || s.exts.has(2),
+        #[cfg(feature = "ext_buffer_device_address")]
+        1000244000 => s.exts.has(10),
+        #[cfg(feature = "amd_device_coherent_memory")]
+        1000229000 => s.exts.has(159),
+        #[cfg(feature = "ext_color_write_enable")]
+        1000381000 => s.exts.has(11),
+        #[cfg(feature = "nv_compute_shader_derivatives")]
+        1000201000 => s.exts.has(160),
+        #[cfg(feature = "ext_conditional_rendering")]
+        1000081001 => s.exts.has(12),
+        #[cfg(feature = "ext_conservative_rasterization")]
+        1000101000 => s.exts.has(161),
+        #[cfg(feature = "nv_cooperative_matrix")]
+        1000249000 => s.exts.has(162),
+        #[cfg(feature = "nv_cooperative_matrix")]
+        1000249002 => s.exts.has(162),
+        #[cfg(feature = "nv_copy_memory_indirect")]
+        1000426000 => s.exts.has(163),
+        #[cfg(feature = "nv_copy_memory_indirect")]
+        1000426001 => s.exts.has(163),
+        #[cfg(feature = "nv_corner_sampled_image")]
+        1000050000 => s.exts.has(110),
+        #[cfg(feature = "nv_coverage_reduction_mode")]
+        1000250000 => s.exts.has(164),
+        #[cfg(feature = "ext_custom_border_color")]
+        1000287002 => s.exts.has(165),
+        #[cfg(feature = "ext_custom_border_color")]
+        1000287001 => s.exts.has(165),
+        #[cfg(feature = "nv_dedicated_allocation_image_aliasing")]
+        1000240000 => s.exts.has(166),
+        #[cfg(feature = "ext_depth_clamp_zero_one")]
+        1000421000 => s.exts.has(167),
+        #[cfg(feature = "ext_depth_clip_control")]
+        1000355000 => s.exts.has(168),
+        #[cfg(feature = "ext_depth_clip_enable")]
+        1000102000 => s.exts.has(169),
+        1000199000 => s.exts.has(70) || s.exts.has(2),
+        #[cfg(feature = "ext_descriptor_buffer")]
+        1000316001 => s.exts.has(15),
+        #[cfg(feature = "ext_descriptor_buffer")]
+        1000316002 => s.exts.has(15),
+        #[cfg(feature = "ext_descriptor_buffer")]
+        1000316000 => s.exts.has(15),
         1000161001 => s.exts.has(16) || s.exts.has(2),
         1000161002 => s.exts.has(16) || s.exts.has(2),
-        1000196000 => s.exts.has(130) || s.exts.has(2),
-        1000044003 => s.exts.has(72) || s.exts.has(3),
-        1000071000 => s.exts.has(74) || s.exts.has(1),
-        1000059000 => s.exts.has(131) || s.exts.has(1),
-        1000197000 => s.exts.has(132) || s.exts.has(2),
-        1000261000 => s.exts.has(133) || s.exts.has(2),
-        1000071004 => s.exts.has(73) || s.exts.has(74) || s.exts.has(75) || s.exts.has(1),
-        1000335000 => s.exts.has(134) || s.exts.has(3),
-        1000108000 => s.exts.has(77) || s.exts.has(2),
+        #[cfg(feature = "valve_descriptor_set_host_mapping")]
+        1000420000 => s.exts.has(170),
+        #[cfg(feature = "nv_device_generated_commands")]
+        1000277007 => s.exts.has(111),
+        #[cfg(feature = "nv_device_generated_commands")]
+        1000277000 => s.exts.has(111),
+        #[cfg(feature = "ext_device_memory_report")]
+        1000284000 => s.exts.has(134),
+        #[cfg(feature = "nv_device_diagnostics_config")]
+        1000300000 => s.exts.has(135),
+        #[cfg(feature = "ext_discard_rectangles")]
+        1000099000 => s.exts.has(18),
+        1000196000 => s.exts.has(171) || s.exts.has(2),
+        #[cfg(feature = "ext_physical_device_drm")]
+        1000353000 => s.exts.has(172),
+        1000044003 => s.exts.has(74) || s.exts.has(3),
+        #[cfg(feature = "nv_scissor_exclusive")]
+        1000205002 => s.exts.has(118),
+        #[cfg(feature = "ext_extended_dynamic_state2")]
+        1000377000 => s.exts.has(20),
+        #[cfg(feature = "ext_extended_dynamic_state3")]
+        1000455000 => s.exts.has(21),
+        #[cfg(feature = "ext_extended_dynamic_state3")]
+        1000455001 => s.exts.has(21),
+        #[cfg(feature = "ext_extended_dynamic_state")]
+        1000267000 => s.exts.has(19),
+        1000071000 => s.exts.has(77) || s.exts.has(1),
+        #[cfg(feature = "ext_external_memory_host")]
+        1000178002 => s.exts.has(23),
+        #[cfg(feature = "nv_external_memory_rdma")]
+        1000371001 => s.exts.has(112),
+        1000059000 => s.exts.has(173) || s.exts.has(1),
+        1000197000 => s.exts.has(174) || s.exts.has(2),
+        #[cfg(feature = "ext_fragment_density_map2")]
+        1000332000 => s.exts.has(26),
+        #[cfg(feature = "ext_fragment_density_map2")]
+        1000332001 => s.exts.has(26),
+        #[cfg(feature = "ext_fragment_density_map")]
+        1000218000 => s.exts.has(25),
+        #[cfg(feature = "qcom_fragment_density_map_offset")]
+        1000425000 => s.exts.has(120),
+        #[cfg(feature = "qcom_fragment_density_map_offset")]
+        1000425001 => s.exts.has(120),
+        #[cfg(feature = "ext_fragment_density_map")]
+        1000218001 => s.exts.has(25),
+        #[cfg(
+            any(
+                feature = "khr_fragment_shader_barycentric",
+                feature = "nv_fragment_shader_barycentric"
+            )
+        )]
+        1000203000 => s.exts.has(175) || s.exts.has(176),
+        #[cfg(feature = "khr_fragment_shader_barycentric")]
+        1000322000 => s.exts.has(175),
+        #[cfg(feature = "ext_fragment_shader_interlock")]
+        1000251000 => s.exts.has(177),
+        #[cfg(feature = "nv_fragment_shading_rate_enums")]
+        1000326001 => s.exts.has(178),
+        #[cfg(feature = "nv_fragment_shading_rate_enums")]
+        1000326000 => s.exts.has(178),
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        1000226003 => s.exts.has(80),
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        1000226002 => s.exts.has(80),
+        #[cfg(
+            any(feature = "ext_global_priority_query", feature = "khr_global_priority")
+        )]
+        1000388000 => s.exts.has(179) || s.exts.has(139),
+        #[cfg(feature = "ext_graphics_pipeline_library")]
+        1000320000 => s.exts.has(27),
+        #[cfg(feature = "ext_graphics_pipeline_library")]
+        1000320001 => s.exts.has(27),
+        1000261000 => s.exts.has(180) || s.exts.has(2),
+        1000071004 => s.exts.has(76) || s.exts.has(77) || s.exts.has(79) || s.exts.has(1),
+        #[cfg(feature = "ext_image_2d_view_of_3d")]
+        1000393000 => s.exts.has(28),
+        #[cfg(feature = "ext_image_compression_control")]
+        1000338000 => s.exts.has(148),
+        #[cfg(feature = "ext_image_compression_control_swapchain")]
+        1000437000 => s.exts.has(181),
+        #[cfg(feature = "ext_image_drm_format_modifier")]
+        1000158002 => s.exts.has(29),
+        #[cfg(feature = "qcom_image_processing")]
+        1000440000 => s.exts.has(121),
+        #[cfg(feature = "qcom_image_processing")]
+        1000440001 => s.exts.has(121),
+        1000335000 => s.exts.has(182) || s.exts.has(3),
+        #[cfg(feature = "ext_filter_cubic")]
+        1000170000 => s.exts.has(24),
+        #[cfg(feature = "ext_image_view_min_lod")]
+        1000391000 => s.exts.has(152),
+        1000108000 => s.exts.has(81) || s.exts.has(2),
+        #[cfg(feature = "ext_index_type_uint8")]
+        1000265000 => s.exts.has(30),
+        #[cfg(feature = "nv_inherited_viewport_scissor")]
+        1000278000 => s.exts.has(130),
         1000138000 => s.exts.has(31) || s.exts.has(3),
         1000138001 => s.exts.has(31) || s.exts.has(3),
-        1000168000 => s.exts.has(135) || s.exts.has(1),
-        1000413000 => s.exts.has(80) || s.exts.has(3),
-        1000413001 => s.exts.has(80) || s.exts.has(3),
-        1000053001 => s.exts.has(81) || s.exts.has(1),
-        1000053002 => s.exts.has(81) || s.exts.has(1),
+        #[cfg(feature = "huawei_invocation_mask")]
+        1000370000 => s.exts.has(61),
+        #[cfg(feature = "ext_legacy_dithering")]
+        1000465000 => s.exts.has(32),
+        #[cfg(feature = "ext_line_rasterization")]
+        1000259000 => s.exts.has(33),
+        #[cfg(feature = "ext_line_rasterization")]
+        1000259002 => s.exts.has(33),
+        #[cfg(feature = "nv_linear_color_attachment")]
+        1000430000 => s.exts.has(183),
+        1000168000 => s.exts.has(184) || s.exts.has(1),
+        1000413000 => s.exts.has(84) || s.exts.has(3),
+        1000413001 => s.exts.has(84) || s.exts.has(3),
+        #[cfg(feature = "ext_memory_budget")]
+        1000237000 => s.exts.has(185),
+        #[cfg(feature = "nv_memory_decompression")]
+        1000427000 => s.exts.has(186),
+        #[cfg(feature = "nv_memory_decompression")]
+        1000427001 => s.exts.has(186),
+        #[cfg(feature = "ext_memory_priority")]
+        1000238000 => s.exts.has(155),
+        #[cfg(feature = "ext_mesh_shader")]
+        1000328000 => s.exts.has(35),
+        #[cfg(feature = "nv_mesh_shader")]
+        1000202000 => s.exts.has(114),
+        #[cfg(feature = "ext_mesh_shader")]
+        1000328001 => s.exts.has(35),
+        #[cfg(feature = "nv_mesh_shader")]
+        1000202001 => s.exts.has(114),
+        #[cfg(feature = "ext_multi_draw")]
+        1000392000 => s.exts.has(187),
+        #[cfg(feature = "ext_multi_draw")]
+        1000392001 => s.exts.has(187),
+        #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+        1000376000 => s.exts.has(36),
+        1000053001 => s.exts.has(85) || s.exts.has(1),
+        #[cfg(feature = "nvx_multiview_per_view_attributes")]
+        1000097000 => s.exts.has(108),
+        #[cfg(feature = "qcom_multiview_per_view_viewports")]
+        1000488000 => s.exts.has(188),
+        1000053002 => s.exts.has(85) || s.exts.has(1),
+        #[cfg(
+            any(
+                feature = "ext_mutable_descriptor_type",
+                feature = "valve_mutable_descriptor_type"
+            )
+        )]
+        1000351000 => s.exts.has(37) || s.exts.has(125),
+        #[cfg(feature = "ext_non_seamless_cube_map")]
+        1000422000 => s.exts.has(38),
+        #[cfg(feature = "ext_opacity_micromap")]
+        1000396005 => s.exts.has(39),
+        #[cfg(feature = "ext_opacity_micromap")]
+        1000396006 => s.exts.has(39),
+        #[cfg(feature = "nv_optical_flow")]
+        1000464000 => s.exts.has(115),
+        #[cfg(feature = "nv_optical_flow")]
+        1000464001 => s.exts.has(115),
+        #[cfg(feature = "ext_pci_bus_info")]
+        1000212000 => s.exts.has(189),
+        #[cfg(feature = "ext_pageable_device_local_memory")]
+        1000412000 => s.exts.has(190),
+        #[cfg(feature = "khr_performance_query")]
+        1000116000 => s.exts.has(86),
+        #[cfg(feature = "khr_performance_query")]
+        1000116001 => s.exts.has(86),
         1000297000 => s.exts.has(40) || s.exts.has(3),
-        1000117000 => s.exts.has(79) || s.exts.has(1),
+        #[cfg(feature = "khr_pipeline_executable_properties")]
+        1000269000 => s.exts.has(87),
+        #[cfg(feature = "ext_pipeline_properties")]
+        1000372001 => s.exts.has(191),
+        #[cfg(feature = "ext_pipeline_protected_access")]
+        1000466000 => s.exts.has(41),
+        #[cfg(feature = "ext_pipeline_robustness")]
+        1000068001 => s.exts.has(192),
+        #[cfg(feature = "ext_pipeline_robustness")]
+        1000068002 => s.exts.has(192),
+        1000117000 => s.exts.has(83) || s.exts.has(1),
+        #[cfg(feature = "khr_portability_subset")]
+        1000163000 => s.exts.has(193),
+        #[cfg(feature = "khr_portability_subset")]
+        1000163001 => s.exts.has(193),
+        #[cfg(feature = "nv_present_barrier")]
+        1000292000 => s.exts.has(194),
+        #[cfg(feature = "khr_present_id")]
+        1000294001 => s.exts.has(195),
+        #[cfg(feature = "khr_present_wait")]
+        1000248000 => s.exts.has(196),
+        #[cfg(feature = "ext_primitive_topology_list_restart")]
+        1000356000 => s.exts.has(197),
+        #[cfg(feature = "ext_primitives_generated_query")]
+        1000382000 => s.exts.has(42),
         1000295000 => s.exts.has(43) || s.exts.has(3),
         1000145001 => s.exts.has(1),
         1000145002 => s.exts.has(1),
+        #[cfg(feature = "ext_provoking_vertex")]
+        1000254000 => s.exts.has(198),
+        #[cfg(feature = "ext_provoking_vertex")]
+        1000254002 => s.exts.has(198),
+        #[cfg(feature = "khr_push_descriptor")]
+        1000080000 => s.exts.has(90),
+        #[cfg(feature = "ext_rgba10x6_formats")]
+        1000344000 => s.exts.has(199),
+        #[cfg(
+            any(
+                feature = "arm_rasterization_order_attachment_access",
+                feature = "ext_rasterization_order_attachment_access"
+            )
+        )]
+        1000342000 => s.exts.has(6) || s.exts.has(44),
+        #[cfg(feature = "khr_ray_query")]
+        1000348013 => s.exts.has(200),
+        #[cfg(feature = "nv_ray_tracing_invocation_reorder")]
+        1000490000 => s.exts.has(201),
+        #[cfg(feature = "nv_ray_tracing_invocation_reorder")]
+        1000490001 => s.exts.has(201),
+        #[cfg(feature = "khr_ray_tracing_maintenance1")]
+        1000386000 => s.exts.has(91),
+        #[cfg(feature = "nv_ray_tracing_motion_blur")]
+        1000327001 => s.exts.has(117),
+        #[cfg(feature = "khr_ray_tracing_pipeline")]
+        1000347000 => s.exts.has(92),
+        #[cfg(feature = "khr_ray_tracing_pipeline")]
+        1000347001 => s.exts.has(92),
+        #[cfg(feature = "nv_ray_tracing")]
+        1000165009 => s.exts.has(116),
+        #[cfg(feature = "nv_representative_fragment_test")]
+        1000166000 => s.exts.has(202),
+        #[cfg(feature = "ext_robustness2")]
+        1000286000 => s.exts.has(203),
+        #[cfg(feature = "ext_robustness2")]
+        1000286001 => s.exts.has(203),
+        #[cfg(feature = "ext_sample_locations")]
+        1000143003 => s.exts.has(45),
         1000130000 => s.exts.has(46) || s.exts.has(2),
-        1000156004 => s.exts.has(90) || s.exts.has(1),
-        1000221000 => s.exts.has(136) || s.exts.has(2),
-        1000241000 => s.exts.has(91) || s.exts.has(2),
-        1000180000 => s.exts.has(137) || s.exts.has(2),
-        1000276000 => s.exts.has(138) || s.exts.has(3),
+        1000156004 => s.exts.has(94) || s.exts.has(1),
+        1000221000 => s.exts.has(204) || s.exts.has(2),
+        1000241000 => s.exts.has(95) || s.exts.has(2),
+        #[cfg(feature = "ext_shader_atomic_float2")]
+        1000273000 => s.exts.has(205),
+        #[cfg(feature = "ext_shader_atomic_float")]
+        1000260000 => s.exts.has(206),
+        1000180000 => s.exts.has(207) || s.exts.has(2),
+        #[cfg(feature = "khr_shader_clock")]
+        1000181000 => s.exts.has(208),
+        #[cfg(feature = "arm_shader_core_builtins")]
+        1000497000 => s.exts.has(209),
+        #[cfg(feature = "arm_shader_core_builtins")]
+        1000497001 => s.exts.has(209),
+        #[cfg(feature = "amd_shader_core_properties2")]
+        1000227000 => s.exts.has(210),
+        #[cfg(feature = "amd_shader_core_properties")]
+        1000185000 => s.exts.has(211),
+        1000276000 => s.exts.has(212) || s.exts.has(3),
         1000063000 => s.exts.has(1),
-        1000082000 => s.exts.has(139) || s.exts.has(2),
-        1000280000 => s.exts.has(140) || s.exts.has(3),
-        1000280001 => s.exts.has(140) || s.exts.has(3),
-        1000175000 => s.exts.has(141) || s.exts.has(2),
-        1000215000 => s.exts.has(142) || s.exts.has(3),
+        #[cfg(feature = "amd_shader_early_and_late_fragment_tests")]
+        1000321000 => s.exts.has(213),
+        1000082000 => s.exts.has(214) || s.exts.has(2),
+        #[cfg(feature = "ext_shader_image_atomic_int64")]
+        1000234000 => s.exts.has(215),
+        #[cfg(feature = "nv_shader_image_footprint")]
+        1000204000 => s.exts.has(216),
+        1000280000 => s.exts.has(217) || s.exts.has(3),
+        1000280001 => s.exts.has(217) || s.exts.has(3),
+        #[cfg(feature = "intel_shader_integer_functions2")]
+        1000209000 => s.exts.has(218),
+        #[cfg(feature = "ext_shader_module_identifier")]
+        1000462000 => s.exts.has(219),
+        #[cfg(feature = "ext_shader_module_identifier")]
+        1000462001 => s.exts.has(219),
+        #[cfg(feature = "nv_shader_sm_builtins")]
+        1000154000 => s.exts.has(220),
+        #[cfg(feature = "nv_shader_sm_builtins")]
+        1000154001 => s.exts.has(220),
+        1000175000 => s.exts.has(221) || s.exts.has(2),
+        #[cfg(feature = "khr_shader_subgroup_uniform_control_flow")]
+        1000323000 => s.exts.has(222),
+        1000215000 => s.exts.has(223) || s.exts.has(3),
+        #[cfg(feature = "nv_shading_rate_image")]
+        1000164001 => s.exts.has(119),
+        #[cfg(feature = "nv_shading_rate_image")]
+        1000164002 => s.exts.has(119),
         1000094000 => s.exts.has(1),
         1000225002 => s.exts.has(47) || s.exts.has(3),
         1000225000 => s.exts.has(47) || s.exts.has(3),
-        1000314007 => s.exts.has(96) || s.exts.has(3),
-        1000281001 => s.exts.has(143) || s.exts.has(3),
+        #[cfg(feature = "ext_subpass_merge_feedback")]
+        1000458000 => s.exts.has(224),
+        #[cfg(feature = "huawei_subpass_shading")]
+        1000369001 => s.exts.has(62),
+        #[cfg(feature = "huawei_subpass_shading")]
+        1000369002 => s.exts.has(62),
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        1000275000 => s.exts.has(49),
+        1000314007 => s.exts.has(100) || s.exts.has(3),
+        #[cfg(feature = "ext_texel_buffer_alignment")]
+        1000281000 => s.exts.has(225),
+        1000281001 => s.exts.has(225) || s.exts.has(3),
         1000066000 => s.exts.has(50) || s.exts.has(3),
-        1000207000 => s.exts.has(97) || s.exts.has(2),
-        1000207001 => s.exts.has(97) || s.exts.has(2),
-        1000253000 => s.exts.has(144) || s.exts.has(2),
-        1000120000 => s.exts.has(145) || s.exts.has(1),
+        #[cfg(feature = "qcom_tile_properties")]
+        1000484000 => s.exts.has(226),
+        1000207000 => s.exts.has(101) || s.exts.has(2),
+        1000207001 => s.exts.has(101) || s.exts.has(2),
+        #[cfg(feature = "ext_transform_feedback")]
+        1000028000 => s.exts.has(51),
+        #[cfg(feature = "ext_transform_feedback")]
+        1000028001 => s.exts.has(51),
+        1000253000 => s.exts.has(227) || s.exts.has(2),
+        1000120000 => s.exts.has(228) || s.exts.has(1),
+        #[cfg(feature = "ext_vertex_attribute_divisor")]
+        1000190002 => s.exts.has(229),
+        #[cfg(feature = "ext_vertex_attribute_divisor")]
+        1000190000 => s.exts.has(229),
+        #[cfg(feature = "ext_vertex_input_dynamic_state")]
+        1000352000 => s.exts.has(53),
         49 => s.exts.has(2),
         50 => s.exts.has(2),
         51 => s.exts.has(2),
         52 => s.exts.has(2),
         53 => s.exts.has(3),
         54 => s.exts.has(3),
-        1000211000 => s.exts.has(146) || s.exts.has(2),
-        1000325000 => s.exts.has(147) || s.exts.has(3),
-        1000192000 => s.exts.has(148) || s.exts.has(3),
-        1000044002 => s.exts.has(72) || s.exts.has(3),
+        1000211000 => s.exts.has(230) || s.exts.has(2),
+        #[cfg(feature = "khr_workgroup_memory_explicit_layout")]
+        1000336000 => s.exts.has(231),
+        #[cfg(feature = "ext_ycbcr_2plane_444_formats")]
+        1000330000 => s.exts.has(56),
+        #[cfg(feature = "ext_ycbcr_image_arrays")]
+        1000252000 => s.exts.has(232),
+        1000325000 => s.exts.has(233) || s.exts.has(3),
+        #[cfg(feature = "ext_blend_operation_advanced")]
+        1000148002 => s.exts.has(9),
+        #[cfg(feature = "ext_color_write_enable")]
+        1000381001 => s.exts.has(11),
+        #[cfg(feature = "amd_pipeline_compiler_control")]
+        1000183000 => s.exts.has(234),
+        #[cfg(feature = "nv_framebuffer_mixed_samples")]
+        1000152000 => s.exts.has(129),
+        #[cfg(feature = "nv_coverage_reduction_mode")]
+        1000250001 => s.exts.has(164),
+        #[cfg(feature = "nv_fragment_coverage_to_color")]
+        1000149000 => s.exts.has(235),
+        1000192000 => s.exts.has(236) || s.exts.has(3),
+        #[cfg(feature = "ext_discard_rectangles")]
+        1000099001 => s.exts.has(18),
+        #[cfg(feature = "nv_fragment_shading_rate_enums")]
+        1000326002 => s.exts.has(178),
+        #[cfg(feature = "khr_fragment_shading_rate")]
+        1000226001 => s.exts.has(80),
+        #[cfg(feature = "khr_pipeline_library")]
+        1000290000 => s.exts.has(88),
+        #[cfg(feature = "ext_conservative_rasterization")]
+        1000101001 => s.exts.has(161),
+        #[cfg(feature = "ext_depth_clip_enable")]
+        1000102001 => s.exts.has(169),
+        #[cfg(feature = "ext_line_rasterization")]
+        1000259001 => s.exts.has(33),
+        #[cfg(feature = "ext_provoking_vertex")]
+        1000254001 => s.exts.has(198),
+        #[cfg(feature = "amd_rasterization_order")]
+        1000018000 => s.exts.has(237),
+        #[cfg(feature = "ext_transform_feedback")]
+        1000028002 => s.exts.has(51),
+        1000044002 => s.exts.has(74) || s.exts.has(3),
+        #[cfg(feature = "nv_representative_fragment_test")]
+        1000166001 => s.exts.has(202),
+        #[cfg(feature = "ext_pipeline_robustness")]
+        1000068000 => s.exts.has(192),
+        #[cfg(feature = "ext_sample_locations")]
+        1000143002 => s.exts.has(45),
+        #[cfg(feature = "ext_shader_module_identifier")]
+        1000462002 => s.exts.has(219),
         1000225001 => s.exts.has(47) || s.exts.has(3),
-        1000117003 => s.exts.has(79) || s.exts.has(1),
+        1000117003 => s.exts.has(83) || s.exts.has(1),
+        #[cfg(feature = "ext_vertex_attribute_divisor")]
+        1000190001 => s.exts.has(229),
+        #[cfg(feature = "nv_shading_rate_image")]
+        1000164005 => s.exts.has(119),
+        #[cfg(feature = "ext_depth_clip_control")]
+        1000355001 => s.exts.has(168),
+        #[cfg(feature = "nv_scissor_exclusive")]
+        1000205000 => s.exts.has(118),
+        #[cfg(feature = "nv_shading_rate_image")]
+        1000164000 => s.exts.has(119),
+        #[cfg(feature = "nv_viewport_swizzle")]
+        1000098000 => s.exts.has(238),
+        #[cfg(feature = "nv_clip_space_w_scaling")]
+        1000087000 => s.exts.has(109),
+        #[cfg(feature = "ggp_frame_token")]
+        1000191000 => s.exts.has(239),
+        #[cfg(feature = "khr_present_id")]
+        1000294000 => s.exts.has(195),
+        #[cfg(feature = "khr_incremental_present")]
+        1000084000 => s.exts.has(240),
+        #[cfg(feature = "google_display_timing")]
+        1000092000 => s.exts.has(241),
         1000145000 => s.exts.has(1),
-        1000108003 => s.exts.has(77) || s.exts.has(2),
-        1000117001 => s.exts.has(79) || s.exts.has(1),
-        1000053000 => s.exts.has(81) || s.exts.has(1),
+        #[cfg(feature = "khr_performance_query")]
+        1000116002 => s.exts.has(86),
+        #[cfg(feature = "intel_performance_query")]
+        1000210000 => s.exts.has(65),
+        #[cfg(
+            all(
+                feature = "khr_synchronization2",
+                feature = "nv_device_diagnostic_checkpoints"
+            )
+        )]
+        1000314008 => s.exts.has(100) && s.exts.has(242),
+        #[cfg(feature = "nv_device_diagnostic_checkpoints")]
+        1000206001 => s.exts.has(242),
+        #[cfg(
+            any(feature = "ext_global_priority_query", feature = "khr_global_priority")
+        )]
+        1000388001 => s.exts.has(179) || s.exts.has(139),
+        #[cfg(feature = "khr_video_queue")]
+        1000023016 => s.exts.has(106),
+        #[cfg(feature = "khr_video_queue")]
+        1000023012 => s.exts.has(106),
+        1000108003 => s.exts.has(81) || s.exts.has(2),
+        #[cfg(feature = "ext_subpass_merge_feedback")]
+        1000458001 => s.exts.has(224),
+        #[cfg(feature = "ext_subpass_merge_feedback")]
+        1000458002 => s.exts.has(224),
+        #[cfg(feature = "ext_fragment_density_map")]
+        1000218002 => s.exts.has(25),
+        1000117001 => s.exts.has(83) || s.exts.has(1),
+        1000053000 => s.exts.has(85) || s.exts.has(1),
+        #[cfg(feature = "ext_sample_locations")]
+        1000143001 => s.exts.has(45),
+        #[cfg(feature = "ext_subpass_merge_feedback")]
+        1000458003 => s.exts.has(224),
+        #[cfg(feature = "qcom_render_pass_transform")]
+        1000282001 => s.exts.has(124),
+        #[cfg(
+            all(feature = "ext_fragment_density_map", feature = "khr_dynamic_rendering")
+        )]
+        1000044007 => s.exts.has(25) && s.exts.has(74),
+        #[cfg(
+            all(feature = "khr_dynamic_rendering", feature = "khr_fragment_shading_rate")
+        )]
+        1000044006 => s.exts.has(74) && s.exts.has(80),
+        #[cfg(feature = "ext_sample_locations")]
+        1000143000 => s.exts.has(45),
+        #[cfg(feature = "ext_border_color_swizzle")]
+        1000411001 => s.exts.has(158),
+        #[cfg(feature = "ext_custom_border_color")]
+        1000287000 => s.exts.has(165),
         1000130001 => s.exts.has(46) || s.exts.has(2),
-        1000156005 => s.exts.has(90) || s.exts.has(1),
-        1000156001 => s.exts.has(90) || s.exts.has(1),
-        1000207002 => s.exts.has(97) || s.exts.has(2),
-        1000199001 => s.exts.has(68) || s.exts.has(2),
-        1000207003 => s.exts.has(97) || s.exts.has(2),
+        1000156005 => s.exts.has(94) || s.exts.has(1),
+        1000156001 => s.exts.has(94) || s.exts.has(1),
+        1000207002 => s.exts.has(101) || s.exts.has(2),
+        #[cfg(feature = "ext_validation_cache")]
+        1000160001 => s.exts.has(52),
+        #[cfg(feature = "khr_shared_presentable_image")]
+        1000111000 => s.exts.has(96),
+        1000199001 => s.exts.has(70) || s.exts.has(2),
+        #[cfg(feature = "qcom_fragment_density_map_offset")]
+        1000425002 => s.exts.has(120),
+        #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+        1000376001 => s.exts.has(36),
+        #[cfg(feature = "huawei_subpass_shading")]
+        1000369000 => s.exts.has(62),
+        #[cfg(feature = "ext_full_screen_exclusive")]
+        1000255002 => s.exts.has(243),
+        #[cfg(feature = "nv_present_barrier")]
+        1000292001 => s.exts.has(194),
+        #[cfg(feature = "ext_full_screen_exclusive")]
+        1000255000 => s.exts.has(243),
+        #[cfg(all(feature = "ext_full_screen_exclusive", feature = "khr_win32_surface"))]
+        1000255001 => s.exts.has(243) && s.exts.has(244),
+        #[cfg(feature = "ext_surface_maintenance1")]
+        1000274002 => s.exts.has(245),
+        #[cfg(feature = "ext_surface_maintenance1")]
+        1000274000 => s.exts.has(245),
+        #[cfg(feature = "ext_surface_maintenance1")]
+        1000274001 => s.exts.has(245),
+        #[cfg(feature = "khr_surface_protected_capabilities")]
+        1000239000 => s.exts.has(246),
+        #[cfg(feature = "ext_display_control")]
+        1000091003 => s.exts.has(247),
+        #[cfg(feature = "amd_display_native_hdr")]
+        1000213001 => s.exts.has(4),
+        #[cfg(feature = "nv_present_barrier")]
+        1000292002 => s.exts.has(194),
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        1000275001 => s.exts.has(49),
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        1000275003 => s.exts.has(49),
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        1000275002 => s.exts.has(49),
+        #[cfg(feature = "ext_swapchain_maintenance1")]
+        1000275004 => s.exts.has(49),
+        #[cfg(feature = "amd_texture_gather_bias_lod")]
+        1000041000 => s.exts.has(248),
+        1000207003 => s.exts.has(101) || s.exts.has(2),
+        #[cfg(feature = "ext_validation_features")]
+        1000247000 => s.exts.has(249),
+        #[cfg(feature = "ext_validation_flags")]
+        1000061000 => s.exts.has(250),
+        #[cfg(feature = "khr_video_decode_queue")]
+        1000024001 => s.exts.has(104),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040000 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040006 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040001 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040003 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040005 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h264")]
+        1000040004 => s.exts.has(102),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187000 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187005 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187004 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187003 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187002 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_h265")]
+        1000187001 => s.exts.has(103),
+        #[cfg(feature = "khr_video_decode_queue")]
+        1000024002 => s.exts.has(104),
+        #[cfg(feature = "khr_video_queue")]
+        1000023000 => s.exts.has(106),
+        #[cfg(feature = "khr_video_queue")]
+        1000023013 => s.exts.has(106),
+        #[cfg(feature = "khr_win32_keyed_mutex")]
+        1000075000 => s.exts.has(251),
+        #[cfg(feature = "nv_win32_keyed_mutex")]
+        1000058000 => s.exts.has(252),
+        #[cfg(feature = "khr_acceleration_structure")]
+        1000150007 => s.exts.has(66),
+        #[cfg(feature = "nv_ray_tracing")]
+        1000165007 => s.exts.has(116),
         1000138002 => s.exts.has(31) || s.exts.has(3),
         _ => true,
     }
@@ -426,6 +1517,58 @@ pub(crate) fn chain(
             seen.push(ty);
         }
         match ty {
+            #[cfg(feature = "nv_ray_tracing_motion_blur")]
+            1000327002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_acceleration_structure_motion_info_nv(
+                    unsafe { &*(p as *const vk::AccelerationStructureMotionInfoNV<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_opacity_micromap")]
+            1000396009 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_acceleration_structure_triangles_opacity_micromap_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::AccelerationStructureTrianglesOpacityMicromapEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(
+                all(
+                    feature = "android_external_memory_android_hardware_buffer",
+                    feature = "khr_format_feature_flags2"
+                )
+            )]
+            1000129006 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_android_hardware_buffer_format_properties2_android(
+                    unsafe {
+                        &*(p
+                            as *const vk::AndroidHardwareBufferFormatProperties2ANDROID<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "android_external_memory_android_hardware_buffer")]
+            1000129002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_android_hardware_buffer_format_properties_android(
+                    unsafe {
+                        &*(p
+                            as *const vk::AndroidHardwareBufferFormatPropertiesANDROID<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
             1000241002 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_attachment_description_stencil_layout(
@@ -458,6 +1601,27 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "nv_inherited_viewport_scissor")]
+            1000278001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_command_buffer_inheritance_viewport_scissor_info_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::CommandBufferInheritanceViewportScissorInfoNV<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_debug_report")]
+            1000011000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_debug_report_callback_create_info_ext(
+                    unsafe { &*(p as *const vk::DebugReportCallbackCreateInfoEXT<'_>) },
+                    s,
+                )?
+            }
             #[cfg(feature = "ext_debug_utils")]
             1000128004 => {
                 // SAFETY: a node with this structure type is this struct.
@@ -474,11 +1638,51 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "nv_dedicated_allocation")]
+            1000026002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_dedicated_allocation_memory_allocate_info_nv(
+                    unsafe {
+                        &*(p as *const vk::DedicatedAllocationMemoryAllocateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
             1000161000 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_descriptor_set_layout_binding_flags_create_info(
                     unsafe {
                         &*(p as *const vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_device_address_binding_report")]
+            1000354001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_address_binding_callback_data_ext(
+                    unsafe {
+                        &*(p as *const vk::DeviceAddressBindingCallbackDataEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_device_memory_report")]
+            1000284001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_device_memory_report_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::DeviceDeviceMemoryReportCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_device_diagnostics_config")]
+            1000300001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_diagnostics_config_create_info_nv(
+                    unsafe {
+                        &*(p as *const vk::DeviceDiagnosticsConfigCreateInfoNV<'_>)
                     },
                     s,
                 )?
@@ -513,6 +1717,34 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "amd_memory_overallocation_behavior")]
+            1000189000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_memory_overallocation_create_info_amd(
+                    unsafe {
+                        &*(p as *const vk::DeviceMemoryOverallocationCreateInfoAMD<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+            1000174000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_device_queue_global_priority_create_info_khr(
+                    unsafe {
+                        &*(p as *const vk::DeviceQueueGlobalPriorityCreateInfoKHR<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "lunarg_direct_driver_loading")]
+            1000459001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_direct_driver_loading_list_lunarg(
+                    unsafe { &*(p as *const vk::DirectDriverLoadingListLUNARG<'_>) },
+                    s,
+                )?
+            }
             1000113000 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_export_fence_create_info(
@@ -524,6 +1756,38 @@ pub(crate) fn chain(
                 // SAFETY: a node with this structure type is this struct.
                 check_export_memory_allocate_info(
                     unsafe { &*(p as *const vk::ExportMemoryAllocateInfo<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_external_memory")]
+            1000056001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_export_memory_allocate_info_nv(
+                    unsafe { &*(p as *const vk::ExportMemoryAllocateInfoNV<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_export_metal_object_create_info_ext(
+                    unsafe { &*(p as *const vk::ExportMetalObjectCreateInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311010 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_export_metal_shared_event_info_ext(
+                    unsafe { &*(p as *const vk::ExportMetalSharedEventInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311006 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_export_metal_texture_info_ext(
+                    unsafe { &*(p as *const vk::ExportMetalTextureInfoEXT<'_>) },
                     s,
                 )?
             }
@@ -548,10 +1812,58 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "nv_external_memory")]
+            1000056000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_external_memory_image_create_info_nv(
+                    unsafe { &*(p as *const vk::ExternalMemoryImageCreateInfoNV<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_fragment_shading_rate")]
+            1000226000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_fragment_shading_rate_attachment_info_khr(
+                    unsafe {
+                        &*(p as *const vk::FragmentShadingRateAttachmentInfoKHR<'_>)
+                    },
+                    s,
+                )?
+            }
             1000108001 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_framebuffer_attachments_create_info(
                     unsafe { &*(p as *const vk::FramebufferAttachmentsCreateInfo<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_graphics_pipeline_library")]
+            1000320002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_graphics_pipeline_library_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::GraphicsPipelineLibraryCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_device_generated_commands")]
+            1000277002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_graphics_pipeline_shader_groups_create_info_nv(
+                    unsafe {
+                        &*(p as *const vk::GraphicsPipelineShaderGroupsCreateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_image_drm_format_modifier")]
+            1000158003 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_image_drm_format_modifier_list_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::ImageDrmFormatModifierListCreateInfoEXT<'_>)
+                    },
                     s,
                 )?
             }
@@ -576,10 +1888,68 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "ext_astc_decode_mode")]
+            1000067000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_image_view_astc_decode_mode_ext(
+                    unsafe { &*(p as *const vk::ImageViewASTCDecodeModeEXT<'_>) },
+                    s,
+                )?
+            }
             1000117002 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_image_view_usage_create_info(
                     unsafe { &*(p as *const vk::ImageViewUsageCreateInfo<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_external_memory_fd")]
+            1000074000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_memory_fd_info_khr(
+                    unsafe { &*(p as *const vk::ImportMemoryFdInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_external_memory_host")]
+            1000178000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_memory_host_pointer_info_ext(
+                    unsafe { &*(p as *const vk::ImportMemoryHostPointerInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_external_memory_win32")]
+            1000073000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_memory_win32_handle_info_khr(
+                    unsafe { &*(p as *const vk::ImportMemoryWin32HandleInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_external_memory_win32")]
+            1000057000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_memory_win32_handle_info_nv(
+                    unsafe { &*(p as *const vk::ImportMemoryWin32HandleInfoNV<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "fuchsia_external_memory")]
+            1000364000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_memory_zircon_handle_info_fuchsia(
+                    unsafe {
+                        &*(p as *const vk::ImportMemoryZirconHandleInfoFUCHSIA<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_metal_objects")]
+            1000311007 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_import_metal_texture_info_ext(
+                    unsafe { &*(p as *const vk::ImportMetalTextureInfoEXT<'_>) },
                     s,
                 )?
             }
@@ -604,12 +1974,243 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "ext_memory_priority")]
+            1000238001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_memory_priority_allocate_info_ext(
+                    unsafe { &*(p as *const vk::MemoryPriorityAllocateInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+            1000376002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_multisampled_render_to_single_sampled_info_ext(
+                    unsafe {
+                        &*(p as *const vk::MultisampledRenderToSingleSampledInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(
+                any(
+                    feature = "ext_mutable_descriptor_type",
+                    feature = "valve_mutable_descriptor_type"
+                )
+            )]
+            1000351002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_mutable_descriptor_type_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::MutableDescriptorTypeCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_optical_flow")]
+            1000464002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_optical_flow_image_format_info_nv(
+                    unsafe { &*(p as *const vk::OpticalFlowImageFormatInfoNV<'_>) },
+                    s,
+                )?
+            }
             1000071000 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_physical_device_external_image_format_info(
                     unsafe {
                         &*(p as *const vk::PhysicalDeviceExternalImageFormatInfo<'_>)
                     },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_fragment_shading_rate_enums")]
+            1000326000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_physical_device_fragment_shading_rate_enums_properties_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::PhysicalDeviceFragmentShadingRateEnumsPropertiesNV<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_image_drm_format_modifier")]
+            1000158002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_physical_device_image_drm_format_modifier_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PhysicalDeviceImageDrmFormatModifierInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_filter_cubic")]
+            1000170000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_physical_device_image_view_image_format_info_ext(
+                    unsafe {
+                        &*(p as *const vk::PhysicalDeviceImageViewImageFormatInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_blend_operation_advanced")]
+            1000148002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_color_blend_advanced_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineColorBlendAdvancedStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "amd_pipeline_compiler_control")]
+            1000183000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_compiler_control_create_info_amd(
+                    unsafe {
+                        &*(p as *const vk::PipelineCompilerControlCreateInfoAMD<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_framebuffer_mixed_samples")]
+            1000152000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_coverage_modulation_state_create_info_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineCoverageModulationStateCreateInfoNV<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_coverage_reduction_mode")]
+            1000250001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_coverage_reduction_state_create_info_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineCoverageReductionStateCreateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_fragment_coverage_to_color")]
+            1000149000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_coverage_to_color_state_create_info_nv(
+                    unsafe {
+                        &*(p as *const vk::PipelineCoverageToColorStateCreateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_discard_rectangles")]
+            1000099001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_discard_rectangle_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineDiscardRectangleStateCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_conservative_rasterization")]
+            1000101001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_conservative_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationConservativeStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_depth_clip_enable")]
+            1000102001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_depth_clip_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationDepthClipStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_line_rasterization")]
+            1000259001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_line_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationLineStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_provoking_vertex")]
+            1000254001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_provoking_vertex_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationProvokingVertexStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "amd_rasterization_order")]
+            1000018000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_state_rasterization_order_amd(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationStateRasterizationOrderAMD<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_transform_feedback")]
+            1000028002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_rasterization_state_stream_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineRasterizationStateStreamCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_pipeline_robustness")]
+            1000068000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_robustness_create_info_ext(
+                    unsafe { &*(p as *const vk::PipelineRobustnessCreateInfoEXT<'_>) },
                     s,
                 )?
             }
@@ -625,11 +2226,193 @@ pub(crate) fn chain(
                     s,
                 )?
             }
+            #[cfg(feature = "ext_vertex_attribute_divisor")]
+            1000190001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_vertex_input_divisor_state_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineVertexInputDivisorStateCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_shading_rate_image")]
+            1000164005 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_viewport_coarse_sample_order_state_create_info_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineViewportCoarseSampleOrderStateCreateInfoNV<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_shading_rate_image")]
+            1000164000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_viewport_shading_rate_image_state_create_info_nv(
+                    unsafe {
+                        &*(p
+                            as *const vk::PipelineViewportShadingRateImageStateCreateInfoNV<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_viewport_swizzle")]
+            1000098000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_viewport_swizzle_state_create_info_nv(
+                    unsafe {
+                        &*(p as *const vk::PipelineViewportSwizzleStateCreateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_clip_space_w_scaling")]
+            1000087000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_pipeline_viewport_w_scaling_state_create_info_nv(
+                    unsafe {
+                        &*(p as *const vk::PipelineViewportWScalingStateCreateInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_present_id")]
+            1000294000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_present_id_khr(unsafe { &*(p as *const vk::PresentIdKHR<'_>) }, s)?
+            }
+            #[cfg(feature = "khr_incremental_present")]
+            1000084000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_present_regions_khr(
+                    unsafe { &*(p as *const vk::PresentRegionsKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "google_display_timing")]
+            1000092000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_present_times_info_google(
+                    unsafe { &*(p as *const vk::PresentTimesInfoGOOGLE<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_performance_query")]
+            1000116002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_query_pool_performance_create_info_khr(
+                    unsafe { &*(p as *const vk::QueryPoolPerformanceCreateInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "intel_performance_query")]
+            1000210000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_query_pool_performance_query_create_info_intel(
+                    unsafe {
+                        &*(p as *const vk::QueryPoolPerformanceQueryCreateInfoINTEL<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(
+                any(
+                    feature = "ext_global_priority_query",
+                    feature = "khr_global_priority"
+                )
+            )]
+            1000388001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_queue_family_global_priority_properties_khr(
+                    unsafe {
+                        &*(p as *const vk::QueueFamilyGlobalPriorityPropertiesKHR<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_fragment_density_map")]
+            1000218002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_render_pass_fragment_density_map_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::RenderPassFragmentDensityMapCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
             1000117001 => {
                 // SAFETY: a node with this structure type is this struct.
                 check_render_pass_input_attachment_aspect_create_info(
                     unsafe {
                         &*(p as *const vk::RenderPassInputAttachmentAspectCreateInfo<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(
+                all(
+                    feature = "ext_fragment_density_map",
+                    feature = "khr_dynamic_rendering"
+                )
+            )]
+            1000044007 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_rendering_fragment_density_map_attachment_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::RenderingFragmentDensityMapAttachmentInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(
+                all(
+                    feature = "khr_dynamic_rendering",
+                    feature = "khr_fragment_shading_rate"
+                )
+            )]
+            1000044006 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_rendering_fragment_shading_rate_attachment_info_khr(
+                    unsafe {
+                        &*(p
+                            as *const vk::RenderingFragmentShadingRateAttachmentInfoKHR<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_border_color_swizzle")]
+            1000411001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_sampler_border_color_component_mapping_create_info_ext(
+                    unsafe {
+                        &*(p
+                            as *const vk::SamplerBorderColorComponentMappingCreateInfoEXT<
+                                '_,
+                            >)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_custom_border_color")]
+            1000287000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_sampler_custom_border_color_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::SamplerCustomBorderColorCreateInfoEXT<'_>)
                     },
                     s,
                 )?
@@ -660,6 +2443,181 @@ pub(crate) fn chain(
                 check_subpass_description_depth_stencil_resolve(
                     unsafe {
                         &*(p as *const vk::SubpassDescriptionDepthStencilResolve<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_full_screen_exclusive")]
+            1000255000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_surface_full_screen_exclusive_info_ext(
+                    unsafe { &*(p as *const vk::SurfaceFullScreenExclusiveInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_surface_maintenance1")]
+            1000274000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_surface_present_mode_ext(
+                    unsafe { &*(p as *const vk::SurfacePresentModeEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_surface_maintenance1")]
+            1000274001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_surface_present_scaling_capabilities_ext(
+                    unsafe {
+                        &*(p as *const vk::SurfacePresentScalingCapabilitiesEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_display_control")]
+            1000091003 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_swapchain_counter_create_info_ext(
+                    unsafe { &*(p as *const vk::SwapchainCounterCreateInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_swapchain_maintenance1")]
+            1000275001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_swapchain_present_fence_info_ext(
+                    unsafe { &*(p as *const vk::SwapchainPresentFenceInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_swapchain_maintenance1")]
+            1000275003 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_swapchain_present_mode_info_ext(
+                    unsafe { &*(p as *const vk::SwapchainPresentModeInfoEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_swapchain_maintenance1")]
+            1000275002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_swapchain_present_modes_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::SwapchainPresentModesCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_swapchain_maintenance1")]
+            1000275004 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_swapchain_present_scaling_create_info_ext(
+                    unsafe {
+                        &*(p as *const vk::SwapchainPresentScalingCreateInfoEXT<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_validation_features")]
+            1000247000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_validation_features_ext(
+                    unsafe { &*(p as *const vk::ValidationFeaturesEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "ext_validation_flags")]
+            1000061000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_validation_flags_ext(
+                    unsafe { &*(p as *const vk::ValidationFlagsEXT<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_decode_h264")]
+            1000040001 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_decode_h264_picture_info_khr(
+                    unsafe { &*(p as *const vk::VideoDecodeH264PictureInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_decode_h264")]
+            1000040003 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_decode_h264_profile_info_khr(
+                    unsafe { &*(p as *const vk::VideoDecodeH264ProfileInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_decode_h265")]
+            1000187004 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_decode_h265_picture_info_khr(
+                    unsafe { &*(p as *const vk::VideoDecodeH265PictureInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_decode_queue")]
+            1000024002 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_decode_usage_info_khr(
+                    unsafe { &*(p as *const vk::VideoDecodeUsageInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_queue")]
+            1000023000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_profile_info_khr(
+                    unsafe { &*(p as *const vk::VideoProfileInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_video_queue")]
+            1000023013 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_video_profile_list_info_khr(
+                    unsafe { &*(p as *const vk::VideoProfileListInfoKHR<'_>) },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_win32_keyed_mutex")]
+            1000075000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_win32_keyed_mutex_acquire_release_info_khr(
+                    unsafe {
+                        &*(p as *const vk::Win32KeyedMutexAcquireReleaseInfoKHR<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_win32_keyed_mutex")]
+            1000058000 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_win32_keyed_mutex_acquire_release_info_nv(
+                    unsafe {
+                        &*(p as *const vk::Win32KeyedMutexAcquireReleaseInfoNV<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "khr_acceleration_structure")]
+            1000150007 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_write_descriptor_set_acceleration_structure_khr(
+                    unsafe {
+                        &*(p
+                            as *const vk::WriteDescriptorSetAccelerationStructureKHR<'_>)
+                    },
+                    s,
+                )?
+            }
+            #[cfg(feature = "nv_ray_tracing")]
+            1000165007 => {
+                // SAFETY: a node with this structure type is this struct.
+                check_write_descriptor_set_acceleration_structure_nv(
+                    unsafe {
+                        &*(p as *const vk::WriteDescriptorSetAccelerationStructureNV<'_>)
                     },
                     s,
                 )?

@@ -3,6 +3,123 @@
 //! The checks of enum and flags values: each value is one that the
 //! versions and extensions enabled where the call runs define.
 use super::*;
+pub(crate) fn enum_acceleration_structure_build_type_khr(
+    v: vk::AccelerationStructureBuildTypeKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkAccelerationStructureBuildTypeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_acceleration_structure_create_flags_khr(
+    v: vk::AccelerationStructureCreateFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if s.enabled(&[15u16]) {
+        valid |= 8;
+    }
+    if s.enabled(&[117u16]) {
+        valid |= 4;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkAccelerationStructureCreateFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_acceleration_structure_memory_requirements_type_nv(
+    v: vk::AccelerationStructureMemoryRequirementsTypeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkAccelerationStructureMemoryRequirementsTypeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_acceleration_structure_motion_instance_type_nv(
+    v: vk::AccelerationStructureMotionInstanceTypeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkAccelerationStructureMotionInstanceTypeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_acceleration_structure_type_khr(
+    v: vk::AccelerationStructureTypeKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        2 => &[0u16],
+        0..=1 => &[116u16, 0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkAccelerationStructureTypeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_access_flags(
     v: vk::AccessFlags,
     s: &Scope<'_>,
@@ -24,13 +141,13 @@ pub(crate) fn flags_access_flags(
     if s.enabled(&[51u16]) {
         valid |= 234881024;
     }
-    if s.enabled(&[64u16, 110u16]) {
+    if s.enabled(&[66u16, 116u16]) {
         valid |= 6291456;
     }
-    if s.enabled(&[76u16, 113u16]) {
+    if s.enabled(&[80u16, 119u16]) {
         valid |= 8388608;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[111u16]) {
         valid |= 393216;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -61,22 +178,22 @@ pub(crate) fn flags_access_flags2(
     if s.enabled(&[39u16]) {
         valid |= 52776558133248;
     }
-    if s.enabled(&[59u16]) {
+    if s.enabled(&[61u16]) {
         valid |= 549755813888;
     }
-    if s.enabled(&[87u16]) {
+    if s.enabled(&[91u16]) {
         valid |= 1099511627776;
     }
-    if s.enabled(&[96u16]) {
+    if s.enabled(&[100u16]) {
         valid |= 268304384;
     }
-    if s.enabled(&[98u16]) {
+    if s.enabled(&[104u16]) {
         valid |= 103079215104;
     }
-    if s.enabled(&[99u16]) {
+    if s.enabled(&[105u16]) {
         valid |= 412316860416;
     }
-    if s.enabled(&[109u16]) {
+    if s.enabled(&[115u16]) {
         valid |= 13194139533312;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -144,7 +261,7 @@ pub(crate) fn enum_attachment_store_op(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000301000 => &[34u16, 72u16, 117u16, 3u16],
+        1000301000 => &[34u16, 74u16, 123u16, 3u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -205,6 +322,28 @@ pub(crate) fn enum_blend_op(
         )
     }
 }
+pub(crate) fn enum_blend_overlap_ext(
+    v: vk::BlendOverlapEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkBlendOverlapEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_buffer_create_flags(
     v: vk::BufferCreateFlags,
     s: &Scope<'_>,
@@ -217,7 +356,7 @@ pub(crate) fn flags_buffer_create_flags(
     if s.enabled(&[1u16]) {
         valid |= 8;
     }
-    if s.enabled(&[10u16, 66u16, 2u16]) {
+    if s.enabled(&[10u16, 68u16, 2u16]) {
         valid |= 16;
     }
     if s.enabled(&[15u16]) {
@@ -245,7 +384,7 @@ pub(crate) fn flags_buffer_usage_flags(
     if s.enabled(&[0u16]) {
         valid |= 511;
     }
-    if s.enabled(&[10u16, 66u16, 2u16]) {
+    if s.enabled(&[10u16, 68u16, 2u16]) {
         valid |= 131072;
     }
     if s.enabled(&[12u16]) {
@@ -260,16 +399,16 @@ pub(crate) fn flags_buffer_usage_flags(
     if s.enabled(&[51u16]) {
         valid |= 6144;
     }
-    if s.enabled(&[64u16]) {
+    if s.enabled(&[66u16]) {
         valid |= 1572864;
     }
-    if s.enabled(&[88u16, 110u16]) {
+    if s.enabled(&[92u16, 116u16]) {
         valid |= 1024;
     }
-    if s.enabled(&[98u16]) {
+    if s.enabled(&[104u16]) {
         valid |= 24576;
     }
-    if s.enabled(&[99u16]) {
+    if s.enabled(&[105u16]) {
         valid |= 98304;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -285,13 +424,63 @@ pub(crate) fn flags_buffer_usage_flags(
         )
     }
 }
+pub(crate) fn flags_build_acceleration_structure_flags_khr(
+    v: vk::BuildAccelerationStructureFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[39u16]) {
+        valid |= 448;
+    }
+    if s.enabled(&[116u16, 0u16]) {
+        valid |= 31;
+    }
+    if s.enabled(&[117u16]) {
+        valid |= 32;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkBuildAccelerationStructureFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_build_micromap_flags_ext(
+    v: vk::BuildMicromapFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 7;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkBuildMicromapFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_chroma_location(
     v: vk::ChromaLocation,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[90u16, 0u16],
+        0..=1 => &[94u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -302,6 +491,28 @@ pub(crate) fn enum_chroma_location(
                 vuid,
                 format!(
                     "{v:?} is not a `VkChromaLocation` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_coarse_sample_order_type_nv(
+    v: vk::CoarseSampleOrderTypeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkCoarseSampleOrderTypeNV` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -510,6 +721,28 @@ pub(crate) fn enum_component_swizzle(
         )
     }
 }
+pub(crate) fn enum_component_type_nv(
+    v: vk::ComponentTypeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=10 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkComponentTypeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_composite_alpha_flag_bits_khr(
     v: vk::CompositeAlphaFlagsKHR,
     s: &Scope<'_>,
@@ -532,6 +765,139 @@ pub(crate) fn enum_composite_alpha_flag_bits_khr(
         )
     }
 }
+pub(crate) fn flags_conditional_rendering_flags_ext(
+    v: vk::ConditionalRenderingFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkConditionalRenderingFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_conservative_rasterization_mode_ext(
+    v: vk::ConservativeRasterizationModeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkConservativeRasterizationModeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_copy_acceleration_structure_mode_khr(
+    v: vk::CopyAccelerationStructureModeKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        2..=3 => &[0u16],
+        0..=1 => &[116u16, 0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkCopyAccelerationStructureModeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_copy_micromap_mode_ext(
+    v: vk::CopyMicromapModeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkCopyMicromapModeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_coverage_modulation_mode_nv(
+    v: vk::CoverageModulationModeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkCoverageModulationModeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_coverage_reduction_mode_nv(
+    v: vk::CoverageReductionModeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkCoverageReductionModeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_cull_mode_flags(
     v: vk::CullModeFlags,
     s: &Scope<'_>,
@@ -549,6 +915,56 @@ pub(crate) fn flags_cull_mode_flags(
                 vuid,
                 format!(
                     "{v:?} sets bits of `VkCullModeFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_debug_report_flags_ext(
+    v: vk::DebugReportFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 31;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkDebugReportFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_debug_report_object_type_ext(
+    v: vk::DebugReportObjectTypeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=30 | 33 => &[0u16],
+        1000085000 => &[13u16, 71u16],
+        1000156000 => &[13u16, 94u16],
+        1000366000 => &[57u16],
+        1000150000 => &[66u16],
+        1000029000..=1000029001 => &[107u16],
+        1000165000 => &[116u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDebugReportObjectTypeEXT` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -635,10 +1051,10 @@ pub(crate) fn flags_dependency_flags(
     if s.enabled(&[8u16]) {
         valid |= 8;
     }
-    if s.enabled(&[70u16, 1u16]) {
+    if s.enabled(&[72u16, 1u16]) {
         valid |= 4;
     }
-    if s.enabled(&[81u16, 1u16]) {
+    if s.enabled(&[85u16, 1u16]) {
         valid |= 2;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -688,7 +1104,7 @@ pub(crate) fn flags_descriptor_pool_create_flags(
     if s.enabled(&[16u16, 2u16]) {
         valid |= 2;
     }
-    if s.enabled(&[37u16, 119u16]) {
+    if s.enabled(&[37u16, 125u16]) {
         valid |= 4;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -716,10 +1132,10 @@ pub(crate) fn flags_descriptor_set_layout_create_flags(
     if s.enabled(&[16u16, 2u16]) {
         valid |= 2;
     }
-    if s.enabled(&[37u16, 119u16]) {
+    if s.enabled(&[37u16, 125u16]) {
         valid |= 4;
     }
-    if s.enabled(&[86u16]) {
+    if s.enabled(&[90u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -743,10 +1159,10 @@ pub(crate) fn enum_descriptor_type(
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=10 => &[0u16],
         1000138000 => &[31u16, 3u16],
-        1000351000 => &[37u16, 119u16],
-        1000150000 => &[64u16],
-        1000165000 => &[110u16],
-        1000440000..=1000440001 => &[115u16],
+        1000351000 => &[37u16, 125u16],
+        1000150000 => &[66u16],
+        1000165000 => &[116u16],
+        1000440000..=1000440001 => &[121u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -768,8 +1184,8 @@ pub(crate) fn enum_descriptor_update_template_type(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0 => &[69u16, 0u16],
-        1 => &[69u16, 86u16],
+        0 => &[71u16, 0u16],
+        1 => &[71u16, 90u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -780,6 +1196,94 @@ pub(crate) fn enum_descriptor_update_template_type(
                 vuid,
                 format!(
                     "{v:?} is not a `VkDescriptorUpdateTemplateType` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_device_address_binding_flags_ext(
+    v: vk::DeviceAddressBindingFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkDeviceAddressBindingFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_device_address_binding_type_ext(
+    v: vk::DeviceAddressBindingTypeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDeviceAddressBindingTypeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_device_diagnostics_config_flags_nv(
+    v: vk::DeviceDiagnosticsConfigFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 15;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkDeviceDiagnosticsConfigFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_device_event_type_ext(
+    v: vk::DeviceEventTypeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDeviceEventTypeEXT` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -851,6 +1355,116 @@ pub(crate) fn flags_device_queue_create_flags(
         )
     }
 }
+pub(crate) fn enum_direct_driver_loading_mode_lunarg(
+    v: vk::DirectDriverLoadingModeLUNARG,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDirectDriverLoadingModeLUNARG` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_discard_rectangle_mode_ext(
+    v: vk::DiscardRectangleModeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDiscardRectangleModeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_display_event_type_ext(
+    v: vk::DisplayEventTypeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDisplayEventTypeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_display_plane_alpha_flag_bits_khr(
+    v: vk::DisplayPlaneAlphaFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        1..=2 | 4 | 8 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDisplayPlaneAlphaFlagBitsKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_display_power_state_ext(
+    v: vk::DisplayPowerStateEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkDisplayPowerStateEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_dynamic_state(
     v: vk::DynamicState,
     s: &Scope<'_>,
@@ -867,11 +1481,11 @@ pub(crate) fn enum_dynamic_state(
         1000259000 => &[33u16],
         1000143000 => &[45u16],
         1000352000 => &[53u16],
-        1000226000 => &[76u16],
-        1000347000 => &[88u16],
-        1000087000 => &[103u16],
-        1000205001 => &[112u16],
-        1000164004 | 1000164006 => &[113u16],
+        1000226000 => &[80u16],
+        1000347000 => &[92u16],
+        1000087000 => &[109u16],
+        1000205001 => &[118u16],
+        1000164004 | 1000164006 => &[119u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -893,7 +1507,7 @@ pub(crate) fn flags_event_create_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[96u16, 3u16]) {
+    if s.enabled(&[100u16, 3u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -909,13 +1523,35 @@ pub(crate) fn flags_event_create_flags(
         )
     }
 }
+pub(crate) fn enum_export_metal_object_type_flag_bits_ext(
+    v: vk::ExportMetalObjectTypeFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        1..=2 | 4 | 8 | 16 | 32 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkExportMetalObjectTypeFlagBitsEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_external_fence_handle_type_flag_bits(
     v: vk::ExternalFenceHandleTypeFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        1..=2 | 4 | 8 => &[73u16, 0u16],
+        1..=2 | 4 | 8 => &[76u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -937,7 +1573,7 @@ pub(crate) fn flags_external_fence_handle_type_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[73u16, 0u16]) {
+    if s.enabled(&[76u16, 0u16]) {
         valid |= 15;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -962,9 +1598,9 @@ pub(crate) fn enum_external_memory_handle_type_flag_bits(
         1024 => &[5u16],
         512 => &[22u16],
         128 | 256 => &[23u16],
-        2048 => &[56u16],
-        1..=2 | 4 | 8 | 16 | 32 | 64 => &[74u16, 0u16],
-        4096 => &[106u16],
+        2048 => &[58u16],
+        1..=2 | 4 | 8 | 16 | 32 | 64 => &[77u16, 0u16],
+        4096 => &[112u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -995,13 +1631,13 @@ pub(crate) fn flags_external_memory_handle_type_flags(
     if s.enabled(&[23u16]) {
         valid |= 384;
     }
-    if s.enabled(&[56u16]) {
+    if s.enabled(&[58u16]) {
         valid |= 2048;
     }
-    if s.enabled(&[74u16, 0u16]) {
+    if s.enabled(&[77u16, 0u16]) {
         valid |= 127;
     }
-    if s.enabled(&[106u16]) {
+    if s.enabled(&[112u16]) {
         valid |= 4096;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1017,14 +1653,36 @@ pub(crate) fn flags_external_memory_handle_type_flags(
         )
     }
 }
+pub(crate) fn flags_external_memory_handle_type_flags_nv(
+    v: vk::ExternalMemoryHandleTypeFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 15;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkExternalMemoryHandleTypeFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_external_semaphore_handle_type_flag_bits(
     v: vk::ExternalSemaphoreHandleTypeFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        128 => &[57u16],
-        1..=2 | 4 | 8 | 16 => &[75u16, 0u16],
+        128 => &[59u16],
+        1..=2 | 4 | 8 | 16 => &[79u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1046,10 +1704,10 @@ pub(crate) fn flags_external_semaphore_handle_type_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[57u16]) {
+    if s.enabled(&[59u16]) {
         valid |= 128;
     }
-    if s.enabled(&[75u16, 0u16]) {
+    if s.enabled(&[79u16, 0u16]) {
         valid |= 31;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1087,6 +1745,28 @@ pub(crate) fn flags_fence_create_flags(
         )
     }
 }
+pub(crate) fn flags_fence_import_flags(
+    v: vk::FenceImportFlags,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[75u16, 0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkFenceImportFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_filter(
     v: vk::Filter,
     s: &Scope<'_>,
@@ -1094,7 +1774,7 @@ pub(crate) fn enum_filter(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000015000 => &[24u16, 61u16],
+        1000015000 => &[24u16, 63u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1119,10 +1799,10 @@ pub(crate) fn enum_format(
         0..=184 => &[0u16],
         1000340000..=1000340001 => &[7u16, 3u16],
         1000066000..=1000066013 => &[50u16, 3u16],
-        1000330000..=1000330003 => &[54u16, 3u16],
-        1000054000..=1000054007 => &[62u16],
-        1000156000..=1000156033 => &[90u16, 1u16],
-        1000464000 => &[109u16],
+        1000330000..=1000330003 => &[56u16, 3u16],
+        1000054000..=1000054007 => &[64u16],
+        1000156000..=1000156033 => &[94u16, 1u16],
+        1000464000 => &[115u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1138,13 +1818,84 @@ pub(crate) fn enum_format(
         )
     }
 }
+pub(crate) fn flags_format_feature_flags(
+    v: vk::FormatFeatureFlags,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 8191;
+    }
+    if s.enabled(&[24u16, 63u16]) {
+        valid |= 8192;
+    }
+    if s.enabled(&[25u16]) {
+        valid |= 16777216;
+    }
+    if s.enabled(&[46u16, 2u16]) {
+        valid |= 65536;
+    }
+    if s.enabled(&[66u16]) {
+        valid |= 536870912;
+    }
+    if s.enabled(&[80u16]) {
+        valid |= 1073741824;
+    }
+    if s.enabled(&[82u16, 1u16]) {
+        valid |= 49152;
+    }
+    if s.enabled(&[94u16, 1u16]) {
+        valid |= 16646144;
+    }
+    if s.enabled(&[104u16]) {
+        valid |= 100663296;
+    }
+    if s.enabled(&[105u16]) {
+        valid |= 402653184;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkFormatFeatureFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_fragment_shading_rate_nv(
+    v: vk::FragmentShadingRateNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 | 4..=6 | 9..=15 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkFragmentShadingRateNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_framebuffer_create_flags(
     v: vk::FramebufferCreateFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[77u16, 2u16]) {
+    if s.enabled(&[81u16, 2u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1182,6 +1933,95 @@ pub(crate) fn enum_front_face(
         )
     }
 }
+pub(crate) fn enum_full_screen_exclusive_ext(
+    v: vk::FullScreenExclusiveEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkFullScreenExclusiveEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_geometry_flags_khr(
+    v: vk::GeometryFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[116u16, 0u16]) {
+        valid |= 3;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkGeometryFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_geometry_type_khr(
+    v: vk::GeometryTypeKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        2 => &[0u16],
+        0..=1 => &[116u16, 0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkGeometryTypeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_graphics_pipeline_library_flags_ext(
+    v: vk::GraphicsPipelineLibraryFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 15;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkGraphicsPipelineLibraryFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_image_aspect_flag_bits(
     v: vk::ImageAspectFlags,
     s: &Scope<'_>,
@@ -1190,8 +2030,8 @@ pub(crate) fn enum_image_aspect_flag_bits(
     let origins: &[u16] = match v.as_raw() as i64 {
         1..=2 | 4 | 8 => &[0u16],
         128 | 256 | 512 | 1024 => &[29u16],
-        0 => &[80u16, 3u16],
-        16 | 32 | 64 => &[90u16, 1u16],
+        0 => &[84u16, 3u16],
+        16 | 32 | 64 => &[94u16, 1u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1219,7 +2059,7 @@ pub(crate) fn flags_image_aspect_flags(
     if s.enabled(&[29u16]) {
         valid |= 1920;
     }
-    if s.enabled(&[90u16, 1u16]) {
+    if s.enabled(&[94u16, 1u16]) {
         valid |= 112;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1230,6 +2070,28 @@ pub(crate) fn flags_image_aspect_flags(
                 vuid,
                 format!(
                     "{v:?} sets bits of `VkImageAspectFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_image_constraints_info_flags_fuchsia(
+    v: vk::ImageConstraintsInfoFlagsFUCHSIA,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 31;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkImageConstraintsInfoFlagsFUCHSIA` that no version or extension enabled here defines"
                 ),
             ),
         )
@@ -1262,25 +2124,25 @@ pub(crate) fn flags_image_create_flags(
     if s.enabled(&[45u16]) {
         valid |= 4096;
     }
-    if s.enabled(&[65u16, 1u16]) {
+    if s.enabled(&[67u16, 1u16]) {
         valid |= 1024;
     }
-    if s.enabled(&[70u16, 1u16]) {
+    if s.enabled(&[72u16, 1u16]) {
         valid |= 64;
     }
-    if s.enabled(&[78u16, 1u16]) {
+    if s.enabled(&[82u16, 1u16]) {
         valid |= 32;
     }
-    if s.enabled(&[79u16, 1u16]) {
+    if s.enabled(&[83u16, 1u16]) {
         valid |= 384;
     }
-    if s.enabled(&[90u16, 1u16]) {
+    if s.enabled(&[94u16, 1u16]) {
         valid |= 512;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[110u16]) {
         valid |= 8192;
     }
-    if s.enabled(&[114u16]) {
+    if s.enabled(&[120u16]) {
         valid |= 32768;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1305,14 +2167,14 @@ pub(crate) fn enum_image_layout(
         0..=8 => &[0u16],
         1000339000 => &[8u16],
         1000218000 => &[25u16],
-        1000164003 => &[76u16, 113u16],
-        1000117000..=1000117001 => &[79u16, 1u16],
-        1000241000..=1000241003 => &[91u16, 2u16],
-        1000111000 => &[92u16],
-        1000001002 => &[94u16],
-        1000314000..=1000314001 => &[96u16, 3u16],
-        1000024000..=1000024002 => &[98u16],
-        1000299000..=1000299002 => &[99u16],
+        1000164003 => &[80u16, 119u16],
+        1000117000..=1000117001 => &[83u16, 1u16],
+        1000241000..=1000241003 => &[95u16, 2u16],
+        1000111000 => &[96u16],
+        1000001002 => &[98u16],
+        1000314000..=1000314001 => &[100u16, 3u16],
+        1000024000..=1000024002 => &[104u16],
+        1000299000..=1000299002 => &[105u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1388,19 +2250,19 @@ pub(crate) fn flags_image_usage_flags(
     if s.enabled(&[25u16]) {
         valid |= 512;
     }
-    if s.enabled(&[59u16]) {
+    if s.enabled(&[61u16]) {
         valid |= 262144;
     }
-    if s.enabled(&[76u16, 113u16]) {
+    if s.enabled(&[80u16, 119u16]) {
         valid |= 256;
     }
-    if s.enabled(&[98u16]) {
+    if s.enabled(&[104u16]) {
         valid |= 7168;
     }
-    if s.enabled(&[99u16]) {
+    if s.enabled(&[105u16]) {
         valid |= 57344;
     }
-    if s.enabled(&[115u16]) {
+    if s.enabled(&[121u16]) {
         valid |= 3145728;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1474,7 +2336,7 @@ pub(crate) fn enum_index_type(
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
         1000265000 => &[30u16],
-        1000165000 => &[64u16, 110u16],
+        1000165000 => &[66u16, 116u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1490,13 +2352,80 @@ pub(crate) fn enum_index_type(
         )
     }
 }
+pub(crate) fn flags_indirect_commands_layout_usage_flags_nv(
+    v: vk::IndirectCommandsLayoutUsageFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 7;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkIndirectCommandsLayoutUsageFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_indirect_commands_token_type_nv(
+    v: vk::IndirectCommandsTokenTypeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=7 => &[0u16],
+        1000328000 => &[35u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkIndirectCommandsTokenTypeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_indirect_state_flags_nv(
+    v: vk::IndirectStateFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkIndirectStateFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_instance_create_flags(
     v: vk::InstanceCreateFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[85u16]) {
+    if s.enabled(&[89u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1512,16 +2441,60 @@ pub(crate) fn flags_instance_create_flags(
         )
     }
 }
+pub(crate) fn enum_line_rasterization_mode_ext(
+    v: vk::LineRasterizationModeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkLineRasterizationModeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_logic_op(
+    v: vk::LogicOp,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=15 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkLogicOp` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_memory_allocate_flags(
     v: vk::MemoryAllocateFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[66u16, 2u16]) {
+    if s.enabled(&[68u16, 2u16]) {
         valid |= 6;
     }
-    if s.enabled(&[70u16, 0u16]) {
+    if s.enabled(&[72u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1532,6 +2505,94 @@ pub(crate) fn flags_memory_allocate_flags(
                 vuid,
                 format!(
                     "{v:?} sets bits of `VkMemoryAllocateFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_memory_decompression_method_flags_nv(
+    v: vk::MemoryDecompressionMethodFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkMemoryDecompressionMethodFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_memory_overallocation_behavior_amd(
+    v: vk::MemoryOverallocationBehaviorAMD,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkMemoryOverallocationBehaviorAMD` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_micromap_create_flags_ext(
+    v: vk::MicromapCreateFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkMicromapCreateFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_micromap_type_ext(
+    v: vk::MicromapTypeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkMicromapTypeEXT` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -1549,20 +2610,20 @@ pub(crate) fn enum_object_type(
         1000396000 => &[39u16],
         1000295000 => &[43u16, 3u16],
         1000160000 => &[52u16],
-        1000366000 => &[55u16],
-        1000210000 => &[63u16],
-        1000150000 => &[64u16],
-        1000268000 => &[67u16],
-        1000085000 => &[69u16, 1u16],
-        1000002000..=1000002001 => &[71u16],
-        1000156000 => &[90u16, 1u16],
-        1000000000 => &[93u16],
-        1000001000 => &[94u16],
-        1000023000..=1000023001 => &[100u16],
-        1000029000..=1000029001 => &[101u16],
-        1000277000 => &[105u16],
-        1000464000 => &[109u16],
-        1000165000 => &[110u16],
+        1000366000 => &[57u16],
+        1000210000 => &[65u16],
+        1000150000 => &[66u16],
+        1000268000 => &[69u16],
+        1000085000 => &[71u16, 1u16],
+        1000002000..=1000002001 => &[73u16],
+        1000156000 => &[94u16, 1u16],
+        1000000000 => &[97u16],
+        1000001000 => &[98u16],
+        1000023000..=1000023001 => &[106u16],
+        1000029000..=1000029001 => &[107u16],
+        1000277000 => &[111u16],
+        1000464000 => &[115u16],
+        1000165000 => &[116u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1578,6 +2639,226 @@ pub(crate) fn enum_object_type(
         )
     }
 }
+pub(crate) fn flags_optical_flow_execute_flags_nv(
+    v: vk::OpticalFlowExecuteFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkOpticalFlowExecuteFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_optical_flow_grid_size_flags_nv(
+    v: vk::OpticalFlowGridSizeFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 15;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkOpticalFlowGridSizeFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_optical_flow_performance_level_nv(
+    v: vk::OpticalFlowPerformanceLevelNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkOpticalFlowPerformanceLevelNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_optical_flow_session_binding_point_nv(
+    v: vk::OpticalFlowSessionBindingPointNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=8 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkOpticalFlowSessionBindingPointNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_optical_flow_session_create_flags_nv(
+    v: vk::OpticalFlowSessionCreateFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 31;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkOpticalFlowSessionCreateFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_optical_flow_usage_flags_nv(
+    v: vk::OpticalFlowUsageFlagsNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 31;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkOpticalFlowUsageFlagsNV` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_performance_configuration_type_intel(
+    v: vk::PerformanceConfigurationTypeINTEL,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPerformanceConfigurationTypeINTEL` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_performance_override_type_intel(
+    v: vk::PerformanceOverrideTypeINTEL,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPerformanceOverrideTypeINTEL` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_performance_parameter_type_intel(
+    v: vk::PerformanceParameterTypeINTEL,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPerformanceParameterTypeINTEL` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_performance_value_type_intel(
+    v: vk::PerformanceValueTypeINTEL,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=4 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPerformanceValueTypeINTEL` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_pipeline_bind_point(
     v: vk::PipelineBindPoint,
     s: &Scope<'_>,
@@ -1585,8 +2866,8 @@ pub(crate) fn enum_pipeline_bind_point(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000369003 => &[60u16],
-        1000165000 => &[88u16, 110u16],
+        1000369003 => &[62u16],
+        1000165000 => &[92u16, 116u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1695,28 +2976,28 @@ pub(crate) fn flags_pipeline_create_flags(
     if s.enabled(&[41u16]) {
         valid |= 1207959552;
     }
-    if s.enabled(&[70u16, 1u16]) {
+    if s.enabled(&[72u16, 1u16]) {
         valid |= 24;
     }
-    if s.enabled(&[72u16]) {
+    if s.enabled(&[74u16]) {
         valid |= 6291456;
     }
-    if s.enabled(&[83u16]) {
+    if s.enabled(&[87u16]) {
         valid |= 192;
     }
-    if s.enabled(&[84u16]) {
+    if s.enabled(&[88u16]) {
         valid |= 2048;
     }
-    if s.enabled(&[88u16]) {
+    if s.enabled(&[92u16]) {
         valid |= 782336;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[111u16]) {
         valid |= 262144;
     }
-    if s.enabled(&[110u16]) {
+    if s.enabled(&[116u16]) {
         valid |= 32;
     }
-    if s.enabled(&[111u16]) {
+    if s.enabled(&[117u16]) {
         valid |= 1048576;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1776,6 +3057,50 @@ pub(crate) fn flags_pipeline_layout_create_flags(
         )
     }
 }
+pub(crate) fn enum_pipeline_robustness_buffer_behavior_ext(
+    v: vk::PipelineRobustnessBufferBehaviorEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPipelineRobustnessBufferBehaviorEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_pipeline_robustness_image_behavior_ext(
+    v: vk::PipelineRobustnessImageBehaviorEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkPipelineRobustnessImageBehaviorEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_pipeline_shader_stage_create_flags(
     v: vk::PipelineShaderStageCreateFlags,
     s: &Scope<'_>,
@@ -1822,13 +3147,13 @@ pub(crate) fn enum_pipeline_stage_flag_bits(
         | 65536 => &[0u16],
         262144 => &[12u16],
         8388608 => &[25u16],
-        524288 | 1048576 => &[35u16, 108u16],
+        524288 | 1048576 => &[35u16, 114u16],
         16777216 => &[51u16],
-        33554432 => &[64u16, 110u16],
-        4194304 => &[76u16, 113u16],
-        2097152 => &[88u16, 110u16],
-        0 => &[96u16, 3u16],
-        131072 => &[105u16],
+        33554432 => &[66u16, 116u16],
+        4194304 => &[80u16, 119u16],
+        2097152 => &[92u16, 116u16],
+        0 => &[100u16, 3u16],
+        131072 => &[111u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1859,22 +3184,22 @@ pub(crate) fn flags_pipeline_stage_flags(
     if s.enabled(&[25u16]) {
         valid |= 8388608;
     }
-    if s.enabled(&[35u16, 108u16]) {
+    if s.enabled(&[35u16, 114u16]) {
         valid |= 1572864;
     }
     if s.enabled(&[51u16]) {
         valid |= 16777216;
     }
-    if s.enabled(&[64u16, 110u16]) {
+    if s.enabled(&[66u16, 116u16]) {
         valid |= 33554432;
     }
-    if s.enabled(&[76u16, 113u16]) {
+    if s.enabled(&[80u16, 119u16]) {
         valid |= 4194304;
     }
-    if s.enabled(&[88u16, 110u16]) {
+    if s.enabled(&[92u16, 116u16]) {
         valid |= 2097152;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[111u16]) {
         valid |= 131072;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1902,28 +3227,28 @@ pub(crate) fn flags_pipeline_stage_flags2(
     if s.enabled(&[39u16]) {
         valid |= 1073741824;
     }
-    if s.enabled(&[58u16]) {
+    if s.enabled(&[60u16]) {
         valid |= 2199023255552;
     }
-    if s.enabled(&[59u16]) {
+    if s.enabled(&[61u16]) {
         valid |= 1099511627776;
     }
-    if s.enabled(&[60u16]) {
+    if s.enabled(&[62u16]) {
         valid |= 549755813888;
     }
-    if s.enabled(&[87u16]) {
+    if s.enabled(&[91u16]) {
         valid |= 268435456;
     }
-    if s.enabled(&[96u16]) {
+    if s.enabled(&[100u16]) {
         valid |= 66977792;
     }
-    if s.enabled(&[98u16]) {
+    if s.enabled(&[104u16]) {
         valid |= 67108864;
     }
-    if s.enabled(&[99u16]) {
+    if s.enabled(&[105u16]) {
         valid |= 134217728;
     }
-    if s.enabled(&[109u16]) {
+    if s.enabled(&[115u16]) {
         valid |= 536870912;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1946,7 +3271,7 @@ pub(crate) fn enum_polygon_mode(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=2 => &[0u16],
-        1000153000 => &[107u16],
+        1000153000 => &[113u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1962,6 +3287,28 @@ pub(crate) fn enum_polygon_mode(
         )
     }
 }
+pub(crate) fn flags_present_gravity_flags_ext(
+    v: vk::PresentGravityFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 7;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkPresentGravityFlagsEXT` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_present_mode_khr(
     v: vk::PresentModeKHR,
     s: &Scope<'_>,
@@ -1969,7 +3316,7 @@ pub(crate) fn enum_present_mode_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=3 => &[0u16],
-        1000111000..=1000111001 => &[92u16],
+        1000111000..=1000111001 => &[96u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1980,6 +3327,28 @@ pub(crate) fn enum_present_mode_khr(
                 vuid,
                 format!(
                     "{v:?} is not a `VkPresentModeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_present_scaling_flags_ext(
+    v: vk::PresentScalingFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 7;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkPresentScalingFlagsEXT` that no version or extension enabled here defines"
                 ),
             ),
         )
@@ -2007,6 +3376,28 @@ pub(crate) fn enum_primitive_topology(
         )
     }
 }
+pub(crate) fn enum_provoking_vertex_mode_ext(
+    v: vk::ProvokingVertexModeEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkProvokingVertexModeEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_query_control_flags(
     v: vk::QueryControlFlags,
     s: &Scope<'_>,
@@ -2029,6 +3420,28 @@ pub(crate) fn flags_query_control_flags(
         )
     }
 }
+pub(crate) fn enum_query_pool_sampling_mode_intel(
+    v: vk::QueryPoolSamplingModeINTEL,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkQueryPoolSamplingModeINTEL` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_query_result_flags(
     v: vk::QueryResultFlags,
     s: &Scope<'_>,
@@ -2038,7 +3451,7 @@ pub(crate) fn flags_query_result_flags(
     if s.enabled(&[0u16]) {
         valid |= 15;
     }
-    if s.enabled(&[100u16]) {
+    if s.enabled(&[106u16]) {
         valid |= 16;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2065,13 +3478,13 @@ pub(crate) fn enum_query_type(
         1000396000..=1000396001 => &[39u16],
         1000382000 => &[42u16],
         1000028004 => &[51u16],
-        1000210000 => &[63u16],
-        1000150000..=1000150001 => &[64u16],
-        1000116000 => &[82u16],
-        1000386000..=1000386001 => &[87u16],
-        1000299000 => &[99u16],
-        1000023000 => &[100u16],
-        1000165000 => &[110u16],
+        1000210000 => &[65u16],
+        1000150000..=1000150001 => &[66u16],
+        1000116000 => &[86u16],
+        1000386000..=1000386001 => &[91u16],
+        1000299000 => &[105u16],
+        1000023000 => &[106u16],
+        1000165000 => &[116u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2087,13 +3500,79 @@ pub(crate) fn enum_query_type(
         )
     }
 }
+pub(crate) fn enum_queue_global_priority_khr(
+    v: vk::QueueGlobalPriorityKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        128 | 256 | 512 | 1024 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkQueueGlobalPriorityKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_rasterization_order_amd(
+    v: vk::RasterizationOrderAMD,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkRasterizationOrderAMD` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_ray_tracing_shader_group_type_khr(
+    v: vk::RayTracingShaderGroupTypeKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[116u16, 0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkRayTracingShaderGroupTypeKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn flags_render_pass_create_flags(
     v: vk::RenderPassCreateFlags,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[118u16]) {
+    if s.enabled(&[124u16]) {
         valid |= 2;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2140,7 +3619,7 @@ pub(crate) fn enum_resolve_mode_flag_bits(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=2 | 4 | 8 => &[68u16, 0u16],
+        0..=2 | 4 | 8 => &[70u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2185,7 +3664,7 @@ pub(crate) fn enum_sampler_address_mode(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=3 => &[0u16],
-        4 => &[89u16, 2u16],
+        4 => &[93u16, 2u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2216,7 +3695,7 @@ pub(crate) fn flags_sampler_create_flags(
     if s.enabled(&[38u16]) {
         valid |= 4;
     }
-    if s.enabled(&[115u16]) {
+    if s.enabled(&[121u16]) {
         valid |= 16;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2282,7 +3761,7 @@ pub(crate) fn enum_sampler_ycbcr_model_conversion(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=4 => &[90u16, 0u16],
+        0..=4 => &[94u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2304,7 +3783,7 @@ pub(crate) fn enum_sampler_ycbcr_range(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[90u16, 0u16],
+        0..=1 => &[94u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2320,13 +3799,57 @@ pub(crate) fn enum_sampler_ycbcr_range(
         )
     }
 }
+pub(crate) fn enum_scope_nv(
+    v: vk::ScopeNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        1..=3 | 5 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkScopeNV` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_semaphore_import_flags(
+    v: vk::SemaphoreImportFlags,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[78u16, 0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkSemaphoreImportFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_semaphore_type(
     v: vk::SemaphoreType,
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[97u16, 0u16],
+        0..=1 => &[101u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2348,7 +3871,7 @@ pub(crate) fn flags_semaphore_wait_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[97u16, 0u16]) {
+    if s.enabled(&[101u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2364,6 +3887,50 @@ pub(crate) fn flags_semaphore_wait_flags(
         )
     }
 }
+pub(crate) fn enum_shader_group_shader_khr(
+    v: vk::ShaderGroupShaderKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkShaderGroupShaderKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_shader_info_type_amd(
+    v: vk::ShaderInfoTypeAMD,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkShaderInfoTypeAMD` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
 pub(crate) fn enum_shader_stage_flag_bits(
     v: vk::ShaderStageFlags,
     s: &Scope<'_>,
@@ -2371,10 +3938,10 @@ pub(crate) fn enum_shader_stage_flag_bits(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         1..=2 | 4 | 8 | 16 | 31..=32 | 2147483647 => &[0u16],
-        64 | 128 => &[35u16, 108u16],
-        524288 => &[58u16],
-        16384 => &[60u16],
-        256 | 512 | 1024 | 2048 | 4096 | 8192 => &[88u16, 110u16],
+        64 | 128 => &[35u16, 114u16],
+        524288 => &[60u16],
+        16384 => &[62u16],
+        256 | 512 | 1024 | 2048 | 4096 | 8192 => &[92u16, 116u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2399,16 +3966,16 @@ pub(crate) fn flags_shader_stage_flags(
     if s.enabled(&[0u16]) {
         valid |= 63;
     }
-    if s.enabled(&[35u16, 108u16]) {
+    if s.enabled(&[35u16, 114u16]) {
         valid |= 192;
     }
-    if s.enabled(&[58u16]) {
+    if s.enabled(&[60u16]) {
         valid |= 524288;
     }
-    if s.enabled(&[60u16]) {
+    if s.enabled(&[62u16]) {
         valid |= 16384;
     }
-    if s.enabled(&[88u16, 110u16]) {
+    if s.enabled(&[92u16, 116u16]) {
         valid |= 16128;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2419,6 +3986,28 @@ pub(crate) fn flags_shader_stage_flags(
                 vuid,
                 format!(
                     "{v:?} sets bits of `VkShaderStageFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_shading_rate_palette_entry_nv(
+    v: vk::ShadingRatePaletteEntryNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=11 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkShadingRatePaletteEntryNV` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -2568,10 +4157,10 @@ pub(crate) fn flags_subpass_description_flags(
     if s.enabled(&[32u16]) {
         valid |= 128;
     }
-    if s.enabled(&[102u16]) {
+    if s.enabled(&[108u16]) {
         valid |= 3;
     }
-    if s.enabled(&[116u16]) {
+    if s.enabled(&[122u16]) {
         valid |= 12;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2582,6 +4171,50 @@ pub(crate) fn flags_subpass_description_flags(
                 vuid,
                 format!(
                     "{v:?} sets bits of `VkSubpassDescriptionFlags` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_surface_counter_flag_bits_ext(
+    v: vk::SurfaceCounterFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkSurfaceCounterFlagBitsEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_surface_counter_flags_ext(
+    v: vk::SurfaceCounterFlagsEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkSurfaceCounterFlagsEXT` that no version or extension enabled here defines"
                 ),
             ),
         )
@@ -2618,13 +4251,13 @@ pub(crate) fn flags_swapchain_create_flags_khr(
     if s.enabled(&[49u16]) {
         valid |= 8;
     }
-    if s.enabled(&[70u16, 94u16]) {
+    if s.enabled(&[72u16, 98u16]) {
         valid |= 1;
     }
-    if s.enabled(&[94u16]) {
+    if s.enabled(&[98u16]) {
         valid |= 2;
     }
-    if s.enabled(&[95u16]) {
+    if s.enabled(&[99u16]) {
         valid |= 4;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2646,7 +4279,7 @@ pub(crate) fn enum_tessellation_domain_origin(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[79u16, 0u16],
+        0..=1 => &[83u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2657,6 +4290,94 @@ pub(crate) fn enum_tessellation_domain_origin(
                 vuid,
                 format!(
                     "{v:?} is not a `VkTessellationDomainOrigin` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_time_domain_ext(
+    v: vk::TimeDomainEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=3 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkTimeDomainEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_validation_check_ext(
+    v: vk::ValidationCheckEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=1 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkValidationCheckEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_validation_feature_disable_ext(
+    v: vk::ValidationFeatureDisableEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=7 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkValidationFeatureDisableEXT` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_validation_feature_enable_ext(
+    v: vk::ValidationFeatureEnableEXT,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=4 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkValidationFeatureEnableEXT` value of the versions and extensions enabled here"
                 ),
             ),
         )
@@ -2679,6 +4400,189 @@ pub(crate) fn enum_vertex_input_rate(
                 vuid,
                 format!(
                     "{v:?} is not a `VkVertexInputRate` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_video_chroma_subsampling_flags_khr(
+    v: vk::VideoChromaSubsamplingFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 15;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkVideoChromaSubsamplingFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_video_codec_operation_flag_bits_khr(
+    v: vk::VideoCodecOperationFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0 => &[0u16],
+        65536 => &[54u16],
+        131072 => &[55u16],
+        1 => &[102u16],
+        2 => &[103u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkVideoCodecOperationFlagBitsKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_video_coding_control_flags_khr(
+    v: vk::VideoCodingControlFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if s.enabled(&[105u16]) {
+        valid |= 6;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkVideoCodingControlFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_video_component_bit_depth_flags_khr(
+    v: vk::VideoComponentBitDepthFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 21;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkVideoComponentBitDepthFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_video_decode_h264_picture_layout_flag_bits_khr(
+    v: vk::VideoDecodeH264PictureLayoutFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=2 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkVideoDecodeH264PictureLayoutFlagBitsKHR` value of the versions and extensions enabled here"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_video_decode_usage_flags_khr(
+    v: vk::VideoDecodeUsageFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 7;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkVideoDecodeUsageFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn flags_video_session_create_flags_khr(
+    v: vk::VideoSessionCreateFlagsKHR,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let mut valid: u64 = 0;
+    if s.enabled(&[0u16]) {
+        valid |= 1;
+    }
+    if (v.as_raw() as u64) & !valid == 0 {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} sets bits of `VkVideoSessionCreateFlagsKHR` that no version or extension enabled here defines"
+                ),
+            ),
+        )
+    }
+}
+pub(crate) fn enum_viewport_coordinate_swizzle_nv(
+    v: vk::ViewportCoordinateSwizzleNV,
+    s: &Scope<'_>,
+    vuid: &'static str,
+) -> Result<()> {
+    let origins: &[u16] = match v.as_raw() as i64 {
+        0..=7 => &[0u16],
+        _ => &[],
+    };
+    if s.enabled(origins) {
+        Ok(())
+    } else {
+        Err(
+            fail(
+                vuid,
+                format!(
+                    "{v:?} is not a `VkViewportCoordinateSwizzleNV` value of the versions and extensions enabled here"
                 ),
             ),
         )

@@ -4,6 +4,8 @@
 //! method per checked command,
 //! beside it on the same receiver, which the checked method calls first;
 //! one module per core version and extension, as the commands are.
+#[allow(unused_imports)]
+use crate::checks::origin;
 use crate::handles::*;
 use crate::structs::*;
 use crate::validation::fail;
@@ -17,16 +19,136 @@ mod v1_2;
 mod v1_2_recording;
 mod v1_3;
 mod v1_3_recording;
+#[cfg(feature = "amd_buffer_marker")]
+mod amd_buffer_marker;
+#[cfg(feature = "amd_display_native_hdr")]
+mod amd_display_native_hdr;
+#[cfg(feature = "amd_shader_info")]
+mod amd_shader_info;
+#[cfg(feature = "ext_color_write_enable")]
+mod ext_color_write_enable;
+#[cfg(feature = "ext_conditional_rendering")]
+mod ext_conditional_rendering;
+#[cfg(feature = "ext_debug_marker")]
+mod ext_debug_marker;
+#[cfg(feature = "ext_debug_report")]
+mod ext_debug_report;
 #[cfg(feature = "ext_debug_utils")]
 mod ext_debug_utils;
+#[cfg(feature = "ext_descriptor_buffer")]
+mod ext_descriptor_buffer;
+#[cfg(feature = "ext_directfb_surface")]
+mod ext_directfb_surface;
+#[cfg(feature = "ext_discard_rectangles")]
+mod ext_discard_rectangles;
+#[cfg(feature = "ext_display_control")]
+mod ext_display_control;
+#[cfg(feature = "ext_display_surface_counter")]
+mod ext_display_surface_counter;
+#[cfg(feature = "ext_extended_dynamic_state2")]
+mod ext_extended_dynamic_state2;
+#[cfg(feature = "ext_extended_dynamic_state3")]
+mod ext_extended_dynamic_state3;
+#[cfg(feature = "ext_external_memory_host")]
+mod ext_external_memory_host;
+#[cfg(feature = "ext_full_screen_exclusive")]
+mod ext_full_screen_exclusive;
+#[cfg(feature = "ext_hdr_metadata")]
+mod ext_hdr_metadata;
+#[cfg(feature = "ext_headless_surface")]
+mod ext_headless_surface;
+#[cfg(feature = "ext_image_compression_control")]
+mod ext_image_compression_control;
+#[cfg(feature = "ext_image_drm_format_modifier")]
+mod ext_image_drm_format_modifier;
+#[cfg(feature = "ext_line_rasterization")]
+mod ext_line_rasterization;
+#[cfg(feature = "ext_mesh_shader")]
+mod ext_mesh_shader;
+#[cfg(feature = "ext_metal_objects")]
+mod ext_metal_objects;
 #[cfg(feature = "ext_metal_surface")]
 mod ext_metal_surface;
-#[cfg(feature = "khr_swapchain")]
+#[cfg(feature = "ext_multi_draw")]
+mod ext_multi_draw;
+#[cfg(feature = "ext_opacity_micromap")]
+mod ext_opacity_micromap;
+#[cfg(feature = "ext_pageable_device_local_memory")]
+mod ext_pageable_device_local_memory;
+#[cfg(feature = "ext_sample_locations")]
+mod ext_sample_locations;
+#[cfg(feature = "ext_shader_module_identifier")]
+mod ext_shader_module_identifier;
+#[cfg(feature = "ext_swapchain_maintenance1")]
+mod ext_swapchain_maintenance1;
+#[cfg(feature = "ext_transform_feedback")]
+mod ext_transform_feedback;
+#[cfg(feature = "ext_validation_cache")]
+mod ext_validation_cache;
+#[cfg(feature = "ext_vertex_input_dynamic_state")]
+mod ext_vertex_input_dynamic_state;
+#[cfg(feature = "fuchsia_buffer_collection")]
+mod fuchsia_buffer_collection;
+#[cfg(feature = "fuchsia_external_semaphore")]
+mod fuchsia_external_semaphore;
+#[cfg(feature = "fuchsia_imagepipe_surface")]
+mod fuchsia_imagepipe_surface;
+#[cfg(feature = "ggp_stream_descriptor_surface")]
+mod ggp_stream_descriptor_surface;
+#[cfg(feature = "google_display_timing")]
+mod google_display_timing;
+#[cfg(feature = "huawei_invocation_mask")]
+mod huawei_invocation_mask;
+#[cfg(feature = "huawei_subpass_shading")]
+mod huawei_subpass_shading;
+#[cfg(feature = "intel_performance_query")]
+mod intel_performance_query;
+#[cfg(feature = "khr_acceleration_structure")]
+mod khr_acceleration_structure;
+#[cfg(feature = "khr_android_surface")]
+mod khr_android_surface;
+#[cfg(feature = "khr_deferred_host_operations")]
+mod khr_deferred_host_operations;
+#[cfg(feature = "khr_push_descriptor")]
+mod khr_descriptor_update_template;
 mod khr_device_group;
+#[cfg(feature = "khr_display")]
+mod khr_display;
+#[cfg(feature = "khr_external_fence_fd")]
+mod khr_external_fence_fd;
+#[cfg(feature = "khr_external_fence_win32")]
+mod khr_external_fence_win32;
+#[cfg(feature = "khr_external_memory_fd")]
+mod khr_external_memory_fd;
+#[cfg(feature = "khr_external_semaphore_fd")]
+mod khr_external_semaphore_fd;
+#[cfg(feature = "khr_external_semaphore_win32")]
+mod khr_external_semaphore_win32;
+#[cfg(feature = "khr_fragment_shading_rate")]
+mod khr_fragment_shading_rate;
+#[cfg(feature = "khr_get_surface_capabilities2")]
+mod khr_get_surface_capabilities2;
+#[cfg(feature = "khr_performance_query")]
+mod khr_performance_query;
+#[cfg(feature = "khr_present_wait")]
+mod khr_present_wait;
+#[cfg(feature = "khr_push_descriptor")]
+mod khr_push_descriptor;
+#[cfg(feature = "khr_ray_tracing_maintenance1")]
+mod khr_ray_tracing_maintenance1;
+mod khr_ray_tracing_pipeline;
+#[cfg(feature = "khr_shared_presentable_image")]
+mod khr_shared_presentable_image;
 #[cfg(feature = "khr_surface")]
 mod khr_surface;
 #[cfg(feature = "khr_swapchain")]
 mod khr_swapchain;
+#[cfg(feature = "khr_synchronization2")]
+mod khr_synchronization2;
+#[cfg(feature = "khr_video_decode_queue")]
+mod khr_video_decode_queue;
+#[cfg(feature = "khr_video_queue")]
+mod khr_video_queue;
 #[cfg(feature = "khr_wayland_surface")]
 mod khr_wayland_surface;
 #[cfg(feature = "khr_win32_surface")]
@@ -35,3 +157,43 @@ mod khr_win32_surface;
 mod khr_xcb_surface;
 #[cfg(feature = "khr_xlib_surface")]
 mod khr_xlib_surface;
+#[cfg(feature = "mvk_ios_surface")]
+mod mvk_ios_surface;
+#[cfg(feature = "mvk_macos_surface")]
+mod mvk_macos_surface;
+#[cfg(feature = "nn_vi_surface")]
+mod nn_vi_surface;
+#[cfg(feature = "nv_clip_space_w_scaling")]
+mod nv_clip_space_w_scaling;
+#[cfg(feature = "nv_copy_memory_indirect")]
+mod nv_copy_memory_indirect;
+#[cfg(feature = "nv_device_diagnostic_checkpoints")]
+mod nv_device_diagnostic_checkpoints;
+#[cfg(feature = "nv_device_generated_commands")]
+mod nv_device_generated_commands;
+#[cfg(feature = "nv_external_memory_capabilities")]
+mod nv_external_memory_capabilities;
+#[cfg(feature = "nv_external_memory_rdma")]
+mod nv_external_memory_rdma;
+#[cfg(feature = "nv_fragment_shading_rate_enums")]
+mod nv_fragment_shading_rate_enums;
+#[cfg(feature = "nv_memory_decompression")]
+mod nv_memory_decompression;
+#[cfg(feature = "nv_mesh_shader")]
+mod nv_mesh_shader;
+#[cfg(feature = "nv_optical_flow")]
+mod nv_optical_flow;
+#[cfg(feature = "nv_ray_tracing")]
+mod nv_ray_tracing;
+#[cfg(feature = "nv_scissor_exclusive")]
+mod nv_scissor_exclusive;
+#[cfg(feature = "nv_shading_rate_image")]
+mod nv_shading_rate_image;
+#[cfg(feature = "nvx_binary_import")]
+mod nvx_binary_import;
+#[cfg(feature = "nvx_image_view_handle")]
+mod nvx_image_view_handle;
+#[cfg(feature = "qcom_tile_properties")]
+mod qcom_tile_properties;
+#[cfg(feature = "qnx_screen_surface")]
+mod qnx_screen_surface;

@@ -506,7 +506,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
             && ((min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
                 || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0)
         {
@@ -520,7 +520,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
             && ((max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
                 || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0)
         {
@@ -892,7 +892,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
             && matches!(pipeline_stage.as_raw(), 0)
         {
@@ -1391,7 +1392,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
             return Err(
@@ -1404,7 +1405,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
             return Err(
@@ -1525,7 +1526,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(image_layout.as_raw(), 1 | 7)
         {
             return Err(
@@ -1907,7 +1908,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
             return Err(
@@ -2367,7 +2368,8 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1") {
+        if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+        {
             for (i, e) in regions.iter().enumerate() {
                 if s
                     .image(src_image.raw())
@@ -2390,7 +2392,8 @@ impl<'c> Recorder<'c, Outside> {
                 }
             }
         }
-        if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1") {
+        if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+        {
             for (i, e) in regions.iter().enumerate() {
                 if s
                     .image(dst_image.raw())
@@ -2413,7 +2416,7 @@ impl<'c> Recorder<'c, Outside> {
                 }
             }
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
             return Err(
@@ -2426,7 +2429,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
             return Err(
@@ -2659,7 +2662,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
             return Err(
@@ -3453,7 +3456,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
             return Err(
@@ -3466,7 +3469,7 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if !(s.exts.named("VK_KHR_shared_presentable_image"))
+        if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
             return Err(

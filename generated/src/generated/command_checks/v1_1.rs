@@ -56,8 +56,8 @@ impl Device {
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if (s.exts.named("VK_VERSION_1_1")
-            || s.exts.named("VK_KHR_sampler_ycbcr_conversion"))
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_SAMPLER_YCBCR_CONVERSION))
             && !s.feature(|f| f.v11.sampler_ycbcr_conversion)
         {
             return Err(

@@ -23,7 +23,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -40,7 +41,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -57,7 +59,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -93,8 +96,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
-            && device_mask == 0
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP)) && device_mask == 0
         {
             return Err(
                 fail(

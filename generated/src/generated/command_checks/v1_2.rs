@@ -15,10 +15,10 @@ impl Device {
     ///The dynamic checks of [`Self::get_buffer_device_address`], run before the call.
     pub(crate) fn validate_get_buffer_device_address(&self) -> Result<()> {
         let s = &self.scope();
-        if ((s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_EXT_buffer_device_address")
-            || s.exts.named("VK_KHR_buffer_device_address"))
-            && !(s.exts.named("VK_EXT_buffer_device_address")))
+        if ((s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+            && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -33,8 +33,8 @@ impl Device {
     ///The dynamic checks of [`Self::get_buffer_opaque_capture_address`], run before the call.
     pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
         let s = &self.scope();
-        if (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_buffer_device_address"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -51,8 +51,8 @@ impl Device {
         &self,
     ) -> Result<()> {
         let s = &self.scope();
-        if (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_buffer_device_address"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -94,7 +94,8 @@ impl Device {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_host_query_reset"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_EXT_HOST_QUERY_RESET))
             && !s.feature(|f| f.v12.host_query_reset)
         {
             return Err(

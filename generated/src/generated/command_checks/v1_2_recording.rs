@@ -75,7 +75,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -88,7 +89,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -101,8 +103,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
-            && offset % 4 != 0
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -113,7 +115,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -126,7 +129,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -139,7 +143,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && count_buffer_offset % 4 != 0
         {
             return Err(
@@ -193,7 +198,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -206,7 +212,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -219,8 +226,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
-            && offset % 4 != 0
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -231,7 +238,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -244,7 +252,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -257,7 +266,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_draw_indirect_count"))
+        if (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && count_buffer_offset % 4 != 0
         {
             return Err(

@@ -9,7 +9,8 @@ impl Device {
         create_info: &PrivateDataSlotCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_private_data"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_EXT_PRIVATE_DATA))
             && !s.feature(|f| f.v13.private_data)
         {
             return Err(
@@ -115,7 +116,8 @@ impl Queue {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(

@@ -21,7 +21,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_dynamic_rendering"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
             && !s.feature(|f| f.v13.dynamic_rendering)
         {
             return Err(
@@ -172,7 +173,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
         {
             return Err(
@@ -185,7 +187,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.tessellation_shader)
             && (stage_mask.as_raw() & 48) != 0
         {
@@ -199,7 +202,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -209,7 +213,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && (stage_mask.as_raw() & 16384) != 0
         {
             return Err(
@@ -273,7 +278,8 @@ impl<'c> Recorder<'c, Outside> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -326,8 +332,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
-        if (s.exts.named("VK_VERSION_1_3")
-            || s.exts.named("VK_EXT_extended_dynamic_state"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -364,7 +370,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -742,7 +749,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 );
             }
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -790,7 +798,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
             return Err(
@@ -803,7 +812,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
             return Err(
@@ -816,7 +826,8 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(

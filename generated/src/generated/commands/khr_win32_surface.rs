@@ -6,13 +6,6 @@ use super::*;
 impl Instance {
     /**`vkCreateWin32SurfaceKHR`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkWin32SurfaceCreateInfoKHR-hinstance-01307`: `hinstance` must be a valid Win32 `HINSTANCE`
-- `VUID-VkWin32SurfaceCreateInfoKHR-hwnd-01308`: `hwnd` must be a valid Win32 `HWND`
-
 # Valid usage
 
 The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWin32SurfaceKHR.html). Settled by the wrappers:
@@ -22,7 +15,7 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
 - `VUID-vkCreateWin32SurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[inline]
-    pub unsafe fn create_win32_surface_khr<'a>(
+    pub fn create_win32_surface_khr<'a>(
         &self,
         create_info: &Win32SurfaceCreateInfoKHR<'a>,
     ) -> Result<SurfaceKHR> {

@@ -372,7 +372,7 @@ impl Queue {
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
 - `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
@@ -382,6 +382,10 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 - `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`: If `deviceMask` is not `0`, it must be a valid device mask
 - `VUID-VkSemaphoreSubmitInfo-device-03888`: If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
 - `VUID-VkSemaphoreSubmitInfo-device-03889`: If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
+- `VUID-VkSubmitInfo2-semaphore-03881`: If the same semaphore is used as the `semaphore` member of both an element of `pSignalSemaphoreInfos` and `pWaitSemaphoreInfos`, and that semaphore is a timeline semaphore, the `value` member of the `pSignalSemaphoreInfos` element must be greater than the `value` member of the `pWaitSemaphoreInfos` element
+- `VUID-VkSubmitInfo2-semaphore-03882`: If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
+- `VUID-VkSubmitInfo2-semaphore-03883`: If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
+- `VUID-VkSubmitInfo2-semaphore-03884`: If the `semaphore` member of any element of `pWaitSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
 - `VUID-VkSubmitInfo2-flags-03886`: If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
 - `VUID-VkSubmitInfo2-flags-03887`: If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
 

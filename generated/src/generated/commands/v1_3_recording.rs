@@ -71,9 +71,11 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_begin_rendering<'a>(
         mut self,
@@ -166,9 +168,11 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBlitImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: `videocoding` rules are not checked yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_blit_image2<'a>(
         &mut self,
@@ -245,9 +249,11 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: `videocoding` rules are not checked yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_copy_buffer2<'a>(
         &mut self,
@@ -309,10 +315,10 @@ The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
+Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
+- 1: `videocoding` rules are not checked yet
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[inline]
@@ -440,9 +446,11 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: `videocoding` rules are not checked yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_copy_image2<'a>(
         &mut self,
@@ -509,10 +517,10 @@ The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
+- 1: `videocoding` rules are not checked yet
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 2: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[inline]
@@ -674,9 +682,11 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 - `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResolveImage2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
+
+- 1: `videocoding` rules are not checked yet
+- 3: explicit rule; the wrappers do not check it*/
     #[inline]
     pub unsafe fn cmd_resolve_image2<'a>(
         &mut self,
@@ -869,12 +879,12 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers` or empty (NULL))
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBindVertexBuffers2-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
+Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
+- 1: `videocoding` rules are not checked yet
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: explicit rule; the wrappers do not check it*/
     #[inline]
@@ -1105,9 +1115,11 @@ The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetCullMode-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCullMode-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         {
@@ -1145,9 +1157,11 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
         {
@@ -1188,9 +1202,11 @@ The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://regi
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_depth_bounds_test_enable(
         &mut self,
@@ -1237,9 +1253,11 @@ The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.kh
 - `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthCompareOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         {
@@ -1280,9 +1298,11 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
         {
@@ -1324,9 +1344,11 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
         {
@@ -1369,9 +1391,11 @@ The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetFrontFace-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetFrontFace-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         {
@@ -1409,9 +1433,11 @@ The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://reg
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_primitive_restart_enable(
         &mut self,
@@ -1458,9 +1484,11 @@ The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry
 - `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_primitive_topology(
         &mut self,
@@ -1504,9 +1532,11 @@ The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://re
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
@@ -1559,10 +1589,12 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 - `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetScissorWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 1: `videocoding` rules are not checked yet
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
         crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
@@ -1612,9 +1644,11 @@ The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetStencilOp-compareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetStencilOp-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_stencil_op(
         &mut self,
@@ -1687,9 +1721,11 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetStencilTestEnable-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
         {
@@ -1734,10 +1770,12 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 - `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportWithCount-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
+
+- 1: `videocoding` rules are not checked yet
+- 2: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_set_viewport_with_count(
         &mut self,
@@ -1987,9 +2025,11 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 - `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndRendering-videocoding`: static (no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: `videocoding` rules are not checked yet
+- 1: explicit rule; the wrappers do not check it*/
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);

@@ -53,7 +53,7 @@ impl<'a> DebugUtilsLabelEXT<'a> {
 The rules are on [`VkDebugUtilsMessengerCallbackDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCallbackDataEXT.html). Settled by the wrappers:
 
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessageIdName-parameter`: static (set from a reference or slice, a valid pointer with its length)

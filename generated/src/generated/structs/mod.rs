@@ -11,6 +11,9 @@ use core::marker::PhantomData;
 mod v1_0;
 #[allow(unused_imports)]
 pub use v1_0::*;
+mod v1_0_part2;
+#[allow(unused_imports)]
+pub use v1_0_part2::*;
 mod v1_1;
 #[allow(unused_imports)]
 pub use v1_1::*;
@@ -20,36 +23,760 @@ pub use v1_2::*;
 mod v1_3;
 #[allow(unused_imports)]
 pub use v1_3::*;
+#[cfg(feature = "amd_device_coherent_memory")]
+mod amd_device_coherent_memory;
+#[cfg(feature = "amd_device_coherent_memory")]
+#[allow(unused_imports)]
+pub use amd_device_coherent_memory::*;
+#[cfg(feature = "amd_display_native_hdr")]
+mod amd_display_native_hdr;
+#[cfg(feature = "amd_display_native_hdr")]
+#[allow(unused_imports)]
+pub use amd_display_native_hdr::*;
+#[cfg(feature = "amd_memory_overallocation_behavior")]
+mod amd_memory_overallocation_behavior;
+#[cfg(feature = "amd_memory_overallocation_behavior")]
+#[allow(unused_imports)]
+pub use amd_memory_overallocation_behavior::*;
+#[cfg(feature = "amd_pipeline_compiler_control")]
+mod amd_pipeline_compiler_control;
+#[cfg(feature = "amd_pipeline_compiler_control")]
+#[allow(unused_imports)]
+pub use amd_pipeline_compiler_control::*;
+#[cfg(feature = "amd_rasterization_order")]
+mod amd_rasterization_order;
+#[cfg(feature = "amd_rasterization_order")]
+#[allow(unused_imports)]
+pub use amd_rasterization_order::*;
+#[cfg(feature = "amd_shader_core_properties")]
+mod amd_shader_core_properties;
+#[cfg(feature = "amd_shader_core_properties")]
+#[allow(unused_imports)]
+pub use amd_shader_core_properties::*;
+#[cfg(feature = "amd_shader_core_properties2")]
+mod amd_shader_core_properties2;
+#[cfg(feature = "amd_shader_core_properties2")]
+#[allow(unused_imports)]
+pub use amd_shader_core_properties2::*;
+#[cfg(feature = "amd_shader_early_and_late_fragment_tests")]
+mod amd_shader_early_and_late_fragment_tests;
+#[cfg(feature = "amd_shader_early_and_late_fragment_tests")]
+#[allow(unused_imports)]
+pub use amd_shader_early_and_late_fragment_tests::*;
+#[cfg(feature = "amd_texture_gather_bias_lod")]
+mod amd_texture_gather_bias_lod;
+#[cfg(feature = "amd_texture_gather_bias_lod")]
+#[allow(unused_imports)]
+pub use amd_texture_gather_bias_lod::*;
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+mod android_external_memory_android_hardware_buffer;
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+#[allow(unused_imports)]
+pub use android_external_memory_android_hardware_buffer::*;
+#[cfg(
+    any(
+        feature = "arm_rasterization_order_attachment_access",
+        feature = "ext_rasterization_order_attachment_access"
+    )
+)]
+mod arm_rasterization_order_attachment_access;
+#[cfg(
+    any(
+        feature = "arm_rasterization_order_attachment_access",
+        feature = "ext_rasterization_order_attachment_access"
+    )
+)]
+#[allow(unused_imports)]
+pub use arm_rasterization_order_attachment_access::*;
+#[cfg(feature = "arm_shader_core_builtins")]
+mod arm_shader_core_builtins;
+#[cfg(feature = "arm_shader_core_builtins")]
+#[allow(unused_imports)]
+pub use arm_shader_core_builtins::*;
+#[cfg(feature = "ext_4444_formats")]
+mod ext_4444_formats;
+#[cfg(feature = "ext_4444_formats")]
+#[allow(unused_imports)]
+pub use ext_4444_formats::*;
+#[cfg(feature = "ext_astc_decode_mode")]
+mod ext_astc_decode_mode;
+#[cfg(feature = "ext_astc_decode_mode")]
+#[allow(unused_imports)]
+pub use ext_astc_decode_mode::*;
+#[cfg(feature = "ext_attachment_feedback_loop_layout")]
+mod ext_attachment_feedback_loop_layout;
+#[cfg(feature = "ext_attachment_feedback_loop_layout")]
+#[allow(unused_imports)]
+pub use ext_attachment_feedback_loop_layout::*;
+#[cfg(feature = "ext_blend_operation_advanced")]
+mod ext_blend_operation_advanced;
+#[cfg(feature = "ext_blend_operation_advanced")]
+#[allow(unused_imports)]
+pub use ext_blend_operation_advanced::*;
+#[cfg(feature = "ext_border_color_swizzle")]
+mod ext_border_color_swizzle;
+#[cfg(feature = "ext_border_color_swizzle")]
+#[allow(unused_imports)]
+pub use ext_border_color_swizzle::*;
+#[cfg(feature = "ext_buffer_device_address")]
+mod ext_buffer_device_address;
+#[cfg(feature = "ext_buffer_device_address")]
+#[allow(unused_imports)]
+pub use ext_buffer_device_address::*;
+#[cfg(feature = "ext_calibrated_timestamps")]
+mod ext_calibrated_timestamps;
+#[cfg(feature = "ext_calibrated_timestamps")]
+#[allow(unused_imports)]
+pub use ext_calibrated_timestamps::*;
+#[cfg(feature = "ext_color_write_enable")]
+mod ext_color_write_enable;
+#[cfg(feature = "ext_color_write_enable")]
+#[allow(unused_imports)]
+pub use ext_color_write_enable::*;
+#[cfg(feature = "ext_conditional_rendering")]
+mod ext_conditional_rendering;
+#[cfg(feature = "ext_conditional_rendering")]
+#[allow(unused_imports)]
+pub use ext_conditional_rendering::*;
+#[cfg(feature = "ext_conservative_rasterization")]
+mod ext_conservative_rasterization;
+#[cfg(feature = "ext_conservative_rasterization")]
+#[allow(unused_imports)]
+pub use ext_conservative_rasterization::*;
+#[cfg(feature = "ext_custom_border_color")]
+mod ext_custom_border_color;
+#[cfg(feature = "ext_custom_border_color")]
+#[allow(unused_imports)]
+pub use ext_custom_border_color::*;
+#[cfg(feature = "ext_debug_marker")]
+mod ext_debug_marker;
+#[cfg(feature = "ext_debug_marker")]
+#[allow(unused_imports)]
+pub use ext_debug_marker::*;
+#[cfg(feature = "ext_debug_report")]
+mod ext_debug_report;
+#[cfg(feature = "ext_debug_report")]
+#[allow(unused_imports)]
+pub use ext_debug_report::*;
 #[cfg(feature = "ext_debug_utils")]
 mod ext_debug_utils;
 #[cfg(feature = "ext_debug_utils")]
 #[allow(unused_imports)]
 pub use ext_debug_utils::*;
+#[cfg(feature = "ext_depth_clamp_zero_one")]
+mod ext_depth_clamp_zero_one;
+#[cfg(feature = "ext_depth_clamp_zero_one")]
+#[allow(unused_imports)]
+pub use ext_depth_clamp_zero_one::*;
+#[cfg(feature = "ext_depth_clip_control")]
+mod ext_depth_clip_control;
+#[cfg(feature = "ext_depth_clip_control")]
+#[allow(unused_imports)]
+pub use ext_depth_clip_control::*;
+#[cfg(feature = "ext_depth_clip_enable")]
+mod ext_depth_clip_enable;
+#[cfg(feature = "ext_depth_clip_enable")]
+#[allow(unused_imports)]
+pub use ext_depth_clip_enable::*;
+#[cfg(feature = "ext_descriptor_buffer")]
+mod ext_descriptor_buffer;
+#[cfg(feature = "ext_descriptor_buffer")]
+#[allow(unused_imports)]
+pub use ext_descriptor_buffer::*;
+#[cfg(feature = "ext_device_address_binding_report")]
+mod ext_device_address_binding_report;
+#[cfg(feature = "ext_device_address_binding_report")]
+#[allow(unused_imports)]
+pub use ext_device_address_binding_report::*;
+#[cfg(feature = "ext_device_memory_report")]
+mod ext_device_memory_report;
+#[cfg(feature = "ext_device_memory_report")]
+#[allow(unused_imports)]
+pub use ext_device_memory_report::*;
+#[cfg(feature = "ext_directfb_surface")]
+mod ext_directfb_surface;
+#[cfg(feature = "ext_directfb_surface")]
+#[allow(unused_imports)]
+pub use ext_directfb_surface::*;
+#[cfg(feature = "ext_discard_rectangles")]
+mod ext_discard_rectangles;
+#[cfg(feature = "ext_discard_rectangles")]
+#[allow(unused_imports)]
+pub use ext_discard_rectangles::*;
+#[cfg(feature = "ext_display_control")]
+mod ext_display_control;
+#[cfg(feature = "ext_display_control")]
+#[allow(unused_imports)]
+pub use ext_display_control::*;
+#[cfg(feature = "ext_display_surface_counter")]
+mod ext_display_surface_counter;
+#[cfg(feature = "ext_display_surface_counter")]
+#[allow(unused_imports)]
+pub use ext_display_surface_counter::*;
+#[cfg(feature = "ext_extended_dynamic_state")]
+mod ext_extended_dynamic_state;
+#[cfg(feature = "ext_extended_dynamic_state")]
+#[allow(unused_imports)]
+pub use ext_extended_dynamic_state::*;
+#[cfg(feature = "ext_extended_dynamic_state2")]
+mod ext_extended_dynamic_state2;
+#[cfg(feature = "ext_extended_dynamic_state2")]
+#[allow(unused_imports)]
+pub use ext_extended_dynamic_state2::*;
+#[cfg(feature = "ext_extended_dynamic_state3")]
+mod ext_extended_dynamic_state3;
+#[cfg(feature = "ext_extended_dynamic_state3")]
+#[allow(unused_imports)]
+pub use ext_extended_dynamic_state3::*;
+#[cfg(feature = "ext_external_memory_host")]
+mod ext_external_memory_host;
+#[cfg(feature = "ext_external_memory_host")]
+#[allow(unused_imports)]
+pub use ext_external_memory_host::*;
+#[cfg(feature = "ext_filter_cubic")]
+mod ext_filter_cubic;
+#[cfg(feature = "ext_filter_cubic")]
+#[allow(unused_imports)]
+pub use ext_filter_cubic::*;
+#[cfg(feature = "ext_fragment_density_map")]
+mod ext_fragment_density_map;
+#[cfg(feature = "ext_fragment_density_map")]
+#[allow(unused_imports)]
+pub use ext_fragment_density_map::*;
+#[cfg(feature = "ext_fragment_density_map2")]
+mod ext_fragment_density_map2;
+#[cfg(feature = "ext_fragment_density_map2")]
+#[allow(unused_imports)]
+pub use ext_fragment_density_map2::*;
+#[cfg(feature = "ext_fragment_shader_interlock")]
+mod ext_fragment_shader_interlock;
+#[cfg(feature = "ext_fragment_shader_interlock")]
+#[allow(unused_imports)]
+pub use ext_fragment_shader_interlock::*;
+#[cfg(feature = "ext_full_screen_exclusive")]
+mod ext_full_screen_exclusive;
+#[cfg(feature = "ext_full_screen_exclusive")]
+#[allow(unused_imports)]
+pub use ext_full_screen_exclusive::*;
+#[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+mod ext_global_priority;
+#[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+#[allow(unused_imports)]
+pub use ext_global_priority::*;
+#[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
+mod ext_global_priority_query;
+#[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
+#[allow(unused_imports)]
+pub use ext_global_priority_query::*;
+#[cfg(feature = "ext_graphics_pipeline_library")]
+mod ext_graphics_pipeline_library;
+#[cfg(feature = "ext_graphics_pipeline_library")]
+#[allow(unused_imports)]
+pub use ext_graphics_pipeline_library::*;
+#[cfg(feature = "ext_hdr_metadata")]
+mod ext_hdr_metadata;
+#[cfg(feature = "ext_hdr_metadata")]
+#[allow(unused_imports)]
+pub use ext_hdr_metadata::*;
+#[cfg(feature = "ext_headless_surface")]
+mod ext_headless_surface;
+#[cfg(feature = "ext_headless_surface")]
+#[allow(unused_imports)]
+pub use ext_headless_surface::*;
+#[cfg(feature = "ext_image_2d_view_of_3d")]
+mod ext_image_2d_view_of_3d;
+#[cfg(feature = "ext_image_2d_view_of_3d")]
+#[allow(unused_imports)]
+pub use ext_image_2d_view_of_3d::*;
+#[cfg(feature = "ext_image_compression_control")]
+mod ext_image_compression_control;
+#[cfg(feature = "ext_image_compression_control")]
+#[allow(unused_imports)]
+pub use ext_image_compression_control::*;
+#[cfg(feature = "ext_image_compression_control_swapchain")]
+mod ext_image_compression_control_swapchain;
+#[cfg(feature = "ext_image_compression_control_swapchain")]
+#[allow(unused_imports)]
+pub use ext_image_compression_control_swapchain::*;
+#[cfg(feature = "ext_image_drm_format_modifier")]
+mod ext_image_drm_format_modifier;
+#[cfg(feature = "ext_image_drm_format_modifier")]
+#[allow(unused_imports)]
+pub use ext_image_drm_format_modifier::*;
+#[cfg(feature = "ext_image_view_min_lod")]
+mod ext_image_view_min_lod;
+#[cfg(feature = "ext_image_view_min_lod")]
+#[allow(unused_imports)]
+pub use ext_image_view_min_lod::*;
+#[cfg(feature = "ext_index_type_uint8")]
+mod ext_index_type_uint8;
+#[cfg(feature = "ext_index_type_uint8")]
+#[allow(unused_imports)]
+pub use ext_index_type_uint8::*;
+#[cfg(feature = "ext_legacy_dithering")]
+mod ext_legacy_dithering;
+#[cfg(feature = "ext_legacy_dithering")]
+#[allow(unused_imports)]
+pub use ext_legacy_dithering::*;
+#[cfg(feature = "ext_line_rasterization")]
+mod ext_line_rasterization;
+#[cfg(feature = "ext_line_rasterization")]
+#[allow(unused_imports)]
+pub use ext_line_rasterization::*;
+#[cfg(feature = "ext_memory_budget")]
+mod ext_memory_budget;
+#[cfg(feature = "ext_memory_budget")]
+#[allow(unused_imports)]
+pub use ext_memory_budget::*;
+#[cfg(feature = "ext_memory_priority")]
+mod ext_memory_priority;
+#[cfg(feature = "ext_memory_priority")]
+#[allow(unused_imports)]
+pub use ext_memory_priority::*;
+#[cfg(feature = "ext_mesh_shader")]
+mod ext_mesh_shader;
+#[cfg(feature = "ext_mesh_shader")]
+#[allow(unused_imports)]
+pub use ext_mesh_shader::*;
+#[cfg(feature = "ext_metal_objects")]
+mod ext_metal_objects;
+#[cfg(feature = "ext_metal_objects")]
+#[allow(unused_imports)]
+pub use ext_metal_objects::*;
 #[cfg(feature = "ext_metal_surface")]
 mod ext_metal_surface;
 #[cfg(feature = "ext_metal_surface")]
 #[allow(unused_imports)]
 pub use ext_metal_surface::*;
-#[cfg(feature = "khr_swapchain")]
+#[cfg(feature = "ext_multi_draw")]
+mod ext_multi_draw;
+#[cfg(feature = "ext_multi_draw")]
+#[allow(unused_imports)]
+pub use ext_multi_draw::*;
+#[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+mod ext_multisampled_render_to_single_sampled;
+#[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+#[allow(unused_imports)]
+pub use ext_multisampled_render_to_single_sampled::*;
+#[cfg(
+    any(
+        feature = "ext_mutable_descriptor_type",
+        feature = "valve_mutable_descriptor_type"
+    )
+)]
+mod ext_mutable_descriptor_type;
+#[cfg(
+    any(
+        feature = "ext_mutable_descriptor_type",
+        feature = "valve_mutable_descriptor_type"
+    )
+)]
+#[allow(unused_imports)]
+pub use ext_mutable_descriptor_type::*;
+#[cfg(feature = "ext_non_seamless_cube_map")]
+mod ext_non_seamless_cube_map;
+#[cfg(feature = "ext_non_seamless_cube_map")]
+#[allow(unused_imports)]
+pub use ext_non_seamless_cube_map::*;
+#[cfg(feature = "ext_opacity_micromap")]
+mod ext_opacity_micromap;
+#[cfg(feature = "ext_opacity_micromap")]
+#[allow(unused_imports)]
+pub use ext_opacity_micromap::*;
+#[cfg(feature = "ext_pageable_device_local_memory")]
+mod ext_pageable_device_local_memory;
+#[cfg(feature = "ext_pageable_device_local_memory")]
+#[allow(unused_imports)]
+pub use ext_pageable_device_local_memory::*;
+#[cfg(feature = "ext_pci_bus_info")]
+mod ext_pci_bus_info;
+#[cfg(feature = "ext_pci_bus_info")]
+#[allow(unused_imports)]
+pub use ext_pci_bus_info::*;
+#[cfg(feature = "ext_physical_device_drm")]
+mod ext_physical_device_drm;
+#[cfg(feature = "ext_physical_device_drm")]
+#[allow(unused_imports)]
+pub use ext_physical_device_drm::*;
+mod ext_pipeline_properties;
+#[allow(unused_imports)]
+pub use ext_pipeline_properties::*;
+#[cfg(feature = "ext_pipeline_protected_access")]
+mod ext_pipeline_protected_access;
+#[cfg(feature = "ext_pipeline_protected_access")]
+#[allow(unused_imports)]
+pub use ext_pipeline_protected_access::*;
+#[cfg(feature = "ext_pipeline_robustness")]
+mod ext_pipeline_robustness;
+#[cfg(feature = "ext_pipeline_robustness")]
+#[allow(unused_imports)]
+pub use ext_pipeline_robustness::*;
+#[cfg(feature = "ext_primitive_topology_list_restart")]
+mod ext_primitive_topology_list_restart;
+#[cfg(feature = "ext_primitive_topology_list_restart")]
+#[allow(unused_imports)]
+pub use ext_primitive_topology_list_restart::*;
+#[cfg(feature = "ext_primitives_generated_query")]
+mod ext_primitives_generated_query;
+#[cfg(feature = "ext_primitives_generated_query")]
+#[allow(unused_imports)]
+pub use ext_primitives_generated_query::*;
+#[cfg(feature = "ext_provoking_vertex")]
+mod ext_provoking_vertex;
+#[cfg(feature = "ext_provoking_vertex")]
+#[allow(unused_imports)]
+pub use ext_provoking_vertex::*;
+#[cfg(feature = "ext_rgba10x6_formats")]
+mod ext_rgba10x6_formats;
+#[cfg(feature = "ext_rgba10x6_formats")]
+#[allow(unused_imports)]
+pub use ext_rgba10x6_formats::*;
+#[cfg(feature = "ext_robustness2")]
+mod ext_robustness2;
+#[cfg(feature = "ext_robustness2")]
+#[allow(unused_imports)]
+pub use ext_robustness2::*;
+#[cfg(feature = "ext_sample_locations")]
+mod ext_sample_locations;
+#[cfg(feature = "ext_sample_locations")]
+#[allow(unused_imports)]
+pub use ext_sample_locations::*;
+#[cfg(feature = "ext_shader_atomic_float")]
+mod ext_shader_atomic_float;
+#[cfg(feature = "ext_shader_atomic_float")]
+#[allow(unused_imports)]
+pub use ext_shader_atomic_float::*;
+#[cfg(feature = "ext_shader_atomic_float2")]
+mod ext_shader_atomic_float2;
+#[cfg(feature = "ext_shader_atomic_float2")]
+#[allow(unused_imports)]
+pub use ext_shader_atomic_float2::*;
+#[cfg(feature = "ext_shader_image_atomic_int64")]
+mod ext_shader_image_atomic_int64;
+#[cfg(feature = "ext_shader_image_atomic_int64")]
+#[allow(unused_imports)]
+pub use ext_shader_image_atomic_int64::*;
+#[cfg(feature = "ext_shader_module_identifier")]
+mod ext_shader_module_identifier;
+#[cfg(feature = "ext_shader_module_identifier")]
+#[allow(unused_imports)]
+pub use ext_shader_module_identifier::*;
+#[cfg(feature = "ext_subpass_merge_feedback")]
+mod ext_subpass_merge_feedback;
+#[cfg(feature = "ext_subpass_merge_feedback")]
+#[allow(unused_imports)]
+pub use ext_subpass_merge_feedback::*;
+#[cfg(feature = "ext_surface_maintenance1")]
+mod ext_surface_maintenance1;
+#[cfg(feature = "ext_surface_maintenance1")]
+#[allow(unused_imports)]
+pub use ext_surface_maintenance1::*;
+#[cfg(feature = "ext_swapchain_maintenance1")]
+mod ext_swapchain_maintenance1;
+#[cfg(feature = "ext_swapchain_maintenance1")]
+#[allow(unused_imports)]
+pub use ext_swapchain_maintenance1::*;
+#[cfg(feature = "ext_texel_buffer_alignment")]
+mod ext_texel_buffer_alignment;
+#[cfg(feature = "ext_texel_buffer_alignment")]
+#[allow(unused_imports)]
+pub use ext_texel_buffer_alignment::*;
+#[cfg(feature = "ext_transform_feedback")]
+mod ext_transform_feedback;
+#[cfg(feature = "ext_transform_feedback")]
+#[allow(unused_imports)]
+pub use ext_transform_feedback::*;
+#[cfg(feature = "ext_validation_cache")]
+mod ext_validation_cache;
+#[cfg(feature = "ext_validation_cache")]
+#[allow(unused_imports)]
+pub use ext_validation_cache::*;
+#[cfg(feature = "ext_validation_features")]
+mod ext_validation_features;
+#[cfg(feature = "ext_validation_features")]
+#[allow(unused_imports)]
+pub use ext_validation_features::*;
+#[cfg(feature = "ext_validation_flags")]
+mod ext_validation_flags;
+#[cfg(feature = "ext_validation_flags")]
+#[allow(unused_imports)]
+pub use ext_validation_flags::*;
+#[cfg(feature = "ext_vertex_attribute_divisor")]
+mod ext_vertex_attribute_divisor;
+#[cfg(feature = "ext_vertex_attribute_divisor")]
+#[allow(unused_imports)]
+pub use ext_vertex_attribute_divisor::*;
+#[cfg(feature = "ext_vertex_input_dynamic_state")]
+mod ext_vertex_input_dynamic_state;
+#[cfg(feature = "ext_vertex_input_dynamic_state")]
+#[allow(unused_imports)]
+pub use ext_vertex_input_dynamic_state::*;
+#[cfg(feature = "ext_ycbcr_2plane_444_formats")]
+mod ext_ycbcr_2plane_444_formats;
+#[cfg(feature = "ext_ycbcr_2plane_444_formats")]
+#[allow(unused_imports)]
+pub use ext_ycbcr_2plane_444_formats::*;
+#[cfg(feature = "ext_ycbcr_image_arrays")]
+mod ext_ycbcr_image_arrays;
+#[cfg(feature = "ext_ycbcr_image_arrays")]
+#[allow(unused_imports)]
+pub use ext_ycbcr_image_arrays::*;
+#[cfg(feature = "fuchsia_buffer_collection")]
+mod fuchsia_buffer_collection;
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[allow(unused_imports)]
+pub use fuchsia_buffer_collection::*;
+#[cfg(feature = "fuchsia_external_memory")]
+mod fuchsia_external_memory;
+#[cfg(feature = "fuchsia_external_memory")]
+#[allow(unused_imports)]
+pub use fuchsia_external_memory::*;
+#[cfg(feature = "fuchsia_external_semaphore")]
+mod fuchsia_external_semaphore;
+#[cfg(feature = "fuchsia_external_semaphore")]
+#[allow(unused_imports)]
+pub use fuchsia_external_semaphore::*;
+#[cfg(feature = "fuchsia_imagepipe_surface")]
+mod fuchsia_imagepipe_surface;
+#[cfg(feature = "fuchsia_imagepipe_surface")]
+#[allow(unused_imports)]
+pub use fuchsia_imagepipe_surface::*;
+#[cfg(feature = "ggp_frame_token")]
+mod ggp_frame_token;
+#[cfg(feature = "ggp_frame_token")]
+#[allow(unused_imports)]
+pub use ggp_frame_token::*;
+#[cfg(feature = "ggp_stream_descriptor_surface")]
+mod ggp_stream_descriptor_surface;
+#[cfg(feature = "ggp_stream_descriptor_surface")]
+#[allow(unused_imports)]
+pub use ggp_stream_descriptor_surface::*;
+#[cfg(feature = "google_display_timing")]
+mod google_display_timing;
+#[cfg(feature = "google_display_timing")]
+#[allow(unused_imports)]
+pub use google_display_timing::*;
+#[cfg(feature = "huawei_invocation_mask")]
+mod huawei_invocation_mask;
+#[cfg(feature = "huawei_invocation_mask")]
+#[allow(unused_imports)]
+pub use huawei_invocation_mask::*;
+#[cfg(feature = "huawei_subpass_shading")]
+mod huawei_subpass_shading;
+#[cfg(feature = "huawei_subpass_shading")]
+#[allow(unused_imports)]
+pub use huawei_subpass_shading::*;
+#[cfg(feature = "intel_performance_query")]
+mod intel_performance_query;
+#[cfg(feature = "intel_performance_query")]
+#[allow(unused_imports)]
+pub use intel_performance_query::*;
+#[cfg(feature = "intel_shader_integer_functions2")]
+mod intel_shader_integer_functions2;
+#[cfg(feature = "intel_shader_integer_functions2")]
+#[allow(unused_imports)]
+pub use intel_shader_integer_functions2::*;
+#[cfg(feature = "khr_acceleration_structure")]
+mod khr_acceleration_structure;
+#[cfg(feature = "khr_acceleration_structure")]
+#[allow(unused_imports)]
+pub use khr_acceleration_structure::*;
+#[cfg(feature = "khr_android_surface")]
+mod khr_android_surface;
+#[cfg(feature = "khr_android_surface")]
+#[allow(unused_imports)]
+pub use khr_android_surface::*;
 mod khr_device_group;
-#[cfg(feature = "khr_swapchain")]
 #[allow(unused_imports)]
 pub use khr_device_group::*;
+#[cfg(feature = "khr_display")]
+mod khr_display;
+#[cfg(feature = "khr_display")]
+#[allow(unused_imports)]
+pub use khr_display::*;
+#[cfg(feature = "khr_display_swapchain")]
+mod khr_display_swapchain;
+#[cfg(feature = "khr_display_swapchain")]
+#[allow(unused_imports)]
+pub use khr_display_swapchain::*;
+#[cfg(feature = "khr_dynamic_rendering")]
+mod khr_dynamic_rendering;
+#[cfg(feature = "khr_dynamic_rendering")]
+#[allow(unused_imports)]
+pub use khr_dynamic_rendering::*;
+#[cfg(feature = "khr_external_fence_fd")]
+mod khr_external_fence_fd;
+#[cfg(feature = "khr_external_fence_fd")]
+#[allow(unused_imports)]
+pub use khr_external_fence_fd::*;
+#[cfg(feature = "khr_external_fence_win32")]
+mod khr_external_fence_win32;
+#[cfg(feature = "khr_external_fence_win32")]
+#[allow(unused_imports)]
+pub use khr_external_fence_win32::*;
+#[cfg(feature = "khr_external_memory_fd")]
+mod khr_external_memory_fd;
+#[cfg(feature = "khr_external_memory_fd")]
+#[allow(unused_imports)]
+pub use khr_external_memory_fd::*;
+#[cfg(feature = "khr_external_memory_win32")]
+mod khr_external_memory_win32;
+#[cfg(feature = "khr_external_memory_win32")]
+#[allow(unused_imports)]
+pub use khr_external_memory_win32::*;
+#[cfg(feature = "khr_external_semaphore_fd")]
+mod khr_external_semaphore_fd;
+#[cfg(feature = "khr_external_semaphore_fd")]
+#[allow(unused_imports)]
+pub use khr_external_semaphore_fd::*;
+#[cfg(feature = "khr_external_semaphore_win32")]
+mod khr_external_semaphore_win32;
+#[cfg(feature = "khr_external_semaphore_win32")]
+#[allow(unused_imports)]
+pub use khr_external_semaphore_win32::*;
+mod khr_fragment_shader_barycentric;
+#[allow(unused_imports)]
+pub use khr_fragment_shader_barycentric::*;
+#[cfg(feature = "khr_fragment_shading_rate")]
+mod khr_fragment_shading_rate;
+#[cfg(feature = "khr_fragment_shading_rate")]
+#[allow(unused_imports)]
+pub use khr_fragment_shading_rate::*;
+#[cfg(feature = "khr_get_display_properties2")]
+mod khr_get_display_properties2;
+#[cfg(feature = "khr_get_display_properties2")]
+#[allow(unused_imports)]
+pub use khr_get_display_properties2::*;
+#[cfg(feature = "khr_get_surface_capabilities2")]
+mod khr_get_surface_capabilities2;
+#[cfg(feature = "khr_get_surface_capabilities2")]
+#[allow(unused_imports)]
+pub use khr_get_surface_capabilities2::*;
+#[cfg(feature = "khr_incremental_present")]
+mod khr_incremental_present;
+#[cfg(feature = "khr_incremental_present")]
+#[allow(unused_imports)]
+pub use khr_incremental_present::*;
+#[cfg(feature = "khr_performance_query")]
+mod khr_performance_query;
+#[cfg(feature = "khr_performance_query")]
+#[allow(unused_imports)]
+pub use khr_performance_query::*;
+#[cfg(feature = "khr_pipeline_executable_properties")]
+mod khr_pipeline_executable_properties;
+#[cfg(feature = "khr_pipeline_executable_properties")]
+#[allow(unused_imports)]
+pub use khr_pipeline_executable_properties::*;
+#[cfg(feature = "khr_pipeline_library")]
+mod khr_pipeline_library;
+#[cfg(feature = "khr_pipeline_library")]
+#[allow(unused_imports)]
+pub use khr_pipeline_library::*;
+#[cfg(feature = "khr_portability_subset")]
+mod khr_portability_subset;
+#[cfg(feature = "khr_portability_subset")]
+#[allow(unused_imports)]
+pub use khr_portability_subset::*;
+#[cfg(feature = "khr_present_id")]
+mod khr_present_id;
+#[cfg(feature = "khr_present_id")]
+#[allow(unused_imports)]
+pub use khr_present_id::*;
+#[cfg(feature = "khr_present_wait")]
+mod khr_present_wait;
+#[cfg(feature = "khr_present_wait")]
+#[allow(unused_imports)]
+pub use khr_present_wait::*;
+#[cfg(feature = "khr_push_descriptor")]
+mod khr_push_descriptor;
+#[cfg(feature = "khr_push_descriptor")]
+#[allow(unused_imports)]
+pub use khr_push_descriptor::*;
+#[cfg(feature = "khr_ray_query")]
+mod khr_ray_query;
+#[cfg(feature = "khr_ray_query")]
+#[allow(unused_imports)]
+pub use khr_ray_query::*;
+#[cfg(feature = "khr_ray_tracing_maintenance1")]
+mod khr_ray_tracing_maintenance1;
+#[cfg(feature = "khr_ray_tracing_maintenance1")]
+#[allow(unused_imports)]
+pub use khr_ray_tracing_maintenance1::*;
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+mod khr_ray_tracing_pipeline;
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+#[allow(unused_imports)]
+pub use khr_ray_tracing_pipeline::*;
+#[cfg(feature = "khr_shader_clock")]
+mod khr_shader_clock;
+#[cfg(feature = "khr_shader_clock")]
+#[allow(unused_imports)]
+pub use khr_shader_clock::*;
+#[cfg(feature = "khr_shader_subgroup_uniform_control_flow")]
+mod khr_shader_subgroup_uniform_control_flow;
+#[cfg(feature = "khr_shader_subgroup_uniform_control_flow")]
+#[allow(unused_imports)]
+pub use khr_shader_subgroup_uniform_control_flow::*;
+#[cfg(feature = "khr_shared_presentable_image")]
+mod khr_shared_presentable_image;
+#[cfg(feature = "khr_shared_presentable_image")]
+#[allow(unused_imports)]
+pub use khr_shared_presentable_image::*;
+#[cfg(feature = "khr_surface_protected_capabilities")]
+mod khr_surface_protected_capabilities;
+#[cfg(feature = "khr_surface_protected_capabilities")]
+#[allow(unused_imports)]
+pub use khr_surface_protected_capabilities::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_swapchain;
 #[cfg(feature = "khr_swapchain")]
 #[allow(unused_imports)]
 pub use khr_swapchain::*;
+#[cfg(feature = "khr_synchronization2")]
+mod khr_synchronization2;
+#[cfg(feature = "khr_synchronization2")]
+#[allow(unused_imports)]
+pub use khr_synchronization2::*;
+#[cfg(feature = "khr_video_decode_h264")]
+mod khr_video_decode_h264;
+#[cfg(feature = "khr_video_decode_h264")]
+#[allow(unused_imports)]
+pub use khr_video_decode_h264::*;
+#[cfg(feature = "khr_video_decode_h265")]
+mod khr_video_decode_h265;
+#[cfg(feature = "khr_video_decode_h265")]
+#[allow(unused_imports)]
+pub use khr_video_decode_h265::*;
+#[cfg(feature = "khr_video_decode_queue")]
+mod khr_video_decode_queue;
+#[cfg(feature = "khr_video_decode_queue")]
+#[allow(unused_imports)]
+pub use khr_video_decode_queue::*;
+#[cfg(feature = "khr_video_queue")]
+mod khr_video_queue;
+#[cfg(feature = "khr_video_queue")]
+#[allow(unused_imports)]
+pub use khr_video_queue::*;
 #[cfg(feature = "khr_wayland_surface")]
 mod khr_wayland_surface;
 #[cfg(feature = "khr_wayland_surface")]
 #[allow(unused_imports)]
 pub use khr_wayland_surface::*;
+#[cfg(feature = "khr_win32_keyed_mutex")]
+mod khr_win32_keyed_mutex;
+#[cfg(feature = "khr_win32_keyed_mutex")]
+#[allow(unused_imports)]
+pub use khr_win32_keyed_mutex::*;
 #[cfg(feature = "khr_win32_surface")]
 mod khr_win32_surface;
 #[cfg(feature = "khr_win32_surface")]
 #[allow(unused_imports)]
 pub use khr_win32_surface::*;
+#[cfg(feature = "khr_workgroup_memory_explicit_layout")]
+mod khr_workgroup_memory_explicit_layout;
+#[cfg(feature = "khr_workgroup_memory_explicit_layout")]
+#[allow(unused_imports)]
+pub use khr_workgroup_memory_explicit_layout::*;
 #[cfg(feature = "khr_xcb_surface")]
 mod khr_xcb_surface;
 #[cfg(feature = "khr_xcb_surface")]
@@ -60,3 +787,248 @@ mod khr_xlib_surface;
 #[cfg(feature = "khr_xlib_surface")]
 #[allow(unused_imports)]
 pub use khr_xlib_surface::*;
+#[cfg(feature = "lunarg_direct_driver_loading")]
+mod lunarg_direct_driver_loading;
+#[cfg(feature = "lunarg_direct_driver_loading")]
+#[allow(unused_imports)]
+pub use lunarg_direct_driver_loading::*;
+#[cfg(feature = "mvk_ios_surface")]
+mod mvk_ios_surface;
+#[cfg(feature = "mvk_ios_surface")]
+#[allow(unused_imports)]
+pub use mvk_ios_surface::*;
+#[cfg(feature = "mvk_macos_surface")]
+mod mvk_macos_surface;
+#[cfg(feature = "mvk_macos_surface")]
+#[allow(unused_imports)]
+pub use mvk_macos_surface::*;
+#[cfg(feature = "nn_vi_surface")]
+mod nn_vi_surface;
+#[cfg(feature = "nn_vi_surface")]
+#[allow(unused_imports)]
+pub use nn_vi_surface::*;
+#[cfg(feature = "nv_clip_space_w_scaling")]
+mod nv_clip_space_w_scaling;
+#[cfg(feature = "nv_clip_space_w_scaling")]
+#[allow(unused_imports)]
+pub use nv_clip_space_w_scaling::*;
+#[cfg(feature = "nv_compute_shader_derivatives")]
+mod nv_compute_shader_derivatives;
+#[cfg(feature = "nv_compute_shader_derivatives")]
+#[allow(unused_imports)]
+pub use nv_compute_shader_derivatives::*;
+#[cfg(feature = "nv_cooperative_matrix")]
+mod nv_cooperative_matrix;
+#[cfg(feature = "nv_cooperative_matrix")]
+#[allow(unused_imports)]
+pub use nv_cooperative_matrix::*;
+#[cfg(feature = "nv_copy_memory_indirect")]
+mod nv_copy_memory_indirect;
+#[cfg(feature = "nv_copy_memory_indirect")]
+#[allow(unused_imports)]
+pub use nv_copy_memory_indirect::*;
+#[cfg(feature = "nv_corner_sampled_image")]
+mod nv_corner_sampled_image;
+#[cfg(feature = "nv_corner_sampled_image")]
+#[allow(unused_imports)]
+pub use nv_corner_sampled_image::*;
+#[cfg(feature = "nv_coverage_reduction_mode")]
+mod nv_coverage_reduction_mode;
+#[cfg(feature = "nv_coverage_reduction_mode")]
+#[allow(unused_imports)]
+pub use nv_coverage_reduction_mode::*;
+#[cfg(feature = "nv_dedicated_allocation")]
+mod nv_dedicated_allocation;
+#[cfg(feature = "nv_dedicated_allocation")]
+#[allow(unused_imports)]
+pub use nv_dedicated_allocation::*;
+#[cfg(feature = "nv_dedicated_allocation_image_aliasing")]
+mod nv_dedicated_allocation_image_aliasing;
+#[cfg(feature = "nv_dedicated_allocation_image_aliasing")]
+#[allow(unused_imports)]
+pub use nv_dedicated_allocation_image_aliasing::*;
+#[cfg(feature = "nv_device_diagnostic_checkpoints")]
+mod nv_device_diagnostic_checkpoints;
+#[cfg(feature = "nv_device_diagnostic_checkpoints")]
+#[allow(unused_imports)]
+pub use nv_device_diagnostic_checkpoints::*;
+#[cfg(feature = "nv_device_diagnostics_config")]
+mod nv_device_diagnostics_config;
+#[cfg(feature = "nv_device_diagnostics_config")]
+#[allow(unused_imports)]
+pub use nv_device_diagnostics_config::*;
+#[cfg(feature = "nv_device_generated_commands")]
+mod nv_device_generated_commands;
+#[cfg(feature = "nv_device_generated_commands")]
+#[allow(unused_imports)]
+pub use nv_device_generated_commands::*;
+#[cfg(feature = "nv_external_memory")]
+mod nv_external_memory;
+#[cfg(feature = "nv_external_memory")]
+#[allow(unused_imports)]
+pub use nv_external_memory::*;
+#[cfg(feature = "nv_external_memory_rdma")]
+mod nv_external_memory_rdma;
+#[cfg(feature = "nv_external_memory_rdma")]
+#[allow(unused_imports)]
+pub use nv_external_memory_rdma::*;
+#[cfg(feature = "nv_external_memory_win32")]
+mod nv_external_memory_win32;
+#[cfg(feature = "nv_external_memory_win32")]
+#[allow(unused_imports)]
+pub use nv_external_memory_win32::*;
+#[cfg(feature = "nv_fragment_coverage_to_color")]
+mod nv_fragment_coverage_to_color;
+#[cfg(feature = "nv_fragment_coverage_to_color")]
+#[allow(unused_imports)]
+pub use nv_fragment_coverage_to_color::*;
+#[cfg(feature = "nv_fragment_shading_rate_enums")]
+mod nv_fragment_shading_rate_enums;
+#[cfg(feature = "nv_fragment_shading_rate_enums")]
+#[allow(unused_imports)]
+pub use nv_fragment_shading_rate_enums::*;
+#[cfg(feature = "nv_framebuffer_mixed_samples")]
+mod nv_framebuffer_mixed_samples;
+#[cfg(feature = "nv_framebuffer_mixed_samples")]
+#[allow(unused_imports)]
+pub use nv_framebuffer_mixed_samples::*;
+#[cfg(feature = "nv_inherited_viewport_scissor")]
+mod nv_inherited_viewport_scissor;
+#[cfg(feature = "nv_inherited_viewport_scissor")]
+#[allow(unused_imports)]
+pub use nv_inherited_viewport_scissor::*;
+#[cfg(feature = "nv_linear_color_attachment")]
+mod nv_linear_color_attachment;
+#[cfg(feature = "nv_linear_color_attachment")]
+#[allow(unused_imports)]
+pub use nv_linear_color_attachment::*;
+#[cfg(feature = "nv_memory_decompression")]
+mod nv_memory_decompression;
+#[cfg(feature = "nv_memory_decompression")]
+#[allow(unused_imports)]
+pub use nv_memory_decompression::*;
+#[cfg(feature = "nv_mesh_shader")]
+mod nv_mesh_shader;
+#[cfg(feature = "nv_mesh_shader")]
+#[allow(unused_imports)]
+pub use nv_mesh_shader::*;
+#[cfg(feature = "nv_optical_flow")]
+mod nv_optical_flow;
+#[cfg(feature = "nv_optical_flow")]
+#[allow(unused_imports)]
+pub use nv_optical_flow::*;
+#[cfg(feature = "nv_present_barrier")]
+mod nv_present_barrier;
+#[cfg(feature = "nv_present_barrier")]
+#[allow(unused_imports)]
+pub use nv_present_barrier::*;
+#[cfg(feature = "nv_ray_tracing")]
+mod nv_ray_tracing;
+#[cfg(feature = "nv_ray_tracing")]
+#[allow(unused_imports)]
+pub use nv_ray_tracing::*;
+#[cfg(feature = "nv_ray_tracing_invocation_reorder")]
+mod nv_ray_tracing_invocation_reorder;
+#[cfg(feature = "nv_ray_tracing_invocation_reorder")]
+#[allow(unused_imports)]
+pub use nv_ray_tracing_invocation_reorder::*;
+#[cfg(feature = "nv_ray_tracing_motion_blur")]
+mod nv_ray_tracing_motion_blur;
+#[cfg(feature = "nv_ray_tracing_motion_blur")]
+#[allow(unused_imports)]
+pub use nv_ray_tracing_motion_blur::*;
+#[cfg(feature = "nv_representative_fragment_test")]
+mod nv_representative_fragment_test;
+#[cfg(feature = "nv_representative_fragment_test")]
+#[allow(unused_imports)]
+pub use nv_representative_fragment_test::*;
+#[cfg(feature = "nv_scissor_exclusive")]
+mod nv_scissor_exclusive;
+#[cfg(feature = "nv_scissor_exclusive")]
+#[allow(unused_imports)]
+pub use nv_scissor_exclusive::*;
+#[cfg(feature = "nv_shader_image_footprint")]
+mod nv_shader_image_footprint;
+#[cfg(feature = "nv_shader_image_footprint")]
+#[allow(unused_imports)]
+pub use nv_shader_image_footprint::*;
+#[cfg(feature = "nv_shader_sm_builtins")]
+mod nv_shader_sm_builtins;
+#[cfg(feature = "nv_shader_sm_builtins")]
+#[allow(unused_imports)]
+pub use nv_shader_sm_builtins::*;
+#[cfg(feature = "nv_shading_rate_image")]
+mod nv_shading_rate_image;
+#[cfg(feature = "nv_shading_rate_image")]
+#[allow(unused_imports)]
+pub use nv_shading_rate_image::*;
+#[cfg(feature = "nv_viewport_swizzle")]
+mod nv_viewport_swizzle;
+#[cfg(feature = "nv_viewport_swizzle")]
+#[allow(unused_imports)]
+pub use nv_viewport_swizzle::*;
+#[cfg(feature = "nv_win32_keyed_mutex")]
+mod nv_win32_keyed_mutex;
+#[cfg(feature = "nv_win32_keyed_mutex")]
+#[allow(unused_imports)]
+pub use nv_win32_keyed_mutex::*;
+#[cfg(feature = "nvx_binary_import")]
+mod nvx_binary_import;
+#[cfg(feature = "nvx_binary_import")]
+#[allow(unused_imports)]
+pub use nvx_binary_import::*;
+#[cfg(feature = "nvx_image_view_handle")]
+mod nvx_image_view_handle;
+#[cfg(feature = "nvx_image_view_handle")]
+#[allow(unused_imports)]
+pub use nvx_image_view_handle::*;
+#[cfg(feature = "nvx_multiview_per_view_attributes")]
+mod nvx_multiview_per_view_attributes;
+#[cfg(feature = "nvx_multiview_per_view_attributes")]
+#[allow(unused_imports)]
+pub use nvx_multiview_per_view_attributes::*;
+#[cfg(feature = "qcom_fragment_density_map_offset")]
+mod qcom_fragment_density_map_offset;
+#[cfg(feature = "qcom_fragment_density_map_offset")]
+#[allow(unused_imports)]
+pub use qcom_fragment_density_map_offset::*;
+#[cfg(feature = "qcom_image_processing")]
+mod qcom_image_processing;
+#[cfg(feature = "qcom_image_processing")]
+#[allow(unused_imports)]
+pub use qcom_image_processing::*;
+#[cfg(feature = "qcom_multiview_per_view_viewports")]
+mod qcom_multiview_per_view_viewports;
+#[cfg(feature = "qcom_multiview_per_view_viewports")]
+#[allow(unused_imports)]
+pub use qcom_multiview_per_view_viewports::*;
+#[cfg(feature = "qcom_render_pass_transform")]
+mod qcom_render_pass_transform;
+#[cfg(feature = "qcom_render_pass_transform")]
+#[allow(unused_imports)]
+pub use qcom_render_pass_transform::*;
+#[cfg(feature = "qcom_rotated_copy_commands")]
+mod qcom_rotated_copy_commands;
+#[cfg(feature = "qcom_rotated_copy_commands")]
+#[allow(unused_imports)]
+pub use qcom_rotated_copy_commands::*;
+#[cfg(feature = "qcom_tile_properties")]
+mod qcom_tile_properties;
+#[cfg(feature = "qcom_tile_properties")]
+#[allow(unused_imports)]
+pub use qcom_tile_properties::*;
+#[cfg(feature = "qnx_screen_surface")]
+mod qnx_screen_surface;
+#[cfg(feature = "qnx_screen_surface")]
+#[allow(unused_imports)]
+pub use qnx_screen_surface::*;
+#[cfg(feature = "sec_amigo_profiling")]
+mod sec_amigo_profiling;
+#[cfg(feature = "sec_amigo_profiling")]
+#[allow(unused_imports)]
+pub use sec_amigo_profiling::*;
+#[cfg(feature = "valve_descriptor_set_host_mapping")]
+mod valve_descriptor_set_host_mapping;
+#[cfg(feature = "valve_descriptor_set_host_mapping")]
+#[allow(unused_imports)]
+pub use valve_descriptor_set_host_mapping::*;

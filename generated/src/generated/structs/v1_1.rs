@@ -1310,7 +1310,7 @@ for PhysicalDeviceMaintenance3Properties<'a> {}
 The rules are on [`VkPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
 
 - `VUID-VkPhysicalDeviceMemoryProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1658,7 +1658,7 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for ProtectedSubmitInfo<'a> {}
 The rules are on [`VkQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyProperties2.html). Settled by the wrappers:
 
 - `VUID-VkQueueFamilyProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkQueueFamilyProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkQueueFamilyProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkQueueFamilyProperties2-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1748,7 +1748,7 @@ unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateI
 The rules are on [`VkSamplerYcbcrConversionCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionCreateInfo.html). Settled by the wrappers:
 
 - `VUID-VkSamplerYcbcrConversionCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)

@@ -34,8 +34,10 @@ The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.
 - `VUID-VkAttachmentDescription2-format-03287`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-format-03290`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkAttachmentDescription2-format-03291`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-synchronization2-06908`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkAttachmentDescription2-synchronization2-06909`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -145,11 +147,12 @@ The rules are on [`VkAttachmentReference2`'s reference page](https://registry.kh
 - `VUID-VkAttachmentReference2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAttachmentReference2-synchronization2-06910`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+- 1: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -1736,7 +1739,7 @@ The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.k
 - `VUID-VkRenderPassCreateInfo2-viewMask-03059`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkRenderPassCreateInfo2-attachment-02525`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 - `VUID-VkRenderPassCreateInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkRenderPassCreateInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkRenderPassCreateInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkRenderPassCreateInfo2-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
@@ -2084,15 +2087,16 @@ The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khr
 - `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkSubpassDescription2-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
+- `VUID-VkSubpassDescription2-attachment-06922`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-multiview-06558`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkSubpassDescription2-viewMask-06706`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 24.
+Left to the caller (listed one by one in the crate's `validation.json`): 23.
 
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
+- 8: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first
-- 17: explicit rule; the wrappers do not check it*/
+- 14: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {
@@ -2233,7 +2237,7 @@ for SubpassDescriptionDepthStencilResolve<'a> {}
 The rules are on [`VkSubpassEndInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassEndInfo.html). Settled by the wrappers:
 
 - `VUID-VkSubpassEndInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassEndInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSubpassEndInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSubpassEndInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

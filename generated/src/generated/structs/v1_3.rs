@@ -149,7 +149,7 @@ The rules are on [`VkBufferImageCopy2`'s reference page](https://registry.khrono
 - `VUID-VkBufferImageCopy2-imageExtent-06660`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-imageExtent-06661`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 - `VUID-VkBufferImageCopy2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkBufferImageCopy2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkBufferImageCopy2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkBufferImageCopy2-imageSubresource-parameter`: dynamic (checks the struct's own rules)*/
 #[repr(transparent)]
@@ -255,7 +255,10 @@ The rules are on [`VkBufferMemoryBarrier2`'s reference page](https://registry.kh
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 79.
+
+- 10: checked by the safe methods in every build, but no oracle case breaks it yet
+- 69: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -994,7 +997,7 @@ unsafe impl<'a> Extends<FormatProperties2<'a>> for FormatProperties3<'a> {}
 The rules are on [`VkImageBlit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageBlit2.html). Settled by the wrappers:
 
 - `VUID-VkImageBlit2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageBlit2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageBlit2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageBlit2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageBlit2-srcSubresource-parameter`: dynamic (checks the struct's own rules)
 - `VUID-VkImageBlit2-dstSubresource-parameter`: dynamic (checks the struct's own rules)
@@ -1135,7 +1138,7 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 - `VUID-VkImageMemoryBarrier2-subresourceRange-01724`: dynamic (checks the rule as written (recogniser: number less than a creation parameter of an object))
 - `VUID-VkImageMemoryBarrier2-image-01932`: dynamic (checks the rule as written (recogniser: object bound to memory unless sparse))
 - `VUID-VkImageMemoryBarrier2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkImageMemoryBarrier2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkImageMemoryBarrier2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkImageMemoryBarrier2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkImageMemoryBarrier2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
@@ -1150,8 +1153,8 @@ The rules are on [`VkImageMemoryBarrier2`'s reference page](https://registry.khr
 
 Left to the caller (listed one by one in the crate's `validation.json`): 116.
 
-- 5: checked by the safe methods in every build, but no oracle case breaks it yet
-- 111: explicit rule; the wrappers do not check it*/
+- 15: checked by the safe methods in every build, but no oracle case breaks it yet
+- 101: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -1336,7 +1339,10 @@ The rules are on [`VkMemoryBarrier2`'s reference page](https://registry.khronos.
 - `VUID-VkMemoryBarrier2-srcAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 - `VUID-VkMemoryBarrier2-dstAccessMask-03908`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
 
-Left to the caller (listed one by one in the crate's `validation.json`): 74 (explicit rule; the wrappers do not check it).*/
+Left to the caller (listed one by one in the crate's `validation.json`): 74.
+
+- 10: checked by the safe methods in every build, but no oracle case breaks it yet
+- 64: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryBarrier2<'a> {
@@ -1966,6 +1972,12 @@ unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
 unsafe impl<'a> Extends<ComputePipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
+#[cfg(feature = "nv_ray_tracing")]
+unsafe impl<'a> Extends<RayTracingPipelineCreateInfoNV<'a>>
+for PipelineCreationFeedbackCreateInfo<'a> {}
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+unsafe impl<'a> Extends<RayTracingPipelineCreateInfoKHR<'a>>
+for PipelineCreationFeedbackCreateInfo<'a> {}
 /**Safe counterpart of [`vk::PipelineRenderingCreateInfo`].
 
 # Valid usage
@@ -2368,7 +2380,7 @@ impl<'a> SemaphoreSubmitInfo<'a> {
 The rules are on [`VkSubmitInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubmitInfo2.html). Settled by the wrappers:
 
 - `VUID-VkSubmitInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubmitInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkSubmitInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
 - `VUID-VkSubmitInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
 - `VUID-VkSubmitInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkSubmitInfo2-pWaitSemaphoreInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)

@@ -23,7 +23,7 @@ pub fn check_debug_utils_messenger_callback_data_ext(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext"),
         Some("VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique"),
     )?;
     Ok(())
@@ -89,7 +89,7 @@ pub fn check_debug_utils_object_name_info_ext(
         s,
         "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter",
     )?;
-    if s.exts.named("VK_EXT_debug_utils") && matches!(v.object_type.as_raw(), 0)
+    if s.exts.has(origin::VK_EXT_DEBUG_UTILS) && matches!(v.object_type.as_raw(), 0)
         && v.object_handle == 0
     {
         return Err(
@@ -123,7 +123,7 @@ pub fn check_debug_utils_object_tag_info_ext(
             ),
         );
     }
-    if s.exts.named("VK_EXT_debug_utils") && matches!(v.object_type.as_raw(), 0) {
+    if s.exts.has(origin::VK_EXT_DEBUG_UTILS) && matches!(v.object_type.as_raw(), 0) {
         return Err(
             fail(
                 "VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908",

@@ -34,9 +34,9 @@ pub fn check_acquire_next_image_info_khr(
             ),
         );
     }
-    if (s.exts.named("VK_KHR_surface") && s.exts.named("VK_KHR_swapchain")
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group")))
-        && v.device_mask == 0
+    if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_SWAPCHAIN)
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))) && v.device_mask == 0
     {
         return Err(
             fail(

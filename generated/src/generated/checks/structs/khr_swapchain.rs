@@ -117,7 +117,7 @@ pub fn check_swapchain_create_info_khr(
             ),
         );
     }
-    if (s.exts.named("VK_KHR_surface") && s.exts.named("VK_KHR_swapchain"))
+    if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_SWAPCHAIN))
         && matches!(v.image_sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1
     {
         return Err(

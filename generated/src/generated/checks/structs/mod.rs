@@ -15,31 +15,424 @@ pub use v1_2::*;
 mod v1_3;
 #[allow(unused_imports)]
 pub use v1_3::*;
+mod v1_3_part2;
+#[allow(unused_imports)]
+pub use v1_3_part2::*;
+#[cfg(feature = "amd_memory_overallocation_behavior")]
+mod amd_memory_overallocation_behavior;
+#[cfg(feature = "amd_memory_overallocation_behavior")]
+#[allow(unused_imports)]
+pub use amd_memory_overallocation_behavior::*;
+#[cfg(feature = "amd_pipeline_compiler_control")]
+mod amd_pipeline_compiler_control;
+#[cfg(feature = "amd_pipeline_compiler_control")]
+#[allow(unused_imports)]
+pub use amd_pipeline_compiler_control::*;
+#[cfg(feature = "amd_rasterization_order")]
+mod amd_rasterization_order;
+#[cfg(feature = "amd_rasterization_order")]
+#[allow(unused_imports)]
+pub use amd_rasterization_order::*;
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+mod android_external_memory_android_hardware_buffer;
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+#[allow(unused_imports)]
+pub use android_external_memory_android_hardware_buffer::*;
+#[cfg(feature = "ext_astc_decode_mode")]
+mod ext_astc_decode_mode;
+#[cfg(feature = "ext_astc_decode_mode")]
+#[allow(unused_imports)]
+pub use ext_astc_decode_mode::*;
+#[cfg(feature = "ext_blend_operation_advanced")]
+mod ext_blend_operation_advanced;
+#[cfg(feature = "ext_blend_operation_advanced")]
+#[allow(unused_imports)]
+pub use ext_blend_operation_advanced::*;
+#[cfg(feature = "ext_border_color_swizzle")]
+mod ext_border_color_swizzle;
+#[cfg(feature = "ext_border_color_swizzle")]
+#[allow(unused_imports)]
+pub use ext_border_color_swizzle::*;
+#[cfg(feature = "ext_calibrated_timestamps")]
+mod ext_calibrated_timestamps;
+#[cfg(feature = "ext_calibrated_timestamps")]
+#[allow(unused_imports)]
+pub use ext_calibrated_timestamps::*;
+#[cfg(feature = "ext_conditional_rendering")]
+mod ext_conditional_rendering;
+#[cfg(feature = "ext_conditional_rendering")]
+#[allow(unused_imports)]
+pub use ext_conditional_rendering::*;
+#[cfg(feature = "ext_conservative_rasterization")]
+mod ext_conservative_rasterization;
+#[cfg(feature = "ext_conservative_rasterization")]
+#[allow(unused_imports)]
+pub use ext_conservative_rasterization::*;
+#[cfg(feature = "ext_custom_border_color")]
+mod ext_custom_border_color;
+#[cfg(feature = "ext_custom_border_color")]
+#[allow(unused_imports)]
+pub use ext_custom_border_color::*;
+#[cfg(feature = "ext_debug_marker")]
+mod ext_debug_marker;
+#[cfg(feature = "ext_debug_marker")]
+#[allow(unused_imports)]
+pub use ext_debug_marker::*;
+#[cfg(feature = "ext_debug_report")]
+mod ext_debug_report;
+#[cfg(feature = "ext_debug_report")]
+#[allow(unused_imports)]
+pub use ext_debug_report::*;
 #[cfg(feature = "ext_debug_utils")]
 mod ext_debug_utils;
 #[cfg(feature = "ext_debug_utils")]
 #[allow(unused_imports)]
 pub use ext_debug_utils::*;
+#[cfg(feature = "ext_depth_clip_enable")]
+mod ext_depth_clip_enable;
+#[cfg(feature = "ext_depth_clip_enable")]
+#[allow(unused_imports)]
+pub use ext_depth_clip_enable::*;
+#[cfg(feature = "ext_descriptor_buffer")]
+mod ext_descriptor_buffer;
+#[cfg(feature = "ext_descriptor_buffer")]
+#[allow(unused_imports)]
+pub use ext_descriptor_buffer::*;
+#[cfg(feature = "ext_device_address_binding_report")]
+mod ext_device_address_binding_report;
+#[cfg(feature = "ext_device_address_binding_report")]
+#[allow(unused_imports)]
+pub use ext_device_address_binding_report::*;
+#[cfg(feature = "ext_device_memory_report")]
+mod ext_device_memory_report;
+#[cfg(feature = "ext_device_memory_report")]
+#[allow(unused_imports)]
+pub use ext_device_memory_report::*;
+#[cfg(feature = "ext_directfb_surface")]
+mod ext_directfb_surface;
+#[cfg(feature = "ext_directfb_surface")]
+#[allow(unused_imports)]
+pub use ext_directfb_surface::*;
+#[cfg(feature = "ext_discard_rectangles")]
+mod ext_discard_rectangles;
+#[cfg(feature = "ext_discard_rectangles")]
+#[allow(unused_imports)]
+pub use ext_discard_rectangles::*;
+#[cfg(feature = "ext_display_control")]
+mod ext_display_control;
+#[cfg(feature = "ext_display_control")]
+#[allow(unused_imports)]
+pub use ext_display_control::*;
+#[cfg(feature = "ext_extended_dynamic_state3")]
+mod ext_extended_dynamic_state3;
+#[cfg(feature = "ext_extended_dynamic_state3")]
+#[allow(unused_imports)]
+pub use ext_extended_dynamic_state3::*;
+#[cfg(feature = "ext_external_memory_host")]
+mod ext_external_memory_host;
+#[cfg(feature = "ext_external_memory_host")]
+#[allow(unused_imports)]
+pub use ext_external_memory_host::*;
+#[cfg(feature = "ext_filter_cubic")]
+mod ext_filter_cubic;
+#[cfg(feature = "ext_filter_cubic")]
+#[allow(unused_imports)]
+pub use ext_filter_cubic::*;
+#[cfg(feature = "ext_fragment_density_map")]
+mod ext_fragment_density_map;
+#[cfg(feature = "ext_fragment_density_map")]
+#[allow(unused_imports)]
+pub use ext_fragment_density_map::*;
+#[cfg(feature = "ext_full_screen_exclusive")]
+mod ext_full_screen_exclusive;
+#[cfg(feature = "ext_full_screen_exclusive")]
+#[allow(unused_imports)]
+pub use ext_full_screen_exclusive::*;
+#[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+mod ext_global_priority;
+#[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
+#[allow(unused_imports)]
+pub use ext_global_priority::*;
+#[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
+mod ext_global_priority_query;
+#[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
+#[allow(unused_imports)]
+pub use ext_global_priority_query::*;
+#[cfg(feature = "ext_graphics_pipeline_library")]
+mod ext_graphics_pipeline_library;
+#[cfg(feature = "ext_graphics_pipeline_library")]
+#[allow(unused_imports)]
+pub use ext_graphics_pipeline_library::*;
+#[cfg(feature = "ext_headless_surface")]
+mod ext_headless_surface;
+#[cfg(feature = "ext_headless_surface")]
+#[allow(unused_imports)]
+pub use ext_headless_surface::*;
+#[cfg(feature = "ext_image_compression_control")]
+mod ext_image_compression_control;
+#[cfg(feature = "ext_image_compression_control")]
+#[allow(unused_imports)]
+pub use ext_image_compression_control::*;
+#[cfg(feature = "ext_image_drm_format_modifier")]
+mod ext_image_drm_format_modifier;
+#[cfg(feature = "ext_image_drm_format_modifier")]
+#[allow(unused_imports)]
+pub use ext_image_drm_format_modifier::*;
+#[cfg(feature = "ext_line_rasterization")]
+mod ext_line_rasterization;
+#[cfg(feature = "ext_line_rasterization")]
+#[allow(unused_imports)]
+pub use ext_line_rasterization::*;
+#[cfg(feature = "ext_memory_priority")]
+mod ext_memory_priority;
+#[cfg(feature = "ext_memory_priority")]
+#[allow(unused_imports)]
+pub use ext_memory_priority::*;
+#[cfg(feature = "ext_metal_objects")]
+mod ext_metal_objects;
+#[cfg(feature = "ext_metal_objects")]
+#[allow(unused_imports)]
+pub use ext_metal_objects::*;
 #[cfg(feature = "ext_metal_surface")]
 mod ext_metal_surface;
 #[cfg(feature = "ext_metal_surface")]
 #[allow(unused_imports)]
 pub use ext_metal_surface::*;
+#[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+mod ext_multisampled_render_to_single_sampled;
+#[cfg(feature = "ext_multisampled_render_to_single_sampled")]
+#[allow(unused_imports)]
+pub use ext_multisampled_render_to_single_sampled::*;
+#[cfg(
+    any(
+        feature = "ext_mutable_descriptor_type",
+        feature = "valve_mutable_descriptor_type"
+    )
+)]
+mod ext_mutable_descriptor_type;
+#[cfg(
+    any(
+        feature = "ext_mutable_descriptor_type",
+        feature = "valve_mutable_descriptor_type"
+    )
+)]
+#[allow(unused_imports)]
+pub use ext_mutable_descriptor_type::*;
+#[cfg(feature = "ext_opacity_micromap")]
+mod ext_opacity_micromap;
+#[cfg(feature = "ext_opacity_micromap")]
+#[allow(unused_imports)]
+pub use ext_opacity_micromap::*;
+#[cfg(feature = "ext_pipeline_robustness")]
+mod ext_pipeline_robustness;
+#[cfg(feature = "ext_pipeline_robustness")]
+#[allow(unused_imports)]
+pub use ext_pipeline_robustness::*;
+#[cfg(feature = "ext_provoking_vertex")]
+mod ext_provoking_vertex;
+#[cfg(feature = "ext_provoking_vertex")]
+#[allow(unused_imports)]
+pub use ext_provoking_vertex::*;
+#[cfg(feature = "ext_surface_maintenance1")]
+mod ext_surface_maintenance1;
+#[cfg(feature = "ext_surface_maintenance1")]
+#[allow(unused_imports)]
+pub use ext_surface_maintenance1::*;
+#[cfg(feature = "ext_swapchain_maintenance1")]
+mod ext_swapchain_maintenance1;
+#[cfg(feature = "ext_swapchain_maintenance1")]
+#[allow(unused_imports)]
+pub use ext_swapchain_maintenance1::*;
+#[cfg(feature = "ext_transform_feedback")]
+mod ext_transform_feedback;
+#[cfg(feature = "ext_transform_feedback")]
+#[allow(unused_imports)]
+pub use ext_transform_feedback::*;
+#[cfg(feature = "ext_validation_cache")]
+mod ext_validation_cache;
+#[cfg(feature = "ext_validation_cache")]
+#[allow(unused_imports)]
+pub use ext_validation_cache::*;
+#[cfg(feature = "ext_validation_features")]
+mod ext_validation_features;
+#[cfg(feature = "ext_validation_features")]
+#[allow(unused_imports)]
+pub use ext_validation_features::*;
+#[cfg(feature = "ext_validation_flags")]
+mod ext_validation_flags;
+#[cfg(feature = "ext_validation_flags")]
+#[allow(unused_imports)]
+pub use ext_validation_flags::*;
+#[cfg(feature = "ext_vertex_attribute_divisor")]
+mod ext_vertex_attribute_divisor;
+#[cfg(feature = "ext_vertex_attribute_divisor")]
+#[allow(unused_imports)]
+pub use ext_vertex_attribute_divisor::*;
+#[cfg(feature = "ext_vertex_input_dynamic_state")]
+mod ext_vertex_input_dynamic_state;
+#[cfg(feature = "ext_vertex_input_dynamic_state")]
+#[allow(unused_imports)]
+pub use ext_vertex_input_dynamic_state::*;
+#[cfg(feature = "fuchsia_buffer_collection")]
+mod fuchsia_buffer_collection;
+#[cfg(feature = "fuchsia_buffer_collection")]
+#[allow(unused_imports)]
+pub use fuchsia_buffer_collection::*;
+#[cfg(feature = "fuchsia_external_memory")]
+mod fuchsia_external_memory;
+#[cfg(feature = "fuchsia_external_memory")]
+#[allow(unused_imports)]
+pub use fuchsia_external_memory::*;
+#[cfg(feature = "fuchsia_external_semaphore")]
+mod fuchsia_external_semaphore;
+#[cfg(feature = "fuchsia_external_semaphore")]
+#[allow(unused_imports)]
+pub use fuchsia_external_semaphore::*;
+#[cfg(feature = "fuchsia_imagepipe_surface")]
+mod fuchsia_imagepipe_surface;
+#[cfg(feature = "fuchsia_imagepipe_surface")]
+#[allow(unused_imports)]
+pub use fuchsia_imagepipe_surface::*;
+#[cfg(feature = "ggp_stream_descriptor_surface")]
+mod ggp_stream_descriptor_surface;
+#[cfg(feature = "ggp_stream_descriptor_surface")]
+#[allow(unused_imports)]
+pub use ggp_stream_descriptor_surface::*;
+#[cfg(feature = "google_display_timing")]
+mod google_display_timing;
+#[cfg(feature = "google_display_timing")]
+#[allow(unused_imports)]
+pub use google_display_timing::*;
+#[cfg(feature = "intel_performance_query")]
+mod intel_performance_query;
+#[cfg(feature = "intel_performance_query")]
+#[allow(unused_imports)]
+pub use intel_performance_query::*;
+#[cfg(feature = "khr_acceleration_structure")]
+mod khr_acceleration_structure;
+#[cfg(feature = "khr_acceleration_structure")]
+#[allow(unused_imports)]
+pub use khr_acceleration_structure::*;
+#[cfg(feature = "khr_android_surface")]
+mod khr_android_surface;
+#[cfg(feature = "khr_android_surface")]
+#[allow(unused_imports)]
+pub use khr_android_surface::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_device_group;
 #[cfg(feature = "khr_swapchain")]
 #[allow(unused_imports)]
 pub use khr_device_group::*;
+#[cfg(feature = "khr_display")]
+mod khr_display;
+#[cfg(feature = "khr_display")]
+#[allow(unused_imports)]
+pub use khr_display::*;
+#[cfg(feature = "khr_dynamic_rendering")]
+mod khr_dynamic_rendering;
+#[cfg(feature = "khr_dynamic_rendering")]
+#[allow(unused_imports)]
+pub use khr_dynamic_rendering::*;
+#[cfg(feature = "khr_external_fence_fd")]
+mod khr_external_fence_fd;
+#[cfg(feature = "khr_external_fence_fd")]
+#[allow(unused_imports)]
+pub use khr_external_fence_fd::*;
+#[cfg(feature = "khr_external_fence_win32")]
+mod khr_external_fence_win32;
+#[cfg(feature = "khr_external_fence_win32")]
+#[allow(unused_imports)]
+pub use khr_external_fence_win32::*;
+#[cfg(feature = "khr_external_memory_fd")]
+mod khr_external_memory_fd;
+#[cfg(feature = "khr_external_memory_fd")]
+#[allow(unused_imports)]
+pub use khr_external_memory_fd::*;
+#[cfg(feature = "khr_external_memory_win32")]
+mod khr_external_memory_win32;
+#[cfg(feature = "khr_external_memory_win32")]
+#[allow(unused_imports)]
+pub use khr_external_memory_win32::*;
+#[cfg(feature = "khr_external_semaphore_fd")]
+mod khr_external_semaphore_fd;
+#[cfg(feature = "khr_external_semaphore_fd")]
+#[allow(unused_imports)]
+pub use khr_external_semaphore_fd::*;
+#[cfg(feature = "khr_external_semaphore_win32")]
+mod khr_external_semaphore_win32;
+#[cfg(feature = "khr_external_semaphore_win32")]
+#[allow(unused_imports)]
+pub use khr_external_semaphore_win32::*;
+#[cfg(feature = "khr_fragment_shading_rate")]
+mod khr_fragment_shading_rate;
+#[cfg(feature = "khr_fragment_shading_rate")]
+#[allow(unused_imports)]
+pub use khr_fragment_shading_rate::*;
+#[cfg(feature = "khr_get_display_properties2")]
+mod khr_get_display_properties2;
+#[cfg(feature = "khr_get_display_properties2")]
+#[allow(unused_imports)]
+pub use khr_get_display_properties2::*;
+#[cfg(feature = "khr_get_surface_capabilities2")]
+mod khr_get_surface_capabilities2;
+#[cfg(feature = "khr_get_surface_capabilities2")]
+#[allow(unused_imports)]
+pub use khr_get_surface_capabilities2::*;
+#[cfg(feature = "khr_incremental_present")]
+mod khr_incremental_present;
+#[cfg(feature = "khr_incremental_present")]
+#[allow(unused_imports)]
+pub use khr_incremental_present::*;
+#[cfg(feature = "khr_performance_query")]
+mod khr_performance_query;
+#[cfg(feature = "khr_performance_query")]
+#[allow(unused_imports)]
+pub use khr_performance_query::*;
+#[cfg(feature = "khr_present_id")]
+mod khr_present_id;
+#[cfg(feature = "khr_present_id")]
+#[allow(unused_imports)]
+pub use khr_present_id::*;
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+mod khr_ray_tracing_pipeline;
+#[cfg(feature = "khr_ray_tracing_pipeline")]
+#[allow(unused_imports)]
+pub use khr_ray_tracing_pipeline::*;
 #[cfg(feature = "khr_swapchain")]
 mod khr_swapchain;
 #[cfg(feature = "khr_swapchain")]
 #[allow(unused_imports)]
 pub use khr_swapchain::*;
+#[cfg(feature = "khr_video_decode_h264")]
+mod khr_video_decode_h264;
+#[cfg(feature = "khr_video_decode_h264")]
+#[allow(unused_imports)]
+pub use khr_video_decode_h264::*;
+#[cfg(feature = "khr_video_decode_h265")]
+mod khr_video_decode_h265;
+#[cfg(feature = "khr_video_decode_h265")]
+#[allow(unused_imports)]
+pub use khr_video_decode_h265::*;
+#[cfg(feature = "khr_video_decode_queue")]
+mod khr_video_decode_queue;
+#[cfg(feature = "khr_video_decode_queue")]
+#[allow(unused_imports)]
+pub use khr_video_decode_queue::*;
+#[cfg(feature = "khr_video_queue")]
+mod khr_video_queue;
+#[cfg(feature = "khr_video_queue")]
+#[allow(unused_imports)]
+pub use khr_video_queue::*;
 #[cfg(feature = "khr_wayland_surface")]
 mod khr_wayland_surface;
 #[cfg(feature = "khr_wayland_surface")]
 #[allow(unused_imports)]
 pub use khr_wayland_surface::*;
+#[cfg(feature = "khr_win32_keyed_mutex")]
+mod khr_win32_keyed_mutex;
+#[cfg(feature = "khr_win32_keyed_mutex")]
+#[allow(unused_imports)]
+pub use khr_win32_keyed_mutex::*;
 #[cfg(feature = "khr_win32_surface")]
 mod khr_win32_surface;
 #[cfg(feature = "khr_win32_surface")]
@@ -55,3 +448,143 @@ mod khr_xlib_surface;
 #[cfg(feature = "khr_xlib_surface")]
 #[allow(unused_imports)]
 pub use khr_xlib_surface::*;
+#[cfg(feature = "lunarg_direct_driver_loading")]
+mod lunarg_direct_driver_loading;
+#[cfg(feature = "lunarg_direct_driver_loading")]
+#[allow(unused_imports)]
+pub use lunarg_direct_driver_loading::*;
+#[cfg(feature = "mvk_ios_surface")]
+mod mvk_ios_surface;
+#[cfg(feature = "mvk_ios_surface")]
+#[allow(unused_imports)]
+pub use mvk_ios_surface::*;
+#[cfg(feature = "mvk_macos_surface")]
+mod mvk_macos_surface;
+#[cfg(feature = "mvk_macos_surface")]
+#[allow(unused_imports)]
+pub use mvk_macos_surface::*;
+#[cfg(feature = "nn_vi_surface")]
+mod nn_vi_surface;
+#[cfg(feature = "nn_vi_surface")]
+#[allow(unused_imports)]
+pub use nn_vi_surface::*;
+#[cfg(feature = "nv_clip_space_w_scaling")]
+mod nv_clip_space_w_scaling;
+#[cfg(feature = "nv_clip_space_w_scaling")]
+#[allow(unused_imports)]
+pub use nv_clip_space_w_scaling::*;
+#[cfg(feature = "nv_cooperative_matrix")]
+mod nv_cooperative_matrix;
+#[cfg(feature = "nv_cooperative_matrix")]
+#[allow(unused_imports)]
+pub use nv_cooperative_matrix::*;
+#[cfg(feature = "nv_copy_memory_indirect")]
+mod nv_copy_memory_indirect;
+#[cfg(feature = "nv_copy_memory_indirect")]
+#[allow(unused_imports)]
+pub use nv_copy_memory_indirect::*;
+#[cfg(feature = "nv_coverage_reduction_mode")]
+mod nv_coverage_reduction_mode;
+#[cfg(feature = "nv_coverage_reduction_mode")]
+#[allow(unused_imports)]
+pub use nv_coverage_reduction_mode::*;
+#[cfg(feature = "nv_dedicated_allocation")]
+mod nv_dedicated_allocation;
+#[cfg(feature = "nv_dedicated_allocation")]
+#[allow(unused_imports)]
+pub use nv_dedicated_allocation::*;
+#[cfg(feature = "nv_device_diagnostics_config")]
+mod nv_device_diagnostics_config;
+#[cfg(feature = "nv_device_diagnostics_config")]
+#[allow(unused_imports)]
+pub use nv_device_diagnostics_config::*;
+#[cfg(feature = "nv_device_generated_commands")]
+mod nv_device_generated_commands;
+#[cfg(feature = "nv_device_generated_commands")]
+#[allow(unused_imports)]
+pub use nv_device_generated_commands::*;
+#[cfg(feature = "nv_external_memory")]
+mod nv_external_memory;
+#[cfg(feature = "nv_external_memory")]
+#[allow(unused_imports)]
+pub use nv_external_memory::*;
+#[cfg(feature = "nv_external_memory_rdma")]
+mod nv_external_memory_rdma;
+#[cfg(feature = "nv_external_memory_rdma")]
+#[allow(unused_imports)]
+pub use nv_external_memory_rdma::*;
+#[cfg(feature = "nv_external_memory_win32")]
+mod nv_external_memory_win32;
+#[cfg(feature = "nv_external_memory_win32")]
+#[allow(unused_imports)]
+pub use nv_external_memory_win32::*;
+#[cfg(feature = "nv_fragment_coverage_to_color")]
+mod nv_fragment_coverage_to_color;
+#[cfg(feature = "nv_fragment_coverage_to_color")]
+#[allow(unused_imports)]
+pub use nv_fragment_coverage_to_color::*;
+#[cfg(feature = "nv_fragment_shading_rate_enums")]
+mod nv_fragment_shading_rate_enums;
+#[cfg(feature = "nv_fragment_shading_rate_enums")]
+#[allow(unused_imports)]
+pub use nv_fragment_shading_rate_enums::*;
+#[cfg(feature = "nv_framebuffer_mixed_samples")]
+mod nv_framebuffer_mixed_samples;
+#[cfg(feature = "nv_framebuffer_mixed_samples")]
+#[allow(unused_imports)]
+pub use nv_framebuffer_mixed_samples::*;
+#[cfg(feature = "nv_inherited_viewport_scissor")]
+mod nv_inherited_viewport_scissor;
+#[cfg(feature = "nv_inherited_viewport_scissor")]
+#[allow(unused_imports)]
+pub use nv_inherited_viewport_scissor::*;
+#[cfg(feature = "nv_memory_decompression")]
+mod nv_memory_decompression;
+#[cfg(feature = "nv_memory_decompression")]
+#[allow(unused_imports)]
+pub use nv_memory_decompression::*;
+#[cfg(feature = "nv_optical_flow")]
+mod nv_optical_flow;
+#[cfg(feature = "nv_optical_flow")]
+#[allow(unused_imports)]
+pub use nv_optical_flow::*;
+#[cfg(feature = "nv_ray_tracing")]
+mod nv_ray_tracing;
+#[cfg(feature = "nv_ray_tracing")]
+#[allow(unused_imports)]
+pub use nv_ray_tracing::*;
+#[cfg(feature = "nv_ray_tracing_motion_blur")]
+mod nv_ray_tracing_motion_blur;
+#[cfg(feature = "nv_ray_tracing_motion_blur")]
+#[allow(unused_imports)]
+pub use nv_ray_tracing_motion_blur::*;
+#[cfg(feature = "nv_shading_rate_image")]
+mod nv_shading_rate_image;
+#[cfg(feature = "nv_shading_rate_image")]
+#[allow(unused_imports)]
+pub use nv_shading_rate_image::*;
+#[cfg(feature = "nv_viewport_swizzle")]
+mod nv_viewport_swizzle;
+#[cfg(feature = "nv_viewport_swizzle")]
+#[allow(unused_imports)]
+pub use nv_viewport_swizzle::*;
+#[cfg(feature = "nv_win32_keyed_mutex")]
+mod nv_win32_keyed_mutex;
+#[cfg(feature = "nv_win32_keyed_mutex")]
+#[allow(unused_imports)]
+pub use nv_win32_keyed_mutex::*;
+#[cfg(feature = "nvx_binary_import")]
+mod nvx_binary_import;
+#[cfg(feature = "nvx_binary_import")]
+#[allow(unused_imports)]
+pub use nvx_binary_import::*;
+#[cfg(feature = "nvx_image_view_handle")]
+mod nvx_image_view_handle;
+#[cfg(feature = "nvx_image_view_handle")]
+#[allow(unused_imports)]
+pub use nvx_image_view_handle::*;
+#[cfg(feature = "qnx_screen_surface")]
+mod qnx_screen_surface;
+#[cfg(feature = "qnx_screen_surface")]
+#[allow(unused_imports)]
+pub use qnx_screen_surface::*;

@@ -190,7 +190,7 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -207,7 +207,7 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -224,8 +224,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -239,8 +239,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -254,8 +254,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -272,8 +272,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -290,8 +290,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -308,8 +308,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -322,6 +322,34 @@ pub fn check_attachment_description(
                 format!(
                     "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
                     v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-synchronization2-06908",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
+                    v.initial_layout
+                ),
+            ),
+        );
+    }
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription-synchronization2-06909",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
+                    v.final_layout
                 ),
             ),
         );
@@ -349,8 +377,8 @@ pub fn check_attachment_reference(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -361,6 +389,20 @@ pub fn check_attachment_reference(
                 format!(
                     "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
                     v.attachment, v.layout
+                ),
+            ),
+        );
+    }
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference-synchronization2-06910",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
+                    v.layout
                 ),
             ),
         );
@@ -515,9 +557,10 @@ pub fn check_buffer_create_info(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_buffer_device_address")
-        || s.exts.named("VK_KHR_buffer_device_address"))
-        && !(s.exts.named("VK_EXT_buffer_device_address")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
+        || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+        && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
         && (v.flags.as_raw() & 16) != 0
         && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
     {
@@ -698,7 +741,7 @@ pub fn check_buffer_view_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkBufferViewCreateInfo-pNext-pNext"),
         Some("VUID-VkBufferViewCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -747,7 +790,7 @@ pub fn check_clear_depth_stencil_value(
     v: &vk::ClearDepthStencilValue,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+    if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
         && ((v.depth as f64).is_nan() || v.depth < 0.0 || (v.depth as f64).is_nan()
             || v.depth > 1.0)
     {
@@ -909,8 +952,21 @@ pub fn check_compute_pipeline_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3")
-        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+    if s.exts.has(origin::VK_NV_RAY_TRACING_MOTION_BLUR)
+        && (v.flags.as_raw() & 1048576) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkComputePipelineCreateInfo-flags-04945",
+                format!(
+                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -919,6 +975,18 @@ pub fn check_compute_pipeline_create_info(
                 "VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875",
                 format!(
                     "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
+    if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && (v.flags.as_raw() & 16777216) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkComputePipelineCreateInfo-flags-07367",
+                format!(
+                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
                     v.flags
                 ),
             ),
@@ -1080,7 +1148,8 @@ pub fn check_descriptor_pool_size(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0
     {
         return Err(
@@ -1147,7 +1216,8 @@ pub fn check_descriptor_set_layout_binding(
         s,
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && !s.feature(|f| f.v13.inline_uniform_block)
         && matches!(v.descriptor_type.as_raw(), 1000138000)
     {
@@ -1161,7 +1231,8 @@ pub fn check_descriptor_set_layout_binding(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {
@@ -1250,7 +1321,7 @@ pub fn check_device_queue_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkDeviceQueueCreateInfo-pNext-pNext"),
         Some("VUID-VkDeviceQueueCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1353,7 +1424,7 @@ pub fn check_event_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkEventCreateInfo-pNext-pNext"),
         Some("VUID-VkEventCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -1471,7 +1542,8 @@ pub fn check_framebuffer_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_imageless_framebuffer"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER))
         && !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0
     {
         return Err(
@@ -1531,8 +1603,21 @@ pub fn check_graphics_pipeline_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3")
-        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+    if s.exts.has(origin::VK_NV_RAY_TRACING_MOTION_BLUR)
+        && (v.flags.as_raw() & 1048576) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkGraphicsPipelineCreateInfo-flags-04947",
+                format!(
+                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
+                    v.flags
+                ),
+            ),
+        );
+    }
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -1546,13 +1631,25 @@ pub fn check_graphics_pipeline_create_info(
             ),
         );
     }
-    if !(s.exts.named("VK_EXT_graphics_pipeline_library")) && v.stage_count == 0 {
+    if !(s.exts.has(origin::VK_EXT_GRAPHICS_PIPELINE_LIBRARY)) && v.stage_count == 0 {
         return Err(
             fail(
                 "VUID-VkGraphicsPipelineCreateInfo-stageCount-06604",
                 format!(
                     "`stageCount` must be greater than `0` (`stageCount` = {:?})", v
                     .stage_count
+                ),
+            ),
+        );
+    }
+    if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && (v.flags.as_raw() & 16777216) != 0
+    {
+        return Err(
+            fail(
+                "VUID-VkGraphicsPipelineCreateInfo-flags-07401",
+                format!(
+                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
+                    v.flags
                 ),
             ),
         );
@@ -2001,7 +2098,7 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if !(s.exts.named("VK_ANDROID_external_memory_android_hardware_buffer"))
+    if !(s.exts.has(origin::VK_ANDROID_EXTERNAL_MEMORY_ANDROID_HARDWARE_BUFFER))
         && matches!(v.format.as_raw(), 0)
     {
         return Err(
@@ -2014,7 +2111,7 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1))
         && (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2)
     {
         return Err(
@@ -2038,7 +2135,7 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0
     {
         return Err(
@@ -2152,7 +2249,8 @@ pub fn check_image_memory_barrier(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2166,7 +2264,8 @@ pub fn check_image_memory_barrier(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_KHR_synchronization2"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2184,7 +2283,7 @@ pub fn check_image_memory_barrier(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkImageMemoryBarrier-pNext-pNext"),
         Some("VUID-VkImageMemoryBarrier-sType-unique"),
     )?;
     Ok(())
@@ -2433,7 +2532,7 @@ pub fn check_memory_allocate_info(
     v: &vk::MemoryAllocateInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if !(s.exts.named("VK_ANDROID_external_memory_android_hardware_buffer"))
+    if !(s.exts.has(origin::VK_ANDROID_EXTERNAL_MEMORY_ANDROID_HARDWARE_BUFFER))
         && v.allocation_size == 0
     {
         return Err(
@@ -2478,8 +2577,8 @@ pub fn check_pipeline_cache_create_info(
         s,
         "VUID-VkPipelineCacheCreateInfo-flags-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_3")
-        || s.exts.named("VK_EXT_pipeline_creation_cache_control"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 1) != 0
     {
@@ -2648,7 +2747,7 @@ pub fn check_pipeline_color_blend_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPipelineColorBlendStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineColorBlendStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2799,7 +2898,7 @@ pub fn check_pipeline_multisample_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPipelineMultisampleStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineMultisampleStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -2843,7 +2942,7 @@ pub fn check_pipeline_rasterization_state_create_info(
             ),
         );
     }
-    if !(s.exts.named("VK_NV_fill_rectangle"))
+    if !(s.exts.has(origin::VK_NV_FILL_RECTANGLE))
         && !s.feature(|f| f.v10.fill_mode_non_solid)
         && !matches!(v.polygon_mode.as_raw(), 0)
     {
@@ -2860,7 +2959,7 @@ pub fn check_pipeline_rasterization_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPipelineRasterizationStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineRasterizationStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -3004,7 +3103,7 @@ pub fn check_pipeline_vertex_input_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPipelineVertexInputStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineVertexInputStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -3029,7 +3128,7 @@ pub fn check_pipeline_viewport_state_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPipelineViewportStateCreateInfo-pNext-pNext"),
         Some("VUID-VkPipelineViewportStateCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -3153,7 +3252,7 @@ pub fn check_query_pool_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkQueryPoolCreateInfo-pNext-pNext"),
         Some("VUID-VkQueryPoolCreateInfo-sType-unique"),
     )?;
     Ok(())
@@ -3727,7 +3826,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -3740,7 +3839,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -3843,7 +3942,7 @@ pub fn check_subpass_description(
             ),
         );
     }
-    if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2") {
+    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_color_attachments, v.color_attachment_count) }
@@ -3866,7 +3965,7 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2") {
+    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
@@ -3889,8 +3988,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -3914,8 +4013,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -3939,8 +4038,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_2")
-        || s.exts.named("VK_KHR_separate_depth_stencil_layouts")
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -3964,7 +4063,70 @@ pub fn check_subpass_description(
             }
         }
     }
-    if !(s.exts.named("VK_HUAWEI_subpass_shading"))
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314001) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06921",
+                        format!(
+                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06922",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription-attachment-06923",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
         return Err(
@@ -4198,8 +4360,8 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1")
-        || s.exts.named("VK_AMD_negative_viewport_height")) && (v.y as f64).is_nan()
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+        || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT)) && (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
     {
         return Err(
@@ -4212,8 +4374,8 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance1")
-        || s.exts.named("VK_AMD_negative_viewport_height"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+        || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT))
         && s
             .limits()
             .is_some_and(|l| {
@@ -4232,7 +4394,7 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+    if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
         && ((v.min_depth as f64).is_nan() || v.min_depth < 0.0
             || (v.min_depth as f64).is_nan() || v.min_depth > 1.0)
     {
@@ -4246,7 +4408,7 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if !(s.exts.named("VK_EXT_depth_range_unrestricted"))
+    if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
         && ((v.max_depth as f64).is_nan() || v.max_depth < 0.0
             || (v.max_depth as f64).is_nan() || v.max_depth > 1.0)
     {
@@ -4301,7 +4463,8 @@ pub fn check_write_descriptor_set(
             );
         }
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.dst_array_element % 4 != 0
     {
@@ -4315,7 +4478,8 @@ pub fn check_write_descriptor_set(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_3") || s.exts.named("VK_EXT_inline_uniform_block"))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {

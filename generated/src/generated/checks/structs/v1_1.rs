@@ -159,7 +159,7 @@ pub fn check_device_group_command_buffer_begin_info(
     v: &vk::DeviceGroupCommandBufferBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
         && v.device_mask == 0
     {
         return Err(
@@ -178,7 +178,7 @@ pub fn check_device_group_render_pass_begin_info(
     v: &vk::DeviceGroupRenderPassBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_device_group"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
         && v.device_mask == 0
     {
         return Err(
@@ -353,7 +353,7 @@ pub fn check_input_attachment_aspect_reference(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && (v.aspect_mask.as_raw() & 8) != 0
     {
         return Err(
@@ -543,7 +543,7 @@ pub fn check_physical_device_memory_properties2(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext"),
         Some("VUID-VkPhysicalDeviceMemoryProperties2-sType-unique"),
     )?;
     Ok(())
@@ -621,7 +621,7 @@ pub fn check_queue_family_properties2(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkQueueFamilyProperties2-pNext-pNext"),
         Some("VUID-VkQueueFamilyProperties2-sType-unique"),
     )?;
     Ok(())
@@ -685,7 +685,7 @@ pub fn check_sampler_ycbcr_conversion_create_info(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext"),
         Some("VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique"),
     )?;
     Ok(())

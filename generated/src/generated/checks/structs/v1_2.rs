@@ -52,7 +52,8 @@ pub fn check_attachment_description2(
         s,
         "VUID-VkAttachmentDescription2-finalLayout-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::COLOR)
@@ -70,7 +71,8 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && matches!(v.final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -83,7 +85,8 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -100,7 +103,8 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -117,7 +121,8 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -134,7 +139,8 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -151,8 +157,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -169,8 +177,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -187,9 +197,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -203,9 +214,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -219,9 +231,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -238,9 +251,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -257,9 +271,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -276,9 +291,10 @@ pub fn check_attachment_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -291,6 +307,38 @@ pub fn check_attachment_description2(
                 format!(
                     "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
                     v.format, v.final_layout
+                ),
+            ),
+        );
+    }
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription2-synchronization2-06908",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
+                    v.initial_layout
+                ),
+            ),
+        );
+    }
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentDescription2-synchronization2-06909",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
+                    v.final_layout
                 ),
             ),
         );
@@ -318,9 +366,10 @@ pub fn check_attachment_description_stencil_layout(
         s,
         "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter",
     )?;
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_initial_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -336,9 +385,10 @@ pub fn check_attachment_description_stencil_layout(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_final_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -354,9 +404,10 @@ pub fn check_attachment_description_stencil_layout(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(v.stencil_final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -381,8 +432,9 @@ pub fn check_attachment_reference2(
         s,
         "VUID-VkAttachmentReference2-layout-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)) && v.attachment != u32::MAX
+        && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
     {
         return Err(
             fail(
@@ -394,9 +446,10 @@ pub fn check_attachment_reference2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -407,6 +460,22 @@ pub fn check_attachment_reference2(
                 format!(
                     "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
                     v.attachment, v.layout
+                ),
+            ),
+        );
+    }
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        && !s.feature(|f| f.v13.synchronization2)
+        && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
+    {
+        return Err(
+            fail(
+                "VUID-VkAttachmentReference2-synchronization2-06910",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
+                    v.layout
                 ),
             ),
         );
@@ -429,9 +498,10 @@ pub fn check_attachment_reference_stencil_layout(
         s,
         "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter",
     )?;
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_layout.as_raw(), 0 | 2..= 4 | 8 | 1000001002 | 1000117000 |
             1000117001 | 1000241000 | 1000241001
@@ -543,7 +613,8 @@ pub fn check_image_stencil_usage_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_EXT_separate_stencil_usage"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_EXT_SEPARATE_STENCIL_USAGE))
         && (v.stencil_usage.as_raw() & 64) != 0
         && (v.stencil_usage.as_raw() & 3997471) != 0
     {
@@ -592,7 +663,7 @@ pub fn check_render_pass_create_info2(
     crate::checks::chain(
         v.p_next,
         s,
-        None,
+        Some("VUID-VkRenderPassCreateInfo2-pNext-pNext"),
         Some("VUID-VkRenderPassCreateInfo2-sType-unique"),
     )?;
     Ok(())
@@ -619,7 +690,8 @@ pub fn check_semaphore_type_create_info(
         s,
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_timeline_semaphore"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
         && !s.feature(|f| f.v12.timeline_semaphore)
         && matches!(v.semaphore_type.as_raw(), 1)
     {
@@ -633,7 +705,8 @@ pub fn check_semaphore_type_create_info(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_timeline_semaphore"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
         && matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0
     {
         return Err(
@@ -710,7 +783,8 @@ pub fn check_subpass_dependency2(
         s,
         "VUID-VkSubpassDependency2-dependencyFlags-parameter",
     )?;
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -723,7 +797,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -737,7 +812,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -750,7 +826,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -764,7 +841,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -777,7 +855,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -790,7 +869,8 @@ pub fn check_subpass_dependency2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0
     {
         return Err(
@@ -826,7 +906,9 @@ pub fn check_subpass_description2(
         s,
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
-    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_input_attachments, v.input_attachment_count) }
@@ -847,7 +929,9 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_color_attachments, v.color_attachment_count) }
@@ -868,7 +952,9 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2") {
+    if s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
@@ -889,7 +975,8 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && s
             .limits()
             .is_some_and(|l| {
@@ -906,8 +993,10 @@ pub fn check_subpass_description2(
             ),
         );
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -931,8 +1020,10 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_maintenance2"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -956,9 +1047,10 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -982,9 +1074,10 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1008,9 +1101,10 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if (s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_2")
-            || s.exts.named("VK_KHR_separate_depth_stencil_layouts"))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_2)
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1034,8 +1128,81 @@ pub fn check_subpass_description2(
             }
         }
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && !(s.exts.named("VK_HUAWEI_subpass_shading")))
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+    {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314001) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06921",
+                        format!(
+                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+    {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06922",
+                        format!(
+                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if (s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+    {
+        for (i, e) in {
+            // SAFETY: the safe setter stored this array and its count.
+            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
+        }
+            .iter()
+            .enumerate()
+        {
+            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
+                return Err(
+                    fail(
+                        "VUID-VkSubpassDescription2-attachment-06923",
+                        format!(
+                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                            i, e.attachment, i, e.layout
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING)))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
         return Err(
@@ -1048,8 +1215,9 @@ pub fn check_subpass_description2(
             ),
         );
     }
-    if ((s.exts.named("VK_VERSION_1_2") || s.exts.named("VK_KHR_create_renderpass2"))
-        && (s.exts.named("VK_VERSION_1_1") || s.exts.named("VK_KHR_multiview")))
+    if ((s.exts.has(origin::VK_VERSION_1_2)
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW)))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
         return Err(
@@ -1105,6 +1273,11 @@ pub fn check_subpass_description_depth_stencil_resolve(
 }
 ///The rules of `VkSubpassEndInfo` that are checked at run time.
 pub fn check_subpass_end_info(v: &vk::SubpassEndInfo<'_>, s: &Scope<'_>) -> Result<()> {
-    crate::checks::chain(v.p_next, s, None, Some("VUID-VkSubpassEndInfo-sType-unique"))?;
+    crate::checks::chain(
+        v.p_next,
+        s,
+        Some("VUID-VkSubpassEndInfo-pNext-pNext"),
+        Some("VUID-VkSubpassEndInfo-sType-unique"),
+    )?;
     Ok(())
 }
