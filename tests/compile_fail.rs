@@ -1,5 +1,6 @@
 //! The static guarantees of the generated wrappers, as programs that must not compile
-//! (trybuild compares each compiler error with the `.stderr` file beside it).
+//! (trybuild compares each compiler error with the `.stderr` file beside it), and
+//! programs that must compile beside them.
 
 #[test]
 fn misuse_does_not_compile() {
@@ -12,6 +13,8 @@ fn misuse_does_not_compile() {
     t.compile_fail("compile_fail/outside_command_in_continuing_secondary.rs");
     t.compile_fail("compile_fail/raw_handle_for_wrapper.rs");
     t.compile_fail("compile_fail/method_with_callers_rules_needs_unsafe.rs");
+    t.compile_fail("compile_fail/command_in_video_coding_scope.rs");
+    t.pass("compile_pass/commands_of_both_scopes_in_video_coding.rs");
     // trybuild builds these programs with tuff's default features, whatever this
     // crate's: Rc, so a handle cannot cross threads. With `multi_thread` wrappers
     // can, which the threaded tests of `soundness.rs` do.

@@ -8,7 +8,7 @@
 //! `*_allocated` and `*_got` finish the wrapper a command returns.
 
 use crate::handles::*;
-use crate::recorder::{Recorder, State};
+use crate::recorder::{Recorder, Scope};
 use crate::retention::{
     BindingRecord, BufferRecord, ImageRecord, LayoutRecord, PipelineRecord, QueryPoolRecord,
     RenderPassRecord, SetLayoutRecord,
@@ -537,7 +537,7 @@ pub(crate) fn reset_fences_checks(device: &Device, fences: &[&Fence]) -> Result<
 }
 
 /// Refuses a pending secondary that may not run twice at once.
-pub(crate) fn cmd_execute_commands_checks<S: State>(
+pub(crate) fn cmd_execute_commands_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
 ) -> Result<()> {
@@ -553,7 +553,7 @@ pub(crate) fn cmd_execute_commands_checks<S: State>(
 }
 
 /// A primary is pending while it may run; so are the secondaries it executes.
-pub(crate) fn cmd_execute_commands_before<S: State>(
+pub(crate) fn cmd_execute_commands_before<S: Scope>(
     recorder: &Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
 ) {
@@ -1266,7 +1266,7 @@ fn check_buffer_use(
 
 /// The records of buffers a recorded command uses, with their usage and binding
 /// checked.
-fn used_buffer<S: State>(
+fn used_buffer<S: Scope>(
     recorder: &Recorder<'_, S>,
     buffer: &Buffer,
     usage: vk::BufferUsageFlags,
@@ -1279,7 +1279,7 @@ fn used_buffer<S: State>(
 }
 
 /// The checks of `vkCmdFillBuffer` that keep the fill inside the buffer.
-pub(crate) fn cmd_fill_buffer_checks<S: State>(
+pub(crate) fn cmd_fill_buffer_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     dst_buffer: &Buffer,
     dst_offset: vk::DeviceSize,
@@ -1325,7 +1325,7 @@ pub(crate) fn cmd_fill_buffer_checks<S: State>(
 }
 
 /// The checks of `vkCmdUpdateBuffer` that keep the update inside the buffer.
-pub(crate) fn cmd_update_buffer_checks<S: State>(
+pub(crate) fn cmd_update_buffer_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     dst_buffer: &Buffer,
     dst_offset: vk::DeviceSize,
@@ -1374,7 +1374,7 @@ type VertexRules = [&'static str; 6];
 
 /// Each binding of `buffers` at `offsets` (and `sizes`, where given) lies inside its
 /// buffer, which has vertex-buffer usage and memory.
-fn check_vertex_bindings<S: State>(
+fn check_vertex_bindings<S: Scope>(
     recorder: &Recorder<'_, S>,
     (first_binding, buffers): (u32, &[&Buffer]),
     offsets: &[vk::DeviceSize],
@@ -1437,7 +1437,7 @@ fn check_vertex_bindings<S: State>(
 }
 
 /// The checks of `vkCmdBindVertexBuffers` that keep each binding inside its buffer.
-pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
+pub(crate) fn cmd_bind_vertex_buffers_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     first_binding: u32,
     buffers: &[&Buffer],
@@ -1461,7 +1461,7 @@ pub(crate) fn cmd_bind_vertex_buffers_checks<S: State>(
 }
 
 /// The checks of `vkCmdBindVertexBuffers2` that keep each binding inside its buffer.
-pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
+pub(crate) fn cmd_bind_vertex_buffers2_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     first_binding: u32,
     buffers: &[&Buffer],
@@ -1489,7 +1489,7 @@ pub(crate) fn cmd_bind_vertex_buffers2_checks<S: State>(
 ///
 /// Registries from 1.4 on (maintenance6) let the buffer be absent: then nothing is
 /// read from it, and there is nothing to check.
-pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
+pub(crate) fn cmd_bind_index_buffer_checks<'b, S: Scope>(
     recorder: &Recorder<'_, S>,
     buffer: impl Into<Option<&'b Buffer>>,
     offset: vk::DeviceSize,
@@ -1541,7 +1541,7 @@ pub(crate) fn cmd_bind_index_buffer_checks<'b, S: State>(
 
 /// The checks of `vkCmdCopyBuffer` that keep the copy inside both buffers: a copy out
 /// of range reads or writes memory the buffers do not own.
-pub(crate) fn cmd_copy_buffer_checks<S: State>(
+pub(crate) fn cmd_copy_buffer_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     src_buffer: &Buffer,
     dst_buffer: &Buffer,
@@ -1654,7 +1654,7 @@ pub(crate) struct PoolFamily {
 
 /// The queue family of the recorder's command pool, as its pool's creation
 /// recorded it (all capabilities, for a pool the wrappers did not record).
-pub(crate) fn pool_family<S: State>(recorder: &Recorder<'_, S>) -> PoolFamily {
+pub(crate) fn pool_family<S: Scope>(recorder: &Recorder<'_, S>) -> PoolFamily {
     let pool = recorder.command_buffer().parent().raw();
     recorder
         .device()
@@ -2180,7 +2180,7 @@ pub(crate) fn get_query_pool_results_checks(
 
 /// The checks of `vkCmdPushConstants` that keep the write inside the layout's
 /// ranges, which the drivers copy into arrays of `maxPushConstantsSize` bytes.
-pub(crate) fn cmd_push_constants_checks<S: State>(
+pub(crate) fn cmd_push_constants_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     layout: &PipelineLayout,
     stage_flags: vk::ShaderStageFlags,
@@ -2269,7 +2269,7 @@ fn check_push_ranges(
 
 /// The checks of `vkCmdBindDescriptorSets` that keep the driver inside the layout's
 /// sets and the dynamic offsets.
-pub(crate) fn cmd_bind_descriptor_sets_checks<S: State>(
+pub(crate) fn cmd_bind_descriptor_sets_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     bind_point: vk::PipelineBindPoint,
     layout: &PipelineLayout,
@@ -2767,7 +2767,7 @@ fn check_scissors(
 }
 
 /// The checks of `vkCmdSetViewport` that keep the viewports inside the driver's array.
-pub(crate) fn cmd_set_viewport_checks<S: State>(
+pub(crate) fn cmd_set_viewport_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     first_viewport: u32,
     viewports: &[vk::Viewport],
@@ -2783,7 +2783,7 @@ pub(crate) fn cmd_set_viewport_checks<S: State>(
 }
 
 /// The checks of `vkCmdSetScissor` that keep the scissors inside the driver's array.
-pub(crate) fn cmd_set_scissor_checks<S: State>(
+pub(crate) fn cmd_set_scissor_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     first_scissor: u32,
     scissors: &[vk::Rect2D],
@@ -2808,7 +2808,7 @@ pub(crate) fn cmd_set_scissor_checks<S: State>(
 
 /// The checks of `vkCmdSetViewportWithCount` that keep the viewports inside the
 /// driver's array.
-pub(crate) fn cmd_set_viewport_with_count_checks<S: State>(
+pub(crate) fn cmd_set_viewport_with_count_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     viewports: &[vk::Viewport],
 ) -> Result<()> {
@@ -2821,7 +2821,7 @@ pub(crate) fn cmd_set_viewport_with_count_checks<S: State>(
 
 /// The checks of `vkCmdSetScissorWithCount` that keep the scissors inside the
 /// driver's array.
-pub(crate) fn cmd_set_scissor_with_count_checks<S: State>(
+pub(crate) fn cmd_set_scissor_with_count_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     scissors: &[vk::Rect2D],
 ) -> Result<()> {
@@ -4145,7 +4145,7 @@ pub(crate) fn graphics_pipelines_created(
 }
 
 /// The recorder remembers the pipeline bound at its bind point.
-pub(crate) fn cmd_bind_pipeline_done<S: State>(
+pub(crate) fn cmd_bind_pipeline_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     pipeline_bind_point: vk::PipelineBindPoint,
     pipeline: &Pipeline,
@@ -4174,7 +4174,7 @@ pub(crate) fn cmd_bind_pipeline_done<S: State>(
 
 /// After `vkCmdBindVertexBuffers2`: the bindings bound, and with strides given, the
 /// vertex input binding stride state set.
-pub(crate) fn cmd_bind_vertex_buffers2_done<S: State>(
+pub(crate) fn cmd_bind_vertex_buffers2_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     first_binding: u32,
     buffers: &[&Buffer],
@@ -4197,7 +4197,7 @@ pub(crate) type Vertices = Option<(u32, u32, u32, u32, &'static str, &'static st
 
 /// Refuses a draw in a render pass instance with a view mask whose last instance
 /// index is past `maxMultiviewInstanceIndex`.
-fn multiview_instances<S: State>(
+fn multiview_instances<S: Scope>(
     recorder: &Recorder<'_, S>,
     first_instance: u32,
     instance_count: u32,
@@ -4228,7 +4228,7 @@ fn multiview_instances<S: State>(
 /// A draw: a graphics pipeline and its sets and vertex buffers bound
 /// ([`bound_pipeline_checks`]), the state it draws with ([`draw_state_checks`]),
 /// and for a direct draw, the vertices it fetches inside the bound vertex buffers.
-pub(crate) fn draw_checks<S: State>(
+pub(crate) fn draw_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
@@ -4266,7 +4266,7 @@ pub(crate) fn draw_checks<S: State>(
 
 /// Refuses a draw that fetches vertices `(first, count)` or instances past the end
 /// of the vertex buffer bound at a binding the bound pipeline's vertex shader reads.
-fn vertex_fetch_checks<S: State>(
+fn vertex_fetch_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     (first_vertex, vertex_count): (u64, u64),
     (first_instance, instance_count): (u32, u32),
@@ -4312,7 +4312,7 @@ fn vertex_fetch_checks<S: State>(
 
 /// `vkCmdSetViewportWithCount` (`bits` its state) or `vkCmdSetScissorWithCount`:
 /// the state is set, with `count` viewports or scissors.
-pub(crate) fn viewport_count_set<S: State>(
+pub(crate) fn viewport_count_set<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     count: usize,
     bits: u32,
@@ -4329,7 +4329,7 @@ pub(crate) fn viewport_count_set<S: State>(
 /// A command that sets a dynamic depth, stencil or rasterizer discard value (`bits`
 /// its state): the value is kept for the checks of draws that write the
 /// depth/stencil attachment.
-pub(crate) fn depth_stencil_set<S: State>(
+pub(crate) fn depth_stencil_set<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     value: crate::recorder::Set,
     bits: u32,
@@ -4339,7 +4339,7 @@ pub(crate) fn depth_stencil_set<S: State>(
 }
 
 /// A dynamic state setting command: the states of `bits` are set.
-pub(crate) fn dynamic_state_set<S: State>(recorder: &mut Recorder<'_, S>, bits: u32) {
+pub(crate) fn dynamic_state_set<S: Scope>(recorder: &mut Recorder<'_, S>, bits: u32) {
     recorder.dynamic.0 |= bits;
     recorder.dynamic.1 |= bits;
     recorder.compute_dynamic |= bits;
@@ -4424,7 +4424,7 @@ pub(crate) const NAMED_STATES: [u32; 5] = {
 /// set before a pipeline bound since had it static), or after a command that set a
 /// state the pipeline has static.
 #[inline]
-fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) -> Result<()> {
+fn draw_state_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &DrawRules) -> Result<()> {
     let Some(pipeline) = &recorder.bound[0].pipeline else {
         return Ok(());
     };
@@ -4486,7 +4486,7 @@ fn draw_state_checks<S: State>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
 
 /// The depth, stencil and rasterizer discard values a draw uses: the bound
 /// pipeline's, or the recording's where the pipeline has them dynamic.
-fn draw_values<S: State>(
+fn draw_values<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
 ) -> crate::recorder::DepthStencil {
@@ -4499,7 +4499,7 @@ fn draw_values<S: State>(
 /// attachments have, or writes depth or stencil where the instance's depth/stencil
 /// attachment has that aspect in a read-only layout (or where its layouts are not
 /// known).
-fn read_only_checks<S: State>(
+fn read_only_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
     rules: &[&'static str; 9],
@@ -4673,7 +4673,7 @@ fn rendering_checks(
 
 /// The recording names `event` in an event command: its submission is checked
 /// against pending submissions to other queues that name it too.
-pub(crate) fn event_recorded<S: State>(recorder: &mut Recorder<'_, S>, event: &Event) {
+pub(crate) fn event_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, event: &Event) {
     let raw = event.raw().as_raw();
     if !recorder.events.contains(&raw) {
         recorder.events.push(raw);
@@ -4681,7 +4681,7 @@ pub(crate) fn event_recorded<S: State>(recorder: &mut Recorder<'_, S>, event: &E
 }
 
 /// After `vkCmdWaitEvents`: the events it names, and the layouts its barriers leave.
-pub(crate) fn wait_events_done<S: State>(
+pub(crate) fn wait_events_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     events: &[&Event],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
@@ -4694,7 +4694,7 @@ pub(crate) fn wait_events_done<S: State>(
 
 /// After `vkCmdWaitEvents2`: the events it names, and the layouts its dependencies
 /// leave.
-pub(crate) fn wait_events2_done<S: State>(
+pub(crate) fn wait_events2_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     events: &[&Event],
     dependency_infos: &[DependencyInfo<'_>],
@@ -4706,7 +4706,7 @@ pub(crate) fn wait_events2_done<S: State>(
 }
 
 /// The recorder remembers the layouts of the sets bound at their numbers.
-pub(crate) fn cmd_bind_descriptor_sets_done<S: State>(
+pub(crate) fn cmd_bind_descriptor_sets_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     pipeline_bind_point: vk::PipelineBindPoint,
     first_set: u32,
@@ -4771,7 +4771,7 @@ fn used_images(
 /// Refuses a draw or dispatch whose pipeline's shaders read push constants that were
 /// not all pushed, with a layout compatible for push constants with the pipeline's,
 /// unless the device enabled `maintenance4` (which lets them read undefined values).
-fn push_constant_checks<S: State>(
+fn push_constant_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
     vuid: &'static str,
@@ -4808,7 +4808,7 @@ fn push_constant_checks<S: State>(
 /// After `vkCmdPushConstants`: its bytes are set, for the layouts compatible for
 /// push constants with `layout`; a push with a layout of other ranges leaves the
 /// earlier bytes undefined.
-pub(crate) fn cmd_push_constants_done<S: State>(
+pub(crate) fn cmd_push_constants_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     layout: &PipelineLayout,
     offset: u32,
@@ -4914,7 +4914,7 @@ fn view_features2(
 /// or image is alive (which resources its pipeline reaches is not followed).
 /// Without protectedMemory no protected object can be made (their creation checks
 /// the feature), so nothing is refused.
-fn protected_checks<S: State>(
+fn protected_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     vuid: &'static str,
     in_protected: &'static str,
@@ -5014,7 +5014,7 @@ fn written_checks(
 /// not the one the recording's earlier commands leave its subresources in, or
 /// which names an attachment of the render pass instance (whose layout in each
 /// subpass the recorder does not follow).
-fn descriptor_layout_checks<S: State>(
+fn descriptor_layout_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     bound: &crate::recorder::Bound,
 ) -> Result<()> {
@@ -5052,7 +5052,7 @@ fn descriptor_layout_checks<S: State>(
 /// A draw or dispatch reads its sets' image descriptors in the layouts they state:
 /// subresources the recording has not touched need those layouts at its start,
 /// which its submission checks.
-pub(crate) fn descriptor_layouts_used<S: State>(
+pub(crate) fn descriptor_layouts_used<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     bind_point: vk::PipelineBindPoint,
 ) {
@@ -5084,7 +5084,7 @@ pub(crate) fn descriptor_layouts_used<S: State>(
 /// A dispatch's state checks ([`bound_pipeline_checks`]), once per state, and no
 /// dynamic state set since its compute pipeline was bound (`static_unset`: the
 /// pipeline has every state static).
-pub(crate) fn dispatch_checks<S: State>(
+pub(crate) fn dispatch_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
@@ -5116,7 +5116,7 @@ pub(crate) fn dispatch_checks<S: State>(
 /// the descriptors and push constants its shaders read ([`bound_descriptor_checks`],
 /// [`push_constant_checks`]), and its image descriptors in their layouts. Which sets the shaders use is not known here, so every set of the layout
 /// must be bound: a program that leaves an unused set unbound is refused too.
-fn bound_pipeline_checks<S: State>(
+fn bound_pipeline_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     bind_point: vk::PipelineBindPoint,
     pipeline_vuid: &'static str,
@@ -5455,7 +5455,7 @@ fn texel_buffer_checks(
 /// The images of the current subpass's attachments (those of the dynamic
 /// rendering's views), or `None` where the recorder does not know them (a
 /// secondary that continues an instance).
-fn attachment_images<S: State>(recorder: &Recorder<'_, S>) -> Option<Vec<vk::Image>> {
+fn attachment_images<S: Scope>(recorder: &Recorder<'_, S>) -> Option<Vec<vk::Image>> {
     let instance = recorder.instance.as_ref()?;
     if instance.dynamic {
         return instance.rendering_images.clone();
@@ -5493,7 +5493,7 @@ fn overlaps(a: &crate::retention::Binding, b: &crate::retention::Binding) -> boo
 /// `COLOR_ATTACHMENT_BLEND` (04727). Where the attachments are not known (a
 /// secondary continuing an instance without its framebuffer), a draw whose shaders
 /// declare a descriptor of memory is refused.
-fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRules) -> Result<()> {
+fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRules) -> Result<()> {
     use crate::retention::SlotKind;
     use crate::spirv::ResourceKind as K;
     let (Some(instance), Some(pipeline)) = (&recorder.instance, &recorder.bound[0].pipeline) else {
@@ -5592,7 +5592,7 @@ fn attachment_checks<S: State>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
 /// format's features lack `COLOR_ATTACHMENT_BLEND` (unless it discards
 /// rasterization). The features are those of optimal tiling, and of linear tiling
 /// too where an attachment's image is linear or the attachments are not known.
-fn blend_checks<S: State>(
+fn blend_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     instance: &crate::recorder::PassInstance,
     pipeline: &PipelineRecord,
@@ -5642,7 +5642,7 @@ fn blend_checks<S: State>(
 
 /// The recorder remembers the vertex-buffer bindings bound (the first 64, the ones
 /// a pipeline's record names).
-pub(crate) fn cmd_bind_vertex_buffers_done<S: State>(
+pub(crate) fn cmd_bind_vertex_buffers_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     first_binding: u32,
     buffers: &[&Buffer],
@@ -5686,7 +5686,7 @@ pub(crate) fn cmd_bind_vertex_buffers_done<S: State>(
 }
 
 /// Refuses a pipeline bound at a bind point of another kind.
-pub(crate) fn cmd_bind_pipeline_checks<S: State>(
+pub(crate) fn cmd_bind_pipeline_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline_bind_point: vk::PipelineBindPoint,
     pipeline: &Pipeline,
@@ -5762,7 +5762,7 @@ pub(crate) fn cmd_bind_pipeline_checks<S: State>(
 
 /// The recorder remembers the index buffer bound: its size, the offset and the index
 /// type, which indexed draws are checked against.
-pub(crate) fn cmd_bind_index_buffer_done<'b, S: State>(
+pub(crate) fn cmd_bind_index_buffer_done<'b, S: Scope>(
     recorder: &mut Recorder<'_, S>,
     buffer: impl Into<Option<&'b Buffer>>,
     offset: vk::DeviceSize,
@@ -5795,7 +5795,7 @@ pub(crate) type IndexedRange = (
 /// does not know, so the vertices are those of every index the index type holds (an
 /// index buffer any safe program can fill); a device with `robustBufferAccess`
 /// enabled keeps every fetch inside the bound range instead, and nothing is refused.
-fn indexed_fetch_checks<S: State>(
+fn indexed_fetch_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     ty: vk::IndexType,
     vertex_offset: i32,
@@ -5837,7 +5837,7 @@ fn indexed_fetch_checks<S: State>(
 /// buffer bound (07312), and, for a direct draw (`range`: index count, first index and
 /// the rule), the indices it reads inside that buffer. Whether robustBufferAccess2 is
 /// enabled is not known here, so the range is checked whatever it is.
-pub(crate) fn indexed_draw_checks<S: State>(
+pub(crate) fn indexed_draw_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     pipeline_vuid: &'static str,
     sets_vuid: &'static str,
@@ -6627,7 +6627,7 @@ fn check_buffer_image_regions(
 /// each region against the image (its type, format, texel blocks, subresources,
 /// the queue family's granularity), protected memory, the overlap of the two
 /// bindings, and the buffer's end (`range_vuid`).
-fn check_buffer_image_copy<S: State>(
+fn check_buffer_image_copy<S: Scope>(
     recorder: &Recorder<'_, S>,
     (buffer, image): (vk::Buffer, vk::Image),
     regions: &[copies::Region],
@@ -6658,7 +6658,7 @@ fn check_buffer_image_copy<S: State>(
 }
 
 /// Refuses a copy from a buffer into an image that breaks a rule of its regions.
-pub(crate) fn cmd_copy_buffer_to_image_checks<S: State>(
+pub(crate) fn cmd_copy_buffer_to_image_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     src_buffer: &Buffer,
     dst_image: &Image,
@@ -6678,7 +6678,7 @@ pub(crate) fn cmd_copy_buffer_to_image_checks<S: State>(
 }
 
 /// Refuses a copy from an image into a buffer that breaks a rule of its regions.
-pub(crate) fn cmd_copy_image_to_buffer_checks<S: State>(
+pub(crate) fn cmd_copy_image_to_buffer_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     src_image: &Image,
     dst_buffer: &Buffer,
@@ -6698,7 +6698,7 @@ pub(crate) fn cmd_copy_image_to_buffer_checks<S: State>(
 }
 
 /// As [`cmd_copy_buffer_to_image_checks`], for `vkCmdCopyBufferToImage2`.
-pub(crate) fn cmd_copy_buffer_to_image2_checks<S: State>(
+pub(crate) fn cmd_copy_buffer_to_image2_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     info: &CopyBufferToImageInfo2<'_>,
 ) -> Result<()> {
@@ -6719,7 +6719,7 @@ pub(crate) fn cmd_copy_buffer_to_image2_checks<S: State>(
 }
 
 /// As [`cmd_copy_image_to_buffer_checks`], for `vkCmdCopyImageToBuffer2`.
-pub(crate) fn cmd_copy_image_to_buffer2_checks<S: State>(
+pub(crate) fn cmd_copy_image_to_buffer2_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     info: &CopyImageToBufferInfo2<'_>,
 ) -> Result<()> {
@@ -7625,7 +7625,7 @@ pub(crate) fn image_requirements2_planes(
 }
 
 /// A reset of queries inside the pool.
-pub(crate) fn cmd_reset_query_pool_range<S: State>(
+pub(crate) fn cmd_reset_query_pool_range<S: Scope>(
     recorder: &Recorder<'_, S>,
     query_pool: &QueryPool,
     first_query: u32,
@@ -7773,7 +7773,7 @@ pub(crate) fn render_pass2_created(
 }
 
 /// The recorder enters subpass 0 of the render pass it begins.
-pub(crate) fn render_pass_begun<S: State>(
+pub(crate) fn render_pass_begun<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     layout_vuid: &'static str,
@@ -7814,7 +7814,7 @@ pub(crate) fn render_pass_begun<S: State>(
 /// Refuses a render pass instance that suspends or resumes: which commands run
 /// between a suspended instance and the one that resumes it, across command buffers
 /// and batches, is not followed, so a submission could not check its rules.
-pub(crate) fn begin_rendering_checks<S: State>(
+pub(crate) fn begin_rendering_checks<S: Scope>(
     _recorder: &Recorder<'_, S>,
     rendering_info: &RenderingInfo<'_>,
 ) -> Result<()> {
@@ -7828,7 +7828,7 @@ pub(crate) fn begin_rendering_checks<S: State>(
 }
 
 /// The recorder enters dynamic rendering (one subpass, the info's view mask).
-pub(crate) fn rendering_begun<S: State>(
+pub(crate) fn rendering_begun<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     rendering_info: &RenderingInfo<'_>,
 ) {
@@ -7891,7 +7891,7 @@ pub(crate) fn rendering_begun<S: State>(
 }
 
 /// A next subpass exists.
-pub(crate) fn next_subpass_checks<S: State>(
+pub(crate) fn next_subpass_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     vuid: &'static str,
 ) -> Result<()> {
@@ -7909,7 +7909,7 @@ pub(crate) fn next_subpass_checks<S: State>(
 }
 
 /// The recorder moves to the next subpass.
-pub(crate) fn next_subpass_done<S: State>(recorder: &mut Recorder<'_, S>) {
+pub(crate) fn next_subpass_done<S: Scope>(recorder: &mut Recorder<'_, S>) {
     let Some(i) = recorder.instance.take() else {
         return;
     };
@@ -7935,7 +7935,7 @@ pub(crate) fn next_subpass_done<S: State>(recorder: &mut Recorder<'_, S>) {
 /// would leave broken: the queries begun inside the instance, and the subpasses not
 /// yet visited. The recorder is poisoned by then, so the buffer is not submittable,
 /// but the driver only ever sees a valid end.
-fn repair_instance_end<S: State>(recorder: &mut Recorder<'_, S>, next_subpasses: bool) {
+fn repair_instance_end<S: Scope>(recorder: &mut Recorder<'_, S>, next_subpasses: bool) {
     let raw = recorder.raw();
     let fns = recorder.device().fns().fp_v1_0().clone();
     let inside: Vec<crate::recorder::ActiveQuery> = recorder
@@ -7963,7 +7963,7 @@ fn repair_instance_end<S: State>(recorder: &mut Recorder<'_, S>, next_subpasses:
 /// A render pass instance ends in its last subpass, with every query begun inside
 /// it ended; where not, the recorder is refused and repaired
 /// ([`repair_instance_end`]).
-pub(crate) fn end_render_pass_checks<S: State>(
+pub(crate) fn end_render_pass_checks<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     (last, queries): (&'static str, &'static str),
 ) -> Result<()> {
@@ -7998,7 +7998,7 @@ pub(crate) fn end_render_pass_checks<S: State>(
 
 /// Dynamic rendering ends with every query begun inside it ended (repaired as
 /// [`end_render_pass_checks`] repairs).
-pub(crate) fn end_rendering_checks<S: State>(recorder: &mut Recorder<'_, S>) -> Result<()> {
+pub(crate) fn end_rendering_checks<S: Scope>(recorder: &mut Recorder<'_, S>) -> Result<()> {
     if recorder.queries.iter().any(|q| q.subpass.is_some()) {
         repair_instance_end(recorder, false);
         return refuse(
@@ -8012,14 +8012,14 @@ pub(crate) fn end_rendering_checks<S: State>(recorder: &mut Recorder<'_, S>) -> 
 }
 
 /// The recorder leaves the render pass instance.
-pub(crate) fn instance_ended<S: State>(recorder: &mut Recorder<'_, S>) {
+pub(crate) fn instance_ended<S: Scope>(recorder: &mut Recorder<'_, S>) {
     recorder.instance = None;
 }
 
 /// A query begins inside its pool, on a queue that can run it, while no other
 /// query of its type is active, at an index that leaves room for the subpass's
 /// views.
-pub(crate) fn begin_query_checks<S: State>(
+pub(crate) fn begin_query_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,
@@ -8107,7 +8107,7 @@ pub(crate) fn begin_query_checks<S: State>(
 }
 
 /// The recorder remembers the active query.
-pub(crate) fn begin_query_done<S: State>(
+pub(crate) fn begin_query_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,
@@ -8128,7 +8128,7 @@ pub(crate) fn begin_query_done<S: State>(
 
 /// A query ends where it was begun: active in this recording, in the same subpass,
 /// or outside a render pass instance if begun outside.
-pub(crate) fn end_query_checks<S: State>(
+pub(crate) fn end_query_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,
@@ -8190,7 +8190,7 @@ pub(crate) fn end_query_checks<S: State>(
 }
 
 /// The recorder forgets the ended query.
-pub(crate) fn end_query_done<S: State>(
+pub(crate) fn end_query_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,

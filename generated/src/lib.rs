@@ -76,7 +76,10 @@ pub use debug_log::MessageLog;
 pub use frames::{Frame, FramesInFlight};
 pub use handles::*;
 pub use mapping::MappedMemory;
-pub use recorder::{InRenderPass, InRendering, Inside, Outside, Recorder, State};
+pub use recorder::{
+    InRenderPass, InRendering, InVideoCoding, Inside, Outside, OutsideRenderPass, Recorder, Scope,
+    State,
+};
 pub use spirv::spirv_words;
 pub use structs::*;
 pub use support::*;

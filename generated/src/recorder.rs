@@ -1,6 +1,7 @@
 //! Command-buffer recording as types: commands exist only on a [`Recorder`], which
 //! only [`CommandBuffer::begin`] makes, and render-pass-only commands exist only on a
-//! recorder inside a render pass. Whatever a recorded command refers to is kept
+//! recorder inside a render pass (video coding commands likewise inside a video
+//! coding scope). Whatever a recorded command refers to is kept
 //! alive by the command buffer, and by the fence of every submission of it.
 
 use crate::handles::{CommandBuffer, Device};
@@ -11,10 +12,18 @@ use ash::vk;
 use core::marker::PhantomData;
 use tuff_runtime::{Retained, Vrc};
 
-/// A recording state.
-pub trait State {}
+/// Any recording state, inside a video coding scope or not: the commands Vulkan
+/// allows in both exist on a recorder in any [`Scope`].
+pub trait Scope {}
+/// A recording state outside any video coding scope: every state but
+/// [`InVideoCoding`]. Most commands exist only here (`VUID-*-videocoding`), so code
+/// generic over the state a draw or a bind is recorded in names this bound.
+pub trait State: Scope {}
 /// A state inside a render pass instance (a render pass or dynamic rendering).
 pub trait Inside: State {}
+/// A state outside any render pass instance: [`Outside`], or inside a video coding
+/// scope, which is never in a render pass instance.
+pub trait OutsideRenderPass: Scope {}
 
 /// Recording, outside any render pass instance.
 #[derive(Debug)]
@@ -25,6 +34,10 @@ pub struct InRenderPass;
 /// Recording inside dynamic rendering begun with `cmd_begin_rendering`.
 #[derive(Debug)]
 pub struct InRendering;
+/// Recording inside a video coding scope begun with `cmd_begin_video_coding_khr`:
+/// video commands, and those Vulkan allows in both.
+#[derive(Debug)]
+pub struct InVideoCoding;
 /// Recording a secondary command buffer that continues a render pass instance begun
 /// in the primary that executes it ([`CommandBuffer::begin_continuing`]): commands
 /// of a render pass instance, but neither its end nor its next subpass.
@@ -35,9 +48,16 @@ impl State for Outside {}
 impl State for InRenderPass {}
 impl State for InRendering {}
 impl State for Continuing {}
+impl Scope for Outside {}
+impl Scope for InRenderPass {}
+impl Scope for InRendering {}
+impl Scope for Continuing {}
+impl Scope for InVideoCoding {}
 impl Inside for InRenderPass {}
 impl Inside for InRendering {}
 impl Inside for Continuing {}
+impl OutsideRenderPass for Outside {}
+impl OutsideRenderPass for InVideoCoding {}
 
 /// Tells the buffer's lifecycle state when its recorder goes, however it goes.
 struct Alive(Vrc<Uses>);
@@ -367,7 +387,7 @@ pub(crate) struct ActiveQuery {
 /// # Ok(()) }
 /// ```
 #[must_use = "a command buffer must be ended before it is submitted"]
-pub struct Recorder<'c, S: State> {
+pub struct Recorder<'c, S: Scope> {
     cb: &'c mut CommandBuffer,
     /// The command buffer's device and raw handle, held here so a recorded command
     /// reaches ash's table in one step instead of through the pool.
@@ -644,7 +664,7 @@ impl CommandBuffer {
     }
 }
 
-impl<'c, S: State> Recorder<'c, S> {
+impl<'c, S: Scope> Recorder<'c, S> {
     /// The raw command buffer.
     #[inline]
     pub fn raw(&self) -> vk::CommandBuffer {
@@ -759,7 +779,7 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(record)
     }
 
-    pub(crate) fn into_state<T: State>(self) -> Recorder<'c, T> {
+    pub(crate) fn into_state<T: Scope>(self) -> Recorder<'c, T> {
         Recorder {
             cb: self.cb,
             device: self.device,

@@ -4,7 +4,7 @@
 //! each other, the queue family and the render pass instance it is recorded in.
 
 use super::{pool_family, refuse, stages};
-use crate::recorder::{Recorder, State};
+use crate::recorder::{Recorder, Scope};
 use crate::structs::{BufferMemoryBarrier, ImageMemoryBarrier, MemoryBarrier};
 use crate::Result;
 use ash::vk;
@@ -171,7 +171,7 @@ fn check_families(
 
 /// The checks of the buffer and image barriers a pipeline barrier or an event
 /// wait records, against the resources they name.
-pub(crate) fn check_barrier_structs<S: State>(
+pub(crate) fn check_barrier_structs<S: Scope>(
     recorder: &Recorder<'_, S>,
     buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
@@ -287,7 +287,7 @@ pub(crate) fn check_barrier_structs<S: State>(
 /// family and the access types, the dependency flags and barriers against the
 /// render pass instance it is recorded in, or outside one.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn check_pipeline_barrier<S: State>(
+pub(crate) fn check_pipeline_barrier<S: Scope>(
     recorder: &Recorder<'_, S>,
     src_stage_mask: vk::PipelineStageFlags,
     dst_stage_mask: vk::PipelineStageFlags,
@@ -497,7 +497,7 @@ pub(crate) fn check_pipeline_barrier<S: State>(
 /// The checks of a pipeline barrier: its own, its barriers', and the layouts its
 /// image barriers move from.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn pipeline_barrier_checks<S: State>(
+pub(crate) fn pipeline_barrier_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     src_stage_mask: vk::PipelineStageFlags,
     dst_stage_mask: vk::PipelineStageFlags,
@@ -521,7 +521,7 @@ pub(crate) fn pipeline_barrier_checks<S: State>(
 
 /// The checks of an event wait's barriers, and the layouts its image barriers move
 /// from.
-pub(crate) fn wait_events_checks<S: State>(
+pub(crate) fn wait_events_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],

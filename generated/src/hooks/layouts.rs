@@ -4,7 +4,7 @@
 
 use crate::handles::{CommandBuffer, Device, Framebuffer};
 use crate::layouts::Sel;
-use crate::recorder::{Recorder, State};
+use crate::recorder::{Recorder, Scope};
 use crate::structs::{
     BlitImageInfo2, CopyBufferToImageInfo2, CopyImageInfo2, CopyImageToBufferInfo2, DependencyInfo,
     FramebufferCreateInfo, ImageMemoryBarrier, RenderPassBeginInfo, ResolveImageInfo2,
@@ -85,7 +85,7 @@ fn dependency_barriers<'i>(
 }
 
 /// Refuses layouts that the recording's earlier commands leave otherwise.
-fn check<S: State>(recorder: &Recorder<'_, S>, named: &[Named]) -> Result<()> {
+fn check<S: Scope>(recorder: &Recorder<'_, S>, named: &[Named]) -> Result<()> {
     for (image, sel, need, _, vuid) in named {
         recorder.layouts.check(*image, *sel, *need, vuid)?;
     }
@@ -93,7 +93,7 @@ fn check<S: State>(recorder: &Recorder<'_, S>, named: &[Named]) -> Result<()> {
 }
 
 /// Records what the layouts need and become.
-fn record<S: State>(recorder: &mut Recorder<'_, S>, named: &[Named]) {
+fn record<S: Scope>(recorder: &mut Recorder<'_, S>, named: &[Named]) {
     let (live, layouts) = recorder.layouts_mut();
     for (image, sel, need, leave, vuid) in named {
         layouts.require(live, *image, *sel, *need, vuid);
@@ -111,7 +111,7 @@ fn barriers(image_memory_barriers: &[ImageMemoryBarrier<'_>], ours: u32) -> Vec<
 }
 
 /// Refuses image barriers whose `oldLayout` is not the layout the recording leaves.
-pub(crate) fn cmd_pipeline_barrier_checks<S: State>(
+pub(crate) fn cmd_pipeline_barrier_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) -> Result<()> {
@@ -120,7 +120,7 @@ pub(crate) fn cmd_pipeline_barrier_checks<S: State>(
 }
 
 /// The recording follows the layout transitions of image barriers.
-pub(crate) fn cmd_pipeline_barrier_done<S: State>(
+pub(crate) fn cmd_pipeline_barrier_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) {
@@ -129,7 +129,7 @@ pub(crate) fn cmd_pipeline_barrier_done<S: State>(
 }
 
 /// As [`cmd_pipeline_barrier_checks`], for the barriers of dependency infos.
-pub(crate) fn dependency_checks<S: State>(
+pub(crate) fn dependency_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     infos: &[DependencyInfo<'_>],
 ) -> Result<()> {
@@ -138,7 +138,7 @@ pub(crate) fn dependency_checks<S: State>(
 }
 
 /// As [`cmd_pipeline_barrier_done`], for the barriers of dependency infos.
-pub(crate) fn dependency_done<S: State>(
+pub(crate) fn dependency_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     infos: &[DependencyInfo<'_>],
 ) {
@@ -333,7 +333,7 @@ impl Names<'_> {
 /// Refuses a command that names a layout the recording's earlier commands leave
 /// its subresources out of, or (for the commands that name subresources with
 /// `VkImageSubresourceLayers`) color with depth or stencil.
-pub(crate) fn image_layout_checks<S: State>(
+pub(crate) fn image_layout_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     names: Names<'_>,
 ) -> Result<()> {
@@ -356,12 +356,12 @@ pub(crate) fn image_layout_checks<S: State>(
 }
 
 /// The recording needs the layouts a command names.
-pub(crate) fn image_layouts_named<S: State>(recorder: &mut Recorder<'_, S>, names: Names<'_>) {
+pub(crate) fn image_layouts_named<S: Scope>(recorder: &mut Recorder<'_, S>, names: Names<'_>) {
     record(recorder, &names.named());
 }
 
 /// Refuses secondaries that need layouts the recording leaves otherwise.
-pub(crate) fn execute_layout_checks<S: State>(
+pub(crate) fn execute_layout_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
 ) -> Result<()> {
@@ -376,7 +376,7 @@ pub(crate) fn execute_layout_checks<S: State>(
 }
 
 /// The recording executes the secondaries' commands, and their layouts.
-pub(crate) fn execute_layouts_done<S: State>(
+pub(crate) fn execute_layouts_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
 ) {
@@ -526,7 +526,7 @@ fn attachments(
 
 /// Refuses a render pass instance whose attachments' initial layouts are not the
 /// layouts the recording's earlier commands leave them in.
-pub(crate) fn render_pass_layout_checks<S: State>(
+pub(crate) fn render_pass_layout_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     vuid: &'static str,
@@ -537,7 +537,7 @@ pub(crate) fn render_pass_layout_checks<S: State>(
 
 /// The recording needs the attachments in their initial layouts, and leaves them
 /// in their final ones.
-pub(crate) fn render_pass_layouts<S: State>(
+pub(crate) fn render_pass_layouts<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     vuid: &'static str,

@@ -3,7 +3,7 @@
 //! pass gives an attachment against the usage of the framebuffer's view.
 
 use super::refuse;
-use crate::recorder::{Recorder, State};
+use crate::recorder::{Recorder, Scope};
 use crate::structs::RenderPassBeginInfo;
 use crate::Result;
 use ash::vk;
@@ -141,7 +141,7 @@ pub(crate) const BEGIN2: BeginRules = BeginRules {
 /// The checks of a render pass instance's begin: the render area inside the
 /// framebuffer, enough clear values, the usage each attachment's layouts need,
 /// and (through [`super::layouts`]) the attachments' current layouts.
-pub(crate) fn begin_render_pass_checks<S: State>(
+pub(crate) fn begin_render_pass_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     rules: &BeginRules,
@@ -271,7 +271,7 @@ pub(crate) fn begin_render_pass_checks<S: State>(
 /// The rules of a chained `VkDeviceGroupRenderPassBeginInfo`: its device mask
 /// against the device's physical devices and the command buffer's initial mask, and
 /// each device's render area against the framebuffer and its limits.
-fn check_device_group<S: State>(
+fn check_device_group<S: Scope>(
     recorder: &Recorder<'_, S>,
     g: &vk::DeviceGroupRenderPassBeginInfo<'_>,
     framebuffer: Option<[u32; 3]>,

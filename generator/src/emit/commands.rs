@@ -222,6 +222,25 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let table = ident(&format!("fp_v1_{m}"));
             (quote!(let fp = #device_path.fns().#table().#f;), false)
         }
+        // A method that moves the recorder returns the next one, not a `Result`: a
+        // missing table poisons the recorder (its `end` returns the error), and a
+        // begin not recorded makes its end a no-op.
+        Some(Table::Extension(e)) if plan.transition.is_some() => {
+            let fe = ident(&crate::names::feature(&e));
+            let skip = matches!(plan.transition, Some(Transition::Begin(_)))
+                .then(|| quote!(self.skip_begin(true);));
+            (
+                quote! {
+                    let Some(table) = #device_path.ext().#fe.as_ref() else {
+                        let _ = self.accept(Err(Error::ExtensionNotEnabled(#e)));
+                        #skip
+                        return self.into_state();
+                    };
+                    let fp = table.#f;
+                },
+                false,
+            )
+        }
         Some(Table::Extension(e)) => {
             let fe = ident(&crate::names::feature(&e));
             (
@@ -998,6 +1017,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // A transition that keeps nothing (the ends of a render pass) does not
         // change the recorder it consumes before handing it on.
         let unchecked_self = if transition.is_some()
+            && !body.to_string().contains("self . accept")
             && !body.to_string().contains("self . retain")
             && !body.to_string().contains("& mut self")
         {
@@ -1079,9 +1099,22 @@ fn impl_header(plan: &Plan, cmd: &CommandDef, cfg: &Option<TokenStream>) -> Toke
                     let from = ident(from.type_name());
                     quote!(impl<'c> Recorder<'c, #from>)
                 }
-                (_, Some("inside")) => quote!(impl<'c, S: Inside> Recorder<'c, S>),
-                (_, Some("outside")) => quote!(impl<'c> Recorder<'c, Outside>),
-                _ => quote!(impl<'c, S: State> Recorder<'c, S>),
+                // A video coding scope is never inside a render pass instance: its
+                // state is a fourth one, and the command's two attributes together
+                // pick the states that have it.
+                (_, renderpass) => match (renderpass, cmd.videocoding.as_deref()) {
+                    (Some("inside"), _) => quote!(impl<'c, S: Inside> Recorder<'c, S>),
+                    (Some("outside"), Some("inside")) => {
+                        quote!(impl<'c> Recorder<'c, InVideoCoding>)
+                    }
+                    (Some("outside"), Some("both")) => {
+                        quote!(impl<'c, S: OutsideRenderPass> Recorder<'c, S>)
+                    }
+                    (Some("outside"), _) => quote!(impl<'c> Recorder<'c, Outside>),
+                    (_, Some("inside")) => quote!(impl<'c> Recorder<'c, InVideoCoding>),
+                    (_, Some("both")) => quote!(impl<'c, S: Scope> Recorder<'c, S>),
+                    _ => quote!(impl<'c, S: State> Recorder<'c, S>),
+                },
             };
             quote!(#cfg #state)
         }

@@ -93,7 +93,8 @@ pub struct SameLen {
     pub optional: bool,
 }
 
-/// A recorder's render-pass state, as the recorder's type parameter names it.
+/// A recorder's render-pass or video-coding state, as the recorder's type parameter
+/// names it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RecorderState {
     /// `Outside`: no render pass instance.
@@ -102,6 +103,9 @@ pub enum RecorderState {
     InRenderPass,
     /// `InRendering`: inside dynamic rendering.
     InRendering,
+    /// `InVideoCoding`: inside a video coding scope begun by
+    /// `vkCmdBeginVideoCodingKHR`.
+    InVideoCoding,
 }
 
 impl RecorderState {
@@ -111,6 +115,7 @@ impl RecorderState {
             RecorderState::Outside => "Outside",
             RecorderState::InRenderPass => "InRenderPass",
             RecorderState::InRendering => "InRendering",
+            RecorderState::InVideoCoding => "InVideoCoding",
         }
     }
 }
@@ -140,6 +145,8 @@ const TRANSITIONS: &[(&str, Transition)] = {
         ("vkCmdEndRendering", End(InRendering)),
         ("vkCmdNextSubpass", Within(InRenderPass)),
         ("vkCmdNextSubpass2", Within(InRenderPass)),
+        ("vkCmdBeginVideoCodingKHR", Begin(InVideoCoding)),
+        ("vkCmdEndVideoCodingKHR", End(InVideoCoding)),
     ]
 };
 

@@ -225,6 +225,10 @@ fn implicit(
                 "no video coding scope can begin: the emitted API has no `vkCmdBeginVideoCodingKHR`"
                     .into(),
             ),
+            K::VideoCoding => Settlement::Static(
+                "the method exists only on a `Recorder` in the video-coding state the command needs"
+                    .into(),
+            ),
             K::Recording => Settlement::Static(
                 "the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes"
                     .into(),

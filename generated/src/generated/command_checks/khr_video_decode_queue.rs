@@ -3,7 +3,7 @@
 //!The dynamic checks of the commands of `VK_KHR_VIDEO_DECODE_QUEUE`.
 use super::*;
 #[cfg(feature = "khr_video_decode_queue")]
-impl<'c> Recorder<'c, Outside> {
+impl<'c> Recorder<'c, InVideoCoding> {
     ///The dynamic checks of [`Self::cmd_decode_video_khr`], run before the call.
     pub(crate) fn validate_cmd_decode_video_khr<'a>(
         &self,

@@ -104,6 +104,9 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_video_begin_coding_info_khr(begin_info, s)?;
         Ok(())
     }
+}
+#[cfg(feature = "khr_video_queue")]
+impl<'c> Recorder<'c, InVideoCoding> {
     ///The dynamic checks of [`Self::cmd_control_video_coding_khr`], run before the call.
     pub(crate) fn validate_cmd_control_video_coding_khr<'a>(
         &self,

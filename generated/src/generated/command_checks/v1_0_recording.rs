@@ -2,7 +2,7 @@
 
 //!The dynamic checks of the commands of Vulkan 1.0, recorded into command buffers.
 use super::*;
-impl<'c, S: State> Recorder<'c, S> {
+impl<'c, S: Scope> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_begin_query`], run before the call.
     pub(crate) fn validate_cmd_begin_query(
         &self,
@@ -38,187 +38,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_descriptor_sets`], run before the call.
-    pub(crate) fn validate_cmd_bind_descriptor_sets(
-        &self,
-        pipeline_bind_point: vk::PipelineBindPoint,
-        layout: &PipelineLayout,
-        descriptor_sets: &[&DescriptorSet],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_pipeline_bind_point(
-            pipeline_bind_point,
-            s,
-            "VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if descriptor_sets.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
-                    "`descriptorSetCount` is 0".into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        for h in descriptor_sets.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindDescriptorSets-commonparent",
-                        "`pDescriptorSets` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_bind_index_buffer`], run before the call.
-    pub(crate) fn validate_cmd_bind_index_buffer(
-        &self,
-        buffer: &Buffer,
-        index_type: vk::IndexType,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_index_type(
-            index_type,
-            s,
-            "VUID-vkCmdBindIndexBuffer-indexType-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_bind_pipeline`], run before the call.
-    pub(crate) fn validate_cmd_bind_pipeline(
-        &self,
-        pipeline_bind_point: vk::PipelineBindPoint,
-        pipeline: &Pipeline,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::enum_pipeline_bind_point(
-            pipeline_bind_point,
-            s,
-            "VUID-vkCmdBindPipeline-pipelineBindPoint-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipeline-commonparent",
-                    "`pipeline` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_bind_vertex_buffers`], run before the call.
-    pub(crate) fn validate_cmd_bind_vertex_buffers(
-        &self,
-        first_binding: u32,
-        buffers: &[&Buffer],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
-                    "`bindingCount` is 0".into(),
-                ),
-            );
-        }
-        for h in buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindVertexBuffers-commonparent",
-                        "`pBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
-        }
-        if s
-            .limits()
-            .is_some_and(|l| {
-                (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
-            })
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-firstBinding-00624",
-                    format!(
-                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
-                        first_binding
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
     ///The dynamic checks of [`Self::cmd_end_query`], run before the call.
     pub(crate) fn validate_cmd_end_query(&self, query_pool: &QueryPool) -> Result<()> {
         let s = &self.device().scope();
@@ -242,53 +61,6 @@ impl<'c, S: State> Recorder<'c, S> {
                         .into(),
                 ),
             );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_execute_commands`], run before the call.
-    pub(crate) fn validate_cmd_execute_commands(
-        &self,
-        command_buffers: &[&CommandBuffer],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
-            );
-        }
-        if command_buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
-                    "`commandBufferCount` is 0".into(),
-                ),
-            );
-        }
-        for h in command_buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdExecuteCommands-commonparent",
-                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
-                );
-            }
         }
         Ok(())
     }
@@ -386,340 +158,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         for x in image_memory_barriers.iter() {
             crate::checks::check_image_memory_barrier(x, s)?;
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_push_constants`], run before the call.
-    pub(crate) fn validate_cmd_push_constants(
-        &self,
-        layout: &PipelineLayout,
-        stage_flags: vk::ShaderStageFlags,
-        values: &[u8],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_shader_stage_flags(
-            stage_flags,
-            s,
-            "VUID-vkCmdPushConstants-stageFlags-parameter",
-        )?;
-        if stage_flags.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
-                    "`stageFlags` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
-            );
-        }
-        if values.is_empty() {
-            return Err(
-                fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
-            );
-        }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_blend_constants`], run before the call.
-    pub(crate) fn validate_cmd_set_blend_constants(&self) -> Result<()> {
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias(
-        &self,
-        depth_bias_clamp: f32,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
-            || depth_bias_clamp != 0.0
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBias-depthBiasClamp-00790",
-                    format!(
-                        "If the `depthBiasClamp` feature is not enabled, `depthBiasClamp` must be `0.0` (`depthBiasClamp` = {:?})",
-                        depth_bias_clamp
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds(
-        &self,
-        min_depth_bounds: f32,
-        max_depth_bounds: f32,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
-            && ((min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
-                || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-minDepthBounds-02508",
-                    format!(
-                        "`minDepthBounds` must be between `0.0` and `1.0`, inclusive (`minDepthBounds` = {:?})",
-                        min_depth_bounds
-                    ),
-                ),
-            );
-        }
-        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
-            && ((max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
-                || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509",
-                    format!(
-                        "`maxDepthBounds` must be between `0.0` and `1.0`, inclusive (`maxDepthBounds` = {:?})",
-                        max_depth_bounds
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
-    pub(crate) fn validate_cmd_set_line_width(&self, line_width: f32) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.wide_lines) && (line_width as f64).is_nan()
-            || line_width != 1.0
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineWidth-lineWidth-00788",
-                    format!(
-                        "If the `wideLines` feature is not enabled, `lineWidth` must be `1.0` (`lineWidth` = {:?})",
-                        line_width
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
-    pub(crate) fn validate_cmd_set_scissor(
-        &self,
-        scissors: &[vk::Rect2D],
-    ) -> Result<()> {
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-scissorCount-arraylength",
-                    "`scissorCount` is 0".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_stencil_compare_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_compare_mask(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_stencil_reference`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_reference(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilReference-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_stencil_write_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_write_mask(
-        &self,
-        face_mask: vk::StencilFaceFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_stencil_face_flags(
-            face_mask,
-            s,
-            "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
-        )?;
-        if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
-            );
-        }
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport(
-        &self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
-            );
-        }
-        if viewports.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
-            );
-        }
-        for x in viewports.iter() {
-            crate::checks::check_viewport(x, s)?;
         }
         Ok(())
     }
@@ -2947,74 +2385,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_reset_event`], run before the call.
-    pub(crate) fn validate_cmd_reset_event(
-        &self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags(
-            stage_mask,
-            s,
-            "VUID-vkCmdResetEvent-stageMask-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if (stage_mask.as_raw() & 16384) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-01153",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
     ///The dynamic checks of [`Self::cmd_reset_query_pool`], run before the call.
     pub(crate) fn validate_cmd_reset_query_pool(
         &self,
@@ -3487,74 +2857,6 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_event`], run before the call.
-    pub(crate) fn validate_cmd_set_event(
-        &self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags(
-            stage_mask,
-            s,
-            "VUID-vkCmdSetEvent-stageMask-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if (stage_mask.as_raw() & 16384) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-01149",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
     ///The dynamic checks of [`Self::cmd_update_buffer`], run before the call.
     pub(crate) fn validate_cmd_update_buffer(
         &self,
@@ -3590,6 +2892,570 @@ impl<'c> Recorder<'c, Outside> {
                         .into(),
                 ),
             );
+        }
+        Ok(())
+    }
+}
+impl<'c, S: State> Recorder<'c, S> {
+    ///The dynamic checks of [`Self::cmd_bind_descriptor_sets`], run before the call.
+    pub(crate) fn validate_cmd_bind_descriptor_sets(
+        &self,
+        pipeline_bind_point: vk::PipelineBindPoint,
+        layout: &PipelineLayout,
+        descriptor_sets: &[&DescriptorSet],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_pipeline_bind_point(
+            pipeline_bind_point,
+            s,
+            "VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if descriptor_sets.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
+                    "`descriptorSetCount` is 0".into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindDescriptorSets-commonparent",
+                    "`layout` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        for h in descriptor_sets.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdBindDescriptorSets-commonparent",
+                        "`pDescriptorSets` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_bind_index_buffer`], run before the call.
+    pub(crate) fn validate_cmd_bind_index_buffer(
+        &self,
+        buffer: &Buffer,
+        index_type: vk::IndexType,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_index_type(
+            index_type,
+            s,
+            "VUID-vkCmdBindIndexBuffer-indexType-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindIndexBuffer-commonparent",
+                    "`buffer` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_bind_pipeline`], run before the call.
+    pub(crate) fn validate_cmd_bind_pipeline(
+        &self,
+        pipeline_bind_point: vk::PipelineBindPoint,
+        pipeline: &Pipeline,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_pipeline_bind_point(
+            pipeline_bind_point,
+            s,
+            "VUID-vkCmdBindPipeline-pipelineBindPoint-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindPipeline-commonparent",
+                    "`pipeline` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_bind_vertex_buffers`], run before the call.
+    pub(crate) fn validate_cmd_bind_vertex_buffers(
+        &self,
+        first_binding: u32,
+        buffers: &[&Buffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if buffers.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
+                    "`bindingCount` is 0".into(),
+                ),
+            );
+        }
+        for h in buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdBindVertexBuffers-commonparent",
+                        "`pBuffers` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        if s
+            .limits()
+            .is_some_and(|l| {
+                (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
+            })
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdBindVertexBuffers-firstBinding-00624",
+                    format!(
+                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
+                        first_binding
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_execute_commands`], run before the call.
+    pub(crate) fn validate_cmd_execute_commands(
+        &self,
+        command_buffers: &[&CommandBuffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-bufferlevel",
+                    "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        if command_buffers.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
+                    "`commandBufferCount` is 0".into(),
+                ),
+            );
+        }
+        for h in command_buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCmdExecuteCommands-commonparent",
+                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_push_constants`], run before the call.
+    pub(crate) fn validate_cmd_push_constants(
+        &self,
+        layout: &PipelineLayout,
+        stage_flags: vk::ShaderStageFlags,
+        values: &[u8],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_shader_stage_flags(
+            stage_flags,
+            s,
+            "VUID-vkCmdPushConstants-stageFlags-parameter",
+        )?;
+        if stage_flags.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
+                    "`stageFlags` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if values.is_empty() {
+            return Err(
+                fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
+            );
+        }
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPushConstants-commonparent",
+                    "`layout` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_blend_constants`], run before the call.
+    pub(crate) fn validate_cmd_set_blend_constants(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bias(
+        &self,
+        depth_bias_clamp: f32,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
+            || depth_bias_clamp != 0.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBias-depthBiasClamp-00790",
+                    format!(
+                        "If the `depthBiasClamp` feature is not enabled, `depthBiasClamp` must be `0.0` (`depthBiasClamp` = {:?})",
+                        depth_bias_clamp
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
+    pub(crate) fn validate_cmd_set_depth_bounds(
+        &self,
+        min_depth_bounds: f32,
+        max_depth_bounds: f32,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
+            && ((min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
+                || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-minDepthBounds-02508",
+                    format!(
+                        "`minDepthBounds` must be between `0.0` and `1.0`, inclusive (`minDepthBounds` = {:?})",
+                        min_depth_bounds
+                    ),
+                ),
+            );
+        }
+        if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
+            && ((max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
+                || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509",
+                    format!(
+                        "`maxDepthBounds` must be between `0.0` and `1.0`, inclusive (`maxDepthBounds` = {:?})",
+                        max_depth_bounds
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
+    pub(crate) fn validate_cmd_set_line_width(&self, line_width: f32) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.wide_lines) && (line_width as f64).is_nan()
+            || line_width != 1.0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetLineWidth-lineWidth-00788",
+                    format!(
+                        "If the `wideLines` feature is not enabled, `lineWidth` must be `1.0` (`lineWidth` = {:?})",
+                        line_width
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
+    pub(crate) fn validate_cmd_set_scissor(
+        &self,
+        scissors: &[vk::Rect2D],
+    ) -> Result<()> {
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if scissors.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetScissor-scissorCount-arraylength",
+                    "`scissorCount` is 0".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_compare_mask`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_compare_mask(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_reference`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_reference(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilReference-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_stencil_write_mask`], run before the call.
+    pub(crate) fn validate_cmd_set_stencil_write_mask(
+        &self,
+        face_mask: vk::StencilFaceFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_stencil_face_flags(
+            face_mask,
+            s,
+            "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
+        )?;
+        if face_mask.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
+                    "`faceMask` is empty".into(),
+                ),
+            );
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
+    pub(crate) fn validate_cmd_set_viewport(
+        &self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        if viewports.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetViewport-viewportCount-arraylength",
+                    "`viewportCount` is 0".into(),
+                ),
+            );
+        }
+        for x in viewports.iter() {
+            crate::checks::check_viewport(x, s)?;
         }
         Ok(())
     }
@@ -3914,6 +3780,144 @@ impl<'c> Recorder<'c, InRenderPass> {
                 fail(
                     "VUID-vkCmdNextSubpass-bufferlevel",
                     "the command buffer is not a primary command buffer".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+}
+impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
+    ///The dynamic checks of [`Self::cmd_reset_event`], run before the call.
+    pub(crate) fn validate_cmd_reset_event(
+        &self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags(
+            stage_mask,
+            s,
+            "VUID-vkCmdResetEvent-stageMask-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-commonparent",
+                    "`event` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (stage_mask.as_raw() & 16384) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent-stageMask-01153",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_event`], run before the call.
+    pub(crate) fn validate_cmd_set_event(
+        &self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags(
+            stage_mask,
+            s,
+            "VUID-vkCmdSetEvent-stageMask-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-commonparent",
+                    "`event` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-04090",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-04091",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (stage_mask.as_raw() & 16384) != 0 {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent-stageMask-01149",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
                 ),
             );
         }

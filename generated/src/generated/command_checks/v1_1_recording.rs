@@ -80,7 +80,7 @@ impl<'c> Recorder<'c, Outside> {
         Ok(())
     }
 }
-impl<'c, S: State> Recorder<'c, S> {
+impl<'c, S: Scope> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
     pub(crate) fn validate_cmd_set_device_mask(&self, device_mask: u32) -> Result<()> {
         let s = &self.device().scope();

@@ -140,95 +140,6 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_to_buffer_info2(copy_image_to_buffer_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_reset_event2`], run before the call.
-    pub(crate) fn validate_cmd_reset_event2(
-        &self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags2,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        crate::checks::flags_pipeline_stage_flags2(
-            stage_mask,
-            s,
-            "VUID-vkCmdResetEvent2-stageMask-parameter",
-        )?;
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03929",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && !s.feature(|f| f.v10.tessellation_shader)
-            && (stage_mask.as_raw() & 48) != 0
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03930",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && !s.feature(|f| f.v13.synchronization2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-synchronization2-03829",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && (stage_mask.as_raw() & 16384) != 0
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03830",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
-                ),
-            );
-        }
-        Ok(())
-    }
     ///The dynamic checks of [`Self::cmd_resolve_image2`], run before the call.
     pub(crate) fn validate_cmd_resolve_image2<'a>(
         &self,
@@ -248,48 +159,6 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         crate::checks::check_resolve_image_info2(resolve_image_info, s)?;
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_set_event2`], run before the call.
-    pub(crate) fn validate_cmd_set_event2<'a>(
-        &self,
-        event: &Event,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && !s.feature(|f| f.v13.synchronization2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-synchronization2-03824",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
-            );
-        }
-        crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
 }
@@ -350,38 +219,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::cmd_pipeline_barrier2`], run before the call.
-    pub(crate) fn validate_cmd_pipeline_barrier2<'a>(
-        &self,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> Result<()> {
-        let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
-            );
-        }
-        if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
-            && !s.feature(|f| f.v13.synchronization2)
-        {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
-            );
-        }
-        crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::cmd_set_cull_mode`], run before the call.
@@ -711,6 +548,58 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
+}
+impl<'c> Recorder<'c, InRendering> {
+    ///The dynamic checks of [`Self::cmd_end_rendering`], run before the call.
+    pub(crate) fn validate_cmd_end_rendering(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+}
+impl<'c, S: Scope> Recorder<'c, S> {
+    ///The dynamic checks of [`Self::cmd_pipeline_barrier2`], run before the call.
+    pub(crate) fn validate_cmd_pipeline_barrier2<'a>(
+        &self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
+                    "The `synchronization2` feature must be enabled".into(),
+                ),
+            );
+        }
+        crate::checks::check_dependency_info(dependency_info, s)?;
+        Ok(())
+    }
     ///The dynamic checks of [`Self::cmd_wait_events2`], run before the call.
     pub(crate) fn validate_cmd_wait_events2<'a>(
         &self,
@@ -840,21 +729,136 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
 }
-impl<'c> Recorder<'c, InRendering> {
-    ///The dynamic checks of [`Self::cmd_end_rendering`], run before the call.
-    pub(crate) fn validate_cmd_end_rendering(&self) -> Result<()> {
+impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
+    ///The dynamic checks of [`Self::cmd_reset_event2`], run before the call.
+    pub(crate) fn validate_cmd_reset_event2(
+        &self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::flags_pipeline_stage_flags2(
+            stage_mask,
+            s,
+            "VUID-vkCmdResetEvent2-stageMask-parameter",
+        )?;
         if !crate::validation::supports(
             self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
             return Err(
                 fail(
-                    "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
+                    "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
                         .into(),
                 ),
             );
         }
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-commonparent",
+                    "`event` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03929",
+                    format!(
+                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && !s.feature(|f| f.v10.tessellation_shader)
+            && (stage_mask.as_raw() & 48) != 0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03930",
+                    format!(
+                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-synchronization2-03829",
+                    "The `synchronization2` feature must be enabled".into(),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && (stage_mask.as_raw() & 16384) != 0
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdResetEvent2-stageMask-03830",
+                    format!(
+                        "`stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT` (`stageMask` = {:?})",
+                        stage_mask
+                    ),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_set_event2`], run before the call.
+    pub(crate) fn validate_cmd_set_event2<'a>(
+        &self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
+                        .into(),
+                ),
+            );
+        }
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent2-commonparent",
+                    "`event` does not come from the VkDevice the command is called on"
+                        .into(),
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_3)
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            && !s.feature(|f| f.v13.synchronization2)
+        {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetEvent2-synchronization2-03824",
+                    "The `synchronization2` feature must be enabled".into(),
+                ),
+            );
+        }
+        crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
 }

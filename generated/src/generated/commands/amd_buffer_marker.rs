@@ -22,11 +22,11 @@ The rules are on [`vkCmdWriteBufferMarkerAMD`'s reference page](https://registry
 - `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWriteBufferMarkerAMD-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdWriteBufferMarkerAMD-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
+Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
-- 1: `videocoding` rules are not checked yet
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 11: explicit rule; the wrappers do not check it*/
     #[inline]

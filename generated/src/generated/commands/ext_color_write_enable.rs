@@ -14,12 +14,10 @@ The rules are on [`vkCmdSetColorWriteEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetColorWriteEnableEXT-pColorWriteEnables-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetColorWriteEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_color_write_enable_ext(
         &mut self,

@@ -14,11 +14,9 @@ The rules are on [`vkCmdBeginConditionalRenderingEXT`'s reference page](https://
 - `VUID-vkCmdBeginConditionalRenderingEXT-pConditionalRenderingBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_conditional_rendering_ext<'a>(
         &mut self,
@@ -96,11 +94,9 @@ The rules are on [`vkCmdEndConditionalRenderingEXT`'s reference page](https://re
 - `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_conditional_rendering_ext(&mut self) -> Result<()> {
         {

@@ -14,8 +14,7 @@ The rules are on [`vkCmdDebugMarkerBeginEXT`'s reference page](https://registry.
 - `VUID-vkCmdDebugMarkerBeginEXT-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdDebugMarkerBeginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_debug_marker_begin_ext<'a>(
         &mut self,
@@ -74,11 +73,9 @@ The rules are on [`vkCmdDebugMarkerEndEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDebugMarkerEndEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_debug_marker_end_ext(&mut self) -> Result<()> {
         {
@@ -120,8 +117,7 @@ The rules are on [`vkCmdDebugMarkerInsertEXT`'s reference page](https://registry
 - `VUID-vkCmdDebugMarkerInsertEXT-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdDebugMarkerInsertEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_debug_marker_insert_ext<'a>(
         &mut self,

@@ -14,8 +14,7 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_begin_debug_utils_label_ext<'a>(
         &mut self,
@@ -71,11 +70,9 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         {
@@ -117,8 +114,7 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_insert_debug_utils_label_ext<'a>(
         &mut self,

@@ -15,12 +15,10 @@ The rules are on [`vkCmdBindDescriptorBufferEmbeddedSamplersEXT`'s reference pag
 - `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_descriptor_buffer_embedded_samplers_ext(
         &mut self,
@@ -83,12 +81,10 @@ The rules are on [`vkCmdBindDescriptorBuffersEXT`'s reference page](https://regi
 - `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindDescriptorBuffersEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: `videocoding` rules are not checked yet
-- 9: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_descriptor_buffers_ext<'a>(
         &mut self,
@@ -159,13 +155,11 @@ The rules are on [`vkCmdSetDescriptorBufferOffsetsEXT`'s reference page](https:/
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffer_indices`)
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
-
-- 1: `videocoding` rules are not checked yet
-- 10: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_descriptor_buffer_offsets_ext(
         &mut self,

@@ -14,12 +14,10 @@ The rules are on [`vkCmdSetDiscardRectangleEXT`'s reference page](https://regist
 - `VUID-vkCmdSetDiscardRectangleEXT-pDiscardRectangles-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDiscardRectangleEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: `videocoding` rules are not checked yet
-- 5: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_discard_rectangle_ext(
         &mut self,

@@ -14,11 +14,9 @@ The rules are on [`vkCmdSetLogicOpEXT`'s reference page](https://registry.khrono
 - `VUID-vkCmdSetLogicOpEXT-logicOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetLogicOpEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLogicOpEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_logic_op_ext(&mut self, logic_op: vk::LogicOp) -> Result<()> {
         {
@@ -62,11 +60,9 @@ The rules are on [`vkCmdSetPatchControlPointsEXT`'s reference page](https://regi
 - `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPatchControlPointsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_patch_control_points_ext(
         &mut self,

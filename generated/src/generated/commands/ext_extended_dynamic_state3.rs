@@ -13,11 +13,9 @@ The rules are on [`vkCmdSetAlphaToCoverageEnableEXT`'s reference page](https://r
 - `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_alpha_to_coverage_enable_ext(
         &mut self,
@@ -66,11 +64,9 @@ The rules are on [`vkCmdSetAlphaToOneEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetAlphaToOneEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_alpha_to_one_enable_ext(
         &mut self,
@@ -118,12 +114,10 @@ The rules are on [`vkCmdSetColorBlendAdvancedEXT`'s reference page](https://regi
 - `VUID-vkCmdSetColorBlendAdvancedEXT-pColorBlendAdvanced-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetColorBlendAdvancedEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_color_blend_advanced_ext(
         &mut self,
@@ -185,12 +179,10 @@ The rules are on [`vkCmdSetColorBlendEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetColorBlendEnableEXT-pColorBlendEnables-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetColorBlendEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_color_blend_enable_ext(
         &mut self,
@@ -252,12 +244,10 @@ The rules are on [`vkCmdSetColorBlendEquationEXT`'s reference page](https://regi
 - `VUID-vkCmdSetColorBlendEquationEXT-pColorBlendEquations-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetColorBlendEquationEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_color_blend_equation_ext(
         &mut self,
@@ -320,12 +310,10 @@ The rules are on [`vkCmdSetColorWriteMaskEXT`'s reference page](https://registry
 - `VUID-vkCmdSetColorWriteMaskEXT-pColorWriteMasks-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
 - `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetColorWriteMaskEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_color_write_mask_ext(
         &mut self,
@@ -387,11 +375,9 @@ The rules are on [`vkCmdSetConservativeRasterizationModeEXT`'s reference page](h
 - `VUID-vkCmdSetConservativeRasterizationModeEXT-conservativeRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_conservative_rasterization_mode_ext(
         &mut self,
@@ -446,11 +432,9 @@ The rules are on [`vkCmdSetCoverageModulationModeNV`'s reference page](https://r
 - `VUID-vkCmdSetCoverageModulationModeNV-coverageModulationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageModulationModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_modulation_mode_nv(
         &mut self,
@@ -500,11 +484,9 @@ The rules are on [`vkCmdSetCoverageModulationTableEnableNV`'s reference page](ht
 - `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_modulation_table_enable_nv(
         &mut self,
@@ -556,12 +538,10 @@ The rules are on [`vkCmdSetCoverageModulationTableNV`'s reference page](https://
 - `VUID-vkCmdSetCoverageModulationTableNV-pCoverageModulationTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageModulationTableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_modulation_table_nv(
         &mut self,
@@ -622,11 +602,9 @@ The rules are on [`vkCmdSetCoverageReductionModeNV`'s reference page](https://re
 - `VUID-vkCmdSetCoverageReductionModeNV-coverageReductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageReductionModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_reduction_mode_nv(
         &mut self,
@@ -676,11 +654,9 @@ The rules are on [`vkCmdSetCoverageToColorEnableNV`'s reference page](https://re
 - `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageToColorEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_to_color_enable_nv(
         &mut self,
@@ -729,11 +705,9 @@ The rules are on [`vkCmdSetCoverageToColorLocationNV`'s reference page](https://
 - `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoverageToColorLocationNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coverage_to_color_location_nv(
         &mut self,
@@ -784,11 +758,9 @@ The rules are on [`vkCmdSetDepthClampEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthClampEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_clamp_enable_ext(
         &mut self,
@@ -835,11 +807,9 @@ The rules are on [`vkCmdSetDepthClipEnableEXT`'s reference page](https://registr
 - `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthClipEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_clip_enable_ext(
         &mut self,
@@ -886,11 +856,9 @@ The rules are on [`vkCmdSetDepthClipNegativeOneToOneEXT`'s reference page](https
 - `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_depth_clip_negative_one_to_one_ext(
         &mut self,
@@ -941,11 +909,9 @@ The rules are on [`vkCmdSetExtraPrimitiveOverestimationSizeEXT`'s reference page
 - `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_extra_primitive_overestimation_size_ext(
         &mut self,
@@ -997,11 +963,9 @@ The rules are on [`vkCmdSetLineRasterizationModeEXT`'s reference page](https://r
 - `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLineRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_rasterization_mode_ext(
         &mut self,
@@ -1051,11 +1015,9 @@ The rules are on [`vkCmdSetLineStippleEnableEXT`'s reference page](https://regis
 - `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLineStippleEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_stipple_enable_ext(
         &mut self,
@@ -1102,11 +1064,9 @@ The rules are on [`vkCmdSetLogicOpEnableEXT`'s reference page](https://registry.
 - `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLogicOpEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_logic_op_enable_ext(
         &mut self,
@@ -1154,11 +1114,9 @@ The rules are on [`vkCmdSetPolygonModeEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetPolygonModeEXT-polygonMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetPolygonModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPolygonModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_polygon_mode_ext(
         &mut self,
@@ -1206,11 +1164,9 @@ The rules are on [`vkCmdSetProvokingVertexModeEXT`'s reference page](https://reg
 - `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetProvokingVertexModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_provoking_vertex_mode_ext(
         &mut self,
@@ -1261,11 +1217,9 @@ The rules are on [`vkCmdSetRasterizationSamplesEXT`'s reference page](https://re
 - `VUID-vkCmdSetRasterizationSamplesEXT-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetRasterizationSamplesEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_rasterization_samples_ext(
         &mut self,
@@ -1315,11 +1269,9 @@ The rules are on [`vkCmdSetRasterizationStreamEXT`'s reference page](https://reg
 - `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetRasterizationStreamEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_rasterization_stream_ext(
         &mut self,
@@ -1366,11 +1318,9 @@ The rules are on [`vkCmdSetRepresentativeFragmentTestEnableNV`'s reference page]
 - `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_representative_fragment_test_enable_nv(
         &mut self,
@@ -1421,11 +1371,9 @@ The rules are on [`vkCmdSetSampleLocationsEnableEXT`'s reference page](https://r
 - `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetSampleLocationsEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_sample_locations_enable_ext(
         &mut self,
@@ -1474,11 +1422,9 @@ The rules are on [`vkCmdSetShadingRateImageEnableNV`'s reference page](https://r
 - `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetShadingRateImageEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_shading_rate_image_enable_nv(
         &mut self,
@@ -1530,11 +1476,9 @@ The rules are on [`vkCmdSetTessellationDomainOriginEXT`'s reference page](https:
 - `VUID-vkCmdSetTessellationDomainOriginEXT-domainOrigin-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetTessellationDomainOriginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_tessellation_domain_origin_ext(
         &mut self,
@@ -1582,12 +1526,10 @@ The rules are on [`vkCmdSetViewportSwizzleNV`'s reference page](https://registry
 - `VUID-vkCmdSetViewportSwizzleNV-pViewportSwizzles-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportSwizzleNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_swizzle_nv(
         &mut self,
@@ -1645,11 +1587,9 @@ The rules are on [`vkCmdSetViewportWScalingEnableNV`'s reference page](https://r
 - `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportWScalingEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_w_scaling_enable_nv(
         &mut self,

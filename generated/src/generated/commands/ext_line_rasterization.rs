@@ -13,11 +13,9 @@ The rules are on [`vkCmdSetLineStippleEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetLineStippleEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetLineStippleEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineStippleEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetLineStippleEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_line_stipple_ext(
         &mut self,

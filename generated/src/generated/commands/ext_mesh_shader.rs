@@ -14,11 +14,9 @@ The rules are on [`vkCmdDrawMeshTasksEXT`'s reference page](https://registry.khr
 - `VUID-vkCmdDrawMeshTasksEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 191.
-
-- 1: `videocoding` rules are not checked yet
-- 190: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 190 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_ext(
         &mut self,
@@ -78,12 +76,10 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountEXT`'s reference page](https:/
 - `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksIndirectCountEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksIndirectCountEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 197.
-
-- 1: `videocoding` rules are not checked yet
-- 196: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_count_ext(
         &mut self,
@@ -164,12 +160,10 @@ The rules are on [`vkCmdDrawMeshTasksIndirectEXT`'s reference page](https://regi
 - `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksIndirectEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksIndirectEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 192.
-
-- 1: `videocoding` rules are not checked yet
-- 191: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_ext(
         &mut self,

@@ -87,11 +87,9 @@ The rules are on [`vkCmdDrawMultiEXT`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawMultiEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMultiEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMultiEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMultiEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 197.
-
-- 1: `videocoding` rules are not checked yet
-- 196: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_draw_multi_ext(
         &mut self,

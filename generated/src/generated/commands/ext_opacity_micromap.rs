@@ -644,12 +644,10 @@ The rules are on [`vkCmdBuildMicromapsEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdBuildMicromapsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBuildMicromapsEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBuildMicromapsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 16.
-
-- 1: `videocoding` rules are not checked yet
-- 15: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_build_micromaps_ext<'a>(
         &mut self,
@@ -728,11 +726,9 @@ The rules are on [`vkCmdCopyMemoryToMicromapEXT`'s reference page](https://regis
 - `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMemoryToMicromapEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMemoryToMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_memory_to_micromap_ext<'a>(
         &mut self,
@@ -815,11 +811,9 @@ The rules are on [`vkCmdCopyMicromapEXT`'s reference page](https://registry.khro
 - `VUID-vkCmdCopyMicromapEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMicromapEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_micromap_ext<'a>(
         &mut self,
@@ -895,11 +889,9 @@ The rules are on [`vkCmdCopyMicromapToMemoryEXT`'s reference page](https://regis
 - `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMicromapToMemoryEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMicromapToMemoryEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_micromap_to_memory_ext<'a>(
         &mut self,
@@ -984,12 +976,12 @@ The rules are on [`vkCmdWriteMicromapsPropertiesEXT`'s reference page](https://r
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8.
+Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
-- 1: `videocoding` rules are not checked yet
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 6: explicit rule; the wrappers do not check it*/
     #[inline]

@@ -14,11 +14,9 @@ The rules are on [`vkCmdSetSampleLocationsEXT`'s reference page](https://registr
 - `VUID-vkCmdSetSampleLocationsEXT-pSampleLocationsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetSampleLocationsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_sample_locations_ext<'a>(
         &mut self,

@@ -15,12 +15,10 @@ The rules are on [`vkCmdBeginQueryIndexedEXT`'s reference page](https://registry
 - `VUID-vkCmdBeginQueryIndexedEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBeginQueryIndexedEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBeginQueryIndexedEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 38.
-
-- 1: `videocoding` rules are not checked yet
-- 37: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_query_indexed_ext(
         &mut self,
@@ -78,13 +76,11 @@ The rules are on [`vkCmdBindTransformFeedbackBuffersEXT`'s reference page](https
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers`)
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindTransformFeedbackBuffersEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
-
-- 1: `videocoding` rules are not checked yet
-- 11: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_transform_feedback_buffers_ext(
         &mut self,
@@ -183,12 +179,10 @@ The rules are on [`vkCmdEndQueryIndexedEXT`'s reference page](https://registry.k
 - `VUID-vkCmdEndQueryIndexedEXT-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndQueryIndexedEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndQueryIndexedEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
-
-- 1: `videocoding` rules are not checked yet
-- 12: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_query_indexed_ext(
         &mut self,
@@ -245,12 +239,10 @@ The rules are on [`vkCmdBeginTransformFeedbackEXT`'s reference page](https://reg
 - `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginTransformFeedbackEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginTransformFeedbackEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
-
-- 1: `videocoding` rules are not checked yet
-- 11: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_transform_feedback_ext(
         &mut self,
@@ -339,12 +331,10 @@ The rules are on [`vkCmdDrawIndirectByteCountEXT`'s reference page](https://regi
 - `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndirectByteCountEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirectByteCountEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 197.
-
-- 1: `videocoding` rules are not checked yet
-- 196: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_indirect_byte_count_ext(
         &mut self,
@@ -423,12 +413,10 @@ The rules are on [`vkCmdEndTransformFeedbackEXT`'s reference page](https://regis
 - `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndTransformFeedbackEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndTransformFeedbackEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndTransformFeedbackEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 1: `videocoding` rules are not checked yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_transform_feedback_ext(
         &mut self,

@@ -15,11 +15,9 @@ The rules are on [`vkCmdSetVertexInputEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetVertexInputEXT-pVertexAttributeDescriptions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetVertexInputEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetVertexInputEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: `videocoding` rules are not checked yet
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_vertex_input_ext<'a>(
         &mut self,

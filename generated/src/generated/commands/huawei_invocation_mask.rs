@@ -16,12 +16,10 @@ The rules are on [`vkCmdBindInvocationMaskHUAWEI`'s reference page](https://regi
 - `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBindInvocationMaskHUAWEI-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBindInvocationMaskHUAWEI-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 1: `videocoding` rules are not checked yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_invocation_mask_huawei(
         &mut self,

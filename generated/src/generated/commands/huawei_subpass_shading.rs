@@ -14,11 +14,9 @@ The rules are on [`vkCmdSubpassShadingHUAWEI`'s reference page](https://registry
 - `VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSubpassShadingHUAWEI-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSubpassShadingHUAWEI-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 57.
-
-- 1: `videocoding` rules are not checked yet
-- 56: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_subpass_shading_huawei(&mut self) -> Result<()> {
         {

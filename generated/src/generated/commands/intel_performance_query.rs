@@ -251,8 +251,7 @@ The rules are on [`vkCmdSetPerformanceMarkerINTEL`'s reference page](https://reg
 - `VUID-vkCmdSetPerformanceMarkerINTEL-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdSetPerformanceMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_set_performance_marker_intel<'a>(
         &mut self,
@@ -312,11 +311,9 @@ The rules are on [`vkCmdSetPerformanceOverrideINTEL`'s reference page](https://r
 - `VUID-vkCmdSetPerformanceOverrideINTEL-pOverrideInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPerformanceOverrideINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_set_performance_override_intel<'a>(
         &mut self,
@@ -376,8 +373,7 @@ The rules are on [`vkCmdSetPerformanceStreamMarkerINTEL`'s reference page](https
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub unsafe fn cmd_set_performance_stream_marker_intel<'a>(
         &mut self,

@@ -15,11 +15,9 @@ The rules are on [`vkCmdCopyAccelerationStructureKHR`'s reference page](https://
 - `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyAccelerationStructureKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_acceleration_structure_khr<'a>(
         &mut self,
@@ -91,11 +89,9 @@ The rules are on [`vkCmdCopyAccelerationStructureToMemoryKHR`'s reference page](
 - `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_acceleration_structure_to_memory_khr<'a>(
         &mut self,
@@ -168,11 +164,9 @@ The rules are on [`vkCmdCopyMemoryToAccelerationStructureKHR`'s reference page](
 - `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_memory_to_acceleration_structure_khr<'a>(
         &mut self,
@@ -247,13 +241,11 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesKHR`'s reference pa
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 1: `videocoding` rules are not checked yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_acceleration_structures_properties_khr(
         &mut self,

@@ -19,12 +19,10 @@ The rules are on [`vkCmdPushDescriptorSetWithTemplateKHR`'s reference page](http
 - `VUID-vkCmdPushDescriptorSetWithTemplateKHR-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_push_descriptor_set_with_template_khr(
         &mut self,

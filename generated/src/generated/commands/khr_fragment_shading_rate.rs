@@ -15,11 +15,9 @@ The rules are on [`vkCmdSetFragmentShadingRateKHR`'s reference page](https://reg
 - `VUID-vkCmdSetFragmentShadingRateKHR-combinerOps-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetFragmentShadingRateKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 13.
-
-- 1: `videocoding` rules are not checked yet
-- 12: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_fragment_shading_rate_khr(
         &mut self,

@@ -16,13 +16,11 @@ The rules are on [`vkCmdPushDescriptorSetKHR`'s reference page](https://registry
 - `VUID-vkCmdPushDescriptorSetKHR-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdPushDescriptorSetKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdPushDescriptorSetKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_push_descriptor_set_khr<'a>(
         &mut self,

@@ -17,11 +17,9 @@ The rules are on [`vkCmdTraceRaysIndirect2KHR`'s reference page](https://registr
 - `VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdTraceRaysIndirect2KHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdTraceRaysIndirect2KHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 65.
-
-- 1: `videocoding` rules are not checked yet
-- 64: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 64 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_trace_rays_indirect2_khr(
         &mut self,

@@ -15,11 +15,9 @@ The rules are on [`vkCmdSetRayTracingPipelineStackSizeKHR`'s reference page](htt
 - `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_ray_tracing_pipeline_stack_size_khr(
         &mut self,
@@ -75,11 +73,9 @@ The rules are on [`vkCmdTraceRaysIndirectKHR`'s reference page](https://registry
 - `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdTraceRaysIndirectKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdTraceRaysIndirectKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 92.
-
-- 1: `videocoding` rules are not checked yet
-- 91: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 91 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_trace_rays_indirect_khr(
         &mut self,
@@ -160,11 +156,9 @@ The rules are on [`vkCmdTraceRaysKHR`'s reference page](https://registry.khronos
 - `VUID-vkCmdTraceRaysKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdTraceRaysKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdTraceRaysKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 90.
-
-- 1: `videocoding` rules are not checked yet
-- 89: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 89 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_trace_rays_khr(
         &mut self,

@@ -24,11 +24,11 @@ The rules are on [`vkCmdWriteBufferMarker2AMD`'s reference page](https://registr
 - `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdWriteBufferMarker2AMD-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdWriteBufferMarker2AMD-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 20.
+Left to the caller (listed one by one in the crate's `validation.json`): 19.
 
-- 1: `videocoding` rules are not checked yet
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 13: explicit rule; the wrappers do not check it*/
     #[inline]

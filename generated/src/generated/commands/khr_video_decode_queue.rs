@@ -3,7 +3,7 @@
 //!The commands of `VK_KHR_VIDEO_DECODE_QUEUE`.
 use super::*;
 #[cfg(feature = "khr_video_decode_queue")]
-impl<'c> Recorder<'c, Outside> {
+impl<'c> Recorder<'c, InVideoCoding> {
     /**`vkCmdDecodeVideoKHR`
 
 # Valid usage
@@ -15,12 +15,10 @@ The rules are on [`vkCmdDecodeVideoKHR`'s reference page](https://registry.khron
 - `VUID-vkCmdDecodeVideoKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDecodeVideoKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDecodeVideoKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDecodeVideoKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDecodeVideoKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 54.
-
-- 1: `videocoding` rules are not checked yet
-- 53: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 53 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_decode_video_khr<'a>(
         &mut self,

@@ -337,20 +337,22 @@ The rules are on [`vkCmdBeginVideoCodingKHR`'s reference page](https://registry.
 - `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 1: `videocoding` rules are not checked yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_begin_video_coding_khr<'a>(
-        &mut self,
+        mut self,
         begin_info: &VideoBeginCodingInfoKHR<'a>,
-    ) -> Result<()> {
+    ) -> Recorder<'c, InVideoCoding> {
         {
             let r = self.validate_cmd_begin_video_coding_khr(begin_info);
-            r?;
+            if !self.accept(r) {
+                self.skip_begin(true);
+                return self.into_state();
+            }
+            self.skip_begin(false);
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -363,46 +365,42 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9.
 The caller upholds the rules that [`Self::cmd_begin_video_coding_khr`] checks at run time: `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_begin_video_coding_khr_unchecked<'a>(
-        &mut self,
+        mut self,
         begin_info: &VideoBeginCodingInfoKHR<'a>,
-    ) -> Result<()> {
-        let fp = self
-            .device()
-            .ext()
-            .khr_video_queue
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_video_queue"))?
-            .cmd_begin_video_coding_khr;
-        {
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(
-                    self.raw(),
-                    begin_info as *const VideoBeginCodingInfoKHR<'a> as *const _,
-                )
-            };
-            self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
-                for e in core::iter::once(begin_info) {
-                    // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::video_begin_coding_info_khr(
-                            e.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                }
-                kept
-            };
-            for o in kept {
-                self.retain(o);
+    ) -> Recorder<'c, InVideoCoding> {
+        let Some(table) = self.device().ext().khr_video_queue.as_ref() else {
+            let _ = self.accept(Err(Error::ExtensionNotEnabled("VK_KHR_video_queue")));
+            self.skip_begin(true);
+            return self.into_state();
+        };
+        let fp = table.cmd_begin_video_coding_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe {
+            fp(self.raw(), begin_info as *const VideoBeginCodingInfoKHR<'a> as *const _)
+        };
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(begin_info) {
+                // SAFETY: the safe structs store every pointer with its length.
+                unsafe {
+                    crate::reach::video_begin_coding_info_khr(
+                        e.as_raw(),
+                        live,
+                        &mut kept,
+                    )
+                };
             }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
         }
-        Ok(())
+        self.into_state()
     }
+}
+#[cfg(feature = "khr_video_queue")]
+impl<'c> Recorder<'c, InVideoCoding> {
     /**`vkCmdControlVideoCodingKHR`
 
 # Valid usage
@@ -414,12 +412,10 @@ The rules are on [`vkCmdControlVideoCodingKHR`'s reference page](https://registr
 - `VUID-vkCmdControlVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdControlVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdControlVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdControlVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_control_video_coding_khr<'a>(
         &mut self,
@@ -474,20 +470,21 @@ The rules are on [`vkCmdEndVideoCodingKHR`'s reference page](https://registry.kh
 - `VUID-vkCmdEndVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_video_coding_khr<'a>(
-        &mut self,
+        mut self,
         end_coding_info: &VideoEndCodingInfoKHR<'a>,
-    ) -> Result<()> {
+    ) -> Recorder<'c, Outside> {
         {
             let r = self.validate_cmd_end_video_coding_khr(end_coding_info);
-            r?;
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -500,27 +497,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 The caller upholds the rules that [`Self::cmd_end_video_coding_khr`] checks at run time: `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdEndVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn cmd_end_video_coding_khr_unchecked<'a>(
-        &mut self,
+        mut self,
         end_coding_info: &VideoEndCodingInfoKHR<'a>,
-    ) -> Result<()> {
-        let fp = self
-            .device()
-            .ext()
-            .khr_video_queue
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_video_queue"))?
-            .cmd_end_video_coding_khr;
-        {
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(
-                    self.raw(),
-                    end_coding_info as *const VideoEndCodingInfoKHR<'a> as *const _,
-                )
-            };
-            self.state_changed();
-        }
-        Ok(())
+    ) -> Recorder<'c, Outside> {
+        let Some(table) = self.device().ext().khr_video_queue.as_ref() else {
+            let _ = self.accept(Err(Error::ExtensionNotEnabled("VK_KHR_video_queue")));
+            return self.into_state();
+        };
+        let fp = table.cmd_end_video_coding_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe {
+            fp(
+                self.raw(),
+                end_coding_info as *const VideoEndCodingInfoKHR<'a> as *const _,
+            )
+        };
+        self.into_state()
     }
 }
 #[cfg(feature = "khr_video_queue")]

@@ -20,6 +20,7 @@ mod v1_0_part2;
 mod v1_0_recording;
 mod v1_0_recording_part2;
 mod v1_0_recording_part3;
+mod v1_0_recording_part4;
 mod v1_1;
 mod v1_1_recording;
 mod v1_2;

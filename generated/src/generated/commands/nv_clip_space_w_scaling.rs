@@ -14,12 +14,10 @@ The rules are on [`vkCmdSetViewportWScalingNV`'s reference page](https://registr
 - `VUID-vkCmdSetViewportWScalingNV-pViewportWScalings-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportWScalingNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportWScalingNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_w_scaling_nv(
         &mut self,

@@ -23,11 +23,9 @@ The rules are on [`vkCmdCopyMemoryIndirectNV`'s reference page](https://registry
 - `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMemoryIndirectNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMemoryIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_memory_indirect_nv(
         &mut self,
@@ -106,12 +104,12 @@ The rules are on [`vkCmdCopyMemoryToImageIndirectNV`'s reference page](https://r
 - `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyMemoryToImageIndirectNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 19.
+Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
-- 1: `videocoding` rules are not checked yet
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 15: explicit rule; the wrappers do not check it*/
     #[inline]

@@ -17,8 +17,7 @@ The rules are on [`vkCmdSetCheckpointNV`'s reference page](https://registry.khro
 - `VUID-vkCmdSetCheckpointNV-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCmdSetCheckpointNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdSetCheckpointNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub unsafe fn cmd_set_checkpoint_nv(
         &mut self,

@@ -15,12 +15,10 @@ The rules are on [`vkCmdBindPipelineShaderGroupNV`'s reference page](https://reg
 - `VUID-vkCmdBindPipelineShaderGroupNV-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindPipelineShaderGroupNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_pipeline_shader_group_nv(
         &mut self,
@@ -87,11 +85,9 @@ The rules are on [`vkCmdExecuteGeneratedCommandsNV`'s reference page](https://re
 - `VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdExecuteGeneratedCommandsNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdExecuteGeneratedCommandsNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 195.
-
-- 1: `videocoding` rules are not checked yet
-- 194: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_execute_generated_commands_nv<'a>(
         &mut self,
@@ -176,11 +172,9 @@ The rules are on [`vkCmdPreprocessGeneratedCommandsNV`'s reference page](https:/
 - `VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdPreprocessGeneratedCommandsNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdPreprocessGeneratedCommandsNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_preprocess_generated_commands_nv<'a>(
         &mut self,

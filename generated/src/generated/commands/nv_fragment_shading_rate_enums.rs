@@ -15,11 +15,9 @@ The rules are on [`vkCmdSetFragmentShadingRateEnumNV`'s reference page](https://
 - `VUID-vkCmdSetFragmentShadingRateEnumNV-combinerOps-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 9.
-
-- 1: `videocoding` rules are not checked yet
-- 8: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_fragment_shading_rate_enum_nv(
         &mut self,

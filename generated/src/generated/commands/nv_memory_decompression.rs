@@ -30,11 +30,9 @@ The rules are on [`vkCmdDecompressMemoryIndirectCountNV`'s reference page](https
 - `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDecompressMemoryIndirectCountNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
-
-- 1: `videocoding` rules are not checked yet
-- 11: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_decompress_memory_indirect_count_nv(
         &mut self,
@@ -113,12 +111,10 @@ The rules are on [`vkCmdDecompressMemoryNV`'s reference page](https://registry.k
 - `VUID-vkCmdDecompressMemoryNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDecompressMemoryNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDecompressMemoryNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_decompress_memory_nv(
         &mut self,

@@ -16,12 +16,10 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountNV`'s reference page](https://
 - `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksIndirectCountNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksIndirectCountNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 197.
-
-- 1: `videocoding` rules are not checked yet
-- 196: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_count_nv(
         &mut self,
@@ -102,12 +100,10 @@ The rules are on [`vkCmdDrawMeshTasksIndirectNV`'s reference page](https://regis
 - `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksIndirectNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 192.
-
-- 1: `videocoding` rules are not checked yet
-- 191: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_nv(
         &mut self,
@@ -169,11 +165,9 @@ The rules are on [`vkCmdDrawMeshTasksNV`'s reference page](https://registry.khro
 - `VUID-vkCmdDrawMeshTasksNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawMeshTasksNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawMeshTasksNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMeshTasksNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 184.
-
-- 1: `videocoding` rules are not checked yet
-- 183: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 183 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_draw_mesh_tasks_nv(
         &mut self,

@@ -173,9 +173,8 @@ The rules are on [`vkCmdOpticalFlowExecuteNV`'s reference page](https://registry
 - `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdOpticalFlowExecuteNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdOpticalFlowExecuteNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdOpticalFlowExecuteNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+- `VUID-vkCmdOpticalFlowExecuteNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[inline]
     pub unsafe fn cmd_optical_flow_execute_nv<'a>(
         &mut self,

@@ -403,12 +403,10 @@ The rules are on [`vkCmdBuildAccelerationStructureNV`'s reference page](https://
 - `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBuildAccelerationStructureNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBuildAccelerationStructureNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBuildAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 14.
-
-- 1: `videocoding` rules are not checked yet
-- 13: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_build_acceleration_structure_nv<'a>(
         &mut self,
@@ -529,12 +527,10 @@ The rules are on [`vkCmdCopyAccelerationStructureNV`'s reference page](https://r
 - `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyAccelerationStructureNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyAccelerationStructureNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdCopyAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8.
-
-- 1: `videocoding` rules are not checked yet
-- 7: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_copy_acceleration_structure_nv(
         &mut self,
@@ -592,12 +588,10 @@ The rules are on [`vkCmdTraceRaysNV`'s reference page](https://registry.khronos.
 - `VUID-vkCmdTraceRaysNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdTraceRaysNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdTraceRaysNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdTraceRaysNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 80.
-
-- 1: `videocoding` rules are not checked yet
-- 79: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_trace_rays_nv(
         &mut self,
@@ -731,13 +725,11 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesNV`'s reference pag
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: `videocoding` rules are not checked yet
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_write_acceleration_structures_properties_nv(
         &mut self,

@@ -14,12 +14,10 @@ The rules are on [`vkCmdSetExclusiveScissorNV`'s reference page](https://registr
 - `VUID-vkCmdSetExclusiveScissorNV-pExclusiveScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetExclusiveScissorNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 8.
-
-- 1: `videocoding` rules are not checked yet
-- 7: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_exclusive_scissor_nv(
         &mut self,

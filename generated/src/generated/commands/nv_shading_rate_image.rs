@@ -15,12 +15,10 @@ The rules are on [`vkCmdBindShadingRateImageNV`'s reference page](https://regist
 - `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkCmdBindShadingRateImageNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindShadingRateImageNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindShadingRateImageNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: `videocoding` rules are not checked yet
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_bind_shading_rate_image_nv(
         &mut self,
@@ -83,11 +81,9 @@ The rules are on [`vkCmdSetCoarseSampleOrderNV`'s reference page](https://regist
 - `VUID-vkCmdSetCoarseSampleOrderNV-pCustomSampleOrders-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCoarseSampleOrderNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_coarse_sample_order_nv<'a>(
         &mut self,
@@ -153,12 +149,10 @@ The rules are on [`vkCmdSetViewportShadingRatePaletteNV`'s reference page](https
 - `VUID-vkCmdSetViewportShadingRatePaletteNV-pShadingRatePalettes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `videocoding` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_set_viewport_shading_rate_palette_nv<'a>(
         &mut self,

@@ -14,8 +14,7 @@ The rules are on [`vkCmdCuLaunchKernelNVX`'s reference page](https://registry.kh
 - `VUID-vkCmdCuLaunchKernelNVX-pLaunchInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`videocoding` rules are not checked yet).*/
+- `VUID-vkCmdCuLaunchKernelNVX-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[inline]
     pub fn cmd_cu_launch_kernel_nvx<'a>(
         &mut self,

@@ -29,13 +29,13 @@ The rules are on [`vkCmdDispatchBase`'s reference page](https://registry.khronos
 - `VUID-vkCmdDispatchBase-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDispatchBase-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDispatchBase-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDispatchBase-OpTypeImage-07028`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat))
 - `VUID-vkCmdDispatchBase-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
 - `VUID-vkCmdDispatchBase-None-02699`: dynamic (checks, once per change of the bound state, that every descriptor of each binding a resource variable of the pipeline's modules reads (every element of an array, every byte of an inline uniform block) was written in the set bound, as the device recorded its writes, copies and template updates when the set was bound (an update after that leaves the recording invalid; one that empties a slot does so even under UPDATE_AFTER_BIND); a binding with PARTIALLY_BOUND leaves its descriptors to the shader promise, and every variable a module declares counts)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 56.
+Left to the caller (listed one by one in the crate's `validation.json`): 55.
 
-- 1: `videocoding` rules are not checked yet
 - 2: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
 - 2: checked by the safe methods in every build (each image or texel buffer view at a binding whose variable the pipeline's modules write with OpImageWrite, against the fewest components of the texels written, read from the module's SPIR-V), but no test breaks it: GLSL's imageStore always writes four components, and the test shaders are GLSL
@@ -138,7 +138,7 @@ The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time
         Ok(())
     }
 }
-impl<'c, S: State> Recorder<'c, S> {
+impl<'c, S: Scope> Recorder<'c, S> {
     /**`vkCmdSetDeviceMask`
 
 # Safety

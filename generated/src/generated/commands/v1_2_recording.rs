@@ -20,11 +20,11 @@ The rules are on [`vkCmdBeginRenderPass2`'s reference page](https://registry.khr
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRenderPass2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBeginRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
+Left to the caller (listed one by one in the crate's `validation.json`): 9.
 
-- 1: `videocoding` rules are not checked yet
 - 2: checked by the safe methods in every build (each dependency's stages against the pool's queue family), but no test breaks it: lavapipe's only queue family supports every stage
 - 2: checked by the safe methods in every build, but no test breaks it yet
 - 3: checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts
@@ -155,6 +155,7 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndexedIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndexedIndirectCount-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawIndexedIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat))
 - `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
@@ -183,9 +184,8 @@ The rules are on [`vkCmdDrawIndexedIndirectCount`'s reference page](https://regi
 - `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 156.
+Left to the caller (listed one by one in the crate's `validation.json`): 155.
 
-- 1: `videocoding` rules are not checked yet
 - 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
 - 2: checked by the safe methods in every build (each image or texel buffer view at a binding whose variable the pipeline's modules write with OpImageWrite, against the fewest components of the texels written, read from the module's SPIR-V), but no test breaks it: GLSL's imageStore always writes four components, and the test shaders are GLSL
@@ -412,6 +412,7 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDrawIndirectCount-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawIndirectCount-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdDrawIndirectCount-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 - `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`: dynamic (checks, once per change of the bound state, each image view the bound sets hold at a binding whose storage image variable has the Unknown format and that the pipeline's modules read (OpImageRead, followed as for atomics), against its format's VkFormatProperties3 features for its image's tiling (before Vulkan 1.3: storage, and the device's shaderStorageImageReadWithoutFormat))
 - `VUID-vkCmdDrawIndirectCount-maintenance4-06425`: dynamic (checks, once per change of the bound state (a push with a layout of other push-constant ranges is one), that every byte of the push-constant blocks the pipeline's modules declare was pushed in the recording with a layout of the same push-constant ranges as the pipeline's (the recorder keeps the bytes pushed), unless the device enabled maintenance4 (the 1.3.239 layer does not check it: the error alone proves it))
@@ -440,9 +441,8 @@ The rules are on [`vkCmdDrawIndirectCount`'s reference page](https://registry.kh
 - `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 - `VUID-vkCmdDrawIndirectCount-pStrides-04884`: dynamic (checks the dynamic states of the bound pipeline, recorded at its creation, against those the recorder saw set since a pipeline that has them static was bound, and that no state the pipeline has static was set since it was bound)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 155.
+Left to the caller (listed one by one in the crate's `validation.json`): 154.
 
-- 1: `videocoding` rules are not checked yet
 - 1: checked by the safe methods in every build (a draw or dispatch in a protected command buffer is refused: which resources its pipeline writes, and from which stages, is not followed), but no test breaks it: lavapipe has no protectedMemory, so no command buffer is protected
 - 2: checked by the safe methods in every build (an image view made with a sampler Y'CbCr conversion, or sampled by a sampler made with one, against the instructions the pipeline's modules use on its variable: sampling only, without ConstOffset or Offset), but no test breaks it: lavapipe has no samplerYcbcrConversion
 - 2: checked by the safe methods in every build (each image or texel buffer view at a binding whose variable the pipeline's modules write with OpImageWrite, against the fewest components of the texels written, read from the module's SPIR-V), but no test breaks it: GLSL's imageStore always writes four components, and the test shaders are GLSL
@@ -634,13 +634,11 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCmdEndRenderPass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRenderPass2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 - `VUID-vkCmdEndRenderPass2-None-06171`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
@@ -696,12 +694,10 @@ The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos
 - `VUID-vkCmdNextSubpass2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdNextSubpass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdNextSubpass2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub fn cmd_next_subpass2<'a>(
         &mut self,

@@ -71,11 +71,9 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBeginRendering-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_begin_rendering<'a>(
         mut self,
@@ -168,11 +166,9 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBlitImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBlitImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBlitImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_blit_image2<'a>(
         &mut self,
@@ -249,11 +245,9 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdCopyBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBuffer2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_buffer2<'a>(
         &mut self,
@@ -315,10 +309,10 @@ The rules are on [`vkCmdCopyBufferToImage2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyBufferToImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyBufferToImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
+Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
-- 1: `videocoding` rules are not checked yet
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[inline]
@@ -446,11 +440,9 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_copy_image2<'a>(
         &mut self,
@@ -517,10 +509,10 @@ The rules are on [`vkCmdCopyImageToBuffer2`'s reference page](https://registry.k
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCopyImageToBuffer2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdCopyImageToBuffer2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
-- 1: `videocoding` rules are not checked yet
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 2: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[inline]
@@ -587,67 +579,6 @@ The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at 
         }
         Ok(())
     }
-    /**`vkCmdResetEvent2`
-
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResetEvent2-event-03831`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent2-event-03832`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent2-commandBuffer-03833`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
-
-# Valid usage
-
-The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
-
-- `VUID-vkCmdResetEvent2-stageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-vkCmdResetEvent2-stageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-vkCmdResetEvent2-synchronization2-03829`: dynamic (checks the rule as written (recogniser: feature must be enabled))
-- `VUID-vkCmdResetEvent2-stageMask-03830`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub unsafe fn cmd_reset_event2(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags2,
-    ) {
-        {
-            let r = self.validate_cmd_reset_event2(event, stage_mask);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
-    }
-    /**`vkCmdResetEvent2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_reset_event2_unchecked(
-        &mut self,
-        event: &Event,
-        stage_mask: vk::PipelineStageFlags2,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_reset_event2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), event.raw(), stage_mask) };
-        crate::hooks::event_recorded(self, event);
-        self.state_changed();
-        self.retain_with(event.address(), || event.retained());
-    }
     /**`vkCmdResolveImage2`
 
 # Safety
@@ -682,11 +613,9 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 - `VUID-vkCmdResolveImage2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdResolveImage2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResolveImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: `videocoding` rules are not checked yet
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[inline]
     pub unsafe fn cmd_resolve_image2<'a>(
         &mut self,
@@ -745,112 +674,6 @@ The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run tim
         }
         Ok(())
     }
-    /**`vkCmdSetEvent2`
-
-# Safety
-
-The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
-- `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdSetEvent2-dstStageMask-03828`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdSetEvent2-commandBuffer-03826`: The current device mask of `commandBuffer` must include exactly one physical device
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-
-# Valid usage
-
-The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetEvent2-synchronization2-03824`: dynamic (checks the rule as written (recogniser: feature must be enabled))
-- `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub unsafe fn cmd_set_event2<'a>(
-        &mut self,
-        event: &Event,
-        dependency_info: &DependencyInfo<'a>,
-    ) {
-        {
-            let r = self.validate_cmd_set_event2(event, dependency_info);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
-    }
-    /**`vkCmdSetEvent2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_event2_unchecked<'a>(
-        &mut self,
-        event: &Event,
-        dependency_info: &DependencyInfo<'a>,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_event2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                event.raw(),
-                dependency_info as *const DependencyInfo<'a> as *const _,
-            )
-        };
-        crate::hooks::event_recorded(self, event);
-        self.state_changed();
-        self.retain_with(event.address(), || event.retained());
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in core::iter::once(dependency_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept {
-            self.retain(o);
-        }
-    }
 }
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers2`
@@ -879,12 +702,12 @@ The rules are on [`vkCmdBindVertexBuffers2`'s reference page](https://registry.k
 - `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`: dynamic (checks, in every build, that the slice is as long as `buffers` or empty (NULL))
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBindVertexBuffers2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdBindVertexBuffers2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
-- 1: `videocoding` rules are not checked yet
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: explicit rule; the wrappers do not check it*/
     #[inline]
@@ -1000,6 +823,733 @@ The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at r
         }
         Ok(())
     }
+    /**`vkCmdSetCullMode`
+
+# Valid usage
+
+The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCullMode.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetCullMode-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetCullMode-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
+        {
+            let r = self.validate_cmd_set_cull_mode(cull_mode);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
+    }
+    /**`vkCmdSetCullMode` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), cull_mode) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetDepthBiasEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBiasEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
+        {
+            let r = self.validate_cmd_set_depth_bias_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
+    }
+    /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bias_enable_unchecked(
+        &mut self,
+        depth_bias_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_bias_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetDepthBoundsTestEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBoundsTestEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_depth_bounds_test_enable(
+        &mut self,
+        depth_bounds_test_enable: vk::Bool32,
+    ) {
+        {
+            let r = self.validate_cmd_set_depth_bounds_test_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
+        }
+    }
+    /**`vkCmdSetDepthBoundsTestEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
+        &mut self,
+        depth_bounds_test_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bounds_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_bounds_test_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetDepthCompareOp`
+
+# Valid usage
+
+The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthCompareOp.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthCompareOp-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
+        {
+            let r = self.validate_cmd_set_depth_compare_op(depth_compare_op);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
+    }
+    /**`vkCmdSetDepthCompareOp` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_compare_op_unchecked(
+        &mut self,
+        depth_compare_op: vk::CompareOp,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_compare_op;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_compare_op) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetDepthTestEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthTestEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
+        {
+            let r = self.validate_cmd_set_depth_test_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
+    }
+    /**`vkCmdSetDepthTestEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_test_enable_unchecked(
+        &mut self,
+        depth_test_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_test_enable) };
+        crate::hooks::depth_stencil_set(
+            self,
+            crate::recorder::Set::DepthTest(depth_test_enable),
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetDepthWriteEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthWriteEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
+        {
+            let r = self.validate_cmd_set_depth_write_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
+    }
+    /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_depth_write_enable_unchecked(
+        &mut self,
+        depth_write_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), depth_write_enable) };
+        crate::hooks::depth_stencil_set(
+            self,
+            crate::recorder::Set::DepthWrite(depth_write_enable),
+            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetFrontFace`
+
+# Valid usage
+
+The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFrontFace.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetFrontFace-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetFrontFace-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
+        {
+            let r = self.validate_cmd_set_front_face(front_face);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_front_face_unchecked(front_face) }
+    }
+    /**`vkCmdSetFrontFace` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), front_face) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetPrimitiveRestartEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveRestartEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_primitive_restart_enable(
+        &mut self,
+        primitive_restart_enable: vk::Bool32,
+    ) {
+        {
+            let r = self.validate_cmd_set_primitive_restart_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
+        }
+    }
+    /**`vkCmdSetPrimitiveRestartEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
+        &mut self,
+        primitive_restart_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_restart_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), primitive_restart_enable) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetPrimitiveTopology`
+
+# Valid usage
+
+The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveTopology.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_primitive_topology(
+        &mut self,
+        primitive_topology: vk::PrimitiveTopology,
+    ) {
+        {
+            let r = self.validate_cmd_set_primitive_topology(primitive_topology);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
+    }
+    /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_primitive_topology_unchecked(
+        &mut self,
+        primitive_topology: vk::PrimitiveTopology,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_topology;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), primitive_topology) };
+        crate::hooks::dynamic_state_set(
+            self,
+            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetRasterizerDiscardEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizerDiscardEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_rasterizer_discard_enable(
+        &mut self,
+        rasterizer_discard_enable: vk::Bool32,
+    ) {
+        {
+            let r = self.validate_cmd_set_rasterizer_discard_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
+        }
+    }
+    /**`vkCmdSetRasterizerDiscardEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
+        &mut self,
+        rasterizer_discard_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), rasterizer_discard_enable) };
+        crate::hooks::depth_stencil_set(
+            self,
+            crate::recorder::Set::Discard(rasterizer_discard_enable),
+            crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetScissorWithCount`
+
+# Valid usage
+
+The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissorWithCount.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetScissorWithCount-x-03399`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissorWithCount-offset-03400`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissorWithCount-offset-03401`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetScissorWithCount-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+- `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
+        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
+        {
+            let r = self.validate_cmd_set_scissor_with_count(scissors);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
+    }
+    /**`vkCmdSetScissorWithCount` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_scissor_with_count_unchecked(
+        &mut self,
+        scissors: &[vk::Rect2D],
+    ) -> Result<()> {
+        let fp = self.device().fns().fp_v1_3().cmd_set_scissor_with_count;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
+            crate::hooks::viewport_count_set(
+                self,
+                scissors.len(),
+                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
+            );
+            self.state_changed();
+        }
+        Ok(())
+    }
+    /**`vkCmdSetStencilOp`
+
+# Valid usage
+
+The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilOp.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilOp-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
+- `VUID-vkCmdSetStencilOp-failOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-passOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-compareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilOp-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_stencil_op(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        fail_op: vk::StencilOp,
+        pass_op: vk::StencilOp,
+        depth_fail_op: vk::StencilOp,
+        compare_op: vk::CompareOp,
+    ) {
+        {
+            let r = self
+                .validate_cmd_set_stencil_op(
+                    face_mask,
+                    fail_op,
+                    pass_op,
+                    depth_fail_op,
+                    compare_op,
+                );
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_set_stencil_op_unchecked(
+                face_mask,
+                fail_op,
+                pass_op,
+                depth_fail_op,
+                compare_op,
+            )
+        }
+    }
+    /**`vkCmdSetStencilOp` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_op_unchecked(
+        &mut self,
+        face_mask: vk::StencilFaceFlags,
+        fail_op: vk::StencilOp,
+        pass_op: vk::StencilOp,
+        depth_fail_op: vk::StencilOp,
+        compare_op: vk::CompareOp,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_op;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe {
+            fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
+        };
+        crate::hooks::depth_stencil_set(
+            self,
+            crate::recorder::Set::StencilOp(
+                face_mask,
+                [fail_op, pass_op, depth_fail_op],
+            ),
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetStencilTestEnable`
+
+# Valid usage
+
+The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilTestEnable.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetStencilTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
+        {
+            let r = self.validate_cmd_set_stencil_test_enable();
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
+    }
+    /**`vkCmdSetStencilTestEnable` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_stencil_test_enable_unchecked(
+        &mut self,
+        stencil_test_enable: vk::Bool32,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw(), stencil_test_enable) };
+        crate::hooks::depth_stencil_set(
+            self,
+            crate::recorder::Set::StencilTest(stencil_test_enable),
+            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
+        );
+        self.state_changed();
+    }
+    /**`vkCmdSetViewportWithCount`
+
+# Valid usage
+
+The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWithCount.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetViewportWithCount-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+- `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_set_viewport_with_count(
+        &mut self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
+        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
+        {
+            let r = self.validate_cmd_set_viewport_with_count(viewports);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
+    }
+    /**`vkCmdSetViewportWithCount` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_viewport_with_count_unchecked(
+        &mut self,
+        viewports: &[vk::Viewport],
+    ) -> Result<()> {
+        let fp = self.device().fns().fp_v1_3().cmd_set_viewport_with_count;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
+            crate::hooks::viewport_count_set(
+                self,
+                viewports.len(),
+                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
+            );
+            self.state_changed();
+        }
+        Ok(())
+    }
+}
+impl<'c> Recorder<'c, InRendering> {
+    /**`vkCmdEndRendering`
+
+# Valid usage
+
+The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
+
+- `VUID-vkCmdEndRendering-None-06161`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
+- `VUID-vkCmdEndRendering-commandBuffer-06162`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
+- `VUID-vkCmdEndRendering-None-06999`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
+- `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdEndRendering-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+        let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
+        {
+            let r = always.and_then(|()| self.validate_cmd_end_rendering());
+            let _ = self.accept(r);
+            if self.begin_skipped() {
+                return self.into_state();
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_end_rendering_unchecked() }
+    }
+    /**`vkCmdEndRendering` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, `VUID-vkCmdEndRendering-None-06999`, `VUID-vkCmdEndRendering-None-06161`, `VUID-vkCmdEndRendering-commandBuffer-06162`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
+        let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe { fp(self.raw()) };
+        crate::hooks::instance_ended(&mut self);
+        self.into_state()
+    }
+}
+impl<'c, S: Scope> Recorder<'c, S> {
     /**`vkCmdPipelineBarrier2`
 
 # Safety
@@ -1102,714 +1652,6 @@ The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run 
             for o in kept {
                 self.retain(o);
             }
-        }
-        Ok(())
-    }
-    /**`vkCmdSetCullMode`
-
-# Valid usage
-
-The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCullMode.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetCullMode-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCullMode-cullMode-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetCullMode-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
-        {
-            let r = self.validate_cmd_set_cull_mode(cull_mode);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
-    }
-    /**`vkCmdSetCullMode` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), cull_mode) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetDepthBiasEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBiasEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
-        {
-            let r = self.validate_cmd_set_depth_bias_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
-    }
-    /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_depth_bias_enable_unchecked(
-        &mut self,
-        depth_bias_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), depth_bias_enable) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetDepthBoundsTestEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthBoundsTestEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_depth_bounds_test_enable(
-        &mut self,
-        depth_bounds_test_enable: vk::Bool32,
-    ) {
-        {
-            let r = self.validate_cmd_set_depth_bounds_test_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
-        }
-    }
-    /**`vkCmdSetDepthBoundsTestEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
-        &mut self,
-        depth_bounds_test_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_depth_bounds_test_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), depth_bounds_test_enable) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetDepthCompareOp`
-
-# Valid usage
-
-The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthCompareOp.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetDepthCompareOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetDepthCompareOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
-        {
-            let r = self.validate_cmd_set_depth_compare_op(depth_compare_op);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
-    }
-    /**`vkCmdSetDepthCompareOp` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_depth_compare_op_unchecked(
-        &mut self,
-        depth_compare_op: vk::CompareOp,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_depth_compare_op;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), depth_compare_op) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetDepthTestEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthTestEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetDepthTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
-        {
-            let r = self.validate_cmd_set_depth_test_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
-    }
-    /**`vkCmdSetDepthTestEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_depth_test_enable_unchecked(
-        &mut self,
-        depth_test_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), depth_test_enable) };
-        crate::hooks::depth_stencil_set(
-            self,
-            crate::recorder::Set::DepthTest(depth_test_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetDepthWriteEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthWriteEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
-        {
-            let r = self.validate_cmd_set_depth_write_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
-    }
-    /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_depth_write_enable_unchecked(
-        &mut self,
-        depth_write_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), depth_write_enable) };
-        crate::hooks::depth_stencil_set(
-            self,
-            crate::recorder::Set::DepthWrite(depth_write_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetFrontFace`
-
-# Valid usage
-
-The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFrontFace.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetFrontFace-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetFrontFace-frontFace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetFrontFace-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
-        {
-            let r = self.validate_cmd_set_front_face(front_face);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_front_face_unchecked(front_face) }
-    }
-    /**`vkCmdSetFrontFace` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), front_face) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetPrimitiveRestartEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveRestartEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_primitive_restart_enable(
-        &mut self,
-        primitive_restart_enable: vk::Bool32,
-    ) {
-        {
-            let r = self.validate_cmd_set_primitive_restart_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
-        }
-    }
-    /**`vkCmdSetPrimitiveRestartEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
-        &mut self,
-        primitive_restart_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_restart_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), primitive_restart_enable) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetPrimitiveTopology`
-
-# Valid usage
-
-The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPrimitiveTopology.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_primitive_topology(
-        &mut self,
-        primitive_topology: vk::PrimitiveTopology,
-    ) {
-        {
-            let r = self.validate_cmd_set_primitive_topology(primitive_topology);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
-    }
-    /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_primitive_topology_unchecked(
-        &mut self,
-        primitive_topology: vk::PrimitiveTopology,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_primitive_topology;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), primitive_topology) };
-        crate::hooks::dynamic_state_set(
-            self,
-            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetRasterizerDiscardEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizerDiscardEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_rasterizer_discard_enable(
-        &mut self,
-        rasterizer_discard_enable: vk::Bool32,
-    ) {
-        {
-            let r = self.validate_cmd_set_rasterizer_discard_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
-        }
-    }
-    /**`vkCmdSetRasterizerDiscardEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
-        &mut self,
-        rasterizer_discard_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), rasterizer_discard_enable) };
-        crate::hooks::depth_stencil_set(
-            self,
-            crate::recorder::Set::Discard(rasterizer_discard_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetScissorWithCount`
-
-# Valid usage
-
-The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissorWithCount.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetScissorWithCount-scissorCount-03397`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
-- `VUID-vkCmdSetScissorWithCount-scissorCount-03398`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
-- `VUID-vkCmdSetScissorWithCount-x-03399`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
-- `VUID-vkCmdSetScissorWithCount-offset-03400`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
-- `VUID-vkCmdSetScissorWithCount-offset-03401`: dynamic (checks each scissor's offset is not negative and its ends do not overflow)
-- `VUID-vkCmdSetScissorWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetScissorWithCount-pScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetScissorWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
-        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
-        {
-            let r = self.validate_cmd_set_scissor_with_count(scissors);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
-    }
-    /**`vkCmdSetScissorWithCount` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_scissor_with_count_unchecked(
-        &mut self,
-        scissors: &[vk::Rect2D],
-    ) -> Result<()> {
-        let fp = self.device().fns().fp_v1_3().cmd_set_scissor_with_count;
-        {
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
-            crate::hooks::viewport_count_set(
-                self,
-                scissors.len(),
-                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
-            );
-            self.state_changed();
-        }
-        Ok(())
-    }
-    /**`vkCmdSetStencilOp`
-
-# Valid usage
-
-The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilOp.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetStencilOp-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilOp-faceMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkCmdSetStencilOp-failOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetStencilOp-passOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetStencilOp-depthFailOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetStencilOp-compareOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetStencilOp-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_stencil_op(
-        &mut self,
-        face_mask: vk::StencilFaceFlags,
-        fail_op: vk::StencilOp,
-        pass_op: vk::StencilOp,
-        depth_fail_op: vk::StencilOp,
-        compare_op: vk::CompareOp,
-    ) {
-        {
-            let r = self
-                .validate_cmd_set_stencil_op(
-                    face_mask,
-                    fail_op,
-                    pass_op,
-                    depth_fail_op,
-                    compare_op,
-                );
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.cmd_set_stencil_op_unchecked(
-                face_mask,
-                fail_op,
-                pass_op,
-                depth_fail_op,
-                compare_op,
-            )
-        }
-    }
-    /**`vkCmdSetStencilOp` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_stencil_op_unchecked(
-        &mut self,
-        face_mask: vk::StencilFaceFlags,
-        fail_op: vk::StencilOp,
-        pass_op: vk::StencilOp,
-        depth_fail_op: vk::StencilOp,
-        compare_op: vk::CompareOp,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_op;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
-        };
-        crate::hooks::depth_stencil_set(
-            self,
-            crate::recorder::Set::StencilOp(
-                face_mask,
-                [fail_op, pass_op, depth_fail_op],
-            ),
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetStencilTestEnable`
-
-# Valid usage
-
-The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetStencilTestEnable.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetStencilTestEnable-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetStencilTestEnable-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
-        {
-            let r = self.validate_cmd_set_stencil_test_enable();
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
-    }
-    /**`vkCmdSetStencilTestEnable` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_stencil_test_enable_unchecked(
-        &mut self,
-        stencil_test_enable: vk::Bool32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), stencil_test_enable) };
-        crate::hooks::depth_stencil_set(
-            self,
-            crate::recorder::Set::StencilTest(stencil_test_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
-        );
-        self.state_changed();
-    }
-    /**`vkCmdSetViewportWithCount`
-
-# Valid usage
-
-The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWithCount.html). Settled by the wrappers:
-
-- `VUID-vkCmdSetViewportWithCount-viewportCount-03394`: dynamic (checks the first index plus the count against the device's maxViewports, read once)
-- `VUID-vkCmdSetViewportWithCount-viewportCount-03395`: dynamic (checks one viewport or scissor, the first, unless the device was created with the multiViewport feature, which it remembers)
-- `VUID-vkCmdSetViewportWithCount-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetViewportWithCount-pViewports-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetViewportWithCount-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: `videocoding` rules are not checked yet
-- 2: explicit rule; the wrappers do not check it*/
-    #[inline]
-    pub fn cmd_set_viewport_with_count(
-        &mut self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
-        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
-        {
-            let r = self.validate_cmd_set_viewport_with_count(viewports);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
-    }
-    /**`vkCmdSetViewportWithCount` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn cmd_set_viewport_with_count_unchecked(
-        &mut self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
-        let fp = self.device().fns().fp_v1_3().cmd_set_viewport_with_count;
-        {
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
-            crate::hooks::viewport_count_set(
-                self,
-                viewports.len(),
-                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
-            );
-            self.state_changed();
         }
         Ok(())
     }
@@ -2011,50 +1853,172 @@ The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run t
         self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }
-impl<'c> Recorder<'c, InRendering> {
-    /**`vkCmdEndRendering`
+impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
+    /**`vkCmdResetEvent2`
+
+# Safety
+
+The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdResetEvent2-event-03831`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
+- `VUID-vkCmdResetEvent2-event-03832`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkCmdResetEvent2-commandBuffer-03833`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
 
 # Valid usage
 
-The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRendering.html). Settled by the wrappers:
+The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html). Settled by the wrappers:
 
-- `VUID-vkCmdEndRendering-None-06161`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
-- `VUID-vkCmdEndRendering-commandBuffer-06162`: static (the method exists only on a recorder inside dynamic rendering it began itself (its state type))
-- `VUID-vkCmdEndRendering-None-06999`: dynamic (checks the queries the recorder has begun and not ended, with the subpass each began in (the 1.3.239 layer does not check it: proven by the error alone; a refused end of an instance first ends them, so the driver sees a valid end of an unsubmittable buffer))
-- `VUID-vkCmdEndRendering-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndRendering-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndRendering-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndRendering-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent2-stageMask-03929`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-stageMask-03930`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-synchronization2-03829`: dynamic (checks the rule as written (recogniser: feature must be enabled))
+- `VUID-vkCmdResetEvent2-stageMask-03830`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
+- `VUID-vkCmdResetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdResetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdResetEvent2-stageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdResetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdResetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `videocoding` rules are not checked yet
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
-        let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
+    pub unsafe fn cmd_reset_event2(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) {
         {
-            let r = always.and_then(|()| self.validate_cmd_end_rendering());
-            let _ = self.accept(r);
-            if self.begin_skipped() {
-                return self.into_state();
+            let r = self.validate_cmd_reset_event2(event, stage_mask);
+            if !self.accept(r) {
+                return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_rendering_unchecked() }
+        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
     }
-    /**`vkCmdEndRendering` without its dynamic checks.
+    /**`vkCmdResetEvent2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, `VUID-vkCmdEndRendering-None-06999`, `VUID-vkCmdEndRendering-None-06161`, `VUID-vkCmdEndRendering-commandBuffer-06162`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
-        let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
+    pub unsafe fn cmd_reset_event2_unchecked(
+        &mut self,
+        event: &Event,
+        stage_mask: vk::PipelineStageFlags2,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_reset_event2;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw()) };
-        crate::hooks::instance_ended(&mut self);
-        self.into_state()
+        unsafe { fp(self.raw(), event.raw(), stage_mask) };
+        crate::hooks::event_recorded(self, event);
+        self.state_changed();
+        self.retain_with(event.address(), || event.retained());
+    }
+    /**`vkCmdSetEvent2`
+
+# Safety
+
+The caller upholds these 33 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
+- `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdSetEvent2-dstStageMask-03828`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdSetEvent2-commandBuffer-03826`: The current device mask of `commandBuffer` must include exactly one physical device
+- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
+- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
+- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
+- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
+- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
+
+# Valid usage
+
+The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetEvent2-synchronization2-03824`: dynamic (checks the rule as written (recogniser: feature must be enabled))
+- `VUID-vkCmdSetEvent2-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetEvent2-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCmdSetEvent2-pDependencyInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdSetEvent2-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetEvent2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub unsafe fn cmd_set_event2<'a>(
+        &mut self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) {
+        {
+            let r = self.validate_cmd_set_event2(event, dependency_info);
+            if !self.accept(r) {
+                return;
+            }
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
+    }
+    /**`vkCmdSetEvent2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_event2_unchecked<'a>(
+        &mut self,
+        event: &Event,
+        dependency_info: &DependencyInfo<'a>,
+    ) {
+        let fp = self.device().fns().fp_v1_3().cmd_set_event2;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        unsafe {
+            fp(
+                self.raw(),
+                event.raw(),
+                dependency_info as *const DependencyInfo<'a> as *const _,
+            )
+        };
+        crate::hooks::event_recorded(self, event);
+        self.state_changed();
+        self.retain_with(event.address(), || event.retained());
+        let kept: Vec<tuff_runtime::Retained> = {
+            let live = self.device().live();
+            let mut kept = Vec::new();
+            for e in core::iter::once(dependency_info) {
+                // SAFETY: the safe structs store every pointer with its length.
+                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
+            }
+            kept
+        };
+        for o in kept {
+            self.retain(o);
+        }
     }
 }
