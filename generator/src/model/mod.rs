@@ -88,6 +88,9 @@ pub struct Model {
     pub enabled: BTreeSet<String>,
     /// For each extension, what it depends on (vk.xml's expression).
     pub extension_depends: BTreeMap<String, String>,
+    /// The extensions promoted to a core version the config emits, with that
+    /// version: where one is enabled, so is what the extension brings.
+    pub promoted_to: BTreeMap<String, String>,
     /// The instance extensions (`type="instance"`); the others are device ones.
     pub instance_extensions: BTreeSet<String>,
     /// The reference registry's version (the one the `ash` release the crate builds
@@ -114,6 +117,29 @@ pub struct Handle {
 }
 
 impl Model {
+    /// A condition of validusage.json's key syntax, with each extension promoted to
+    /// an emitted core version read as "the extension or that version": a rule
+    /// filed under `VK_KHR_synchronization2` applies on a Vulkan 1.3 device that
+    /// does not enable the extension, since 1.3 has what it brought.
+    pub fn with_promotions(&self, key: &str) -> String {
+        let mut out = String::with_capacity(key.len());
+        let mut rest = key;
+        while let Some(at) = rest.find("VK_") {
+            out.push_str(&rest[..at]);
+            let len = rest[at..]
+                .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .unwrap_or(rest.len() - at);
+            let name = &rest[at..at + len];
+            match self.promoted_to.get(name) {
+                Some(version) => out.push_str(&format!("({name},{version})")),
+                None => out.push_str(name),
+            }
+            rest = &rest[at + len..];
+        }
+        out.push_str(rest);
+        out
+    }
+
     /// Resolve `registry` and select the emitted API with `config`. Fails if the
     /// config names a version or an extension the registry lacks.
     pub fn build(
@@ -343,6 +369,14 @@ impl Model {
         }
 
         let handles = resolve_handles(&types, &commands);
+        let promoted_to = registry
+            .extensions
+            .iter()
+            .filter_map(|e| {
+                let to = e.promoted_to.as_ref()?;
+                enabled.contains(to).then(|| (e.name.clone(), to.clone()))
+            })
+            .collect();
         Ok(Model {
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
@@ -379,6 +413,7 @@ impl Model {
                 .iter()
                 .filter_map(|e| Some((e.name.clone(), e.depends.clone()?)))
                 .collect(),
+            promoted_to,
             instance_extensions: registry
                 .extensions
                 .iter()

@@ -55,6 +55,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     supported: None,
                     ext_type: None,
                     depends: f.depends,
+                    promoted_to: None,
                     requires: convert_requires(f.children, None, &mut numbers, &mut aliases),
                 });
             }
@@ -85,6 +86,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                         supported: e.supported,
                         ext_type: e.ext_type,
                         depends,
+                        promoted_to: e.promotedto,
                         requires,
                     });
                 }

@@ -174,6 +174,9 @@ pub struct Interface {
     pub ext_type: Option<String>,
     /// For extensions: what it depends on, in vk.xml's expression syntax.
     pub depends: Option<String>,
+    /// For extensions: `promotedto`, the core version (or extension) that took its
+    /// functionality in.
+    pub promoted_to: Option<String>,
     /// Its `<require>` blocks for the vulkan API.
     pub requires: Vec<Require>,
 }

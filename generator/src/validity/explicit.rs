@@ -516,13 +516,19 @@ pub fn recognise(
                 text: text.clone(),
                 on_command: model.commands.contains_key(&rule.item),
                 check,
-                key: rule.key.clone().filter(|k| {
-                    crate::model::expr::Expr::parse(k).is_ok_and(|e| {
-                        e.names()
-                            .iter()
-                            .any(|n| *n != "core" && !n.starts_with("VK_VERSION_"))
-                    })
-                }),
+                // The check runs where its rule applies: an extension promoted to an
+                // emitted version stands for that version too.
+                key: rule
+                    .key
+                    .as_deref()
+                    .map(|k| model.with_promotions(k))
+                    .filter(|k| {
+                        crate::model::expr::Expr::parse(k).is_ok_and(|e| {
+                            e.names()
+                                .iter()
+                                .any(|n| *n != "core" && !n.starts_with("VK_VERSION_"))
+                        })
+                    }),
             });
         }
     }

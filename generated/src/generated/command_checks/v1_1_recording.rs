@@ -24,7 +24,8 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
+                || s.exts.has(origin::VK_VERSION_1_1)))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -42,7 +43,8 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
+                || s.exts.has(origin::VK_VERSION_1_1)))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -60,7 +62,8 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
+                || s.exts.has(origin::VK_VERSION_1_1)))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -97,7 +100,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_DEVICE_GROUP)) && device_mask == 0
+            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
+                || s.exts.has(origin::VK_VERSION_1_1))) && device_mask == 0
         {
             return Err(
                 fail(

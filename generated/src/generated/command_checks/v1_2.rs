@@ -17,7 +17,8 @@ impl Device {
         let s = &self.scope();
         if ((s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
-            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
@@ -34,7 +35,8 @@ impl Device {
     pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -52,7 +54,8 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -95,7 +98,8 @@ impl Device {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_EXT_HOST_QUERY_RESET))
+            || (s.exts.has(origin::VK_EXT_HOST_QUERY_RESET)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && !s.feature(|f| f.v12.host_query_reset)
         {
             return Err(

@@ -76,7 +76,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -90,7 +91,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -104,7 +106,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2))) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -116,7 +119,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -130,7 +134,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -144,8 +149,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
-            && count_buffer_offset % 4 != 0
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2))) && count_buffer_offset % 4 != 0
         {
             return Err(
                 fail(
@@ -199,7 +204,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -213,7 +219,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -227,7 +234,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2))) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -239,7 +247,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -253,7 +262,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2)))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -267,8 +277,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
-            && count_buffer_offset % 4 != 0
+            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
+                || s.exts.has(origin::VK_VERSION_1_2))) && count_buffer_offset % 4 != 0
         {
             return Err(
                 fail(

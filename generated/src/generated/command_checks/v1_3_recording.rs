@@ -22,7 +22,8 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
+            || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.dynamic_rendering)
         {
             return Err(
@@ -202,7 +203,8 @@ impl<'c, S: State> Recorder<'c, S> {
             }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE))
+            || (s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -587,7 +589,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -639,7 +642,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -688,7 +692,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
             return Err(
@@ -702,7 +707,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
             return Err(
@@ -716,7 +722,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -764,7 +771,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
         {
             return Err(
@@ -778,7 +786,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v10.tessellation_shader)
             && (stage_mask.as_raw() & 48) != 0
         {
@@ -793,7 +802,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -804,7 +814,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && (stage_mask.as_raw() & 16384) != 0
         {
             return Err(
@@ -848,7 +859,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(

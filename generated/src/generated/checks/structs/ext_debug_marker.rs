@@ -13,7 +13,9 @@ pub fn check_debug_marker_object_name_info_ext(
         s,
         "VUID-VkDebugMarkerObjectNameInfoEXT-objectType-parameter",
     )?;
-    if s.exts.has(origin::VK_EXT_DEBUG_MARKER) && matches!(v.object_type.as_raw(), 0) {
+    if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
+        || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && matches!(v.object_type.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkDebugMarkerObjectNameInfoEXT-objectType-01490",
@@ -24,7 +26,9 @@ pub fn check_debug_marker_object_name_info_ext(
             ),
         );
     }
-    if s.exts.has(origin::VK_EXT_DEBUG_MARKER) && v.object == 0 {
+    if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
+        || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && v.object == 0
+    {
         return Err(
             fail(
                 "VUID-VkDebugMarkerObjectNameInfoEXT-object-01491",
@@ -55,7 +59,9 @@ pub fn check_debug_marker_object_tag_info_ext(
             ),
         );
     }
-    if s.exts.has(origin::VK_EXT_DEBUG_MARKER) && matches!(v.object_type.as_raw(), 0) {
+    if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
+        || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && matches!(v.object_type.as_raw(), 0)
+    {
         return Err(
             fail(
                 "VUID-VkDebugMarkerObjectTagInfoEXT-objectType-01493",
@@ -66,7 +72,9 @@ pub fn check_debug_marker_object_tag_info_ext(
             ),
         );
     }
-    if s.exts.has(origin::VK_EXT_DEBUG_MARKER) && v.object == 0 {
+    if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
+        || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && v.object == 0
+    {
         return Err(
             fail(
                 "VUID-VkDebugMarkerObjectTagInfoEXT-object-01494",

@@ -190,7 +190,9 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+            || s.exts.has(origin::VK_VERSION_1_1)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -207,7 +209,9 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+            || s.exts.has(origin::VK_VERSION_1_1)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -225,7 +229,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -240,7 +245,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -255,7 +261,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -273,7 +280,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -291,7 +299,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -309,7 +318,8 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -326,8 +336,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        && !s.feature(|f| f.v13.synchronization2)
+    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -340,8 +350,8 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        && !s.feature(|f| f.v13.synchronization2)
+    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -378,7 +388,8 @@ pub fn check_attachment_reference(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -393,8 +404,8 @@ pub fn check_attachment_reference(
             ),
         );
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        && !s.feature(|f| f.v13.synchronization2)
+    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
     {
         return Err(
@@ -559,7 +570,8 @@ pub fn check_buffer_create_info(
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
         || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
-        || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
+        || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
         && (v.flags.as_raw() & 16) != 0
         && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
@@ -966,7 +978,8 @@ pub fn check_compute_pipeline_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
+        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -1149,7 +1162,8 @@ pub fn check_descriptor_pool_size(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0
     {
         return Err(
@@ -1217,7 +1231,8 @@ pub fn check_descriptor_set_layout_binding(
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.inline_uniform_block)
         && matches!(v.descriptor_type.as_raw(), 1000138000)
     {
@@ -1232,7 +1247,8 @@ pub fn check_descriptor_set_layout_binding(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {
@@ -1543,7 +1559,8 @@ pub fn check_framebuffer_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER))
+        || (s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0
     {
         return Err(
@@ -1617,7 +1634,8 @@ pub fn check_graphics_pipeline_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
+        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -2111,8 +2129,10 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1))
-        && (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2)
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
+            || s.exts.has(origin::VK_VERSION_1_1))) && (v.flags.as_raw() & 32) != 0
+        && !matches!(v.image_type.as_raw(), 2)
     {
         return Err(
             fail(
@@ -2135,8 +2155,10 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
-        && (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+            || s.exts.has(origin::VK_VERSION_1_1))) && (v.flags.as_raw() & 128) != 0
+        && (v.flags.as_raw() & 8) == 0
     {
         return Err(
             fail(
@@ -2250,7 +2272,8 @@ pub fn check_image_memory_barrier(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2265,7 +2288,8 @@ pub fn check_image_memory_barrier(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2578,7 +2602,8 @@ pub fn check_pipeline_cache_create_info(
         "VUID-VkPipelineCacheCreateInfo-flags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
+        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 1) != 0
     {
@@ -3826,7 +3851,8 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MULTIVIEW) || s.exts.has(origin::VK_VERSION_1_1)))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -3839,7 +3865,8 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MULTIVIEW) || s.exts.has(origin::VK_VERSION_1_1)))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -3942,7 +3969,10 @@ pub fn check_subpass_description(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
+    if s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+            || s.exts.has(origin::VK_VERSION_1_1))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_color_attachments, v.color_attachment_count) }
@@ -3965,7 +3995,10 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
+    if s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+            || s.exts.has(origin::VK_VERSION_1_1))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
@@ -3989,7 +4022,8 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4014,7 +4048,8 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4039,7 +4074,8 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4063,7 +4099,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_input_attachments, v.input_attachment_count) }
@@ -4084,7 +4121,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_color_attachments, v.color_attachment_count) }
@@ -4105,7 +4143,8 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) {
+    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
@@ -4360,7 +4399,9 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
+            || s.exts.has(origin::VK_VERSION_1_1))
         || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT)) && (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
     {
@@ -4374,7 +4415,9 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
+    if (s.exts.has(origin::VK_VERSION_1_1)
+        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
+            || s.exts.has(origin::VK_VERSION_1_1))
         || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT))
         && s
             .limits()
@@ -4464,7 +4507,8 @@ pub fn check_write_descriptor_set(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.dst_array_element % 4 != 0
     {
@@ -4479,7 +4523,8 @@ pub fn check_write_descriptor_set(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {

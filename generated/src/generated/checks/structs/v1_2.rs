@@ -53,7 +53,8 @@ pub fn check_attachment_description2(
         "VUID-VkAttachmentDescription2-finalLayout-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::COLOR)
@@ -72,7 +73,8 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && matches!(v.final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -86,7 +88,8 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -104,7 +107,8 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -122,7 +126,8 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -140,7 +145,8 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -158,9 +164,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+                || s.exts.has(origin::VK_VERSION_1_1))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -178,9 +186,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+                || s.exts.has(origin::VK_VERSION_1_1))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -198,9 +208,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -215,9 +227,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -232,9 +246,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -252,9 +268,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -272,9 +290,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -292,9 +312,11 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -312,8 +334,10 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -328,8 +352,10 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -367,9 +393,11 @@ pub fn check_attachment_description_stencil_layout(
         "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter",
     )?;
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && matches!(
             v.stencil_initial_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -386,9 +414,11 @@ pub fn check_attachment_description_stencil_layout(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && matches!(
             v.stencil_final_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -405,9 +435,11 @@ pub fn check_attachment_description_stencil_layout(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && matches!(v.stencil_final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -433,7 +465,8 @@ pub fn check_attachment_reference2(
         "VUID-VkAttachmentReference2-layout-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)) && v.attachment != u32::MAX
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2))) && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
     {
         return Err(
@@ -447,9 +480,11 @@ pub fn check_attachment_reference2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -465,8 +500,10 @@ pub fn check_attachment_reference2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -499,9 +536,11 @@ pub fn check_attachment_reference_stencil_layout(
         "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter",
     )?;
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2))))
         && matches!(
             v.stencil_layout.as_raw(), 0 | 2..= 4 | 8 | 1000001002 | 1000117000 |
             1000117001 | 1000241000 | 1000241001
@@ -614,7 +653,8 @@ pub fn check_image_stencil_usage_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_EXT_SEPARATE_STENCIL_USAGE))
+        || (s.exts.has(origin::VK_EXT_SEPARATE_STENCIL_USAGE)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (v.stencil_usage.as_raw() & 64) != 0
         && (v.stencil_usage.as_raw() & 3997471) != 0
     {
@@ -691,7 +731,8 @@ pub fn check_semaphore_type_create_info(
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
+        || (s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v12.timeline_semaphore)
         && matches!(v.semaphore_type.as_raw(), 1)
     {
@@ -706,7 +747,8 @@ pub fn check_semaphore_type_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
+        || (s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0
     {
         return Err(
@@ -784,7 +826,8 @@ pub fn check_subpass_dependency2(
         "VUID-VkSubpassDependency2-dependencyFlags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -798,7 +841,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -813,7 +857,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -827,7 +872,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -842,7 +888,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -856,7 +903,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -870,7 +918,8 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0
     {
         return Err(
@@ -907,7 +956,8 @@ pub fn check_subpass_description2(
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -930,7 +980,8 @@ pub fn check_subpass_description2(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -953,7 +1004,8 @@ pub fn check_subpass_description2(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -976,7 +1028,8 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && s
             .limits()
             .is_some_and(|l| {
@@ -994,9 +1047,11 @@ pub fn check_subpass_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+                || s.exts.has(origin::VK_VERSION_1_1)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1021,9 +1076,11 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
+                || s.exts.has(origin::VK_VERSION_1_1)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1048,9 +1105,11 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1075,9 +1134,11 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1102,9 +1163,11 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
+            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
+                || s.exts.has(origin::VK_VERSION_1_2)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1129,8 +1192,10 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1153,8 +1218,10 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1177,8 +1244,10 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1201,7 +1270,8 @@ pub fn check_subpass_description2(
         }
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
         && !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING)))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
@@ -1216,8 +1286,11 @@ pub fn check_subpass_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
-        && (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW)))
+        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
+            || s.exts.has(origin::VK_VERSION_1_2)))
+        && (s.exts.has(origin::VK_VERSION_1_1)
+            || (s.exts.has(origin::VK_KHR_MULTIVIEW)
+                || s.exts.has(origin::VK_VERSION_1_1))))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
         return Err(

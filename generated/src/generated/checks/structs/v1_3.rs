@@ -41,7 +41,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -52,7 +54,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -65,7 +69,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -76,7 +82,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -89,7 +97,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -115,7 +126,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -141,7 +155,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -170,7 +187,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -199,7 +219,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -226,7 +249,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -253,7 +279,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -298,7 +327,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -343,7 +375,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -388,7 +423,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -433,7 +471,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -478,7 +519,10 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -523,7 +567,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -537,7 +583,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -563,8 +611,9 @@ pub fn check_buffer_image_copy2(
     s: &Scope<'_>,
 ) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.image_extent.width == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.width == 0
     {
         return Err(
             fail(
@@ -576,8 +625,9 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.image_extent.height == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.height == 0
     {
         return Err(
             fail(
@@ -589,8 +639,9 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.image_extent.depth == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.depth == 0
     {
         return Err(
             fail(
@@ -637,7 +688,8 @@ pub fn check_buffer_memory_barrier2(
         "VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -651,7 +703,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -666,7 +719,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -681,7 +735,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -696,7 +751,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -711,7 +767,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -726,7 +783,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -741,7 +799,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -756,7 +815,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -771,7 +831,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -786,7 +847,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -801,7 +863,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -816,7 +879,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -831,7 +895,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -846,7 +911,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -861,7 +927,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -876,7 +943,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -891,7 +959,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -906,7 +975,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -921,7 +991,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -935,7 +1006,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -950,7 +1022,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -965,7 +1038,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -980,7 +1054,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -995,7 +1070,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -1010,7 +1086,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1025,7 +1102,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1040,7 +1118,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1055,7 +1134,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1070,7 +1150,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1085,7 +1166,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -1100,7 +1182,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -1115,7 +1198,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -1130,7 +1214,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -1145,7 +1230,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -1160,7 +1246,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -1175,7 +1262,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -1190,7 +1278,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -1205,7 +1294,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128))
     {
         return Err(
@@ -1219,8 +1309,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)) && v.size != u64::MAX
-        && v.size == 0
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.size != u64::MAX && v.size == 0
     {
         return Err(
             fail(
@@ -1233,7 +1323,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)) && v.size != u64::MAX
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.size != u64::MAX
         && s
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
@@ -1249,7 +1340,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
@@ -1261,7 +1353,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -1277,7 +1370,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -1293,7 +1387,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -1309,7 +1404,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -1325,7 +1421,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -1341,7 +1438,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -1357,7 +1455,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -1373,7 +1472,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -1389,7 +1489,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -1405,7 +1506,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -1421,7 +1523,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -1437,7 +1540,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -1488,8 +1592,9 @@ pub fn check_command_buffer_inheritance_rendering_info(
         "VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
-        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
+        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
+            || s.exts.has(origin::VK_VERSION_1_3))) && !s.feature(|f| f.v11.multiview)
+        && v.view_mask != 0
     {
         return Err(
             fail(
@@ -1534,7 +1639,10 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1558,7 +1666,10 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1582,7 +1693,10 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1608,7 +1722,10 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1634,7 +1751,9 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1645,7 +1764,9 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1658,7 +1779,9 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1669,7 +1792,9 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1720,7 +1845,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1731,7 +1858,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1744,7 +1873,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1755,7 +1886,9 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1768,7 +1901,10 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1794,7 +1930,10 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1823,7 +1962,10 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1869,7 +2011,10 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1915,7 +2060,10 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1961,7 +2109,10 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1988,7 +2139,9 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -2046,7 +2199,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2072,7 +2228,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2098,7 +2257,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2127,7 +2289,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2156,7 +2321,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2183,7 +2351,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2210,7 +2381,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2256,7 +2430,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2302,7 +2479,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2349,7 +2529,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2372,7 +2555,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2395,7 +2581,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2441,7 +2630,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2487,7 +2679,10 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2534,9 +2729,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE1))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
+                || s.exts.has(origin::VK_VERSION_1_1)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -2563,9 +2761,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || s.exts.has(origin::VK_KHR_MAINTENANCE1))
+            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
+                || s.exts.has(origin::VK_VERSION_1_1)))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -2592,7 +2793,9 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -2606,7 +2809,9 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -2662,7 +2867,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -2673,7 +2880,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -2686,7 +2895,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -2697,7 +2908,9 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -2710,7 +2923,10 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2736,7 +2952,10 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2765,7 +2984,10 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2811,7 +3033,10 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2857,7 +3082,10 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2903,7 +3131,10 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2930,7 +3161,9 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -3020,8 +3253,9 @@ pub fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
 pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.extent.width == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.width == 0
     {
         return Err(
             fail(
@@ -3033,8 +3267,9 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.extent.height == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.height == 0
     {
         return Err(
             fail(
@@ -3046,8 +3281,9 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
-        && v.extent.depth == 0
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.depth == 0
     {
         return Err(
             fail(
@@ -3100,7 +3336,8 @@ pub fn check_image_memory_barrier2(
     )?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -3114,7 +3351,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -3129,7 +3367,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -3144,7 +3383,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -3159,7 +3399,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -3174,7 +3415,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -3189,7 +3431,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3204,7 +3447,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3219,7 +3463,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3234,7 +3479,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3249,7 +3495,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3264,7 +3511,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -3279,7 +3527,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -3294,7 +3543,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -3309,7 +3559,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -3324,7 +3575,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -3339,7 +3591,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -3354,7 +3607,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -3369,7 +3623,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -3384,7 +3639,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -3398,7 +3654,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -3413,7 +3670,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -3428,7 +3686,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -3443,7 +3702,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -3458,7 +3718,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -3473,7 +3734,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3488,7 +3750,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3503,7 +3766,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3518,7 +3782,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3533,7 +3798,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3548,7 +3814,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -3563,7 +3830,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -3578,7 +3846,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -3593,7 +3862,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -3608,7 +3878,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -3623,7 +3894,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -3638,7 +3910,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -3653,7 +3926,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -3668,7 +3942,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -3686,7 +3961,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && v.subresource_range.level_count != u32::MAX
         && s
             .image(v.image)
@@ -3706,7 +3982,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -3725,7 +4002,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && v.subresource_range.layer_count != u32::MAX
         && s
             .image(v.image)
@@ -3745,7 +4023,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
@@ -3757,7 +4036,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -3773,7 +4053,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -3789,7 +4070,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -3805,7 +4087,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -3821,7 +4104,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -3837,7 +4121,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -3853,7 +4138,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -3869,7 +4155,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -3885,7 +4172,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -3901,7 +4189,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -3917,7 +4206,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -3933,7 +4223,8 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -3949,9 +4240,11 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3))))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -3966,9 +4259,11 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (s.exts.has(origin::VK_VERSION_1_3)
-            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
+            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+                || s.exts.has(origin::VK_VERSION_1_3))))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {

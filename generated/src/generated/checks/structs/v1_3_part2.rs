@@ -25,7 +25,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         "VUID-VkMemoryBarrier2-dstAccessMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -39,7 +40,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -54,7 +56,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -69,7 +72,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -84,7 +88,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -99,7 +104,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -114,7 +120,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -129,7 +136,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -144,7 +152,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -159,7 +168,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -174,7 +184,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -189,7 +200,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -204,7 +216,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -219,7 +232,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -234,7 +248,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -249,7 +264,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -264,7 +280,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -279,7 +296,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -294,7 +312,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -309,7 +328,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -323,7 +343,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -338,7 +359,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -353,7 +375,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -368,7 +391,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -383,7 +407,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -398,7 +423,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -413,7 +439,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -428,7 +455,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -443,7 +471,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -458,7 +487,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -473,7 +503,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -488,7 +519,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -503,7 +535,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -518,7 +551,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -533,7 +567,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -548,7 +583,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -563,7 +599,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -578,7 +615,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -593,7 +631,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -609,7 +648,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -625,7 +665,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -641,7 +682,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -657,7 +699,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -673,7 +716,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -689,7 +733,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -705,7 +750,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -721,7 +767,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -737,7 +784,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -753,7 +801,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -769,7 +818,8 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -861,7 +911,8 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         "VUID-VkRenderingInfo-flags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)) && v.view_mask == 0
+        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.view_mask == 0
         && v.layer_count == 0
     {
         return Err(
@@ -875,8 +926,9 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
-        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
+        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
+            || s.exts.has(origin::VK_VERSION_1_3))) && !s.feature(|f| f.v11.multiview)
+        && v.view_mask != 0
     {
         return Err(
             fail(
@@ -955,7 +1007,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -968,7 +1022,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -981,7 +1037,10 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1007,7 +1066,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1033,7 +1095,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1062,7 +1127,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1091,7 +1159,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1137,7 +1208,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1183,7 +1257,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1229,7 +1306,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1275,7 +1355,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1321,7 +1404,10 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
+    if s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3))
+    {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1367,7 +1453,9 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1378,7 +1466,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1389,7 +1479,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -1403,7 +1495,9 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+    if ((s.exts.has(origin::VK_VERSION_1_3)
+        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -1434,7 +1528,8 @@ pub fn check_semaphore_submit_info(
         "VUID-VkSemaphoreSubmitInfo-stageMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -1448,7 +1543,8 @@ pub fn check_semaphore_submit_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
+        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
+            || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0
     {
         return Err(
@@ -1498,7 +1594,8 @@ pub fn check_write_descriptor_set_inline_uniform_block(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)) && v.data_size % 4 != 0
+        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
+            || s.exts.has(origin::VK_VERSION_1_3))) && v.data_size % 4 != 0
     {
         return Err(
             fail(
