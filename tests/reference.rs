@@ -140,3 +140,53 @@ fn a_missing_reference_registry_is_named() {
     assert!(stderr.contains("nope/vk.xml"), "{stderr}");
     assert!(!out.exists(), "nothing is written");
 }
+
+#[test]
+fn the_report_breaks_the_emitted_api_down_by_version_and_extension() {
+    let report = std::fs::read_to_string(root().join("generated/VALIDATION.md")).unwrap();
+    let section = report
+        .split("## Per version and extension (emitted API)")
+        .nth(1)
+        .expect("the report has the section")
+        .split("\n## ")
+        .next()
+        .unwrap();
+    // "settled of total" cells: implicit, creation, usage.
+    let cells = |row: &str| -> Vec<(usize, usize)> {
+        row.split(" | ")
+            .filter_map(|c| {
+                let (settled, total) = c
+                    .trim_matches(|ch| ch == '|' || ch == ' ')
+                    .split_once(" of ")?;
+                Some((settled.parse().ok()?, total.parse().ok()?))
+            })
+            .collect()
+    };
+    let rows: Vec<(&str, Vec<(usize, usize)>)> = section
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| Version"))
+        .map(|l| (l.split(" | ").next().unwrap_or(""), cells(l)))
+        .collect();
+    assert!(rows.iter().all(|(_, c)| c.len() == 3), "{rows:?}");
+    assert!(rows.iter().any(|(name, _)| *name == "| `VK_KHR_swapchain`"));
+    assert!(rows.iter().any(|(name, _)| *name == "| Vulkan 1.3"));
+    // The rows add up to the emitted API's table.
+    let emitted = report
+        .split("## Emitted API")
+        .nth(1)
+        .expect("the emitted table")
+        .lines()
+        .find(|l| l.starts_with("| Implicit |"))
+        .expect("its implicit row")
+        .split(" | ")
+        .map(|c| c.trim_matches(|ch| ch == '|' || ch == ' ').to_owned())
+        .collect::<Vec<_>>();
+    let (settled, total): (usize, usize) = rows
+        .iter()
+        .map(|(_, c)| c[0])
+        .fold((0, 0), |(s, t), (a, b)| (s + a, t + b));
+    assert_eq!(total.to_string(), emitted[4]);
+    let static_dynamic: usize =
+        emitted[1].parse::<usize>().unwrap() + emitted[2].parse::<usize>().unwrap();
+    assert_eq!(settled, static_dynamic);
+}

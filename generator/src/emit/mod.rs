@@ -101,23 +101,10 @@ pub const GENERATED_DIR: &str = "src/generated";
 /// extension that first names it (`khr_swapchain`), read from its condition, so a
 /// reader finds an extension's items in one file.
 pub(crate) fn module_of(model: &Model, item: &str) -> String {
-    let expr = model.condition(item).expr();
-    // An item promoted to core (`VK_KHR_copy_commands2,VK_VERSION_1_3`) belongs to
-    // the oldest version that has it on its own.
-    let version = expr
-        .alternatives()
-        .iter()
-        .filter_map(|alt| match alt {
-            crate::model::expr::Expr::Name(n) if n.starts_with("VK_VERSION_") => Some(n),
-            _ => None,
-        })
-        .min();
-    match version.map(String::as_str).or_else(|| expr.first_name()) {
-        None | Some("core") => "v1_0".to_owned(),
-        Some(v) if v.starts_with("VK_VERSION_") => {
-            format!("v{}", v.trim_start_matches("VK_VERSION_"))
-        }
-        Some(ext) => names::feature(ext),
+    let home = model.home(item);
+    match home.strip_prefix("VK_VERSION_") {
+        Some(v) => format!("v{v}"),
+        None => names::feature(&home),
     }
 }
 

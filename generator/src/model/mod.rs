@@ -117,6 +117,27 @@ pub struct Handle {
 }
 
 impl Model {
+    /// The version or extension an item belongs to, as vk.xml spells it: its core
+    /// version (`VK_VERSION_1_0` for `core`), the oldest version that has it on its
+    /// own for an item promoted to core (`VK_KHR_copy_commands2,VK_VERSION_1_3`),
+    /// else the extension that first names it. The generated module of the item
+    /// and the report's per-extension table both read it.
+    pub fn home(&self, item: &str) -> String {
+        let expr = self.condition(item).expr();
+        let version = expr
+            .alternatives()
+            .iter()
+            .filter_map(|alt| match alt {
+                expr::Expr::Name(n) if n.starts_with("VK_VERSION_") => Some(n),
+                _ => None,
+            })
+            .min();
+        match version.map(String::as_str).or_else(|| expr.first_name()) {
+            None | Some("core") => "VK_VERSION_1_0".to_owned(),
+            Some(name) => name.to_owned(),
+        }
+    }
+
     /// A condition of validusage.json's key syntax, with each extension promoted to
     /// an emitted core version read as "the extension or that version": a rule
     /// filed under `VK_KHR_synchronization2` applies on a Vulkan 1.3 device that

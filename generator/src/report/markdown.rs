@@ -116,6 +116,8 @@ pub(super) fn render(r: &Report) -> String {
         );
     }
 
+    by_home_section(&mut s, r);
+
     if let Some(c) = &v.comparison {
         let _ = writeln!(s, "\n## Derived implicit rules against validusage.json\n");
         let _ = writeln!(
@@ -436,5 +438,55 @@ fn refused_section(s: &mut String, r: &Report) {
         for o in rules {
             let _ = writeln!(s, "  - `{}`: {}", o.vuid, o.text);
         }
+    }
+}
+
+/// The emitted API's rules by the version or extension their item belongs to.
+fn by_home_section(s: &mut String, r: &Report) {
+    let _ = writeln!(s, "\n## Per version and extension (emitted API)\n");
+    let _ = writeln!(
+        s,
+        "The emitted API's rules by the version or extension their item belongs to \
+         (an item promoted to core counts with the oldest version that has it; one an \
+         extension's interaction with another adds, with the first extension its \
+         condition names; the rules of SPIR-V and built-in entities apart). Each cell is \
+         the rules settled, statically or dynamically, of those that apply; the items \
+         an extension's Cargo feature gates are exactly its own.\n"
+    );
+    let _ = writeln!(
+        s,
+        "| Version or extension | Implicit | Implicit settled | Creation | Usage |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|");
+    let mut homes: Vec<(&String, &super::Table)> = r.by_home.iter().collect();
+    homes.sort_by_key(|(h, _)| {
+        (
+            !h.starts_with("VK_VERSION_"),
+            h.as_str() == super::SPIRV_HOME,
+            h.to_string(),
+        )
+    });
+    let cell = |t: &super::Table, row: usize| {
+        let total = t.row_total(row);
+        format!("{} of {total}", total - t.counts[row][2])
+    };
+    for (home, t) in homes {
+        let implicit = t.row_total(0);
+        let share = match implicit {
+            0 => "-".to_owned(),
+            n => format!("{:.1}%", (n - t.counts[0][2]) as f64 * 100.0 / n as f64),
+        };
+        let name = match home.strip_prefix("VK_VERSION_") {
+            Some(v) => format!("Vulkan {}", v.replace('_', ".")),
+            None if home.as_str() == super::SPIRV_HOME => home.clone(),
+            None => format!("`{home}`"),
+        };
+        let _ = writeln!(
+            s,
+            "| {name} | {} | {share} | {} | {} |",
+            cell(t, 0),
+            cell(t, 1),
+            cell(t, 2)
+        );
     }
 }

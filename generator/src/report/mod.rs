@@ -17,6 +17,10 @@ use std::collections::BTreeMap;
 /// Why a rule is left to the user when no emitter recorded anything about it.
 pub const UNSETTLED: &str = "no emitted wrapper checks it yet";
 
+/// Where the per-extension table counts the rules of SPIR-V and built-in entities,
+/// which belong to no version or extension of the registry.
+pub const SPIRV_HOME: &str = "SPIR-V and built-ins";
+
 /// Counts of one table: category by status.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Table {
@@ -95,6 +99,10 @@ pub struct Report<'a> {
     /// The rules that apply to each emitted method, tallied; empty unless
     /// [`Report::add_methods`] ran.
     pub methods: Vec<MethodTally>,
+    /// The emitted API's table split by the version or extension each rule's item
+    /// belongs to ([`Model::home`]); rules of SPIR-V and built-in entities under
+    /// [`SPIRV_HOME`].
+    pub by_home: BTreeMap<String, Table>,
     /// The reviewed classes with their rules; empty unless [`Report::add_methods`] ran.
     pub classes: Vec<ClassTally>,
     /// The reference registry's version, when the config names one.
@@ -223,6 +231,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         unknown_records: Vec::new(),
         validity,
         methods: Vec::new(),
+        by_home: BTreeMap::new(),
         classes: Vec::new(),
         reference_version: model.reference_version.clone(),
         left_out: model.left_out.clone(),
@@ -251,6 +260,15 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
             let non_item =
                 !model.types.contains_key(&rule.item) && !model.commands.contains_key(&rule.item);
             report.emitted_non_items += usize::from(non_item);
+            let home = match non_item {
+                true => SPIRV_HOME.to_owned(),
+                false => model.home(&rule.item),
+            };
+            report
+                .by_home
+                .entry(home)
+                .or_default()
+                .add(rule.category, &settlement);
             if let Some(holds) = rule.key_holds {
                 let table = report.emitted_by_key.get_or_insert_with(Table::default);
                 if holds {
