@@ -5,7 +5,8 @@
 # breaks what another registry or a wider config emits fails here.
 #
 # Configurations (one line each in the table below):
-#   1.4.309        the newest registry with validusage.json, pinned config
+#   1.4.309        the newest registry with validusage.json, the pinned config's
+#                  extensions (core and the scenes' eight)
 #
 # (The pinned config itself emits every extension ash 0.38 has, so the committed crate
 # is the every-extension check; scripts/test.sh builds it with all_extensions.)
@@ -64,7 +65,14 @@ status=0
 for name in "${names[@]}"; do
     case "$name" in
     1.4.309)
-        check "$name" --registry "$registry/1.4.309/vk.xml" || status=1
+        # The pinned config's own extensions, not every one: what a newer registry
+        # adds beyond ash's is the version-bump work, not this check's.
+        cfg="$scratch/scenes.toml"
+        sed -e 's/^all_extensions = true/all_extensions = false/' \
+            -e "s#\"reference/vk.xml\"#\"$root/reference/vk.xml\"#" \
+            -e "s#\"examples/src\"#\"$root/examples/src\"#" \
+            "$root/tuff-gen.toml" >"$cfg"
+        check "$name" --registry "$registry/1.4.309/vk.xml" --config "$cfg" || status=1
         ;;
     *)
         echo "wide-check: unknown configuration $name (known: 1.4.309)" >&2

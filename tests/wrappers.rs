@@ -638,6 +638,59 @@ fn surfaces_keep_their_windows() {
     assert_silent(&headless.messages);
 }
 
+/// A command with a window-system parameter is emitted as an `unsafe` method that
+/// takes ash's raw type (`*mut vk::Display` here), with the rest of its rules settled
+/// as for any other: it answers as the driver does through ash.
+#[test]
+fn a_raw_window_system_parameter_reaches_the_driver_unchanged() {
+    let _serial = vulkan::serial();
+    let window = x11_window::X11Window::open(16, 16);
+    let s = setup_with(true, Wsi::Xlib);
+    // X resource IDs fit in 29 bits; Vulkan's VisualID is 32.
+    let visual = vk::VisualID::try_from(window.visual_id()).expect("a 32-bit visual ID");
+    // SAFETY: a live display connection and a visual of its default screen.
+    let supported = unsafe {
+        s.physical
+            .get_physical_device_xlib_presentation_support_khr(
+                s.family,
+                window.display.cast(),
+                visual,
+            )
+    }
+    .expect("the extension is enabled");
+    let loader = ash::khr::xlib_surface::Instance::new(s.instance.entry().fns(), s.instance.fns());
+    // SAFETY: as above, through ash.
+    let through_ash = unsafe {
+        loader.get_physical_device_xlib_presentation_support(
+            tuff::Handle::raw(&s.physical),
+            s.family,
+            window.display.cast(),
+            visual,
+        )
+    };
+    assert_eq!(supported == vk::TRUE, through_ash);
+    // lavapipe presents to X11 from its one queue family.
+    assert!(through_ash);
+    // Without the extension the table is missing, and the call says so.
+    let headless = setup(true);
+    // SAFETY: as above; the call is refused before Vulkan sees it.
+    let missing = unsafe {
+        headless
+            .physical
+            .get_physical_device_xlib_presentation_support_khr(
+                headless.family,
+                window.display.cast(),
+                visual,
+            )
+    };
+    assert!(matches!(
+        missing,
+        Err(tuff::Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))
+    ));
+    assert_silent(&s.messages);
+    assert_silent(&headless.messages);
+}
+
 #[test]
 fn recreate_refuses_another_surface() {
     let _serial = vulkan::serial();

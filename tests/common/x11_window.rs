@@ -80,6 +80,15 @@ impl X11Window {
         }
     }
 
+    /// The ID of the default visual of the window's screen.
+    pub fn visual_id(&self) -> xlib::VisualID {
+        // SAFETY: the display is live until drop, and the screen is one of its own.
+        unsafe {
+            let visual = (self.xlib.XDefaultVisual)(self.display, self.screen);
+            (self.xlib.XVisualIDFromVisual)(visual)
+        }
+    }
+
     /// Resizes the window and waits until the server has done it.
     pub fn resize(&self, width: u32, height: u32) {
         // SAFETY: the display and window are live until drop.

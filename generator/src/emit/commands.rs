@@ -308,6 +308,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     for (p, shape) in cmd.params.iter().zip(&plan.params) {
         let name = ident(&param(&p.name));
         match shape {
+            Param::Raw => {
+                let ty = crate::plan::types::raw_type(model, &cx.facts, p);
+                lifetimes |= names_a(&ty);
+                args.push(quote!(#name: #ty));
+                call_args.push(quote!(#name,));
+            }
             Param::Dispatch => call_args.push(receiver_raw.clone()),
             Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
             Param::Count => {
@@ -805,25 +811,48 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
         None => (ret, body),
     };
-    let raw_data: Vec<String> = cmd
-        .params
-        .iter()
-        .zip(&plan.params)
-        .filter(|(_, s)| matches!(s, Param::RawData))
-        .map(|(p, _)| format!("`{}`", param(&p.name)))
-        .collect();
+    let raw_of = |which: fn(&Param) -> bool| -> Vec<String> {
+        cmd.params
+            .iter()
+            .zip(&plan.params)
+            .filter(|(_, s)| which(s))
+            .map(|(p, _)| format!("`{}`", param(&p.name)))
+            .collect()
+    };
+    let raw_data = raw_of(|s| matches!(s, Param::RawData));
+    let raw = raw_of(|s| matches!(s, Param::Raw));
     let contract = special.and_then(|s| s.contract);
-    let (unsafe_kw, safety) = match (raw_data.is_empty(), contract) {
-        (true, None) => (quote!(), String::new()),
-        (true, Some(promise)) => (quote!(unsafe), format!("\n\n# Safety\n\n{promise}")),
-        (false, _) => (
+    let mut promises: Vec<String> = Vec::new();
+    if !raw_data.is_empty() {
+        promises.push(format!(
+            "{} is passed to Vulkan as is: it must point to data laid out as the specification of `{}` describes, readable for the whole call.",
+            raw_data.join(", "),
+            plan.name
+        ));
+    }
+    if !raw.is_empty() {
+        promises.push(format!(
+            "{} {} passed to Vulkan as ash's raw type: each must be what the specification of `{}` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.",
+            raw.join(", "),
+            if raw.len() == 1 { "is" } else { "are" },
+            plan.name
+        ));
+    }
+    if !plan.unlocked.is_empty() {
+        let paths: Vec<String> = plan.unlocked.iter().map(|p| format!("`{p}`")).collect();
+        promises.push(format!(
+            "The wrappers cannot lock {}, which `{}` needs externally synchronized: no other thread may use {} during the call.",
+            paths.join(", "),
+            plan.name,
+            if paths.len() == 1 { "it" } else { "them" }
+        ));
+    }
+    promises.extend(contract.map(str::to_owned));
+    let (unsafe_kw, safety) = match promises.is_empty() {
+        true => (quote!(), String::new()),
+        false => (
             quote!(unsafe),
-            format!(
-                "\n\n# Safety\n\n{} is passed to Vulkan as is: it must point to data laid out as the specification of `{}` describes, readable for the whole call.{}",
-                raw_data.join(", "),
-                plan.name,
-                contract.map_or(String::new(), |c| format!(" {c}"))
-            ),
+            format!("\n\n# Safety\n\n{}", promises.join(" ")),
         ),
     };
     // Rules that apply, that no check enforces and no reviewed class covers make the

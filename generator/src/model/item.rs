@@ -16,6 +16,9 @@ pub struct Field {
     pub is_const: bool,
     /// Number of `*` in the declaration.
     pub pointers: usize,
+    /// For each pointer level, outermost first: whether what it points at is
+    /// `const` (`const VkFoo* const* p`: both; `void** p`: neither).
+    pub const_pointees: Vec<bool>,
     /// For fixed-size arrays: the size between the brackets.
     pub static_array: Option<String>,
     /// `len`, as written (the implicit-rule derivation follows the text, as the
@@ -68,6 +71,7 @@ impl From<&registry::Field> for Field {
             type_name,
             is_const,
             pointers,
+            const_pointees,
             static_array,
             len,
             altlen,
@@ -93,6 +97,7 @@ impl From<&registry::Field> for Field {
             type_name,
             is_const,
             pointers,
+            const_pointees,
             static_array,
             len,
             altlen,

@@ -41,6 +41,10 @@ pub enum Param {
     /// A `void*` whose layout another parameter describes (`pData` of an update
     /// template): passed through as a raw pointer, which makes the method `unsafe`.
     RawData,
+    /// A parameter no safe shape fits (a window-system object, a pointer to
+    /// pointers, an array whose length is an expression or unknown): passed through
+    /// as ash's raw type, which makes the method `unsafe`.
+    Raw,
     /// A C string.
     CStr {
         /// May be null.
@@ -80,6 +84,9 @@ pub struct Plan {
     /// recorder must check the next one again: every recorded command but those of
     /// [`super::hooks::KEEPS_DRAW_STATE`].
     pub changes_draw_state: bool,
+    /// Externally synchronized member paths the wrappers cannot lock
+    /// (`pNameInfo->object`): the method is `unsafe`, and its caller synchronizes them.
+    pub unlocked: Vec<String>,
 }
 
 /// A slice parameter sized by another's count (C names).
@@ -204,11 +211,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     if table(model, name).is_none() {
         return Err("no function table".into());
     }
-    if let Some(path) = super::sync::unsupported_member(cx, name) {
-        return Err(format!(
-            "`{path}` is externally synchronized and the wrappers cannot lock it"
-        ));
-    }
+    let unlocked = super::sync::unsupported_members(cx, name);
     let parsed: Vec<_> = cmd.params.iter().map(|p| &p.parsed).collect();
     // Counts named by another parameter's len.
     let count_refs: Vec<(usize, String)> = parsed
@@ -255,7 +258,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 }
                 Param::Value
             } else {
-                return Err(format!("`{}` of type {}", p.name, p.type_name));
+                Param::Raw
             }
         } else if p.pointers == 1 && p.is_const {
             let len = pp.len.first();
@@ -275,7 +278,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                     None => return Err(format!("`{}`: array of {}", p.name, p.type_name)),
                 },
                 (None, None) if p.type_name == "void" => Param::RawData,
-                _ => return Err(format!("`{}`: pointer with length {:?}", p.name, pp.len)),
+                _ => Param::Raw,
             }
         } else if p.pointers == 1 && !p.is_const {
             let len = pp.len.first();
@@ -285,7 +288,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (None, None)
                     if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>
                 {
-                    return Err(format!("`{}`: a window-system object", p.name))
+                    Param::Raw
                 }
                 (Some(LenEntry::Reference(parts)), None)
                     if p.type_name == "void" && parts.len() == 1 && !enumerated =>
@@ -297,10 +300,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (_, _) if enumerated => Param::Enumerated,
                 (None, Some(Kind::Struct)) if has_next(cx, &p.type_name) => Param::InOut,
                 (None, _) if p.type_name != "void" => Param::Output,
-                _ => return Err(format!("`{}`: output {:?}", p.name, pp.len)),
+                _ => Param::Raw,
             }
         } else {
-            return Err(format!("`{}`: {} levels of pointer", p.name, p.pointers));
+            Param::Raw
         };
         params.push(shape);
     }
@@ -380,6 +383,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         transition: transition(name),
         same_len,
         changes_draw_state,
+        unlocked,
     })
 }
 

@@ -104,12 +104,16 @@ pub struct MethodSafety {
     pub owned: Vec<Owned>,
     /// Rules that apply and are not enforced but are in a reviewed class (its index).
     pub classed: Vec<(String, usize)>,
+    /// Whether the caller vouches for something no check can: a parameter taken as
+    /// a raw pointer or window-system value (`Param::Raw`, `Param::RawData`), or an
+    /// externally synchronized object the wrappers cannot lock (`Plan::unlocked`).
+    pub raw: bool,
 }
 
 impl MethodSafety {
     /// Whether the method is emitted safe.
     pub fn safe(&self) -> bool {
-        self.owned.is_empty()
+        self.owned.is_empty() && !self.raw
     }
 }
 

@@ -386,6 +386,9 @@ fn param_settlement(p: &Param) -> Settlement {
         Param::RawData => Settlement::User(
             "a raw pointer the caller vouches for through an `unsafe` method".into(),
         ),
+        Param::Raw => Settlement::User(
+            "passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method".into(),
+        ),
     }
 }
 

@@ -12,8 +12,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 /// The objects that structs name and the registry marks externally synchronized,
-/// by command and path: how the wrapper finds their locks. One table, so a command
-/// with a path not listed here is not emitted (see [`unsupported_member`]).
+/// by command and path: how the wrapper finds their locks. One table; a command
+/// with a path not listed here is emitted `unsafe` (see [`unsupported_members`]).
 pub(crate) fn member(command: &str, path: &str) -> Option<TokenStream> {
     Some(match (command, path) {
         // The pool is taken again as a wrapper and written into the info.
@@ -66,14 +66,18 @@ pub(crate) fn implicit(command: &str) -> Option<TokenStream> {
     })
 }
 
-/// The first externally synchronized member path of `command` that the wrappers
-/// cannot lock, if any: such a command is not emitted safely.
-pub fn unsupported_member(cx: &Context, command: &str) -> Option<String> {
-    let cmd = cx.model.commands.get(command)?;
-    cmd.params.iter().find_map(|p| {
-        p.parsed.externsync.iter().find_map(|e| match e {
+/// The externally synchronized member paths of `command` that the wrappers cannot
+/// lock: such a command is emitted `unsafe`, its caller synchronizing them.
+pub fn unsupported_members(cx: &Context, command: &str) -> Vec<String> {
+    let Some(cmd) = cx.model.commands.get(command) else {
+        return Vec::new();
+    };
+    cmd.params
+        .iter()
+        .flat_map(|p| &p.parsed.externsync)
+        .filter_map(|e| match e {
             ExternSync::Member(path) if member(command, path).is_none() => Some(path.clone()),
             _ => None,
         })
-    })
+        .collect()
 }

@@ -119,6 +119,20 @@ pub fn spelled(model: &Model, facts: &TypeFacts, name: &str) -> TokenStream {
     })
 }
 
+/// ash's spelling of a parameter as written, pointers included, outermost first:
+/// `*const *const vk::AccelerationStructureBuildRangeInfoKHR`, `*mut vk::Display`,
+/// `vk::HANDLE`.
+pub fn raw_type(model: &Model, facts: &TypeFacts, p: &crate::model::Field) -> TokenStream {
+    let mut ty = ash_type(model, facts, &p.type_name).unwrap_or(quote!(::core::ffi::c_void));
+    for level in (0..p.pointers).rev() {
+        ty = match p.const_pointees.get(level).copied().unwrap_or(p.is_const) {
+            true => quote!(*const #ty),
+            false => quote!(*mut #ty),
+        };
+    }
+    ty
+}
+
 /// ash's spelling of a base type, without pointers: `u32`, `vk::Format`,
 /// `vk::BufferCreateInfo<'a>`. `None` for types ash lacks a name for here.
 pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStream> {

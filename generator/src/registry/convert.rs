@@ -243,9 +243,19 @@ fn declaration(code: &str, type_name: &str, name: &str) -> Field {
         .map_or(code.len(), |p| p + after_type);
     let before_name = &code[..name_at];
     let after_name = code[(name_at + name.len()).min(code.len())..].trim();
+    // `const` before the type qualifies what the innermost pointer points at; one
+    // after a `*` qualifies that pointer, which the next level out points at.
+    let (base, stars) = before_name.split_at(after_type.min(before_name.len()));
+    let mut inner_first = vec![base.contains("const")];
+    for part in stars.split('*').skip(1) {
+        inner_first.push(part.contains("const"));
+    }
+    let pointers = before_name.matches('*').count();
+    inner_first.truncate(pointers);
     Field {
         is_const: before_name.contains("const"),
-        pointers: before_name.matches('*').count(),
+        pointers,
+        const_pointees: inner_first.into_iter().rev().collect(),
         static_array: after_name
             .strip_prefix('[')
             .and_then(|rest| rest.split_once(']'))
@@ -468,6 +478,21 @@ mod tests {
         );
         assert!(f.is_const);
         assert_eq!(f.pointers, 1);
+        assert_eq!(f.const_pointees, [true]);
+        let f = declaration(
+            "const VkAccelerationStructureBuildRangeInfoKHR* const* ppBuildRangeInfos",
+            "VkAccelerationStructureBuildRangeInfoKHR",
+            "ppBuildRangeInfos",
+        );
+        assert_eq!(f.const_pointees, [true, true]);
+        let f = declaration("void** ppData", "void", "ppData");
+        assert_eq!(f.const_pointees, [false, false]);
+        let f = declaration(
+            "struct AHardwareBuffer** pBuffer",
+            "AHardwareBuffer",
+            "pBuffer",
+        );
+        assert_eq!(f.const_pointees, [false, false]);
         let f = declaration("void** ppData", "void", "ppData");
         assert!(!f.is_const);
         assert_eq!(f.pointers, 2);

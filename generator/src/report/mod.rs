@@ -202,7 +202,7 @@ impl Report<'_> {
                     method: row.method.clone(),
                     scenes: scene_calls.contains(&row.method),
                     counts,
-                    safe: owned == 0,
+                    safe: safety.get(&row.command).is_none_or(|m| m.safe()),
                     owned,
                 }
             })

@@ -53,3 +53,24 @@ impl<'c, S: State> Recorder<'c, S> {
         Ok(())
     }
 }
+#[cfg(feature = "ext_debug_marker")]
+impl Device {
+    ///The dynamic checks of [`Self::debug_marker_set_object_name_ext`], run before the call.
+    pub(crate) fn validate_debug_marker_set_object_name_ext<'a>(
+        &self,
+        name_info: &DebugMarkerObjectNameInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_debug_marker_object_name_info_ext(name_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::debug_marker_set_object_tag_ext`], run before the call.
+    pub(crate) fn validate_debug_marker_set_object_tag_ext<'a>(
+        &self,
+        tag_info: &DebugMarkerObjectTagInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_debug_marker_object_tag_info_ext(tag_info, s)?;
+        Ok(())
+    }
+}

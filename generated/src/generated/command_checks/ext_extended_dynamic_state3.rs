@@ -562,6 +562,31 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///The dynamic checks of [`Self::cmd_set_sample_mask_ext`], run before the call.
+    pub(crate) fn validate_cmd_set_sample_mask_ext(
+        &self,
+        samples: vk::SampleCountFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        crate::checks::enum_sample_count_flag_bits(
+            samples,
+            s,
+            "VUID-vkCmdSetSampleMaskEXT-samples-parameter",
+        )?;
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::cmd_set_shading_rate_image_enable_nv`], run before the call.
     pub(crate) fn validate_cmd_set_shading_rate_image_enable_nv(&self) -> Result<()> {
         if !crate::validation::supports(

@@ -20,4 +20,20 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///The dynamic checks of [`Self::cmd_draw_multi_indexed_ext`], run before the call.
+    pub(crate) fn validate_cmd_draw_multi_indexed_ext(&self) -> Result<()> {
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support graphics operations"
+                        .into(),
+                ),
+            );
+        }
+        Ok(())
+    }
 }

@@ -4,6 +4,18 @@
 use super::*;
 #[cfg(feature = "fuchsia_external_semaphore")]
 impl Device {
+    ///The dynamic checks of [`Self::get_semaphore_zircon_handle_fuchsia`], run before the call.
+    pub(crate) fn validate_get_semaphore_zircon_handle_fuchsia<'a>(
+        &self,
+        get_zircon_handle_info: &SemaphoreGetZirconHandleInfoFUCHSIA<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_semaphore_get_zircon_handle_info_fuchsia(
+            get_zircon_handle_info,
+            s,
+        )?;
+        Ok(())
+    }
     ///The dynamic checks of [`Self::import_semaphore_zircon_handle_fuchsia`], run before the call.
     pub(crate) fn validate_import_semaphore_zircon_handle_fuchsia<'a>(
         &self,

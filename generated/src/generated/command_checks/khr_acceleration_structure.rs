@@ -3,7 +3,230 @@
 //!The dynamic checks of the commands of `VK_KHR_ACCELERATION_STRUCTURE`.
 use super::*;
 #[cfg(feature = "khr_acceleration_structure")]
+impl Device {
+    ///The dynamic checks of [`Self::build_acceleration_structures_khr`], run before the call.
+    pub(crate) fn validate_build_acceleration_structures_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if infos.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength",
+                    "`infoCount` is 0".into(),
+                ),
+            );
+        }
+        if let Some(h) = deferred_operation {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent",
+                        "`deferredOperation` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        for x in infos.iter() {
+            crate::checks::check_acceleration_structure_build_geometry_info_khr(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::copy_acceleration_structure_khr`], run before the call.
+    pub(crate) fn validate_copy_acceleration_structure_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if let Some(h) = deferred_operation {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent",
+                        "`deferredOperation` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::copy_acceleration_structure_to_memory_khr`], run before the call.
+    pub(crate) fn validate_copy_acceleration_structure_to_memory_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if let Some(h) = deferred_operation {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent",
+                        "`deferredOperation` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::copy_memory_to_acceleration_structure_khr`], run before the call.
+    pub(crate) fn validate_copy_memory_to_acceleration_structure_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if let Some(h) = deferred_operation {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent",
+                        "`deferredOperation` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::create_acceleration_structure_khr`], run before the call.
+    pub(crate) fn validate_create_acceleration_structure_khr<'a>(
+        &self,
+        create_info: &AccelerationStructureCreateInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_acceleration_structure_create_info_khr(create_info, s)?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_acceleration_structure_build_sizes_khr`], run before the call.
+    pub(crate) fn validate_get_acceleration_structure_build_sizes_khr<'a>(
+        &self,
+        build_type: vk::AccelerationStructureBuildTypeKHR,
+        build_info: &AccelerationStructureBuildGeometryInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::enum_acceleration_structure_build_type_khr(
+            build_type,
+            s,
+            "VUID-vkGetAccelerationStructureBuildSizesKHR-buildType-parameter",
+        )?;
+        crate::checks::check_acceleration_structure_build_geometry_info_khr(
+            build_info,
+            s,
+        )?;
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::write_acceleration_structures_properties_khr`], run before the call.
+    pub(crate) fn validate_write_acceleration_structures_properties_khr(
+        &self,
+        acceleration_structures: &[&AccelerationStructureKHR],
+        query_type: vk::QueryType,
+        data: &mut [u8],
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::enum_query_type(
+            query_type,
+            s,
+            "VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter",
+        )?;
+        if acceleration_structures.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
+                    "`accelerationStructureCount` is 0".into(),
+                ),
+            );
+        }
+        if data.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength",
+                    "`dataSize` is 0".into(),
+                ),
+            );
+        }
+        for h in acceleration_structures.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
+                        "`pAccelerationStructures` does not come from `device`".into(),
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+}
+#[cfg(feature = "khr_acceleration_structure")]
 impl<'c> Recorder<'c, Outside> {
+    ///The dynamic checks of [`Self::cmd_build_acceleration_structures_indirect_khr`], run before the call.
+    pub(crate) fn validate_cmd_build_acceleration_structures_indirect_khr<'a>(
+        &self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if infos.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength",
+                    "`infoCount` is 0".into(),
+                ),
+            );
+        }
+        for x in infos.iter() {
+            crate::checks::check_acceleration_structure_build_geometry_info_khr(x, s)?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::cmd_build_acceleration_structures_khr`], run before the call.
+    pub(crate) fn validate_cmd_build_acceleration_structures_khr<'a>(
+        &self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::COMPUTE,
+        ) {
+            return Err(
+                fail(
+                    "VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool",
+                    "the command buffer's pool does not support compute operations"
+                        .into(),
+                ),
+            );
+        }
+        if infos.is_empty() {
+            return Err(
+                fail(
+                    "VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength",
+                    "`infoCount` is 0".into(),
+                ),
+            );
+        }
+        for x in infos.iter() {
+            crate::checks::check_acceleration_structure_build_geometry_info_khr(x, s)?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::cmd_copy_acceleration_structure_khr`], run before the call.
     pub(crate) fn validate_cmd_copy_acceleration_structure_khr<'a>(
         &self,
@@ -119,119 +342,6 @@ impl<'c> Recorder<'c, Outside> {
                         .into(),
                 ),
             );
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_acceleration_structure")]
-impl Device {
-    ///The dynamic checks of [`Self::copy_acceleration_structure_khr`], run before the call.
-    pub(crate) fn validate_copy_acceleration_structure_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::copy_acceleration_structure_to_memory_khr`], run before the call.
-    pub(crate) fn validate_copy_acceleration_structure_to_memory_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::copy_memory_to_acceleration_structure_khr`], run before the call.
-    pub(crate) fn validate_copy_memory_to_acceleration_structure_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
-        crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::create_acceleration_structure_khr`], run before the call.
-    pub(crate) fn validate_create_acceleration_structure_khr<'a>(
-        &self,
-        create_info: &AccelerationStructureCreateInfoKHR<'a>,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::check_acceleration_structure_create_info_khr(create_info, s)?;
-        Ok(())
-    }
-    ///The dynamic checks of [`Self::write_acceleration_structures_properties_khr`], run before the call.
-    pub(crate) fn validate_write_acceleration_structures_properties_khr(
-        &self,
-        acceleration_structures: &[&AccelerationStructureKHR],
-        query_type: vk::QueryType,
-        data: &mut [u8],
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::enum_query_type(
-            query_type,
-            s,
-            "VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter",
-        )?;
-        if acceleration_structures.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
-                    "`accelerationStructureCount` is 0".into(),
-                ),
-            );
-        }
-        if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
-            );
-        }
-        for h in acceleration_structures.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
-                        "`pAccelerationStructures` does not come from `device`".into(),
-                    ),
-                );
-            }
         }
         Ok(())
     }

@@ -4,6 +4,15 @@
 use super::*;
 #[cfg(feature = "khr_external_fence_win32")]
 impl Device {
+    ///The dynamic checks of [`Self::get_fence_win32_handle_khr`], run before the call.
+    pub(crate) fn validate_get_fence_win32_handle_khr<'a>(
+        &self,
+        get_win32_handle_info: &FenceGetWin32HandleInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::check_fence_get_win32_handle_info_khr(get_win32_handle_info, s)?;
+        Ok(())
+    }
     ///The dynamic checks of [`Self::import_fence_win32_handle_khr`], run before the call.
     pub(crate) fn validate_import_fence_win32_handle_khr<'a>(
         &self,

@@ -25,6 +25,10 @@ mod amd_buffer_marker;
 mod amd_display_native_hdr;
 #[cfg(feature = "amd_shader_info")]
 mod amd_shader_info;
+#[cfg(feature = "android_external_memory_android_hardware_buffer")]
+mod android_external_memory_android_hardware_buffer;
+#[cfg(feature = "ext_calibrated_timestamps")]
+mod ext_calibrated_timestamps;
 #[cfg(feature = "ext_color_write_enable")]
 mod ext_color_write_enable;
 #[cfg(feature = "ext_conditional_rendering")]
@@ -89,6 +93,8 @@ mod ext_validation_cache;
 mod ext_vertex_input_dynamic_state;
 #[cfg(feature = "fuchsia_buffer_collection")]
 mod fuchsia_buffer_collection;
+#[cfg(feature = "fuchsia_external_memory")]
+mod fuchsia_external_memory;
 #[cfg(feature = "fuchsia_external_semaphore")]
 mod fuchsia_external_semaphore;
 #[cfg(feature = "fuchsia_imagepipe_surface")]
@@ -114,12 +120,16 @@ mod khr_descriptor_update_template;
 mod khr_device_group;
 #[cfg(feature = "khr_display")]
 mod khr_display;
+#[cfg(feature = "khr_display_swapchain")]
+mod khr_display_swapchain;
 #[cfg(feature = "khr_external_fence_fd")]
 mod khr_external_fence_fd;
 #[cfg(feature = "khr_external_fence_win32")]
 mod khr_external_fence_win32;
 #[cfg(feature = "khr_external_memory_fd")]
 mod khr_external_memory_fd;
+#[cfg(feature = "khr_external_memory_win32")]
+mod khr_external_memory_win32;
 #[cfg(feature = "khr_external_semaphore_fd")]
 mod khr_external_semaphore_fd;
 #[cfg(feature = "khr_external_semaphore_win32")]
@@ -175,6 +185,8 @@ mod nv_device_generated_commands;
 mod nv_external_memory_capabilities;
 #[cfg(feature = "nv_external_memory_rdma")]
 mod nv_external_memory_rdma;
+#[cfg(feature = "nv_external_memory_win32")]
+mod nv_external_memory_win32;
 #[cfg(feature = "nv_fragment_shading_rate_enums")]
 mod nv_fragment_shading_rate_enums;
 #[cfg(feature = "nv_memory_decompression")]

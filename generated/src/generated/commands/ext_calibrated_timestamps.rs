@@ -3,6 +3,79 @@
 //!The commands of `VK_EXT_CALIBRATED_TIMESTAMPS`.
 use super::*;
 #[cfg(feature = "ext_calibrated_timestamps")]
+impl Device {
+    /**`vkGetCalibratedTimestampsEXT`
+
+# Safety
+
+`timestamps` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetCalibratedTimestampsEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter`: `pTimestamps` must be a valid pointer to an array of `timestampCount` `uint64_t` values
+- `VUID-VkCalibratedTimestampInfoEXT-timeDomain-02354`: `timeDomain` must be one of the VkTimeDomainEXT values returned by vkGetPhysicalDeviceCalibrateableTimeDomainsEXT
+
+# Valid usage
+
+The rules are on [`vkGetCalibratedTimestampsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetCalibratedTimestampsEXT.html). Settled by the wrappers:
+
+- `VUID-vkGetCalibratedTimestampsEXT-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetCalibratedTimestampsEXT-pTimestampInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetCalibratedTimestampsEXT-pMaxDeviation-parameter`: static (written into storage the wrapper provides)
+- `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[inline]
+    pub unsafe fn get_calibrated_timestamps_ext<'a>(
+        &self,
+        timestamp_infos: &[CalibratedTimestampInfoEXT<'a>],
+        timestamps: *mut u64,
+    ) -> Result<u64> {
+        {
+            let r = self.validate_get_calibrated_timestamps_ext(timestamp_infos);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_calibrated_timestamps_ext_unchecked(timestamp_infos, timestamps)
+        }
+    }
+    /**`vkGetCalibratedTimestampsEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_calibrated_timestamps_ext`] checks at run time: `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`, and those of the structs it takes. `timestamps` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetCalibratedTimestampsEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_calibrated_timestamps_ext_unchecked<'a>(
+        &self,
+        timestamp_infos: &[CalibratedTimestampInfoEXT<'a>],
+        timestamps: *mut u64,
+    ) -> Result<u64> {
+        let fp = self
+            .ext()
+            .ext_calibrated_timestamps
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_calibrated_timestamps"))?
+            .get_calibrated_timestamps_ext;
+        let mut out: u64 = Default::default();
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                timestamp_infos.len() as u32,
+                timestamp_infos.as_ptr().cast(),
+                timestamps,
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(out)
+    }
+}
+#[cfg(feature = "ext_calibrated_timestamps")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceCalibrateableTimeDomainsEXT`
 

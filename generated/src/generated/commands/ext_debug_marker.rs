@@ -161,3 +161,120 @@ The caller upholds the rules that [`Self::cmd_debug_marker_insert_ext`] checks a
         Ok(())
     }
 }
+#[cfg(feature = "ext_debug_marker")]
+impl Device {
+    /**`vkDebugMarkerSetObjectNameEXT`
+
+# Safety
+
+The wrappers cannot lock `pNameInfo->object`, which `vkDebugMarkerSetObjectNameEXT` needs externally synchronized: no other thread may use it during the call.
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDebugMarkerObjectNameInfoEXT-object-01492`: `object` must be a Vulkan object of the type associated with `objectType` as defined in `VkDebugReportObjectTypeEXT` and Vulkan Handle Relationship
+
+# Valid usage
+
+The rules are on [`vkDebugMarkerSetObjectNameEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectNameEXT.html). Settled by the wrappers:
+
+- `VUID-vkDebugMarkerSetObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkDebugMarkerSetObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub unsafe fn debug_marker_set_object_name_ext<'a>(
+        &self,
+        name_info: &DebugMarkerObjectNameInfoEXT<'a>,
+    ) -> Result<()> {
+        {
+            let r = self.validate_debug_marker_set_object_name_ext(name_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.debug_marker_set_object_name_ext_unchecked(name_info) }
+    }
+    /**`vkDebugMarkerSetObjectNameEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::debug_marker_set_object_name_ext`] checks at run time (those of the structs it takes). The wrappers cannot lock `pNameInfo->object`, which `vkDebugMarkerSetObjectNameEXT` needs externally synchronized: no other thread may use it during the call.*/
+    #[inline]
+    pub unsafe fn debug_marker_set_object_name_ext_unchecked<'a>(
+        &self,
+        name_info: &DebugMarkerObjectNameInfoEXT<'a>,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .ext_debug_marker
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_marker"))?
+            .debug_marker_set_object_name_ext;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                name_info as *const DebugMarkerObjectNameInfoEXT<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+    /**`vkDebugMarkerSetObjectTagEXT`
+
+# Safety
+
+The wrappers cannot lock `pTagInfo->object`, which `vkDebugMarkerSetObjectTagEXT` needs externally synchronized: no other thread may use it during the call.
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDebugMarkerObjectTagInfoEXT-object-01495`: `object` must be a Vulkan object of the type associated with `objectType` as defined in `VkDebugReportObjectTypeEXT` and Vulkan Handle Relationship
+
+# Valid usage
+
+The rules are on [`vkDebugMarkerSetObjectTagEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectTagEXT.html). Settled by the wrappers:
+
+- `VUID-vkDebugMarkerSetObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkDebugMarkerSetObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[inline]
+    pub unsafe fn debug_marker_set_object_tag_ext<'a>(
+        &self,
+        tag_info: &DebugMarkerObjectTagInfoEXT<'a>,
+    ) -> Result<()> {
+        {
+            let r = self.validate_debug_marker_set_object_tag_ext(tag_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.debug_marker_set_object_tag_ext_unchecked(tag_info) }
+    }
+    /**`vkDebugMarkerSetObjectTagEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::debug_marker_set_object_tag_ext`] checks at run time (those of the structs it takes). The wrappers cannot lock `pTagInfo->object`, which `vkDebugMarkerSetObjectTagEXT` needs externally synchronized: no other thread may use it during the call.*/
+    #[inline]
+    pub unsafe fn debug_marker_set_object_tag_ext_unchecked<'a>(
+        &self,
+        tag_info: &DebugMarkerObjectTagInfoEXT<'a>,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .ext_debug_marker
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_debug_marker"))?
+            .debug_marker_set_object_tag_ext;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                tag_info as *const DebugMarkerObjectTagInfoEXT<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+}

@@ -66,3 +66,45 @@ The caller upholds the rules that [`Self::create_direct_fb_surface_ext`] checks 
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
+#[cfg(feature = "ext_directfb_surface")]
+impl PhysicalDevice {
+    /**`vkGetPhysicalDeviceDirectFBPresentationSupportEXT`
+
+# Safety
+
+`dfb` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceDirectFBPresentationSupportEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-queueFamilyIndex-04119`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-dfb-parameter`: `dfb` must be a valid pointer to an `IDirectFB` value
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceDirectFBPresentationSupportEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDirectFBPresentationSupportEXT.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn get_physical_device_direct_fb_presentation_support_ext(
+        &self,
+        queue_family_index: u32,
+        dfb: *mut vk::IDirectFB,
+    ) -> Result<vk::Bool32> {
+        let fp = self
+            .parent()
+            .ext()
+            .ext_directfb_surface
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_directfb_surface"))?
+            .get_physical_device_direct_fb_presentation_support_ext;
+        Ok({
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), queue_family_index, dfb) }
+        })
+    }
+}

@@ -1413,6 +1413,65 @@ The caller upholds the rules that [`Self::cmd_set_sample_locations_enable_ext`] 
         }
         Ok(())
     }
+    /**`vkCmdSetSampleMaskEXT`
+
+# Safety
+
+`sample_mask` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdSetSampleMaskEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkCmdSetSampleMaskEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleMaskEXT.html). Settled by the wrappers:
+
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdSetSampleMaskEXT-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdSetSampleMaskEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn cmd_set_sample_mask_ext(
+        &mut self,
+        samples: vk::SampleCountFlags,
+        sample_mask: *const vk::SampleMask,
+    ) -> Result<()> {
+        {
+            let r = self.validate_cmd_set_sample_mask_ext(samples);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.cmd_set_sample_mask_ext_unchecked(samples, sample_mask) }
+    }
+    /**`vkCmdSetSampleMaskEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_set_sample_mask_ext`] checks at run time: `VUID-vkCmdSetSampleMaskEXT-samples-parameter`, `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool`, and those of the structs it takes. `sample_mask` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdSetSampleMaskEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_set_sample_mask_ext_unchecked(
+        &mut self,
+        samples: vk::SampleCountFlags,
+        sample_mask: *const vk::SampleMask,
+    ) -> Result<()> {
+        let fp = self
+            .device()
+            .ext()
+            .ext_extended_dynamic_state3
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
+            .cmd_set_sample_mask_ext;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), samples, sample_mask) };
+            self.state_changed();
+        }
+        Ok(())
+    }
     /**`vkCmdSetShadingRateImageEnableNV`
 
 # Valid usage

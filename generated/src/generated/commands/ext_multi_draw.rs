@@ -149,4 +149,161 @@ The caller upholds the rules that [`Self::cmd_draw_multi_ext`] checks at run tim
         }
         Ok(())
     }
+    /**`vkCmdDrawMultiIndexedEXT`
+
+# Safety
+
+`vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 71 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkCmdDrawMultiIndexedEXT-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02691`: If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02697`: For each set n that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a descriptor set must have been bound to n at the same pipeline bind point, with a `VkPipelineLayout` that is compatible for set n, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02700`: A valid pipeline must be bound to the pipeline bind point used by this command
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-02701`: If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor extension is enabled) for `commandBuffer`, and done so after any previously bound pipeline with the corresponding state not specified as dynamic
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02859`: There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that pipeline was bound
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02702`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any `VkImage` with a `VkImageView` of the type `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, `VK_IMAGE_VIEW_TYPE_1D_ARRAY`, `VK_IMAGE_VIEW_TYPE_2D_ARRAY` or `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY`, in any shader stage
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02703`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions with `ImplicitLod`, `Dref` or `Proj` in their name, in any shader stage
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02704`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V `OpImageSample*` or `OpImageSparseSample*` instructions that includes a LOD bias or any offset values, in any shader stage
+- `VUID-vkCmdDrawMultiIndexedEXT-viewType-07752`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View Validation
+- `VUID-vkCmdDrawMultiIndexedEXT-format-07753`: If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the SPIR-V Sampled Type column of the Interpretation of Numeric Format table
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04115`: If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image view&#8217;s format
+- `VUID-vkCmdDrawMultiIndexedEXT-OpImageWrite-04469`: If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer view&#8217;s format
+- `VUID-vkCmdDrawMultiIndexedEXT-renderPass-02684`: The current render pass must be compatible with the `renderPass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
+- `VUID-vkCmdDrawMultiIndexedEXT-subpass-02685`: The subpass index of the current render pass must be equal to the `subpass` member of the `VkGraphicsPipelineCreateInfo` structure specified when creating the `VkPipeline` bound to `VK_PIPELINE_BIND_POINT_GRAPHICS`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-07748`: If any shader statically accesses an input attachment, a valid descriptor must be bound to the pipeline via a descriptor set
+- `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07468`: If any shader executed by this pipeline accesses an `OpTypeImage` variable with a `Dim` operand of `SubpassData`, it must be decorated with an `InputAttachmentIndex` that corresponds to a valid input attachment in the current subpass
+- `VUID-vkCmdDrawMultiIndexedEXT-None-07469`: Input attachment views accessed in a subpass must be created with the same VkFormat as the corresponding subpass definition, and be created with a VkImageView that is compatible with the attachment referenced by the subpass' `pInputAttachments`[`InputAttachmentIndex`] in the currently bound VkFramebuffer as specified by Fragment Input Attachment Compatibility
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06537`: Memory backing image subresources used as attachments in the current render pass must not be written in any way other than as an attachment by this command
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06538`: If any recorded command in the current subpass will write to an image subresource as an attachment, this command must not read from the memory backing that image subresource in any other way than as an attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06539`: If any recorded command in the current subpass will read from an image subresource used as an attachment in any way other than as an attachment, this command must not write to that image subresource as an attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06886`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the depth aspect, depth writes must be disabled
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06887`: If the current render pass instance uses a depth/stencil attachment with a read-only layout for the stencil aspect, both front and back `writeMask` are not zero, and stencil test is enabled, all stencil ops must be `VK_STENCIL_OP_KEEP`
+- `VUID-vkCmdDrawMultiIndexedEXT-blendEnable-04727`: If rasterization is not disabled in the bound graphics pipeline, then for each color attachment in the subpass, if the corresponding image view&#8217;s format features do not contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT`, then the `blendEnable` member of the corresponding element of the `pAttachments` member of `pColorBlendState` must be `VK_FALSE`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04007`: All vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must have either valid or VK_NULL_HANDLE buffers bound
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04008`: If the `nullDescriptor` feature is not enabled, all vertex input bindings accessed via vertex input variables declared in the vertex shader entry point&#8217;s interface must not be VK_NULL_HANDLE
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
+- `VUID-vkCmdDrawMultiIndexedEXT-None-07312`: An index buffer must be bound
+- `VUID-vkCmdDrawMultiIndexedEXT-robustBufferAccess2-07825`: If `robustBufferAccess2` is not enabled, (`indexSize` {times} (`firstIndex` + `indexCount`) + `offset`) must be less than or equal to the size of the bound index buffer, with `indexSize` being based on the type specified by `indexType`, where the index buffer, `indexType`, and `offset` are specified via `vkCmdBindIndexBuffer`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04937`: The `multiDraw` feature must be enabled
+- `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04939`: `drawCount` must be less than `VkPhysicalDeviceMultiDrawPropertiesEXT::maxMultiDrawCount`
+- `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04940`: If `drawCount` is greater than zero, `pIndexInfo` must be a valid pointer to memory containing one or more valid instances of VkMultiDrawIndexedInfoEXT structures
+- `VUID-vkCmdDrawMultiIndexedEXT-stride-04941`: `stride` must be a multiple of 4
+- `VUID-vkCmdDrawMultiIndexedEXT-pVertexOffset-parameter`: If `pVertexOffset` is not `NULL`, `pVertexOffset` must be a valid pointer to a valid `int32_t` value
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07029`: For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07030`: Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
+- `VUID-vkCmdDrawMultiIndexedEXT-maintenance4-06425`: If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, with a `VkPipelineLayout` that is compatible for push constants, with the `VkPipelineLayout` used to create the current `VkPipeline`, as described in Pipeline Layout Compatibility
+- `VUID-vkCmdDrawMultiIndexedEXT-None-02699`: Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid as described by descriptor validity if they are statically used by the `VkPipeline` bound to the pipeline bind point used by this command
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-02707`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must not be a protected resource
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-02712`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, any resource written to by the `VkPipeline` object bound to the pipeline bind point used by this command must not be an unprotected resource
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-02713`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, pipeline stages other than the framebuffer-space and compute stages in the `VkPipeline` object bound to the pipeline bind point used by this command must not write to any resource
+- `VUID-vkCmdDrawMultiIndexedEXT-None-06550`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used with `OpImageSample*` or `OpImageSparseSample*` instructions
+- `VUID-vkCmdDrawMultiIndexedEXT-ConstOffset-06551`: If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the `ConstOffset` and `Offset` operands
+- `VUID-vkCmdDrawMultiIndexedEXT-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
+- `VUID-vkCmdDrawMultiIndexedEXT-viewportCount-03417`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, then vkCmdSetViewportWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `VkPipelineViewportStateCreateInfo::scissorCount` of the pipeline
+- `VUID-vkCmdDrawMultiIndexedEXT-scissorCount-03418`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` dynamic state enabled, but not the `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic state enabled, then vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `scissorCount` parameter of `vkCmdSetScissorWithCount` must match the `VkPipelineViewportStateCreateInfo::viewportCount` of the pipeline
+- `VUID-vkCmdDrawMultiIndexedEXT-viewportCount-03419`: If the bound graphics pipeline state was created with both the `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` and `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` dynamic states enabled then both vkCmdSetViewportWithCount and vkCmdSetScissorWithCount must have been called in the current command buffer prior to this drawing command, and the `viewportCount` parameter of `vkCmdSetViewportWithCount` must match the `scissorCount` parameter of `vkCmdSetScissorWithCount`
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04876`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE` dynamic state enabled then vkCmdSetRasterizerDiscardEnable must have been called in the current command buffer prior to this drawing command
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04877`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE` dynamic state enabled then vkCmdSetDepthBiasEnable must have been called in the current command buffer prior to this drawing command
+- `VUID-vkCmdDrawMultiIndexedEXT-None-04879`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE` dynamic state enabled then vkCmdSetPrimitiveRestartEnable must have been called in the current command buffer prior to this drawing command
+- `VUID-vkCmdDrawMultiIndexedEXT-rasterizationSamples-04740`: If rasterization is not disabled in the bound graphics pipeline, and neither the VK_AMD_mixed_attachment_samples nor the VK_NV_framebuffer_mixed_samples extensions are enabled, then VkPipelineMultisampleStateCreateInfo::`rasterizationSamples` must be the same as the current subpass color and/or depth/stencil attachments
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06172`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06173`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-viewMask-06178`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`viewMask` equal to VkRenderingInfo::`viewMask`
+- `VUID-vkCmdDrawMultiIndexedEXT-colorAttachmentCount-06179`: If the current render pass instance was begun with vkCmdBeginRendering, the currently bound graphics pipeline must have been created with a VkPipelineRenderingCreateInfo::`colorAttachmentCount` equal to VkRenderingInfo::`colorAttachmentCount`
+- `VUID-vkCmdDrawMultiIndexedEXT-colorAttachmentCount-06180`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` not equal to VK_NULL_HANDLE must have been created with a VkFormat equal to the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound graphics pipeline
+- `VUID-vkCmdDrawMultiIndexedEXT-colorAttachmentCount-07616`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`colorAttachmentCount` greater than `0`, then each element of the VkRenderingInfo::`pColorAttachments` array with a `imageView` equal to VK_NULL_HANDLE must have the corresponding element of VkPipelineRenderingCreateInfo::`pColorAttachmentFormats` used to create the currently bound pipeline equal to `VK_FORMAT_UNDEFINED`
+- `VUID-vkCmdDrawMultiIndexedEXT-pDepthAttachment-06181`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pDepthAttachment->imageView`
+- `VUID-vkCmdDrawMultiIndexedEXT-pDepthAttachment-07617`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pDepthAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`depthAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
+- `VUID-vkCmdDrawMultiIndexedEXT-pStencilAttachment-06182`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was not VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to the VkFormat used to create VkRenderingInfo::`pStencilAttachment->imageView`
+- `VUID-vkCmdDrawMultiIndexedEXT-pStencilAttachment-07618`: If the current render pass instance was begun with vkCmdBeginRendering and VkRenderingInfo::`pStencilAttachment->imageView` was VK_NULL_HANDLE, the value of VkPipelineRenderingCreateInfo::`stencilAttachmentFormat` used to create the currently bound graphics pipeline must be equal to `VK_FORMAT_UNDEFINED`
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06174`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, this command must not write any values to the depth attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06175`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06176`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pDepthAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pDepthAttachment` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, this command must not write any values to the depth attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-imageView-06177`: If the current render pass instance was begun with vkCmdBeginRendering, the `imageView` member of `pStencilAttachment` is not VK_NULL_HANDLE, and the `layout` member of `pStencilAttachment` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, this command must not write any values to the stencil attachment
+- `VUID-vkCmdDrawMultiIndexedEXT-primitiveTopology-03420`: If the bound graphics pipeline state was created with the `VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY_EXT` dynamic state enabled then vkCmdSetPrimitiveTopology must have been called in the current command buffer prior to this drawing command, and the `primitiveTopology` parameter of `vkCmdSetPrimitiveTopology` must be of the same topology class as the pipeline VkPipelineInputAssemblyStateCreateInfo::`topology` state
+- `VUID-vkCmdDrawMultiIndexedEXT-pStrides-04884`: If the bound graphics pipeline was created with the `VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE_EXT` dynamic state enabled, then vkCmdBindVertexBuffers2EXT must have been called in the current command buffer prior to this drawing command, and the `pStrides` parameter of vkCmdBindVertexBuffers2EXT must not be `NULL`
+
+# Valid usage
+
+The rules are on [`vkCmdDrawMultiIndexedEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawMultiIndexedEXT.html). Settled by the wrappers:
+
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdDrawMultiIndexedEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdDrawMultiIndexedEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 199.
+
+- 198: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn cmd_draw_multi_indexed_ext(
+        &mut self,
+        index_info: &[vk::MultiDrawIndexedInfoEXT],
+        instance_count: u32,
+        first_instance: u32,
+        stride: u32,
+        vertex_offset: *const i32,
+    ) -> Result<()> {
+        {
+            let r = self.validate_cmd_draw_multi_indexed_ext();
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_draw_multi_indexed_ext_unchecked(
+                index_info,
+                instance_count,
+                first_instance,
+                stride,
+                vertex_offset,
+            )
+        }
+    }
+    /**`vkCmdDrawMultiIndexedEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_draw_multi_indexed_ext`] checks at run time: `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. `vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_draw_multi_indexed_ext_unchecked(
+        &mut self,
+        index_info: &[vk::MultiDrawIndexedInfoEXT],
+        instance_count: u32,
+        first_instance: u32,
+        stride: u32,
+        vertex_offset: *const i32,
+    ) -> Result<()> {
+        let fp = self
+            .device()
+            .ext()
+            .ext_multi_draw
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_EXT_multi_draw"))?
+            .cmd_draw_multi_indexed_ext;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    index_info.len() as u32,
+                    index_info.as_ptr().cast(),
+                    instance_count,
+                    first_instance,
+                    stride,
+                    vertex_offset,
+                )
+            };
+            self.state_changed();
+        }
+        Ok(())
+    }
 }

@@ -4,6 +4,81 @@
 use super::*;
 #[cfg(feature = "fuchsia_external_semaphore")]
 impl Device {
+    /**`vkGetSemaphoreZirconHandleFUCHSIA`
+
+# Safety
+
+`zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pZirconHandle-parameter`: `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04758`: `handleType` must have been included in VkExportSemaphoreCreateInfo::`handleTypes` when `semaphore`&#8217;s current payload was created
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04759`: `semaphore` must not currently have its payload replaced by an imported payload as described below in Importing Semaphore Payloads unless that imported payload&#8217;s handle type was included in VkExternalSemaphoreProperties::`exportFromImportedHandleTypes` for `handleType`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04760`: If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04761`: If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04762`: `handleType` must be defined as a Zircon event handle
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04763`: `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+
+# Valid usage
+
+The rules are on [`vkGetSemaphoreZirconHandleFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreZirconHandleFUCHSIA.html). Settled by the wrappers:
+
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[inline]
+    pub unsafe fn get_semaphore_zircon_handle_fuchsia<'a>(
+        &self,
+        get_zircon_handle_info: &SemaphoreGetZirconHandleInfoFUCHSIA<'a>,
+        zircon_handle: *mut vk::zx_handle_t,
+    ) -> Result<()> {
+        {
+            let r = self
+                .validate_get_semaphore_zircon_handle_fuchsia(get_zircon_handle_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_semaphore_zircon_handle_fuchsia_unchecked(
+                get_zircon_handle_info,
+                zircon_handle,
+            )
+        }
+    }
+    /**`vkGetSemaphoreZirconHandleFUCHSIA` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_semaphore_zircon_handle_fuchsia`] checks at run time (those of the structs it takes). `zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+    #[inline]
+    pub unsafe fn get_semaphore_zircon_handle_fuchsia_unchecked<'a>(
+        &self,
+        get_zircon_handle_info: &SemaphoreGetZirconHandleInfoFUCHSIA<'a>,
+        zircon_handle: *mut vk::zx_handle_t,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .fuchsia_external_semaphore
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_FUCHSIA_external_semaphore"))?
+            .get_semaphore_zircon_handle_fuchsia;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                get_zircon_handle_info as *const SemaphoreGetZirconHandleInfoFUCHSIA<'a>
+                    as *const _,
+                zircon_handle,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
     /**`vkImportSemaphoreZirconHandleFUCHSIA`
 
 # Safety

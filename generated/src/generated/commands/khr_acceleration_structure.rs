@@ -3,7 +3,792 @@
 //!The commands of `VK_KHR_ACCELERATION_STRUCTURE`.
 use super::*;
 #[cfg(feature = "khr_acceleration_structure")]
+impl Device {
+    /**`vkBuildAccelerationStructuresKHR`
+
+# Safety
+
+`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkBuildAccelerationStructuresKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildAccelerationStructuresKHR.html). Settled by the wrappers:
+
+- `VUID-vkBuildAccelerationStructuresKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 54.
+
+- 53: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn build_acceleration_structures_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+    ) -> Result<vk::Result> {
+        {
+            let r = self
+                .validate_build_acceleration_structures_khr(deferred_operation, infos);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.build_acceleration_structures_khr_unchecked(
+                deferred_operation,
+                infos,
+                build_range_infos,
+            )
+        }
+    }
+    /**`vkBuildAccelerationStructuresKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+    ) -> Result<vk::Result> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .build_acceleration_structures_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                infos.len() as u32,
+                infos.as_ptr().cast(),
+                build_range_infos,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkCopyAccelerationStructureKHR`
+
+# Valid usage
+
+The rules are on [`vkCopyAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureKHR.html). Settled by the wrappers:
+
+- `VUID-vkCopyAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn copy_acceleration_structure_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        {
+            let r = self
+                .validate_copy_acceleration_structure_khr(deferred_operation, info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.copy_acceleration_structure_khr_unchecked(deferred_operation, info)
+        }
+    }
+    /**`vkCopyAccelerationStructureKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] checks at run time: `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn copy_acceleration_structure_khr_unchecked<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .copy_acceleration_structure_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                info as *const CopyAccelerationStructureInfoKHR<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkCopyAccelerationStructureToMemoryKHR`
+
+# Valid usage
+
+The rules are on [`vkCopyAccelerationStructureToMemoryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureToMemoryKHR.html). Settled by the wrappers:
+
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn copy_acceleration_structure_to_memory_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        {
+            let r = self
+                .validate_copy_acceleration_structure_to_memory_khr(
+                    deferred_operation,
+                    info,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.copy_acceleration_structure_to_memory_khr_unchecked(
+                deferred_operation,
+                info,
+            )
+        }
+    }
+    /**`vkCopyAccelerationStructureToMemoryKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_khr`] checks at run time: `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn copy_acceleration_structure_to_memory_khr_unchecked<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .copy_acceleration_structure_to_memory_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                info as *const CopyAccelerationStructureToMemoryInfoKHR<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkCopyMemoryToAccelerationStructureKHR`
+
+# Valid usage
+
+The rules are on [`vkCopyMemoryToAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToAccelerationStructureKHR.html). Settled by the wrappers:
+
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn copy_memory_to_acceleration_structure_khr<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        {
+            let r = self
+                .validate_copy_memory_to_acceleration_structure_khr(
+                    deferred_operation,
+                    info,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.copy_memory_to_acceleration_structure_khr_unchecked(
+                deferred_operation,
+                info,
+            )
+        }
+    }
+    /**`vkCopyMemoryToAccelerationStructureKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_khr`] checks at run time: `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn copy_memory_to_acceleration_structure_khr_unchecked<'a>(
+        &self,
+        deferred_operation: Option<&DeferredOperationKHR>,
+        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
+    ) -> Result<vk::Result> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .copy_memory_to_acceleration_structure_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                info as *const CopyMemoryToAccelerationStructureInfoKHR<'a> as *const _,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(r)
+    }
+    /**`vkCreateAccelerationStructureKHR`
+
+# Valid usage
+
+The rules are on [`vkCreateAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureKHR.html). Settled by the wrappers:
+
+- `VUID-vkCreateAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCreateAccelerationStructureKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCreateAccelerationStructureKHR-pAllocator-parameter`: static (always NULL)
+- `VUID-vkCreateAccelerationStructureKHR-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn create_acceleration_structure_khr<'a>(
+        &self,
+        create_info: &AccelerationStructureCreateInfoKHR<'a>,
+    ) -> Result<AccelerationStructureKHR> {
+        {
+            let r = self.validate_create_acceleration_structure_khr(create_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.create_acceleration_structure_khr_unchecked(create_info) }
+    }
+    /**`vkCreateAccelerationStructureKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_acceleration_structure_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_acceleration_structure_khr_unchecked<'a>(
+        &self,
+        create_info: &AccelerationStructureCreateInfoKHR<'a>,
+    ) -> Result<AccelerationStructureKHR> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .create_acceleration_structure_khr;
+        let mut out = vk::AccelerationStructureKHR::null();
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                create_info as *const AccelerationStructureCreateInfoKHR<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(
+            AccelerationStructureKHR::from_raw(
+                out,
+                self,
+                {
+                    let live = self.live();
+                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    // SAFETY: the safe info stores every array with its length and chains only
+                    // structs pushed through `push_next`.
+                    unsafe {
+                        crate::reach::acceleration_structure_create_info_khr(
+                            create_info.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                    (!kept.is_empty())
+                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
+                },
+                true,
+            ),
+        )
+    }
+    /**`vkGetAccelerationStructureBuildSizesKHR`
+
+# Safety
+
+`max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetAccelerationStructureBuildSizesKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkGetAccelerationStructureBuildSizesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureBuildSizesKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-buildType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pBuildInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pSizeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 5.
+
+- 4: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn get_acceleration_structure_build_sizes_khr<'a>(
+        &self,
+        build_type: vk::AccelerationStructureBuildTypeKHR,
+        build_info: &AccelerationStructureBuildGeometryInfoKHR<'a>,
+        max_primitive_counts: *const u32,
+        size_info: &mut AccelerationStructureBuildSizesInfoKHR<'a>,
+    ) -> Result<()> {
+        {
+            let r = self
+                .validate_get_acceleration_structure_build_sizes_khr(
+                    build_type,
+                    build_info,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_acceleration_structure_build_sizes_khr_unchecked(
+                build_type,
+                build_info,
+                max_primitive_counts,
+                size_info,
+            )
+        }
+    }
+    /**`vkGetAccelerationStructureBuildSizesKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_acceleration_structure_build_sizes_khr`] checks at run time: `VUID-vkGetAccelerationStructureBuildSizesKHR-buildType-parameter`, and those of the structs it takes. `max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetAccelerationStructureBuildSizesKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_acceleration_structure_build_sizes_khr_unchecked<'a>(
+        &self,
+        build_type: vk::AccelerationStructureBuildTypeKHR,
+        build_info: &AccelerationStructureBuildGeometryInfoKHR<'a>,
+        max_primitive_counts: *const u32,
+        size_info: &mut AccelerationStructureBuildSizesInfoKHR<'a>,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .get_acceleration_structure_build_sizes_khr;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    build_type,
+                    build_info as *const AccelerationStructureBuildGeometryInfoKHR<'a>
+                        as *const _,
+                    max_primitive_counts,
+                    size_info as *mut AccelerationStructureBuildSizesInfoKHR<'a>
+                        as *mut _,
+                )
+            };
+        }
+        Ok(())
+    }
+    /**`vkGetAccelerationStructureDeviceAddressKHR`
+
+# Valid usage
+
+The rules are on [`vkGetAccelerationStructureDeviceAddressKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureDeviceAddressKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetAccelerationStructureDeviceAddressKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetAccelerationStructureDeviceAddressKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_acceleration_structure_device_address_khr<'a>(
+        &self,
+        info: &AccelerationStructureDeviceAddressInfoKHR<'a>,
+    ) -> Result<vk::DeviceAddress> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .get_acceleration_structure_device_address_khr;
+        Ok({
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    info as *const AccelerationStructureDeviceAddressInfoKHR<'a>
+                        as *const _,
+                )
+            }
+        })
+    }
+    /**`vkGetDeviceAccelerationStructureCompatibilityKHR`
+
+# Valid usage
+
+The rules are on [`vkGetDeviceAccelerationStructureCompatibilityKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceAccelerationStructureCompatibilityKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pVersionInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pCompatibility-parameter`: static (written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn get_device_acceleration_structure_compatibility_khr<'a>(
+        &self,
+        version_info: &AccelerationStructureVersionInfoKHR<'a>,
+    ) -> Result<vk::AccelerationStructureCompatibilityKHR> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .get_device_acceleration_structure_compatibility_khr;
+        Ok({
+            let mut out: vk::AccelerationStructureCompatibilityKHR = Default::default();
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    version_info as *const AccelerationStructureVersionInfoKHR<'a>
+                        as *const _,
+                    &mut out,
+                )
+            };
+            out
+        })
+    }
+    /**`vkWriteAccelerationStructuresPropertiesKHR`
+
+# Valid usage
+
+The rules are on [`vkWriteAccelerationStructuresPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteAccelerationStructuresPropertiesKHR.html). Settled by the wrappers:
+
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`: dynamic (checks the slice is not empty)
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[inline]
+    pub fn write_acceleration_structures_properties_khr(
+        &self,
+        acceleration_structures: &[&AccelerationStructureKHR],
+        query_type: vk::QueryType,
+        data: &mut [u8],
+        stride: usize,
+    ) -> Result<()> {
+        {
+            let r = self
+                .validate_write_acceleration_structures_properties_khr(
+                    acceleration_structures,
+                    query_type,
+                    data,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.write_acceleration_structures_properties_khr_unchecked(
+                acceleration_structures,
+                query_type,
+                data,
+                stride,
+            )
+        }
+    }
+    /**`vkWriteAccelerationStructuresPropertiesKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn write_acceleration_structures_properties_khr_unchecked(
+        &self,
+        acceleration_structures: &[&AccelerationStructureKHR],
+        query_type: vk::QueryType,
+        data: &mut [u8],
+        stride: usize,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .write_acceleration_structures_properties_khr;
+        let acceleration_structures_raw: smallvec::SmallVec<
+            [vk::AccelerationStructureKHR; 8],
+        > = acceleration_structures.iter().map(|h| h.raw()).collect();
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                acceleration_structures.len() as u32,
+                acceleration_structures_raw.as_ptr(),
+                query_type,
+                data.len(),
+                data.as_mut_ptr().cast(),
+                stride,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
+}
+#[cfg(feature = "khr_acceleration_structure")]
 impl<'c> Recorder<'c, Outside> {
+    /**`vkCmdBuildAccelerationStructuresIndirectKHR`
+
+# Safety
+
+`max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkCmdBuildAccelerationStructuresIndirectKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresIndirectKHR.html). Settled by the wrappers:
+
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`: dynamic (checks, in every build, that the slice is as long as `infos`)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`: dynamic (checks, in every build, that the slice is as long as `infos`)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 72.
+
+- 71: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn cmd_build_acceleration_structures_indirect_khr<'a>(
+        &mut self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        indirect_device_addresses: &[vk::DeviceAddress],
+        indirect_strides: &[u32],
+        max_primitive_counts: *const *const u32,
+    ) -> Result<()> {
+        if indirect_device_addresses.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter",
+                message: format!(
+                    "`indirect_device_addresses` has {} elements where `infos` has {}",
+                    indirect_device_addresses.len(), infos.len()
+                ),
+            });
+        }
+        if indirect_strides.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter",
+                message: format!(
+                    "`indirect_strides` has {} elements where `infos` has {}",
+                    indirect_strides.len(), infos.len()
+                ),
+            });
+        }
+        {
+            let r = self.validate_cmd_build_acceleration_structures_indirect_khr(infos);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_build_acceleration_structures_indirect_khr_unchecked(
+                infos,
+                indirect_device_addresses,
+                indirect_strides,
+                max_primitive_counts,
+            )
+        }
+    }
+    /**`vkCmdBuildAccelerationStructuresIndirectKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_build_acceleration_structures_indirect_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`, and those of the structs it takes. `max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_build_acceleration_structures_indirect_khr_unchecked<'a>(
+        &mut self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        indirect_device_addresses: &[vk::DeviceAddress],
+        indirect_strides: &[u32],
+        max_primitive_counts: *const *const u32,
+    ) -> Result<()> {
+        let fp = self
+            .device()
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .cmd_build_acceleration_structures_indirect_khr;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    infos.len() as u32,
+                    infos.as_ptr().cast(),
+                    indirect_device_addresses.as_ptr().cast(),
+                    indirect_strides.as_ptr().cast(),
+                    max_primitive_counts,
+                )
+            };
+            self.state_changed();
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in infos.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::acceleration_structure_build_geometry_info_khr(
+                            e.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
+            }
+        }
+        Ok(())
+    }
+    /**`vkCmdBuildAccelerationStructuresKHR`
+
+# Safety
+
+`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkCmdBuildAccelerationStructuresKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresKHR.html). Settled by the wrappers:
+
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
+- `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 64.
+
+- 63: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn cmd_build_acceleration_structures_khr<'a>(
+        &mut self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+    ) -> Result<()> {
+        {
+            let r = self.validate_cmd_build_acceleration_structures_khr(infos);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.cmd_build_acceleration_structures_khr_unchecked(
+                infos,
+                build_range_infos,
+            )
+        }
+    }
+    /**`vkCmdBuildAccelerationStructuresKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::cmd_build_acceleration_structures_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn cmd_build_acceleration_structures_khr_unchecked<'a>(
+        &mut self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+    ) -> Result<()> {
+        let fp = self
+            .device()
+            .ext()
+            .khr_acceleration_structure
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
+            .cmd_build_acceleration_structures_khr;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    infos.len() as u32,
+                    infos.as_ptr().cast(),
+                    build_range_infos,
+                )
+            };
+            self.state_changed();
+            let kept: Vec<tuff_runtime::Retained> = {
+                let live = self.device().live();
+                let mut kept = Vec::new();
+                for e in infos.iter() {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe {
+                        crate::reach::acceleration_structure_build_geometry_info_khr(
+                            e.as_raw(),
+                            live,
+                            &mut kept,
+                        )
+                    };
+                }
+                kept
+            };
+            for o in kept {
+                self.retain(o);
+            }
+        }
+        Ok(())
+    }
     /**`vkCmdCopyAccelerationStructureKHR`
 
 # Valid usage
@@ -314,425 +1099,6 @@ The caller upholds the rules that [`Self::cmd_write_acceleration_structures_prop
             };
             self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
-        }
-        Ok(())
-    }
-}
-#[cfg(feature = "khr_acceleration_structure")]
-impl Device {
-    /**`vkCopyAccelerationStructureKHR`
-
-# Valid usage
-
-The rules are on [`vkCopyAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureKHR.html). Settled by the wrappers:
-
-- `VUID-vkCopyAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn copy_acceleration_structure_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        {
-            let r = self
-                .validate_copy_acceleration_structure_khr(deferred_operation, info);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.copy_acceleration_structure_khr_unchecked(deferred_operation, info)
-        }
-    }
-    /**`vkCopyAccelerationStructureKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] checks at run time: `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn copy_acceleration_structure_khr_unchecked<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .copy_acceleration_structure_khr;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
-                info as *const CopyAccelerationStructureInfoKHR<'a> as *const _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(r)
-    }
-    /**`vkCopyAccelerationStructureToMemoryKHR`
-
-# Valid usage
-
-The rules are on [`vkCopyAccelerationStructureToMemoryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureToMemoryKHR.html). Settled by the wrappers:
-
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn copy_acceleration_structure_to_memory_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        {
-            let r = self
-                .validate_copy_acceleration_structure_to_memory_khr(
-                    deferred_operation,
-                    info,
-                );
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.copy_acceleration_structure_to_memory_khr_unchecked(
-                deferred_operation,
-                info,
-            )
-        }
-    }
-    /**`vkCopyAccelerationStructureToMemoryKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_khr`] checks at run time: `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn copy_acceleration_structure_to_memory_khr_unchecked<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .copy_acceleration_structure_to_memory_khr;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
-                info as *const CopyAccelerationStructureToMemoryInfoKHR<'a> as *const _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(r)
-    }
-    /**`vkCopyMemoryToAccelerationStructureKHR`
-
-# Valid usage
-
-The rules are on [`vkCopyMemoryToAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToAccelerationStructureKHR.html). Settled by the wrappers:
-
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn copy_memory_to_acceleration_structure_khr<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        {
-            let r = self
-                .validate_copy_memory_to_acceleration_structure_khr(
-                    deferred_operation,
-                    info,
-                );
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.copy_memory_to_acceleration_structure_khr_unchecked(
-                deferred_operation,
-                info,
-            )
-        }
-    }
-    /**`vkCopyMemoryToAccelerationStructureKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_khr`] checks at run time: `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn copy_memory_to_acceleration_structure_khr_unchecked<'a>(
-        &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
-        info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .copy_memory_to_acceleration_structure_khr;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
-                info as *const CopyMemoryToAccelerationStructureInfoKHR<'a> as *const _,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(r)
-    }
-    /**`vkCreateAccelerationStructureKHR`
-
-# Valid usage
-
-The rules are on [`vkCreateAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureKHR.html). Settled by the wrappers:
-
-- `VUID-vkCreateAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateAccelerationStructureKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateAccelerationStructureKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateAccelerationStructureKHR-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn create_acceleration_structure_khr<'a>(
-        &self,
-        create_info: &AccelerationStructureCreateInfoKHR<'a>,
-    ) -> Result<AccelerationStructureKHR> {
-        {
-            let r = self.validate_create_acceleration_structure_khr(create_info);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.create_acceleration_structure_khr_unchecked(create_info) }
-    }
-    /**`vkCreateAccelerationStructureKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_acceleration_structure_khr`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_acceleration_structure_khr_unchecked<'a>(
-        &self,
-        create_info: &AccelerationStructureCreateInfoKHR<'a>,
-    ) -> Result<AccelerationStructureKHR> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .create_acceleration_structure_khr;
-        let mut out = vk::AccelerationStructureKHR::null();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                create_info as *const AccelerationStructureCreateInfoKHR<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(
-            AccelerationStructureKHR::from_raw(
-                out,
-                self,
-                {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-                    // SAFETY: the safe info stores every array with its length and chains only
-                    // structs pushed through `push_next`.
-                    unsafe {
-                        crate::reach::acceleration_structure_create_info_khr(
-                            create_info.as_raw(),
-                            live,
-                            &mut kept,
-                        )
-                    };
-                    (!kept.is_empty())
-                        .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-                },
-                true,
-            ),
-        )
-    }
-    /**`vkGetAccelerationStructureDeviceAddressKHR`
-
-# Valid usage
-
-The rules are on [`vkGetAccelerationStructureDeviceAddressKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureDeviceAddressKHR.html). Settled by the wrappers:
-
-- `VUID-vkGetAccelerationStructureDeviceAddressKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureDeviceAddressKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_acceleration_structure_device_address_khr<'a>(
-        &self,
-        info: &AccelerationStructureDeviceAddressInfoKHR<'a>,
-    ) -> Result<vk::DeviceAddress> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .get_acceleration_structure_device_address_khr;
-        Ok({
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(
-                    self.raw(),
-                    info as *const AccelerationStructureDeviceAddressInfoKHR<'a>
-                        as *const _,
-                )
-            }
-        })
-    }
-    /**`vkGetDeviceAccelerationStructureCompatibilityKHR`
-
-# Valid usage
-
-The rules are on [`vkGetDeviceAccelerationStructureCompatibilityKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceAccelerationStructureCompatibilityKHR.html). Settled by the wrappers:
-
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pVersionInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pCompatibility-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn get_device_acceleration_structure_compatibility_khr<'a>(
-        &self,
-        version_info: &AccelerationStructureVersionInfoKHR<'a>,
-    ) -> Result<vk::AccelerationStructureCompatibilityKHR> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .get_device_acceleration_structure_compatibility_khr;
-        Ok({
-            let mut out: vk::AccelerationStructureCompatibilityKHR = Default::default();
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(
-                    self.raw(),
-                    version_info as *const AccelerationStructureVersionInfoKHR<'a>
-                        as *const _,
-                    &mut out,
-                )
-            };
-            out
-        })
-    }
-    /**`vkWriteAccelerationStructuresPropertiesKHR`
-
-# Valid usage
-
-The rules are on [`vkWriteAccelerationStructuresPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteAccelerationStructuresPropertiesKHR.html). Settled by the wrappers:
-
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
-    #[inline]
-    pub fn write_acceleration_structures_properties_khr(
-        &self,
-        acceleration_structures: &[&AccelerationStructureKHR],
-        query_type: vk::QueryType,
-        data: &mut [u8],
-        stride: usize,
-    ) -> Result<()> {
-        {
-            let r = self
-                .validate_write_acceleration_structures_properties_khr(
-                    acceleration_structures,
-                    query_type,
-                    data,
-                );
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.write_acceleration_structures_properties_khr_unchecked(
-                acceleration_structures,
-                query_type,
-                data,
-                stride,
-            )
-        }
-    }
-    /**`vkWriteAccelerationStructuresPropertiesKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn write_acceleration_structures_properties_khr_unchecked(
-        &self,
-        acceleration_structures: &[&AccelerationStructureKHR],
-        query_type: vk::QueryType,
-        data: &mut [u8],
-        stride: usize,
-    ) -> Result<()> {
-        let fp = self
-            .ext()
-            .khr_acceleration_structure
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
-            .write_acceleration_structures_properties_khr;
-        let acceleration_structures_raw: smallvec::SmallVec<
-            [vk::AccelerationStructureKHR; 8],
-        > = acceleration_structures.iter().map(|h| h.raw()).collect();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                acceleration_structures.len() as u32,
-                acceleration_structures_raw.as_ptr(),
-                query_type,
-                data.len(),
-                data.as_mut_ptr().cast(),
-                stride,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
         }
         Ok(())
     }

@@ -4,6 +4,67 @@
 use super::*;
 #[cfg(feature = "khr_external_semaphore_win32")]
 impl Device {
+    /**`vkGetSemaphoreWin32HandleKHR`
+
+# Safety
+
+`handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+# Valid usage
+
+The rules are on [`vkGetSemaphoreWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreWin32HandleKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetSemaphoreWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[inline]
+    pub unsafe fn get_semaphore_win32_handle_khr<'a>(
+        &self,
+        get_win32_handle_info: &SemaphoreGetWin32HandleInfoKHR<'a>,
+        handle: *mut vk::HANDLE,
+    ) -> Result<()> {
+        {
+            let r = self.validate_get_semaphore_win32_handle_khr(get_win32_handle_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_semaphore_win32_handle_khr_unchecked(get_win32_handle_info, handle)
+        }
+    }
+    /**`vkGetSemaphoreWin32HandleKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_semaphore_win32_handle_khr`] checks at run time (those of the structs it takes). `handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+    #[inline]
+    pub unsafe fn get_semaphore_win32_handle_khr_unchecked<'a>(
+        &self,
+        get_win32_handle_info: &SemaphoreGetWin32HandleInfoKHR<'a>,
+        handle: *mut vk::HANDLE,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .khr_external_semaphore_win32
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_external_semaphore_win32"))?
+            .get_semaphore_win32_handle_khr;
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                get_win32_handle_info as *const SemaphoreGetWin32HandleInfoKHR<'a>
+                    as *const _,
+                handle,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(())
+    }
     /**`vkImportSemaphoreWin32HandleKHR`
 
 # Valid usage

@@ -66,3 +66,45 @@ The caller upholds the rules that [`Self::create_wayland_surface_khr`] checks at
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
+#[cfg(feature = "khr_wayland_surface")]
+impl PhysicalDevice {
+    /**`vkGetPhysicalDeviceWaylandPresentationSupportKHR`
+
+# Safety
+
+`display` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter`: `display` must be a valid pointer to a `wl_display` value
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceWaylandPresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWaylandPresentationSupportKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn get_physical_device_wayland_presentation_support_khr(
+        &self,
+        queue_family_index: u32,
+        display: *mut vk::wl_display,
+    ) -> Result<vk::Bool32> {
+        let fp = self
+            .parent()
+            .ext()
+            .khr_wayland_surface
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
+            .get_physical_device_wayland_presentation_support_khr;
+        Ok({
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), queue_family_index, display) }
+        })
+    }
+}

@@ -66,3 +66,46 @@ The caller upholds the rules that [`Self::create_xcb_surface_khr`] checks at run
         Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }
+#[cfg(feature = "khr_xcb_surface")]
+impl PhysicalDevice {
+    /**`vkGetPhysicalDeviceXcbPresentationSupportKHR`
+
+# Safety
+
+`connection`, `visual_id` are passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceXcbPresentationSupportKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-connection-parameter`: `connection` must be a valid pointer to an `xcb_connection_t` value
+
+# Valid usage
+
+The rules are on [`vkGetPhysicalDeviceXcbPresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceXcbPresentationSupportKHR.html). Settled by the wrappers:
+
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 2.
+
+- 1: explicit rule; the wrappers do not check it
+- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[inline]
+    pub unsafe fn get_physical_device_xcb_presentation_support_khr(
+        &self,
+        queue_family_index: u32,
+        connection: *mut vk::xcb_connection_t,
+        visual_id: vk::xcb_visualid_t,
+    ) -> Result<vk::Bool32> {
+        let fp = self
+            .parent()
+            .ext()
+            .khr_xcb_surface
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
+            .get_physical_device_xcb_presentation_support_khr;
+        Ok({
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), queue_family_index, connection, visual_id) }
+        })
+    }
+}

@@ -4,6 +4,42 @@
 use super::*;
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 impl Device {
+    /**`vkGetDescriptorSetHostMappingVALVE`
+
+# Safety
+
+`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetDescriptorSetHostMappingVALVE` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-vkGetDescriptorSetHostMappingVALVE-ppData-parameter`: `ppData` must be a valid pointer to a pointer value
+
+# Valid usage
+
+The rules are on [`vkGetDescriptorSetHostMappingVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetHostMappingVALVE.html). Settled by the wrappers:
+
+- `VUID-vkGetDescriptorSetHostMappingVALVE-device-parameter`: static (`self` is a live wrapper)
+- `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
+
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[inline]
+    pub unsafe fn get_descriptor_set_host_mapping_valve(
+        &self,
+        descriptor_set: &DescriptorSet,
+        data: *mut *mut ::core::ffi::c_void,
+    ) -> Result<()> {
+        let fp = self
+            .ext()
+            .valve_descriptor_set_host_mapping
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_VALVE_descriptor_set_host_mapping"))?
+            .get_descriptor_set_host_mapping_valve;
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), descriptor_set.raw(), data) };
+        }
+        Ok(())
+    }
     /**`vkGetDescriptorSetLayoutHostMappingInfoVALVE`
 
 # Valid usage

@@ -66,7 +66,7 @@ The rules are on [`VkAndroidHardwareBufferPropertiesANDROID`'s reference page](h
 
 - `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAndroidHardwareBufferPropertiesANDROID-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)*/
+- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

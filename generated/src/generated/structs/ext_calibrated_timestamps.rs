@@ -10,11 +10,9 @@ The rules are on [`VkCalibratedTimestampInfoEXT`'s reference page](https://regis
 
 - `VUID-VkCalibratedTimestampInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkCalibratedTimestampInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkCalibratedTimestampInfoEXT-timeDomain-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 1: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "ext_calibrated_timestamps")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -54,12 +54,13 @@ The rules are on [`VkDebugMarkerObjectNameInfoEXT`'s reference page](https://reg
 
 - `VUID-VkDebugMarkerObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugMarkerObjectNameInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDebugMarkerObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugMarkerObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 3: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "ext_debug_marker")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -111,13 +112,14 @@ The rules are on [`VkDebugMarkerObjectTagInfoEXT`'s reference page](https://regi
 
 - `VUID-VkDebugMarkerObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkDebugMarkerObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkDebugMarkerObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkDebugMarkerObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
+- `VUID-VkDebugMarkerObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
+Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
-- 1: a slice may be empty; not checked
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 3: explicit rule; the wrappers do not check it*/
+- 2: checked by the safe methods in every build, but no oracle case breaks it yet
+- 1: explicit rule; the wrappers do not check it*/
 #[cfg(feature = "ext_debug_marker")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -13,11 +13,9 @@ The rules are on [`VkAccelerationStructureCaptureDescriptorDataInfoEXT`'s refere
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-parameter`: static (set from wrappers, which always hold valid handles)
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: `commonparent` rules are not checked yet
-- 4: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
 #[cfg(
     any(
         all(feature = "ext_descriptor_buffer", feature = "khr_acceleration_structure"),

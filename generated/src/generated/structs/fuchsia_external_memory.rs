@@ -54,11 +54,9 @@ The rules are on [`VkMemoryGetZirconHandleInfoFUCHSIA`'s reference page](https:/
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-memory-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 2: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "fuchsia_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

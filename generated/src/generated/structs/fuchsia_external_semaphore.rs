@@ -78,11 +78,9 @@ The rules are on [`VkSemaphoreGetZirconHandleInfoFUCHSIA`'s reference page](http
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "fuchsia_external_semaphore")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -10,14 +10,13 @@ The rules are on [`VkAccelerationStructureBuildGeometryInfoKHR`'s reference page
 
 - `VUID-VkAccelerationStructureBuildGeometryInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pGeometries-parameter`: static (set from a reference or slice, a valid pointer with its length)
 - `VUID-VkAccelerationStructureBuildGeometryInfoKHR-ppGeometries-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 17.
-
-- 1: `commonparent` rules are not checked yet
-- 2: enum or flags value; ash types accept any raw value, not checked
-- 14: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -319,11 +318,10 @@ The rules are on [`VkAccelerationStructureGeometryKHR`'s reference page](https:/
 
 - `VUID-VkAccelerationStructureGeometryKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkAccelerationStructureGeometryKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
+- `VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
+- `VUID-VkAccelerationStructureGeometryKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 3: `parameter` rules are not checked yet
-- 2: enum or flags value; ash types accept any raw value, not checked*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (`parameter` rules are not checked yet).*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

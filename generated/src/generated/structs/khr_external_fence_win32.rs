@@ -69,11 +69,9 @@ The rules are on [`VkFenceGetWin32HandleInfoKHR`'s reference page](https://regis
 - `VUID-VkFenceGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkFenceGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkFenceGetWin32HandleInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 5: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

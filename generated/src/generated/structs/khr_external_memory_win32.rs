@@ -121,11 +121,9 @@ The rules are on [`VkMemoryGetWin32HandleInfoKHR`'s reference page](https://regi
 - `VUID-VkMemoryGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkMemoryGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkMemoryGetWin32HandleInfoKHR-memory-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 3: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -207,11 +207,9 @@ The rules are on [`VkSemaphoreGetWin32HandleInfoKHR`'s reference page](https://r
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 6: explicit rule; the wrappers do not check it*/
+Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
