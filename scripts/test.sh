@@ -23,6 +23,10 @@ cargo clippy -p tuff --features khr_swapchain -- -D warnings
 cargo build -p tuff --features all_extensions
 cargo clippy -p tuff --features all_extensions -- -D warnings
 cargo clippy -p tuff --features all_extensions,multi_thread -- -D warnings
+# Docs build without a broken link or stray HTML, with default features and with
+# every extension.
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
+RUSTDOCFLAGS="-D warnings" cargo doc -p tuff --no-deps --features all_extensions
 cargo test --workspace
 # The runtime again with Vrc = Arc and Vutex = a mutex.
 cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread

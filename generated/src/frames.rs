@@ -9,22 +9,6 @@
 //! hangs on a fence nothing will signal, and is unsignalled when submitted
 //! (`VUID-vkQueueSubmit-fence-00063`); the semaphores of a submission are kept alive
 //! until its fence is seen signalled.
-//!
-//! ```no_run
-//! # fn f(device: &tuff::Device, queue: &tuff::Queue, family: u32) -> tuff::Result<()> {
-//! let mut frames = device.frames_in_flight(family, 2)?;
-//! for _ in 0..100 {
-//!     let mut frame = frames.next_frame()?;
-//!     // frame.index picks this frame's uniform buffer, descriptor set, ...
-//!     let rec = frame.record()?;
-//!     // ... record the frame's commands ...
-//!     rec.end()?;
-//!     // SAFETY: the recording keeps the rules `Queue::queue_submit` lists.
-//!     unsafe { frame.submit(queue, &[], &[]) }?;
-//! }
-//! frames.wait_all()?;
-//! # Ok(()) }
-//! ```
 
 use crate::handles::{CommandBuffer, Device, Fence, Queue, Semaphore};
 use crate::recorder::{Outside, Recorder};
@@ -36,8 +20,24 @@ use crate::{Error, HandleSlice, Result};
 use ash::vk;
 use smallvec::SmallVec;
 
-/// `count` primary command buffers from one pool, each with a fence; see the
-/// [module docs](self) for an example.
+/// `count` primary command buffers from one pool, each with a fence: the host
+/// records one frame while the device still executes the ones before it.
+///
+/// ```no_run
+/// # fn f(device: &tuff::Device, queue: &tuff::Queue, family: u32) -> tuff::Result<()> {
+/// let mut frames = device.frames_in_flight(family, 2)?;
+/// for _ in 0..100 {
+///     let mut frame = frames.next_frame()?;
+///     // frame.index picks this frame's uniform buffer, descriptor set, ...
+///     let rec = frame.record()?;
+///     // ... record the frame's commands ...
+///     rec.end()?;
+///     // SAFETY: the recording keeps the rules `Queue::queue_submit` lists.
+///     unsafe { frame.submit(queue, &[], &[]) }?;
+/// }
+/// frames.wait_all()?;
+/// # Ok(()) }
+/// ```
 pub struct FramesInFlight {
     /// Each frame's command buffer (which keeps the pool) and the fence of its last
     /// submission, created signalled so the first wait returns at once.

@@ -42,7 +42,7 @@ impl Instance {
     ///
     /// [`Error::Window`] when the window gives no handle now, or one of a window
     /// system this build has no surface extension for (macOS and iOS need a
-    /// `CAMetalLayer`, which [`Instance::create_metal_surface_ext`] takes);
+    /// `CAMetalLayer`, which `Instance::create_metal_surface_ext` (feature `ext_metal_surface`) takes);
     /// [`Error::ExtensionNotEnabled`] when the instance did not enable the
     /// extension; and the errors of `vkCreate*SurfaceKHR`.
     pub fn create_surface<W>(&self, window: Vrc<W>) -> Result<SurfaceKHR>

@@ -1106,7 +1106,7 @@ fn owned_rules_doc(owned: &[crate::plan::safety::Owned], heading: bool) -> Strin
         if owned.len() == 1 { "the rule".to_owned() } else { format!("these {} rules", owned.len()) }
     ));
     for o in owned {
-        s.push_str(&format!("\n- `{}`: {}", o.vuid, o.text));
+        s.push_str(&format!("\n- `{}`: {}", o.vuid, super::doc_escape(&o.text)));
     }
     s
 }

@@ -57,7 +57,7 @@ pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
             s.push_str(&format!(
                 "\n- `{vuid}`: {} ({})",
                 settlement.status(),
-                settlement.mechanism()
+                doc_escape(&settlement.mechanism())
             ));
         }
     }
@@ -72,18 +72,41 @@ pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
         0 => {}
         1 => s.push_str(&format!(
             "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total} ({}).",
-            left.keys().next().copied().unwrap_or_default()
+            doc_escape(left.keys().next().copied().unwrap_or_default())
         )),
         _ => {
             s.push_str(&format!(
                 "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total}.\n"
             ));
             for (why, n) in left {
-                s.push_str(&format!("\n- {n}: {why}"));
+                s.push_str(&format!("\n- {n}: {}", doc_escape(why)));
             }
         }
     }
     s
+}
+
+/// Prose from the specification or a settlement, made safe for rustdoc: outside
+/// inline code, `[0,1]` would read as a link and `<formats>` as an HTML tag.
+pub(crate) fn doc_escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut in_code = false;
+    for c in text.chars() {
+        match c {
+            '`' => {
+                in_code = !in_code;
+                out.push(c);
+            }
+            '[' | ']' if !in_code => {
+                out.push('\\');
+                out.push(c);
+            }
+            '<' if !in_code => out.push_str("&lt;"),
+            '>' if !in_code => out.push_str("&gt;"),
+            _ => out.push(c),
+        }
+    }
+    out
 }
 
 /// Where the specification's reference pages are, one per command and struct.
@@ -539,5 +562,18 @@ mod tests {
         assert!(comments.iter().all(|l| l.len() <= 100), "{text}");
         assert!(text.contains("\"quotes\""), "{text}");
         assert!(syn::parse_file(&text).is_ok(), "{text}");
+    }
+
+    #[test]
+    fn prose_reaches_rustdoc_as_text() {
+        assert_eq!(
+            super::doc_escape("in the range [0,1], from vk.xml's <formats>"),
+            "in the range \\[0,1\\], from vk.xml's &lt;formats&gt;"
+        );
+        // Inline code keeps its brackets.
+        assert_eq!(
+            super::doc_escape("`maxComputeWorkGroupCount`[0] and `a[0]`"),
+            "`maxComputeWorkGroupCount`\\[0\\] and `a[0]`"
+        );
     }
 }

@@ -157,7 +157,7 @@ const TRANSITIONS: &[(&str, Transition)] = {
     ]
 };
 
-/// How `command` moves a recorder, from [`TRANSITIONS`].
+/// How `command` moves a recorder, from the table of transitions (`TRANSITIONS`).
 pub fn transition(command: &str) -> Option<Transition> {
     TRANSITIONS
         .iter()

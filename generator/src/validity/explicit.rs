@@ -442,7 +442,7 @@ type Recogniser = fn(&Input, &str) -> Option<Pred>;
 
 /// The recognisers: what a rule requires, each a phrasing of the specification
 /// with its name. A rule is `R` or `If C, C, and C, R` (`then` allowed), where each
-/// condition `C` is read by [`condition`].
+/// condition `C` is read by `condition`.
 pub const RECOGNISERS: &[(&str, Recogniser)] = &[
     ("flags must (not) include bits", flags_req),
     ("value must (not) be one of", value_req),

@@ -9,9 +9,9 @@ impl<'c> Recorder<'c, Outside> {
 
 The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX`
-- `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY`
-- `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ`
+- `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\] minus `baseGroupX`
+- `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\] minus `baseGroupY`
+- `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\] minus `baseGroupZ`
 - `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
 
 # Valid usage

@@ -298,7 +298,7 @@ The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time:
 
 The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-VkCopyBufferToImageInfo2-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range [0,1]
+- `VUID-VkCopyBufferToImageInfo2-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 
 # Valid usage
 
