@@ -980,8 +980,7 @@ fn missing_layers_extensions_and_features_are_named() {
                     .enabled_extension_names(exts),
             )
         }
-        .err()
-        .expect("the instance was created")
+        .expect_err("the instance was created")
     };
     let not_present = |e: tuff::Error| match e {
         tuff::Error::NotPresent { what, names, .. } => (what, names),
@@ -1037,8 +1036,7 @@ fn missing_layers_extensions_and_features_are_named() {
                 .queue_create_infos(&queues)
                 .enabled_features(Some(&probe)),
         )
-        .err()
-        .expect("a device with a missing feature");
+        .expect_err("a device with a missing feature");
     assert_eq!(
         not_present(e),
         ("device feature", vec!["sparseBinding".to_owned()])
@@ -1051,8 +1049,7 @@ fn missing_layers_extensions_and_features_are_named() {
                 .enabled_extension_names(&[c"VK_TUFF_absent".into()]),
         )
     }
-    .err()
-    .expect("a device with a missing extension");
+    .expect_err("a device with a missing extension");
     assert_eq!(
         not_present(e),
         ("device extension", vec!["VK_TUFF_absent".to_owned()])
@@ -1083,8 +1080,7 @@ fn extensions_outside_the_emitted_api_are_refused() {
                     .enabled_layer_names(&[c"VK_LAYER_KHRONOS_validation".into()])
                     .enabled_extension_names(&[c"VK_EXT_debug_utils".into(), name.into()]),
             )
-            .err()
-            .expect("an instance with a refused extension")
+            .expect_err("an instance with a refused extension")
     };
     // Present (the layer provides it) and emitted, but its rules reach methods whose
     // checks do not enforce them.
@@ -1110,8 +1106,7 @@ fn extensions_outside_the_emitted_api_are_refused() {
                     .queue_create_infos(&queues)
                     .enabled_extension_names(&[c"VK_KHR_swapchain".into(), name.into()]),
             )
-            .err()
-            .expect("a device with an unemitted extension");
+            .expect_err("a device with an unemitted extension");
         assert_eq!(not_emitted(e), name.to_str().expect("ASCII"));
     }
     assert_silent(&s.messages);
@@ -2116,4 +2111,34 @@ fn layer_names(s: &Setup, expected: &str, unchecked: impl FnOnce()) {
         "the validation layer did not report {expected}; it said:\n{}",
         said.join("\n")
     );
+}
+
+/// `Debug` shows a handle's type and raw value, and a safe struct's members as ash
+/// prints them, so a user can print what they hold.
+#[test]
+fn handles_and_structs_print_their_type_and_raw_value() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (buffer, _memory) = buffer_with_memory(&s, 64);
+    let printed = format!("{buffer:?}");
+    assert_eq!(printed, format!("Buffer({:?})", tuff::Handle::raw(&buffer)));
+    assert!(printed.starts_with("Buffer(0x"), "{printed}");
+    assert!(format!("{:?}", s.device).starts_with("Device(0x"));
+    assert!(format!("{:?}", s.instance).starts_with("Instance(0x"));
+    let info = tuff::BufferCreateInfo::new()
+        .size(64)
+        .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
+    let printed = format!("{info:?}");
+    assert!(
+        printed.starts_with("BufferCreateInfo {") && printed.contains("size: 64"),
+        "{printed}"
+    );
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let printed = format!("{rec:?}");
+    assert!(printed.contains("state: \"Outside\""), "{printed}");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
 }

@@ -320,6 +320,16 @@ pub struct Bound<T> {
     memory: BoundMemory,
 }
 
+impl<T: core::fmt::Debug> core::fmt::Debug for Bound<T> {
+    /// The resource and its memory.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Bound")
+            .field("resource", &self.resource)
+            .field("memory", &self.memory)
+            .finish()
+    }
+}
+
 impl<T> Bound<T> {
     /// The memory bound to the resource.
     ///
@@ -369,6 +379,15 @@ impl<T> core::ops::Deref for Bound<T> {
 #[derive(Clone)]
 pub struct BoundMemory {
     cell: Vrc<Vutex<Allocation>>,
+}
+
+impl core::fmt::Debug for BoundMemory {
+    /// Its shared allocation's address; the allocation itself is behind a lock.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_tuple("BoundMemory")
+            .field(&Vrc::as_ptr(&self.cell))
+            .finish()
+    }
 }
 
 impl BoundMemory {

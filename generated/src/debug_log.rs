@@ -64,6 +64,16 @@ pub struct MessageLog {
     messages: Arc<Lines>,
 }
 
+impl core::fmt::Debug for MessageLog {
+    /// How many messages it holds now.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let held = self.messages.lines.lock().map(|m| m.len()).unwrap_or(0);
+        f.debug_struct("MessageLog")
+            .field("messages", &held)
+            .finish_non_exhaustive()
+    }
+}
+
 impl MessageLog {
     /// An empty log.
     ///

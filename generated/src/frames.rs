@@ -46,6 +46,16 @@ pub struct FramesInFlight {
     next: usize,
 }
 
+impl core::fmt::Debug for FramesInFlight {
+    /// The frames' command buffers and fences, and the one handed out next.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("FramesInFlight")
+            .field("frames", &self.frames)
+            .field("next", &self.next)
+            .finish()
+    }
+}
+
 impl Device {
     /// A ring of `count` frames in flight (at least one) whose command buffers are
     /// submitted to queues of family `queue_family_index`.
@@ -150,6 +160,17 @@ pub struct Frame<'r> {
     fence: &'r Fence,
     next: &'r mut usize,
     count: usize,
+}
+
+impl core::fmt::Debug for Frame<'_> {
+    /// Its index, command buffer and fence.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Frame")
+            .field("index", &self.index)
+            .field("command_buffer", &*self.commands)
+            .field("fence", self.fence)
+            .finish_non_exhaustive()
+    }
 }
 
 impl Frame<'_> {

@@ -51,6 +51,18 @@ pub struct MappedMemory<'a> {
     atom: u64,
 }
 
+impl core::fmt::Debug for MappedMemory<'_> {
+    /// The memory, where it is mapped and its size.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("MappedMemory")
+            .field("memory", self.memory)
+            .field("ptr", &self.ptr)
+            .field("size", &self.size)
+            .field("coherent", &self.coherent)
+            .finish_non_exhaustive()
+    }
+}
+
 impl DeviceMemory {
     /// Maps the whole memory for host access.
     ///

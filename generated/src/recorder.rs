@@ -458,6 +458,18 @@ pub struct Recorder<'c, S: Scope> {
     _state: PhantomData<S>,
 }
 
+impl<S: Scope> core::fmt::Debug for Recorder<'_, S> {
+    /// The command buffer and the state it records in.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let state = core::any::type_name::<S>();
+        f.debug_struct("Recorder")
+            .field("command_buffer", &self.raw)
+            .field("state", &state.rsplit("::").next().unwrap_or(state))
+            .field("poisoned", &self.poisoned.is_some())
+            .finish_non_exhaustive()
+    }
+}
+
 impl CommandBuffer {
     /// `vkBeginCommandBuffer`: starts recording, outside any render pass instance.
     /// Recording again drops what the previous recording kept alive, so a buffer

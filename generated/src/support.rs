@@ -6,8 +6,10 @@ use core::ffi::{c_char, CStr};
 use core::marker::PhantomData;
 use tuff_runtime::Vrc;
 
-/// Errors of the generated wrappers.
+/// Errors of the generated wrappers. New kinds may come with new checks, so a
+/// `match` on it needs a catch-all arm.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A command returned an error code.
     #[error("Vulkan returned {0}")]
@@ -99,6 +101,13 @@ pub struct Entry {
     inner: Vrc<ash::Entry>,
 }
 
+impl core::fmt::Debug for Entry {
+    /// The loader has no handle to show.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Entry").finish_non_exhaustive()
+    }
+}
+
 impl Entry {
     /// Opens the system's Vulkan loader.
     pub fn load() -> Result<Entry> {
@@ -138,6 +147,16 @@ impl Entry {
 pub struct HandleSlice<'a, T: Handle> {
     raw: smallvec::SmallVec<[T::Raw; 4]>,
     _marker: PhantomData<&'a T>,
+}
+
+impl<T: Handle> core::fmt::Debug for HandleSlice<'_, T>
+where
+    T::Raw: core::fmt::Debug,
+{
+    /// The raw handles, in order.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_list().entries(self.raw.iter()).finish()
+    }
 }
 
 impl<'a, T: Handle> HandleSlice<'a, T> {
@@ -338,6 +357,13 @@ macro_rules! safe_struct {
             }
         }
         $(#[cfg($cfg)])?
+        impl<'a> core::fmt::Debug for $name<'a> {
+            /// The ash struct's members, as ash prints them.
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                core::fmt::Debug::fmt(&self.raw, f)
+            }
+        }
+        $(#[cfg($cfg)])?
         impl<'a> core::ops::Deref for $name<'a> {
             type Target = ash::vk::$name $(<$lt>)?;
             #[inline]
@@ -479,6 +505,13 @@ macro_rules! child_handle {
             #[inline]
             fn deref(&self) -> &ash::vk::$name {
                 &self.inner.raw
+            }
+        }
+        $(#[cfg($cfg)])?
+        impl core::fmt::Debug for $name {
+            /// The type and the raw handle: `Buffer(0x5581e2a0)`.
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.debug_tuple(stringify!($name)).field(&self.inner.raw).finish()
             }
         }
     };

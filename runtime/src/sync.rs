@@ -279,6 +279,15 @@ pub struct HostSync {
     lock: std::sync::Arc<parking_lot::ReentrantMutex<()>>,
 }
 
+impl core::fmt::Debug for HostSync {
+    /// Whether it is a real lock in this build.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("HostSync")
+            .field("locks", &cfg!(feature = "multi_thread"))
+            .finish()
+    }
+}
+
 /// A held [`HostSync`]: released when dropped. It owns its share of the lock, so a
 /// recorder can hold one for as long as it records.
 #[must_use = "the object is synchronized only while the guard lives"]
@@ -289,6 +298,13 @@ pub struct HostSyncGuard {
         parking_lot::RawThreadId,
         (),
     >,
+}
+
+impl core::fmt::Debug for HostSyncGuard {
+    /// A guard has nothing to show but that it is held.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("HostSyncGuard").finish_non_exhaustive()
+    }
 }
 
 impl HostSync {

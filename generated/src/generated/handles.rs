@@ -1542,6 +1542,11 @@ pub struct DeviceExtensions {
         ash::valve::descriptor_set_host_mapping::DeviceFn,
     >,
 }
+impl core::fmt::Debug for DeviceExtensions {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("DeviceExtensions").finish_non_exhaustive()
+    }
+}
 /// A logical device: its function tables and the extensions enabled on it.
 /// Clones share it; the last one waits for the device to go idle and destroys it.
 #[derive(Clone)]
@@ -2501,6 +2506,11 @@ impl Device {
         self.inner.command_buffers.lock().get(&raw).cloned()
     }
 }
+impl core::fmt::Debug for Device {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_tuple("Device").field(&self.inner.raw).finish()
+    }
+}
 impl Handle for Device {
     type Raw = vk::Device;
     #[inline]
@@ -3234,6 +3244,11 @@ pub struct InstanceExtensions {
     ///`VK_QNX_screen_surface`'s commands, when the extension is enabled.
     pub qnx_screen_surface: Option<ash::qnx::screen_surface::InstanceFn>,
 }
+impl core::fmt::Debug for InstanceExtensions {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("InstanceExtensions").finish_non_exhaustive()
+    }
+}
 /// A Vulkan instance: the loader's function tables and the extensions enabled on
 /// it. Clones share it; the last one destroys it.
 #[derive(Clone)]
@@ -3590,6 +3605,11 @@ impl Instance {
     #[inline]
     pub fn entry(&self) -> &Entry {
         &self.inner.entry
+    }
+}
+impl core::fmt::Debug for Instance {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_tuple("Instance").field(&self.inner.raw).finish()
     }
 }
 impl Handle for Instance {

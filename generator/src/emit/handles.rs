@@ -104,6 +104,7 @@ fn ext_tables(
     loader_args: TokenStream,
 ) -> (TokenStream, Vec<TokenStream>) {
     let struct_name = ident(&format!("{kind}Extensions"));
+    let kind_ext = format!("{kind}Extensions");
     let fn_ty = ident(&format!("{kind}Fn"));
     let loader = ident(kind);
     let mut fields = Vec::new();
@@ -145,6 +146,11 @@ fn ext_tables(
             #[allow(missing_copy_implementations)]
             pub struct #struct_name {
                 #(#fields)*
+            }
+            impl core::fmt::Debug for #struct_name {
+                fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                    f.debug_struct(#kind_ext).finish_non_exhaustive()
+                }
             }
         },
         loads,
@@ -209,6 +215,11 @@ fn emit_instance(cx: &Context) -> TokenStream {
             #[inline]
             pub fn entry(&self) -> &Entry {
                 &self.inner.entry
+            }
+        }
+        impl core::fmt::Debug for Instance {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.debug_tuple("Instance").field(&self.inner.raw).finish()
             }
         }
         impl Handle for Instance {
@@ -340,6 +351,11 @@ fn emit_device(cx: &Context) -> TokenStream {
             /// The lifecycle state of the live command buffer with this raw handle.
             pub(crate) fn command_buffer_uses(&self, raw: vk::CommandBuffer) -> Option<Vrc<crate::submission::Uses>> {
                 self.inner.command_buffers.lock().get(&raw).cloned()
+            }
+        }
+        impl core::fmt::Debug for Device {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.debug_tuple("Device").field(&self.inner.raw).finish()
             }
         }
         impl Handle for Device {

@@ -57,7 +57,7 @@ pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
             s.push_str(&format!(
                 "\n- `{vuid}`: {} ({})",
                 settlement.status(),
-                doc_escape(&settlement.mechanism())
+                doc_escape(settlement.mechanism())
             ));
         }
     }

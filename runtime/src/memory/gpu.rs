@@ -25,6 +25,15 @@ pub struct GpuAllocator {
     shared: Vrc<Shared>,
 }
 
+impl core::fmt::Debug for GpuAllocator {
+    /// The device's memory types and heaps it allocates from.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("GpuAllocator")
+            .field("memory_properties", &self.shared.props)
+            .finish_non_exhaustive()
+    }
+}
+
 // Fields drop in order: the gpu-allocator (which frees its blocks through the
 // device) goes before the owner (which destroys the device).
 struct Shared {

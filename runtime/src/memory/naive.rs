@@ -25,6 +25,15 @@ pub struct NaiveAllocator {
     shared: Vrc<Shared>,
 }
 
+impl core::fmt::Debug for NaiveAllocator {
+    /// The device's memory types and heaps it allocates from.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("NaiveAllocator")
+            .field("memory_properties", &self.shared.props)
+            .finish_non_exhaustive()
+    }
+}
+
 struct Shared {
     owner: Vrc<dyn DeviceOwner>,
     props: vk::PhysicalDeviceMemoryProperties,
