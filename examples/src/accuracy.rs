@@ -1,5 +1,5 @@
 //! What accuracy costs: how far the GPU's tessellated teapot strays from the exact
-//! Bezier surface at each tessellation level, and the README table and plot that set
+//! Bezier surface at each tessellation level, and the table and plot of docs/REPORT.md that set
 //! that error against the measured frame time.
 
 use crate::teapot::{self, eval64, PATCHES, TEAPOT_HEIGHT};
@@ -153,7 +153,7 @@ pub struct Row {
     pub error: f64,
 }
 
-/// The results as a Markdown table for the README: a header line, the alignment line and
+/// The results as a Markdown table for docs/REPORT.md: a header line, the alignment line and
 /// one line per row.
 pub fn markdown_table(rows: &[Row]) -> String {
     let mut out = String::from(

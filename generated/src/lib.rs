@@ -1,6 +1,142 @@
 //! tuff: safe Vulkan wrappers over `ash`, generated from the Khronos registry by
 //! `tuff-gen`.
 //!
+//! Every Vulkan object is a wrapper that keeps its parent alive and destroys itself
+//! when its last clone goes ([`Buffer`], [`Device`], ...); every command is a method
+//! on the object it acts on, with the Vulkan name in its docs. A safe method runs the
+//! checks of the rules it settles and returns [`Error::Validation`] naming the rule
+//! instead of calling Vulkan; a method with rules it cannot check is `unsafe fn`, and
+//! its `# Safety` section lists them. Each method's `_unchecked` twin skips the
+//! checks. `VALIDATION.md`, beside this crate's `Cargo.toml`, says rule by rule which
+//! is which.
+//!
+//! # A guide, in order
+//!
+//! An instance, a device with one queue, a storage buffer, a compute pipeline and
+//! its descriptor set, a command buffer recorded and submitted, a fence waited on, and
+//! the result read back. Everything but the shader module is safe: no check can tell
+//! what a shader does, so [`Device::create_shader_module_from_spirv`] makes you
+//! promise it.
+//!
+//! ```no_run
+//! use tuff::vk;
+//!
+//! fn run(spirv: &[u8]) -> Result<Vec<u32>, Box<dyn std::error::Error>> {
+//!     // The instance: Vulkan 1.3, no layer or extension (the README's first program
+//!     // adds the validation layer and a `MessageLog`, with `ext_debug_utils`).
+//!     let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
+//!     let instance = tuff::Entry::load()?
+//!         .create_instance(&tuff::InstanceCreateInfo::new().application_info(Some(&app)))?;
+//!
+//!     // A device with one queue of a family that computes.
+//!     let physical = instance.enumerate_physical_devices()?.remove(0);
+//!     let family = physical
+//!         .queue_family_index(vk::QueueFlags::COMPUTE)?
+//!         .ok_or("no compute queue")?;
+//!     let queues = [tuff::DeviceQueueCreateInfo::new()
+//!         .queue_family_index(family)
+//!         .queue_priorities(&[1.0])];
+//!     let device =
+//!         physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))?;
+//!     let queue = device.get_device_queue(family, 0)?;
+//!
+//!     // A storage buffer the shader writes and the host reads back.
+//!     let allocator = device.gpu_allocator()?;
+//!     let info = tuff::BufferCreateInfo::new()
+//!         .size(64 * 4)
+//!         .usage(vk::BufferUsageFlags::STORAGE_BUFFER);
+//!     let buffer = device.create_buffer_in(&info, &allocator, tuff::MemoryLocation::Readback)?;
+//!
+//!     // The pipeline: one storage buffer at binding 0, a compute shader.
+//!     let bindings = [tuff::DescriptorSetLayoutBinding::new()
+//!         .binding(0)
+//!         .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+//!         .descriptor_count(1)
+//!         .stage_flags(vk::ShaderStageFlags::COMPUTE)];
+//!     let set_layout = device.create_descriptor_set_layout(
+//!         &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+//!     )?;
+//!     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+//!     let layout = device
+//!         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))?;
+//!     // SAFETY: the shader promise: `spirv` is valid SPIR-V for this device, it
+//!     // terminates, and it writes only the 64 words of the buffer at binding 0.
+//!     let module = unsafe { device.create_shader_module_from_spirv(spirv) }?;
+//!     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+//!         .stage(vk::ShaderStageFlags::COMPUTE)
+//!         .module(Some(&module));
+//!     let (mut pipelines, _) = device.create_compute_pipelines(
+//!         None,
+//!         &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
+//!     )?;
+//!     let pipeline = pipelines.pop().ok_or("no pipeline")?;
+//!
+//!     // Its descriptor set, pointing at the buffer.
+//!     let sizes = [vk::DescriptorPoolSize {
+//!         ty: vk::DescriptorType::STORAGE_BUFFER,
+//!         descriptor_count: 1,
+//!     }];
+//!     let pool = device.create_descriptor_pool(
+//!         &tuff::DescriptorPoolCreateInfo::new().max_sets(1).pool_sizes(&sizes),
+//!     )?;
+//!     let set = device
+//!         .allocate_descriptor_sets(
+//!             &pool,
+//!             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
+//!         )?
+//!         .pop()
+//!         .ok_or("no set")?;
+//!     let written = [tuff::DescriptorBufferInfo::new()
+//!         .buffer(Some(&buffer))
+//!         .range(vk::WHOLE_SIZE)];
+//!     device.update_descriptor_sets(
+//!         &[tuff::WriteDescriptorSet::new(&set)
+//!             .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+//!             .buffer_info(&written)],
+//!         &[],
+//!     )?;
+//!
+//!     // Record: a recorder exists only between `begin` and `end`, and has only the
+//!     // commands of the state it is in.
+//!     let commands = device.create_command_pool(
+//!         &tuff::CommandPoolCreateInfo::new().queue_family_index(family),
+//!     )?;
+//!     let mut cb = device
+//!         .allocate_command_buffers(
+//!             &commands,
+//!             &tuff::CommandBufferAllocateInfo::new(&commands).command_buffer_count(1),
+//!         )?
+//!         .pop()
+//!         .ok_or("no command buffer")?;
+//!     let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+//!     rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
+//!     rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+//!     rec.cmd_dispatch(1, 1, 1)?;
+//!     let to_host = tuff::MemoryBarrier::new()
+//!         .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+//!         .dst_access_mask(vk::AccessFlags::HOST_READ);
+//!     rec.cmd_pipeline_barrier(
+//!         vk::PipelineStageFlags::COMPUTE_SHADER,
+//!         vk::PipelineStageFlags::HOST,
+//!         vk::DependencyFlags::empty(),
+//!         &[to_host],
+//!         &[],
+//!         &[],
+//!     )?;
+//!     rec.end()?;
+//!
+//!     // Submit, wait, read back. The fence keeps what the submission uses alive
+//!     // until it is seen signalled.
+//!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
+//!     let submitted = tuff::HandleSlice::new(&[&cb]);
+//!     queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], &fence)?;
+//!     device.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)?;
+//!     Ok(buffer.memory().read::<u32>(0, 64)?)
+//! }
+//! ```
+//!
+//! # The generated and hand-written parts
+//!
 //! `src/generated/` is written by the generator; so are `Cargo.toml`,
 //! `VALIDATION.md`, `validation.json` and `validation.svg`, the coverage report that
 //! says, rule by rule, what the wrappers guarantee. The other modules are hand-written.
