@@ -150,16 +150,15 @@ fn create_device(s: &Setup, p: &DeviceParts) -> (tuff::Result<()>, Vec<String>) 
     let mut timeline = tuff::PhysicalDeviceTimelineSemaphoreFeatures::new();
     let mut v13 = tuff::PhysicalDeviceVulkan13Features::new();
     let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new();
-    let on = |b: bool| if b { vk::TRUE } else { vk::FALSE };
     let [view, geometry, tessellation] = p.multiview.unwrap_or_default();
     let mut views = tuff::PhysicalDeviceMultiviewFeatures::new()
-        .multiview(on(view))
-        .multiview_geometry_shader(on(geometry))
-        .multiview_tessellation_shader(on(tessellation));
+        .multiview(view)
+        .multiview_geometry_shader(geometry)
+        .multiview_tessellation_shader(tessellation);
     let [storage, variable] = p.pointers.unwrap_or_default();
     let mut pointers = tuff::PhysicalDeviceVariablePointersFeatures::new()
-        .variable_pointers_storage_buffer(on(storage))
-        .variable_pointers(on(variable));
+        .variable_pointers_storage_buffer(storage)
+        .variable_pointers(variable);
     let members = vec![&s.physical; p.group];
     let members = tuff::HandleSlice::new(&members);
     let mut group = tuff::DeviceGroupDeviceCreateInfo::new().physical_devices(&members);
@@ -738,8 +737,8 @@ fn create_sampler(s: &Setup, p: SamplerParts) -> (tuff::Result<()>, Vec<String>)
         .address_mode_u(p.mode)
         .address_mode_v(p.mode)
         .address_mode_w(p.mode)
-        .unnormalized_coordinates(p.unnormalized as vk::Bool32)
-        .compare_enable(p.compare as vk::Bool32)
+        .unnormalized_coordinates(p.unnormalized)
+        .compare_enable(p.compare)
         .compare_op(vk::CompareOp::LESS)
         .push_next(&mut reduction);
     let safe = unsafe { s.device.create_sampler(&info) }.map(drop);

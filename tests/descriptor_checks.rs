@@ -930,7 +930,7 @@ fn sets_in_use_are_not_rewritten() {
     unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
         .expect("open the gate");
     assert_eq!(
-        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        d.wait_for_fences(&[&fence], true, u64::MAX)
             .expect("the gated batch"),
         vk::Result::SUCCESS
     );
@@ -1056,7 +1056,7 @@ fn settle(s: &Setup, submitted: tuff::Result<()>, fence: &tuff::Fence) {
     if submitted.is_ok() {
         let waited = s
             .device
-            .wait_for_fences(&[fence], vk::TRUE, u64::MAX)
+            .wait_for_fences(&[fence], true, u64::MAX)
             .expect("wait");
         assert_eq!(waited, vk::Result::SUCCESS);
         s.device.reset_fences(&[fence]).expect("reset");
@@ -1200,8 +1200,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .queue_submit(&submit, &fence)
         .expect("a dispatch of a GENERAL image");
     assert_eq!(
-        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-            .expect("wait"),
+        d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
         vk::Result::SUCCESS
     );
     assert_silent(&s.messages);

@@ -254,9 +254,9 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             unsafe { r.cmd_bind_vertex_buffers2(0, &[&args], &[0], &[], &[16]) }
                 .expect("vertex buffer with its stride")
         }
-        D::RASTERIZER_DISCARD_ENABLE => r.cmd_set_rasterizer_discard_enable(vk::FALSE),
-        D::DEPTH_BIAS_ENABLE => r.cmd_set_depth_bias_enable(vk::FALSE),
-        D::PRIMITIVE_RESTART_ENABLE => r.cmd_set_primitive_restart_enable(vk::FALSE),
+        D::RASTERIZER_DISCARD_ENABLE => r.cmd_set_rasterizer_discard_enable(false),
+        D::DEPTH_BIAS_ENABLE => r.cmd_set_depth_bias_enable(false),
+        D::PRIMITIVE_RESTART_ENABLE => r.cmd_set_primitive_restart_enable(false),
         _ => unreachable!("a named state"),
     };
 
@@ -1040,11 +1040,11 @@ fn writing_states() -> [tuff::PipelineDepthStencilStateCreateInfo<'static>; 2] {
     };
     [
         tuff::PipelineDepthStencilStateCreateInfo::new()
-            .depth_test_enable(vk::TRUE)
-            .depth_write_enable(vk::TRUE)
+            .depth_test_enable(true)
+            .depth_write_enable(true)
             .depth_compare_op(vk::CompareOp::ALWAYS),
         tuff::PipelineDepthStencilStateCreateInfo::new()
-            .stencil_test_enable(vk::TRUE)
+            .stencil_test_enable(true)
             .front(writes)
             .back(writes),
     ]
@@ -1191,10 +1191,10 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
         .expect("bind");
     rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
     rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-    rec.cmd_set_depth_write_enable(vk::FALSE);
+    rec.cmd_set_depth_write_enable(false);
     rec.cmd_draw(3, 1, 0, 0)
         .expect("a draw with depth writes off");
-    rec.cmd_set_depth_write_enable(vk::TRUE);
+    rec.cmd_set_depth_write_enable(true);
     assert_eq!(vuid(rec.cmd_draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06886");
     drop(rec);
 
@@ -1486,7 +1486,7 @@ fn draws_sample_views_as_their_samplers_allow() {
     let edge = vk::SamplerAddressMode::CLAMP_TO_EDGE;
     let unnormalized = sampler(
         tuff::SamplerCreateInfo::new()
-            .unnormalized_coordinates(vk::TRUE)
+            .unnormalized_coordinates(true)
             .address_mode_u(edge)
             .address_mode_v(edge)
             .address_mode_w(edge),

@@ -540,7 +540,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)?;
     let waited = s
         .device
-        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        .wait_for_fences(&[&fence], true, u64::MAX)
         .expect("wait");
     assert_eq!(waited, vk::Result::SUCCESS);
     Ok(())

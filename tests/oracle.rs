@@ -2391,9 +2391,7 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     s.queue
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
         .expect("submit");
-    let status = d
-        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-        .expect("wait");
+    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
     let pixel = pipelines::access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = pipelines::COLOR

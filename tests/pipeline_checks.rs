@@ -505,7 +505,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let assembly = parts.topology.map(|t| {
         tuff::PipelineInputAssemblyStateCreateInfo::new()
             .topology(t)
-            .primitive_restart_enable(parts.restart as vk::Bool32)
+            .primitive_restart_enable(parts.restart)
     });
     let tessellation =
         tuff::PipelineTessellationStateCreateInfo::new().patch_control_points(parts.patch_points);
@@ -534,17 +534,17 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let mut raster = tuff::PipelineRasterizationStateCreateInfo::new()
         .polygon_mode(vk::PolygonMode::FILL)
         .cull_mode(vk::CullModeFlags::NONE)
-        .rasterizer_discard_enable(parts.discard as vk::Bool32)
+        .rasterizer_discard_enable(parts.discard)
         .line_width(parts.line_width);
     if let Some(clamp) = parts.depth_bias {
-        raster = raster.depth_bias_enable(vk::TRUE).depth_bias_clamp(clamp);
+        raster = raster.depth_bias_enable(true).depth_bias_clamp(clamp);
     }
     let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
         .rasterization_samples(parts.samples)
         .min_sample_shading(parts.min_sample_shading);
     let depth_stencil = parts.depth_stencil.map(|(bounds, min, max)| {
         tuff::PipelineDepthStencilStateCreateInfo::new()
-            .depth_bounds_test_enable(bounds as vk::Bool32)
+            .depth_bounds_test_enable(bounds)
             .min_depth_bounds(min)
             .max_depth_bounds(max)
     });
@@ -561,7 +561,7 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     let blend = parts.blend.as_ref().map(|_| {
         let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
         match parts.logic_op {
-            Some(op) => blend.logic_op_enable(vk::TRUE).logic_op(op),
+            Some(op) => blend.logic_op_enable(true).logic_op(op),
             None => blend,
         }
     });

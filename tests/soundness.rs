@@ -91,7 +91,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff:
 fn wait(s: &Setup, fence: &tuff::Fence) {
     let r = s
         .device
-        .wait_for_fences(&[fence], vk::TRUE, u64::MAX)
+        .wait_for_fences(&[fence], true, u64::MAX)
         .expect("wait");
     assert_eq!(r, vk::Result::SUCCESS);
 }

@@ -86,8 +86,7 @@ fn timeline_signals_rise() {
         .push_next(&mut between)];
     assert_eq!(vuid(s.queue.queue_submit(&submit, &other)), rule);
     assert_eq!(
-        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-            .expect("wait"),
+        d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
         vk::Result::SUCCESS
     );
     assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 8);
@@ -104,7 +103,7 @@ fn protected_batches_need_protected_queues() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let rule = "VUID-vkQueueSubmit-queue-06448";
-    let mut protected = tuff::ProtectedSubmitInfo::new().protected_submit(vk::TRUE);
+    let mut protected = tuff::ProtectedSubmitInfo::new().protected_submit(true);
     let submit = [tuff::SubmitInfo::new().push_next(&mut protected)];
     // SAFETY: an empty batch; the call is refused.
     assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), rule);

@@ -300,9 +300,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         drop(pool);
         drop(buffer);
         drop(memory);
-        let status = d
-            .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-            .expect("wait");
+        let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
         assert_eq!(status, vk::Result::SUCCESS);
         d.reset_fences(&[&fence]).expect("reset");
     }
@@ -517,7 +515,7 @@ fn swapchain_info<'a>(
         .pre_transform(caps.current_transform)
         .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
         .present_mode(vk::PresentModeKHR::FIFO)
-        .clipped(vk::TRUE)
+        .clipped(true)
 }
 
 #[test]
@@ -738,9 +736,7 @@ fn pipelines_draw_and_dispatch() {
     s.queue
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
         .expect("submit");
-    let status = d
-        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-        .expect("wait");
+    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
     let pixel = access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = COLOR.iter().map(|c| (c * 255.0).round() as u8).collect();
@@ -812,9 +808,7 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
         .expect("submit");
     drop(kept);
-    let status = d
-        .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
-        .expect("wait");
+    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
 }
 
@@ -1356,7 +1350,7 @@ fn acquire_and_present_take_binary_semaphores() {
         .expect("acquire");
     assert_eq!(
         s.device
-            .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
         vk::Result::SUCCESS
     );
@@ -1407,7 +1401,7 @@ fn only_acquired_images_in_the_present_layout_are_presented() {
         .expect("acquire");
     assert_eq!(
         s.device
-            .wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+            .wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
         vk::Result::SUCCESS
     );
@@ -1451,7 +1445,7 @@ fn acquire_for_present(
         .acquire_next_image_khr(swapchain, u64::MAX, None, Some(&fence))
         .expect("acquire");
     assert_eq!(
-        d.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)
+        d.wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
         vk::Result::SUCCESS
     );
@@ -1496,8 +1490,7 @@ fn acquire_for_present(
         .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
         .expect("submit");
     assert_eq!(
-        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
-            .expect("moved"),
+        d.wait_for_fences(&[&done], true, u64::MAX).expect("moved"),
         vk::Result::SUCCESS
     );
     index
@@ -1693,7 +1686,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     });
     // The acquire's fence belongs to it until it is seen signaled.
     assert_eq!(
-        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+        d.wait_for_fences(&[&done], true, u64::MAX)
             .expect("acquired"),
         vk::Result::SUCCESS
     );
@@ -1745,7 +1738,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
         .expect("open the gate");
     assert_eq!(
-        d.wait_for_fences(&[&done], vk::TRUE, u64::MAX)
+        d.wait_for_fences(&[&done], true, u64::MAX)
             .expect("the gated batch"),
         vk::Result::SUCCESS
     );
@@ -1859,8 +1852,7 @@ fn an_acquire_that_cannot_progress_may_not_wait_forever() {
     });
     let all: Vec<&tuff::Fence> = fences.iter().collect();
     assert_eq!(
-        d.wait_for_fences(&all, vk::TRUE, u64::MAX)
-            .expect("acquired"),
+        d.wait_for_fences(&all, true, u64::MAX).expect("acquired"),
         vk::Result::SUCCESS
     );
     drop(swapchain);

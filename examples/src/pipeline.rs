@@ -58,8 +58,8 @@ pub fn graphics(
     let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
         .rasterization_samples(vk::SampleCountFlags::TYPE_1);
     let depth = tuff::PipelineDepthStencilStateCreateInfo::new()
-        .depth_test_enable(vk::TRUE)
-        .depth_write_enable(vk::TRUE)
+        .depth_test_enable(true)
+        .depth_write_enable(true)
         // Reversed Z: nearer is greater.
         .depth_compare_op(vk::CompareOp::GREATER);
     let blend_attachments = [vk::PipelineColorBlendAttachmentState {

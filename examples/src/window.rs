@@ -256,7 +256,7 @@ impl<S: Scene> Live<S> {
             .pre_transform(caps.current_transform)
             .composite_alpha(composite_alpha(caps.supported_composite_alpha))
             .present_mode(vk::PresentModeKHR::FIFO)
-            .clipped(vk::TRUE);
+            .clipped(true);
         let swapchain = match &self.swapchain {
             Some(old) => {
                 let new = old.recreate(&gpu.device, &self.surface, &info)?;

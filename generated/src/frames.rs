@@ -144,7 +144,7 @@ impl FramesInFlight {
 
 /// Waits without timeout for all of `fences`.
 fn wait(device: &Device, fences: &[&Fence]) -> Result<()> {
-    match device.wait_for_fences(fences, vk::TRUE, u64::MAX)? {
+    match device.wait_for_fences(fences, true, u64::MAX)? {
         vk::Result::SUCCESS => Ok(()),
         other => Err(Error::Vk(other)),
     }

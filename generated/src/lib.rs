@@ -130,7 +130,7 @@
 //!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
 //!     let submitted = tuff::HandleSlice::new(&[&cb]);
 //!     queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], &fence)?;
-//!     device.wait_for_fences(&[&fence], vk::TRUE, u64::MAX)?;
+//!     device.wait_for_fences(&[&fence], true, u64::MAX)?;
 //!     Ok(buffer.memory().read::<u32>(0, 64)?)
 //! }
 //! ```

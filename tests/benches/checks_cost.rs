@@ -244,7 +244,7 @@ fn settle(b: &Bench) {
     let fences: Vec<&tuff::Fence> = b.fences.iter().collect();
     let waited =
         b.s.device
-            .wait_for_fences(&fences, vk::TRUE, u64::MAX)
+            .wait_for_fences(&fences, true, u64::MAX)
             .expect("wait");
     assert_eq!(waited, vk::Result::SUCCESS);
     b.s.device.reset_fences(&fences).expect("reset");

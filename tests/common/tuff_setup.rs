@@ -176,24 +176,24 @@ fn setup_full(
         .queue_priorities(&priorities)];
     // A typed pNext chain: only structs that extend VkDeviceCreateInfo are accepted.
     let mut features13 = tuff::PhysicalDeviceVulkan13Features::new()
-        .private_data(vk::TRUE)
-        .synchronization2(vk::TRUE)
-        .dynamic_rendering(vk::TRUE);
+        .private_data(true)
+        .synchronization2(true)
+        .dynamic_rendering(true);
     let mut features12 = tuff::PhysicalDeviceVulkan12Features::new()
-        .imageless_framebuffer(vk::TRUE)
-        .timeline_semaphore(vk::TRUE)
-        .draw_indirect_count(vk::TRUE)
-        .host_query_reset(vk::TRUE);
+        .imageless_framebuffer(true)
+        .timeline_semaphore(true)
+        .draw_indirect_count(true)
+        .host_query_reset(true);
     let device_exts = match wsi {
         Wsi::None => vec![],
         Wsi::Xlib => vec![tuff::CStrPtr::from(c"VK_KHR_swapchain")],
     };
-    let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new().synchronization2(vk::TRUE);
-    let mut private_data = tuff::PhysicalDevicePrivateDataFeatures::new().private_data(vk::TRUE);
+    let mut sync2 = tuff::PhysicalDeviceSynchronization2Features::new().synchronization2(true);
+    let mut private_data = tuff::PhysicalDevicePrivateDataFeatures::new().private_data(true);
     let mut imageless =
-        tuff::PhysicalDeviceImagelessFramebufferFeatures::new().imageless_framebuffer(vk::TRUE);
+        tuff::PhysicalDeviceImagelessFramebufferFeatures::new().imageless_framebuffer(true);
     let mut timeline =
-        tuff::PhysicalDeviceTimelineSemaphoreFeatures::new().timeline_semaphore(vk::TRUE);
+        tuff::PhysicalDeviceTimelineSemaphoreFeatures::new().timeline_semaphore(true);
     // Every feature the physical device has, for `Chain::All`.
     let mut all13 = tuff::PhysicalDeviceVulkan13Features::new();
     let mut all12 = tuff::PhysicalDeviceVulkan12Features::new();

@@ -342,6 +342,13 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     None => call_args.push(quote!(0,)),
                 }
             }
+            // Rust's `bool` where Vulkan has `VkBool32`, as ash's own wrappers do; the
+            // body (and the hooks it calls) sees Vulkan's value.
+            Param::Value if p.type_name == "VkBool32" => {
+                args.push(quote!(#name: bool));
+                pre.push(quote!(let #name = vk::Bool32::from(#name);));
+                call_args.push(quote!(#name,));
+            }
             Param::Value => {
                 let ty = spelled(model, &cx.facts, &p.type_name);
                 args.push(quote!(#name: #ty));

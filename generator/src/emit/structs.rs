@@ -97,6 +97,17 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
             Member::Value if groups.iter().any(|g| g.count == m.name) => {
                 setters.push(count_setter(m, ty, &groups));
             }
+            // Rust's `bool` where Vulkan has `VkBool32`, as ash's builders take.
+            Member::Value if m.type_name == "VkBool32" => {
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub fn #setter(mut self, value: bool) -> Self {
+                        self.raw.#f = vk::Bool32::from(value);
+                        self
+                    }
+                });
+            }
             Member::Value => {
                 setters.push(quote! {
                     #[doc = #doc]

@@ -19,7 +19,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub fn set_local_dimming_amd(
         &self,
         swap_chain: &SwapchainKHR,
-        local_dimming_enable: vk::Bool32,
+        local_dimming_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_set_local_dimming_amd(swap_chain);
@@ -38,7 +38,7 @@ The caller upholds the rules that [`Self::set_local_dimming_amd`] checks at run 
     pub unsafe fn set_local_dimming_amd_unchecked(
         &self,
         swap_chain: &SwapchainKHR,
-        local_dimming_enable: vk::Bool32,
+        local_dimming_enable: bool,
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -47,6 +47,7 @@ The caller upholds the rules that [`Self::set_local_dimming_amd`] checks at run 
             .ok_or(Error::ExtensionNotEnabled("VK_AMD_display_native_hdr"))?
             .set_local_dimming_amd;
         {
+            let local_dimming_enable = vk::Bool32::from(local_dimming_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), swap_chain.raw(), local_dimming_enable) };
         }

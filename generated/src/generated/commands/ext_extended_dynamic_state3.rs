@@ -19,7 +19,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_alpha_to_coverage_enable_ext(
         &mut self,
-        alpha_to_coverage_enable: vk::Bool32,
+        alpha_to_coverage_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_alpha_to_coverage_enable_ext();
@@ -39,7 +39,7 @@ The caller upholds the rules that [`Self::cmd_set_alpha_to_coverage_enable_ext`]
     #[inline]
     pub unsafe fn cmd_set_alpha_to_coverage_enable_ext_unchecked(
         &mut self,
-        alpha_to_coverage_enable: vk::Bool32,
+        alpha_to_coverage_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -49,6 +49,7 @@ The caller upholds the rules that [`Self::cmd_set_alpha_to_coverage_enable_ext`]
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_alpha_to_coverage_enable_ext;
         {
+            let alpha_to_coverage_enable = vk::Bool32::from(alpha_to_coverage_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), alpha_to_coverage_enable) };
             self.state_changed();
@@ -70,7 +71,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     #[inline]
     pub fn cmd_set_alpha_to_one_enable_ext(
         &mut self,
-        alpha_to_one_enable: vk::Bool32,
+        alpha_to_one_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_alpha_to_one_enable_ext();
@@ -88,7 +89,7 @@ The caller upholds the rules that [`Self::cmd_set_alpha_to_one_enable_ext`] chec
     #[inline]
     pub unsafe fn cmd_set_alpha_to_one_enable_ext_unchecked(
         &mut self,
-        alpha_to_one_enable: vk::Bool32,
+        alpha_to_one_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -98,6 +99,7 @@ The caller upholds the rules that [`Self::cmd_set_alpha_to_one_enable_ext`] chec
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_alpha_to_one_enable_ext;
         {
+            let alpha_to_one_enable = vk::Bool32::from(alpha_to_one_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), alpha_to_one_enable) };
             self.state_changed();
@@ -490,7 +492,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_coverage_modulation_table_enable_nv(
         &mut self,
-        coverage_modulation_table_enable: vk::Bool32,
+        coverage_modulation_table_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_coverage_modulation_table_enable_nv();
@@ -512,7 +514,7 @@ The caller upholds the rules that [`Self::cmd_set_coverage_modulation_table_enab
     #[inline]
     pub unsafe fn cmd_set_coverage_modulation_table_enable_nv_unchecked(
         &mut self,
-        coverage_modulation_table_enable: vk::Bool32,
+        coverage_modulation_table_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -522,6 +524,9 @@ The caller upholds the rules that [`Self::cmd_set_coverage_modulation_table_enab
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_coverage_modulation_table_enable_nv;
         {
+            let coverage_modulation_table_enable = vk::Bool32::from(
+                coverage_modulation_table_enable,
+            );
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), coverage_modulation_table_enable) };
             self.state_changed();
@@ -660,7 +665,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_coverage_to_color_enable_nv(
         &mut self,
-        coverage_to_color_enable: vk::Bool32,
+        coverage_to_color_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_coverage_to_color_enable_nv();
@@ -680,7 +685,7 @@ The caller upholds the rules that [`Self::cmd_set_coverage_to_color_enable_nv`] 
     #[inline]
     pub unsafe fn cmd_set_coverage_to_color_enable_nv_unchecked(
         &mut self,
-        coverage_to_color_enable: vk::Bool32,
+        coverage_to_color_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -690,6 +695,7 @@ The caller upholds the rules that [`Self::cmd_set_coverage_to_color_enable_nv`] 
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_coverage_to_color_enable_nv;
         {
+            let coverage_to_color_enable = vk::Bool32::from(coverage_to_color_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), coverage_to_color_enable) };
             self.state_changed();
@@ -764,7 +770,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     #[inline]
     pub fn cmd_set_depth_clamp_enable_ext(
         &mut self,
-        depth_clamp_enable: vk::Bool32,
+        depth_clamp_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_depth_clamp_enable_ext();
@@ -782,7 +788,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clamp_enable_ext`] check
     #[inline]
     pub unsafe fn cmd_set_depth_clamp_enable_ext_unchecked(
         &mut self,
-        depth_clamp_enable: vk::Bool32,
+        depth_clamp_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -792,6 +798,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clamp_enable_ext`] check
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_depth_clamp_enable_ext;
         {
+            let depth_clamp_enable = vk::Bool32::from(depth_clamp_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), depth_clamp_enable) };
             self.state_changed();
@@ -813,7 +820,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     #[inline]
     pub fn cmd_set_depth_clip_enable_ext(
         &mut self,
-        depth_clip_enable: vk::Bool32,
+        depth_clip_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_depth_clip_enable_ext();
@@ -831,7 +838,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clip_enable_ext`] checks
     #[inline]
     pub unsafe fn cmd_set_depth_clip_enable_ext_unchecked(
         &mut self,
-        depth_clip_enable: vk::Bool32,
+        depth_clip_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -841,6 +848,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clip_enable_ext`] checks
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_depth_clip_enable_ext;
         {
+            let depth_clip_enable = vk::Bool32::from(depth_clip_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), depth_clip_enable) };
             self.state_changed();
@@ -862,7 +870,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     #[inline]
     pub fn cmd_set_depth_clip_negative_one_to_one_ext(
         &mut self,
-        negative_one_to_one: vk::Bool32,
+        negative_one_to_one: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_depth_clip_negative_one_to_one_ext();
@@ -884,7 +892,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clip_negative_one_to_one
     #[inline]
     pub unsafe fn cmd_set_depth_clip_negative_one_to_one_ext_unchecked(
         &mut self,
-        negative_one_to_one: vk::Bool32,
+        negative_one_to_one: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -894,6 +902,7 @@ The caller upholds the rules that [`Self::cmd_set_depth_clip_negative_one_to_one
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_depth_clip_negative_one_to_one_ext;
         {
+            let negative_one_to_one = vk::Bool32::from(negative_one_to_one);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), negative_one_to_one) };
             self.state_changed();
@@ -1021,7 +1030,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_line_stipple_enable_ext(
         &mut self,
-        stippled_line_enable: vk::Bool32,
+        stippled_line_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_line_stipple_enable_ext();
@@ -1039,7 +1048,7 @@ The caller upholds the rules that [`Self::cmd_set_line_stipple_enable_ext`] chec
     #[inline]
     pub unsafe fn cmd_set_line_stipple_enable_ext_unchecked(
         &mut self,
-        stippled_line_enable: vk::Bool32,
+        stippled_line_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1049,6 +1058,7 @@ The caller upholds the rules that [`Self::cmd_set_line_stipple_enable_ext`] chec
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_line_stipple_enable_ext;
         {
+            let stippled_line_enable = vk::Bool32::from(stippled_line_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), stippled_line_enable) };
             self.state_changed();
@@ -1068,10 +1078,7 @@ The rules are on [`vkCmdSetLogicOpEnableEXT`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_logic_op_enable_ext(
-        &mut self,
-        logic_op_enable: vk::Bool32,
-    ) -> Result<()> {
+    pub fn cmd_set_logic_op_enable_ext(&mut self, logic_op_enable: bool) -> Result<()> {
         {
             let r = self.validate_cmd_set_logic_op_enable_ext();
             r?;
@@ -1088,7 +1095,7 @@ The caller upholds the rules that [`Self::cmd_set_logic_op_enable_ext`] checks a
     #[inline]
     pub unsafe fn cmd_set_logic_op_enable_ext_unchecked(
         &mut self,
-        logic_op_enable: vk::Bool32,
+        logic_op_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1098,6 +1105,7 @@ The caller upholds the rules that [`Self::cmd_set_logic_op_enable_ext`] checks a
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_logic_op_enable_ext;
         {
+            let logic_op_enable = vk::Bool32::from(logic_op_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), logic_op_enable) };
             self.state_changed();
@@ -1324,7 +1332,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_representative_fragment_test_enable_nv(
         &mut self,
-        representative_fragment_test_enable: vk::Bool32,
+        representative_fragment_test_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_representative_fragment_test_enable_nv();
@@ -1346,7 +1354,7 @@ The caller upholds the rules that [`Self::cmd_set_representative_fragment_test_e
     #[inline]
     pub unsafe fn cmd_set_representative_fragment_test_enable_nv_unchecked(
         &mut self,
-        representative_fragment_test_enable: vk::Bool32,
+        representative_fragment_test_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1356,6 +1364,9 @@ The caller upholds the rules that [`Self::cmd_set_representative_fragment_test_e
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_representative_fragment_test_enable_nv;
         {
+            let representative_fragment_test_enable = vk::Bool32::from(
+                representative_fragment_test_enable,
+            );
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), representative_fragment_test_enable) };
             self.state_changed();
@@ -1377,7 +1388,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_sample_locations_enable_ext(
         &mut self,
-        sample_locations_enable: vk::Bool32,
+        sample_locations_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_sample_locations_enable_ext();
@@ -1397,7 +1408,7 @@ The caller upholds the rules that [`Self::cmd_set_sample_locations_enable_ext`] 
     #[inline]
     pub unsafe fn cmd_set_sample_locations_enable_ext_unchecked(
         &mut self,
-        sample_locations_enable: vk::Bool32,
+        sample_locations_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1407,6 +1418,7 @@ The caller upholds the rules that [`Self::cmd_set_sample_locations_enable_ext`] 
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_sample_locations_enable_ext;
         {
+            let sample_locations_enable = vk::Bool32::from(sample_locations_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), sample_locations_enable) };
             self.state_changed();
@@ -1487,7 +1499,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_shading_rate_image_enable_nv(
         &mut self,
-        shading_rate_image_enable: vk::Bool32,
+        shading_rate_image_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_shading_rate_image_enable_nv();
@@ -1509,7 +1521,7 @@ The caller upholds the rules that [`Self::cmd_set_shading_rate_image_enable_nv`]
     #[inline]
     pub unsafe fn cmd_set_shading_rate_image_enable_nv_unchecked(
         &mut self,
-        shading_rate_image_enable: vk::Bool32,
+        shading_rate_image_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1519,6 +1531,7 @@ The caller upholds the rules that [`Self::cmd_set_shading_rate_image_enable_nv`]
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_shading_rate_image_enable_nv;
         {
+            let shading_rate_image_enable = vk::Bool32::from(shading_rate_image_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), shading_rate_image_enable) };
             self.state_changed();
@@ -1652,7 +1665,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_viewport_w_scaling_enable_nv(
         &mut self,
-        viewport_w_scaling_enable: vk::Bool32,
+        viewport_w_scaling_enable: bool,
     ) -> Result<()> {
         {
             let r = self.validate_cmd_set_viewport_w_scaling_enable_nv();
@@ -1674,7 +1687,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_w_scaling_enable_nv`]
     #[inline]
     pub unsafe fn cmd_set_viewport_w_scaling_enable_nv_unchecked(
         &mut self,
-        viewport_w_scaling_enable: vk::Bool32,
+        viewport_w_scaling_enable: bool,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -1684,6 +1697,7 @@ The caller upholds the rules that [`Self::cmd_set_viewport_w_scaling_enable_nv`]
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_extended_dynamic_state3"))?
             .cmd_set_viewport_w_scaling_enable_nv;
         {
+            let viewport_w_scaling_enable = vk::Bool32::from(viewport_w_scaling_enable);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), viewport_w_scaling_enable) };
             self.state_changed();

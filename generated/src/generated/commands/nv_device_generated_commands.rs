@@ -91,7 +91,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
     #[inline]
     pub fn cmd_execute_generated_commands_nv<'a>(
         &mut self,
-        is_preprocessed: vk::Bool32,
+        is_preprocessed: bool,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         {
@@ -116,7 +116,7 @@ The caller upholds the rules that [`Self::cmd_execute_generated_commands_nv`] ch
     #[inline]
     pub unsafe fn cmd_execute_generated_commands_nv_unchecked<'a>(
         &mut self,
-        is_preprocessed: vk::Bool32,
+        is_preprocessed: bool,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         let fp = self
@@ -127,6 +127,7 @@ The caller upholds the rules that [`Self::cmd_execute_generated_commands_nv`] ch
             .ok_or(Error::ExtensionNotEnabled("VK_NV_device_generated_commands"))?
             .cmd_execute_generated_commands_nv;
         {
+            let is_preprocessed = vk::Bool32::from(is_preprocessed);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(

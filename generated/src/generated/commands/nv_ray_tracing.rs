@@ -413,7 +413,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         info: &AccelerationStructureInfoNV<'a>,
         instance_data: Option<&Buffer>,
         instance_offset: vk::DeviceSize,
-        update: vk::Bool32,
+        update: bool,
         dst: &AccelerationStructureNV,
         src: Option<&AccelerationStructureNV>,
         scratch: &Buffer,
@@ -456,7 +456,7 @@ The caller upholds the rules that [`Self::cmd_build_acceleration_structure_nv`] 
         info: &AccelerationStructureInfoNV<'a>,
         instance_data: Option<&Buffer>,
         instance_offset: vk::DeviceSize,
-        update: vk::Bool32,
+        update: bool,
         dst: &AccelerationStructureNV,
         src: Option<&AccelerationStructureNV>,
         scratch: &Buffer,
@@ -470,6 +470,7 @@ The caller upholds the rules that [`Self::cmd_build_acceleration_structure_nv`] 
             .ok_or(Error::ExtensionNotEnabled("VK_NV_ray_tracing"))?
             .cmd_build_acceleration_structure_nv;
         {
+            let update = vk::Bool32::from(update);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(

@@ -2847,7 +2847,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
     pub fn wait_for_fences(
         &self,
         fences: &[&Fence],
-        wait_all: vk::Bool32,
+        wait_all: bool,
         timeout: u64,
     ) -> Result<vk::Result> {
         {
@@ -2867,7 +2867,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
     pub unsafe fn wait_for_fences_unchecked(
         &self,
         fences: &[&Fence],
-        wait_all: vk::Bool32,
+        wait_all: bool,
         timeout: u64,
     ) -> Result<vk::Result> {
         let fp = self.fns().fp_v1_0().wait_for_fences;
@@ -2875,6 +2875,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
             .iter()
             .map(|h| h.raw())
             .collect();
+        let wait_all = vk::Bool32::from(wait_all);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), fences.len() as u32, fences_raw.as_ptr(), wait_all, timeout)

@@ -877,7 +877,7 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: vk::Bool32) {
+    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: bool) {
         {
             let r = self.validate_cmd_set_depth_bias_enable();
             if !self.accept(r) {
@@ -896,9 +896,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at 
     #[inline]
     pub unsafe fn cmd_set_depth_bias_enable_unchecked(
         &mut self,
-        depth_bias_enable: vk::Bool32,
+        depth_bias_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
+        let depth_bias_enable = vk::Bool32::from(depth_bias_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bias_enable) };
         crate::hooks::dynamic_state_set(
@@ -920,10 +921,7 @@ The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://regi
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_depth_bounds_test_enable(
-        &mut self,
-        depth_bounds_test_enable: vk::Bool32,
-    ) {
+    pub fn cmd_set_depth_bounds_test_enable(&mut self, depth_bounds_test_enable: bool) {
         {
             let r = self.validate_cmd_set_depth_bounds_test_enable();
             if !self.accept(r) {
@@ -944,9 +942,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] che
     #[inline]
     pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
         &mut self,
-        depth_bounds_test_enable: vk::Bool32,
+        depth_bounds_test_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_bounds_test_enable;
+        let depth_bounds_test_enable = vk::Bool32::from(depth_bounds_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bounds_test_enable) };
         crate::hooks::dynamic_state_set(
@@ -1012,7 +1011,7 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: vk::Bool32) {
+    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: bool) {
         {
             let r = self.validate_cmd_set_depth_test_enable();
             if !self.accept(r) {
@@ -1031,9 +1030,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at 
     #[inline]
     pub unsafe fn cmd_set_depth_test_enable_unchecked(
         &mut self,
-        depth_test_enable: vk::Bool32,
+        depth_test_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
+        let depth_test_enable = vk::Bool32::from(depth_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_test_enable) };
         crate::hooks::depth_stencil_set(
@@ -1056,7 +1056,7 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: vk::Bool32) {
+    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: bool) {
         {
             let r = self.validate_cmd_set_depth_write_enable();
             if !self.accept(r) {
@@ -1075,9 +1075,10 @@ The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at
     #[inline]
     pub unsafe fn cmd_set_depth_write_enable_unchecked(
         &mut self,
-        depth_write_enable: vk::Bool32,
+        depth_write_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
+        let depth_write_enable = vk::Bool32::from(depth_write_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_write_enable) };
         crate::hooks::depth_stencil_set(
@@ -1141,10 +1142,7 @@ The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://reg
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_primitive_restart_enable(
-        &mut self,
-        primitive_restart_enable: vk::Bool32,
-    ) {
+    pub fn cmd_set_primitive_restart_enable(&mut self, primitive_restart_enable: bool) {
         {
             let r = self.validate_cmd_set_primitive_restart_enable();
             if !self.accept(r) {
@@ -1165,9 +1163,10 @@ The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] che
     #[inline]
     pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
         &mut self,
-        primitive_restart_enable: vk::Bool32,
+        primitive_restart_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_primitive_restart_enable;
+        let primitive_restart_enable = vk::Bool32::from(primitive_restart_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), primitive_restart_enable) };
         crate::hooks::dynamic_state_set(
@@ -1238,7 +1237,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
-        rasterizer_discard_enable: vk::Bool32,
+        rasterizer_discard_enable: bool,
     ) {
         {
             let r = self.validate_cmd_set_rasterizer_discard_enable();
@@ -1260,9 +1259,10 @@ The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] ch
     #[inline]
     pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
         &mut self,
-        rasterizer_discard_enable: vk::Bool32,
+        rasterizer_discard_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_rasterizer_discard_enable;
+        let rasterizer_discard_enable = vk::Bool32::from(rasterizer_discard_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), rasterizer_discard_enable) };
         crate::hooks::depth_stencil_set(
@@ -1419,7 +1419,7 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[inline]
-    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: vk::Bool32) {
+    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: bool) {
         {
             let r = self.validate_cmd_set_stencil_test_enable();
             if !self.accept(r) {
@@ -1438,9 +1438,10 @@ The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks a
     #[inline]
     pub unsafe fn cmd_set_stencil_test_enable_unchecked(
         &mut self,
-        stencil_test_enable: vk::Bool32,
+        stencil_test_enable: bool,
     ) {
         let fp = self.device().fns().fp_v1_3().cmd_set_stencil_test_enable;
+        let stencil_test_enable = vk::Bool32::from(stencil_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), stencil_test_enable) };
         crate::hooks::depth_stencil_set(

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceCoherentMemoryFeaturesAMD<'a> {
     ///Sets `deviceCoherentMemory`.
     #[inline]
-    pub fn device_coherent_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.device_coherent_memory = value;
+    pub fn device_coherent_memory(mut self, value: bool) -> Self {
+        self.raw.device_coherent_memory = vk::Bool32::from(value);
         self
     }
 }

@@ -48,8 +48,8 @@ safe_struct!(
 impl<'a> SwapchainDisplayNativeHdrCreateInfoAMD<'a> {
     ///Sets `localDimmingEnable`.
     #[inline]
-    pub fn local_dimming_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.local_dimming_enable = value;
+    pub fn local_dimming_enable(mut self, value: bool) -> Self {
+        self.raw.local_dimming_enable = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderEarlyAndLateFragmentTestsFeaturesAMD<'a> {
     ///Sets `shaderEarlyAndLateFragmentTests`.
     #[inline]
-    pub fn shader_early_and_late_fragment_tests(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_early_and_late_fragment_tests = value;
+    pub fn shader_early_and_late_fragment_tests(mut self, value: bool) -> Self {
+        self.raw.shader_early_and_late_fragment_tests = vk::Bool32::from(value);
         self
     }
 }

@@ -35,29 +35,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceRasterizationOrderAttachmentAccessFeaturesEXT<'a> {
     ///Sets `rasterizationOrderColorAttachmentAccess`.
     #[inline]
-    pub fn rasterization_order_color_attachment_access(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.rasterization_order_color_attachment_access = value;
+    pub fn rasterization_order_color_attachment_access(mut self, value: bool) -> Self {
+        self.raw.rasterization_order_color_attachment_access = vk::Bool32::from(value);
         self
     }
     ///Sets `rasterizationOrderDepthAttachmentAccess`.
     #[inline]
-    pub fn rasterization_order_depth_attachment_access(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.rasterization_order_depth_attachment_access = value;
+    pub fn rasterization_order_depth_attachment_access(mut self, value: bool) -> Self {
+        self.raw.rasterization_order_depth_attachment_access = vk::Bool32::from(value);
         self
     }
     ///Sets `rasterizationOrderStencilAttachmentAccess`.
     #[inline]
-    pub fn rasterization_order_stencil_attachment_access(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.rasterization_order_stencil_attachment_access = value;
+    pub fn rasterization_order_stencil_attachment_access(mut self, value: bool) -> Self {
+        self.raw.rasterization_order_stencil_attachment_access = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderCoreBuiltinsFeaturesARM<'a> {
     ///Sets `shaderCoreBuiltins`.
     #[inline]
-    pub fn shader_core_builtins(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_core_builtins = value;
+    pub fn shader_core_builtins(mut self, value: bool) -> Self {
+        self.raw.shader_core_builtins = vk::Bool32::from(value);
         self
     }
 }

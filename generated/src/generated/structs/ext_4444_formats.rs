@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDevice4444FormatsFeaturesEXT<'a> {
     ///Sets `formatA4R4G4B4`.
     #[inline]
-    pub fn format_a4r4g4b4(mut self, value: vk::Bool32) -> Self {
-        self.raw.format_a4r4g4b4 = value;
+    pub fn format_a4r4g4b4(mut self, value: bool) -> Self {
+        self.raw.format_a4r4g4b4 = vk::Bool32::from(value);
         self
     }
     ///Sets `formatA4B4G4R4`.
     #[inline]
-    pub fn format_a4b4g4r4(mut self, value: vk::Bool32) -> Self {
-        self.raw.format_a4b4g4r4 = value;
+    pub fn format_a4b4g4r4(mut self, value: bool) -> Self {
+        self.raw.format_a4b4g4r4 = vk::Bool32::from(value);
         self
     }
 }

@@ -56,8 +56,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceASTCDecodeFeaturesEXT<'a> {
     ///Sets `decodeModeSharedExponent`.
     #[inline]
-    pub fn decode_mode_shared_exponent(mut self, value: vk::Bool32) -> Self {
-        self.raw.decode_mode_shared_exponent = value;
+    pub fn decode_mode_shared_exponent(mut self, value: bool) -> Self {
+        self.raw.decode_mode_shared_exponent = vk::Bool32::from(value);
         self
     }
 }

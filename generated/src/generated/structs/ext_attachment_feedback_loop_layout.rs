@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceAttachmentFeedbackLoopLayoutFeaturesEXT<'a> {
     ///Sets `attachmentFeedbackLoopLayout`.
     #[inline]
-    pub fn attachment_feedback_loop_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.attachment_feedback_loop_layout = value;
+    pub fn attachment_feedback_loop_layout(mut self, value: bool) -> Self {
+        self.raw.attachment_feedback_loop_layout = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceBlendOperationAdvancedFeaturesEXT<'a> {
     ///Sets `advancedBlendCoherentOperations`.
     #[inline]
-    pub fn advanced_blend_coherent_operations(mut self, value: vk::Bool32) -> Self {
-        self.raw.advanced_blend_coherent_operations = value;
+    pub fn advanced_blend_coherent_operations(mut self, value: bool) -> Self {
+        self.raw.advanced_blend_coherent_operations = vk::Bool32::from(value);
         self
     }
 }
@@ -81,14 +81,14 @@ safe_struct!(
 impl<'a> PipelineColorBlendAdvancedStateCreateInfoEXT<'a> {
     ///Sets `srcPremultiplied`.
     #[inline]
-    pub fn src_premultiplied(mut self, value: vk::Bool32) -> Self {
-        self.raw.src_premultiplied = value;
+    pub fn src_premultiplied(mut self, value: bool) -> Self {
+        self.raw.src_premultiplied = vk::Bool32::from(value);
         self
     }
     ///Sets `dstPremultiplied`.
     #[inline]
-    pub fn dst_premultiplied(mut self, value: vk::Bool32) -> Self {
-        self.raw.dst_premultiplied = value;
+    pub fn dst_premultiplied(mut self, value: bool) -> Self {
+        self.raw.dst_premultiplied = vk::Bool32::from(value);
         self
     }
     ///Sets `blendOverlap`.

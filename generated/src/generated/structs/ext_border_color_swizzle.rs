@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceBorderColorSwizzleFeaturesEXT<'a> {
     ///Sets `borderColorSwizzle`.
     #[inline]
-    pub fn border_color_swizzle(mut self, value: vk::Bool32) -> Self {
-        self.raw.border_color_swizzle = value;
+    pub fn border_color_swizzle(mut self, value: bool) -> Self {
+        self.raw.border_color_swizzle = vk::Bool32::from(value);
         self
     }
     ///Sets `borderColorSwizzleFromImage`.
     #[inline]
-    pub fn border_color_swizzle_from_image(mut self, value: vk::Bool32) -> Self {
-        self.raw.border_color_swizzle_from_image = value;
+    pub fn border_color_swizzle_from_image(mut self, value: bool) -> Self {
+        self.raw.border_color_swizzle_from_image = vk::Bool32::from(value);
         self
     }
 }
@@ -72,8 +72,8 @@ impl<'a> SamplerBorderColorComponentMappingCreateInfoEXT<'a> {
     }
     ///Sets `srgb`.
     #[inline]
-    pub fn srgb(mut self, value: vk::Bool32) -> Self {
-        self.raw.srgb = value;
+    pub fn srgb(mut self, value: bool) -> Self {
+        self.raw.srgb = vk::Bool32::from(value);
         self
     }
 }

@@ -53,20 +53,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceBufferDeviceAddressFeaturesEXT<'a> {
     ///Sets `bufferDeviceAddress`.
     #[inline]
-    pub fn buffer_device_address(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address = value;
+    pub fn buffer_device_address(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressCaptureReplay`.
     #[inline]
-    pub fn buffer_device_address_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_capture_replay = value;
+    pub fn buffer_device_address_capture_replay(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressMultiDevice`.
     #[inline]
-    pub fn buffer_device_address_multi_device(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_multi_device = value;
+    pub fn buffer_device_address_multi_device(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_multi_device = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceColorWriteEnableFeaturesEXT<'a> {
     ///Sets `colorWriteEnable`.
     #[inline]
-    pub fn color_write_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.color_write_enable = value;
+    pub fn color_write_enable(mut self, value: bool) -> Self {
+        self.raw.color_write_enable = vk::Bool32::from(value);
         self
     }
 }

@@ -26,8 +26,8 @@ safe_struct!(
 impl<'a> CommandBufferInheritanceConditionalRenderingInfoEXT<'a> {
     ///Sets `conditionalRenderingEnable`.
     #[inline]
-    pub fn conditional_rendering_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.conditional_rendering_enable = value;
+    pub fn conditional_rendering_enable(mut self, value: bool) -> Self {
+        self.raw.conditional_rendering_enable = vk::Bool32::from(value);
         self
     }
 }
@@ -112,14 +112,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceConditionalRenderingFeaturesEXT<'a> {
     ///Sets `conditionalRendering`.
     #[inline]
-    pub fn conditional_rendering(mut self, value: vk::Bool32) -> Self {
-        self.raw.conditional_rendering = value;
+    pub fn conditional_rendering(mut self, value: bool) -> Self {
+        self.raw.conditional_rendering = vk::Bool32::from(value);
         self
     }
     ///Sets `inheritedConditionalRendering`.
     #[inline]
-    pub fn inherited_conditional_rendering(mut self, value: vk::Bool32) -> Self {
-        self.raw.inherited_conditional_rendering = value;
+    pub fn inherited_conditional_rendering(mut self, value: bool) -> Self {
+        self.raw.inherited_conditional_rendering = vk::Bool32::from(value);
         self
     }
 }

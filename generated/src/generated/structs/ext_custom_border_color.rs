@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceCustomBorderColorFeaturesEXT<'a> {
     ///Sets `customBorderColors`.
     #[inline]
-    pub fn custom_border_colors(mut self, value: vk::Bool32) -> Self {
-        self.raw.custom_border_colors = value;
+    pub fn custom_border_colors(mut self, value: bool) -> Self {
+        self.raw.custom_border_colors = vk::Bool32::from(value);
         self
     }
     ///Sets `customBorderColorWithoutFormat`.
     #[inline]
-    pub fn custom_border_color_without_format(mut self, value: vk::Bool32) -> Self {
-        self.raw.custom_border_color_without_format = value;
+    pub fn custom_border_color_without_format(mut self, value: bool) -> Self {
+        self.raw.custom_border_color_without_format = vk::Bool32::from(value);
         self
     }
 }

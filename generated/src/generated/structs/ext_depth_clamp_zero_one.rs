@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDepthClampZeroOneFeaturesEXT<'a> {
     ///Sets `depthClampZeroOne`.
     #[inline]
-    pub fn depth_clamp_zero_one(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_clamp_zero_one = value;
+    pub fn depth_clamp_zero_one(mut self, value: bool) -> Self {
+        self.raw.depth_clamp_zero_one = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDepthClipControlFeaturesEXT<'a> {
     ///Sets `depthClipControl`.
     #[inline]
-    pub fn depth_clip_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_clip_control = value;
+    pub fn depth_clip_control(mut self, value: bool) -> Self {
+        self.raw.depth_clip_control = vk::Bool32::from(value);
         self
     }
 }
@@ -59,8 +59,8 @@ safe_struct!(
 impl<'a> PipelineViewportDepthClipControlCreateInfoEXT<'a> {
     ///Sets `negativeOneToOne`.
     #[inline]
-    pub fn negative_one_to_one(mut self, value: vk::Bool32) -> Self {
-        self.raw.negative_one_to_one = value;
+    pub fn negative_one_to_one(mut self, value: bool) -> Self {
+        self.raw.negative_one_to_one = vk::Bool32::from(value);
         self
     }
 }

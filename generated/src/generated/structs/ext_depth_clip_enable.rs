@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDepthClipEnableFeaturesEXT<'a> {
     ///Sets `depthClipEnable`.
     #[inline]
-    pub fn depth_clip_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_clip_enable = value;
+    pub fn depth_clip_enable(mut self, value: bool) -> Self {
+        self.raw.depth_clip_enable = vk::Bool32::from(value);
         self
     }
 }
@@ -67,8 +67,8 @@ impl<'a> PipelineRasterizationDepthClipStateCreateInfoEXT<'a> {
     }
     ///Sets `depthClipEnable`.
     #[inline]
-    pub fn depth_clip_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_clip_enable = value;
+    pub fn depth_clip_enable(mut self, value: bool) -> Self {
+        self.raw.depth_clip_enable = vk::Bool32::from(value);
         self
     }
 }

@@ -437,26 +437,26 @@ safe_struct!(
 impl<'a> PhysicalDeviceDescriptorBufferFeaturesEXT<'a> {
     ///Sets `descriptorBuffer`.
     #[inline]
-    pub fn descriptor_buffer(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_buffer = value;
+    pub fn descriptor_buffer(mut self, value: bool) -> Self {
+        self.raw.descriptor_buffer = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBufferCaptureReplay`.
     #[inline]
-    pub fn descriptor_buffer_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_buffer_capture_replay = value;
+    pub fn descriptor_buffer_capture_replay(mut self, value: bool) -> Self {
+        self.raw.descriptor_buffer_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBufferImageLayoutIgnored`.
     #[inline]
-    pub fn descriptor_buffer_image_layout_ignored(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_buffer_image_layout_ignored = value;
+    pub fn descriptor_buffer_image_layout_ignored(mut self, value: bool) -> Self {
+        self.raw.descriptor_buffer_image_layout_ignored = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBufferPushDescriptors`.
     #[inline]
-    pub fn descriptor_buffer_push_descriptors(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_buffer_push_descriptors = value;
+    pub fn descriptor_buffer_push_descriptors(mut self, value: bool) -> Self {
+        self.raw.descriptor_buffer_push_descriptors = vk::Bool32::from(value);
         self
     }
 }

@@ -75,8 +75,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceAddressBindingReportFeaturesEXT<'a> {
     ///Sets `reportAddressBinding`.
     #[inline]
-    pub fn report_address_binding(mut self, value: vk::Bool32) -> Self {
-        self.raw.report_address_binding = value;
+    pub fn report_address_binding(mut self, value: bool) -> Self {
+        self.raw.report_address_binding = vk::Bool32::from(value);
         self
     }
 }

@@ -92,8 +92,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDeviceMemoryReportFeaturesEXT<'a> {
     ///Sets `deviceMemoryReport`.
     #[inline]
-    pub fn device_memory_report(mut self, value: vk::Bool32) -> Self {
-        self.raw.device_memory_report = value;
+    pub fn device_memory_report(mut self, value: bool) -> Self {
+        self.raw.device_memory_report = vk::Bool32::from(value);
         self
     }
 }

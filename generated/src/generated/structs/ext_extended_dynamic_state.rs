@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceExtendedDynamicStateFeaturesEXT<'a> {
     ///Sets `extendedDynamicState`.
     #[inline]
-    pub fn extended_dynamic_state(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state = value;
+    pub fn extended_dynamic_state(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state = vk::Bool32::from(value);
         self
     }
 }

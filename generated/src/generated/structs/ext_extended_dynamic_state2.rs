@@ -24,23 +24,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceExtendedDynamicState2FeaturesEXT<'a> {
     ///Sets `extendedDynamicState2`.
     #[inline]
-    pub fn extended_dynamic_state2(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state2 = value;
+    pub fn extended_dynamic_state2(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state2 = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState2LogicOp`.
     #[inline]
-    pub fn extended_dynamic_state2_logic_op(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state2_logic_op = value;
+    pub fn extended_dynamic_state2_logic_op(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state2_logic_op = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState2PatchControlPoints`.
     #[inline]
-    pub fn extended_dynamic_state2_patch_control_points(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state2_patch_control_points = value;
+    pub fn extended_dynamic_state2_patch_control_points(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state2_patch_control_points = vk::Bool32::from(value);
         self
     }
 }

@@ -26,270 +26,266 @@ impl<'a> PhysicalDeviceExtendedDynamicState3FeaturesEXT<'a> {
     #[inline]
     pub fn extended_dynamic_state3_tessellation_domain_origin(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_tessellation_domain_origin = value;
+        self.raw.extended_dynamic_state3_tessellation_domain_origin = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3DepthClampEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_depth_clamp_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_depth_clamp_enable = value;
+    pub fn extended_dynamic_state3_depth_clamp_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_depth_clamp_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3PolygonMode`.
     #[inline]
-    pub fn extended_dynamic_state3_polygon_mode(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state3_polygon_mode = value;
+    pub fn extended_dynamic_state3_polygon_mode(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_polygon_mode = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3RasterizationSamples`.
     #[inline]
-    pub fn extended_dynamic_state3_rasterization_samples(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_rasterization_samples = value;
+    pub fn extended_dynamic_state3_rasterization_samples(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_rasterization_samples = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3SampleMask`.
     #[inline]
-    pub fn extended_dynamic_state3_sample_mask(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state3_sample_mask = value;
+    pub fn extended_dynamic_state3_sample_mask(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_sample_mask = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3AlphaToCoverageEnable`.
     #[inline]
     pub fn extended_dynamic_state3_alpha_to_coverage_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_alpha_to_coverage_enable = value;
+        self.raw.extended_dynamic_state3_alpha_to_coverage_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3AlphaToOneEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_alpha_to_one_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_alpha_to_one_enable = value;
+    pub fn extended_dynamic_state3_alpha_to_one_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_alpha_to_one_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3LogicOpEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_logic_op_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.extended_dynamic_state3_logic_op_enable = value;
+    pub fn extended_dynamic_state3_logic_op_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_logic_op_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3ColorBlendEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_color_blend_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_color_blend_enable = value;
+    pub fn extended_dynamic_state3_color_blend_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_color_blend_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3ColorBlendEquation`.
     #[inline]
-    pub fn extended_dynamic_state3_color_blend_equation(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_color_blend_equation = value;
+    pub fn extended_dynamic_state3_color_blend_equation(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_color_blend_equation = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3ColorWriteMask`.
     #[inline]
-    pub fn extended_dynamic_state3_color_write_mask(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_color_write_mask = value;
+    pub fn extended_dynamic_state3_color_write_mask(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_color_write_mask = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3RasterizationStream`.
     #[inline]
-    pub fn extended_dynamic_state3_rasterization_stream(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_rasterization_stream = value;
+    pub fn extended_dynamic_state3_rasterization_stream(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_rasterization_stream = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3ConservativeRasterizationMode`.
     #[inline]
     pub fn extended_dynamic_state3_conservative_rasterization_mode(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_conservative_rasterization_mode = value;
+        self.raw.extended_dynamic_state3_conservative_rasterization_mode = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3ExtraPrimitiveOverestimationSize`.
     #[inline]
     pub fn extended_dynamic_state3_extra_primitive_overestimation_size(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_extra_primitive_overestimation_size = value;
+        self.raw.extended_dynamic_state3_extra_primitive_overestimation_size = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3DepthClipEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_depth_clip_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_depth_clip_enable = value;
+    pub fn extended_dynamic_state3_depth_clip_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_depth_clip_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3SampleLocationsEnable`.
     #[inline]
     pub fn extended_dynamic_state3_sample_locations_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_sample_locations_enable = value;
+        self.raw.extended_dynamic_state3_sample_locations_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3ColorBlendAdvanced`.
     #[inline]
-    pub fn extended_dynamic_state3_color_blend_advanced(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_color_blend_advanced = value;
+    pub fn extended_dynamic_state3_color_blend_advanced(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_color_blend_advanced = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3ProvokingVertexMode`.
     #[inline]
-    pub fn extended_dynamic_state3_provoking_vertex_mode(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_provoking_vertex_mode = value;
+    pub fn extended_dynamic_state3_provoking_vertex_mode(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_provoking_vertex_mode = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3LineRasterizationMode`.
     #[inline]
     pub fn extended_dynamic_state3_line_rasterization_mode(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_line_rasterization_mode = value;
+        self.raw.extended_dynamic_state3_line_rasterization_mode = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3LineStippleEnable`.
     #[inline]
-    pub fn extended_dynamic_state3_line_stipple_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_line_stipple_enable = value;
+    pub fn extended_dynamic_state3_line_stipple_enable(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_line_stipple_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3DepthClipNegativeOneToOne`.
     #[inline]
     pub fn extended_dynamic_state3_depth_clip_negative_one_to_one(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_depth_clip_negative_one_to_one = value;
+        self.raw.extended_dynamic_state3_depth_clip_negative_one_to_one = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3ViewportWScalingEnable`.
     #[inline]
     pub fn extended_dynamic_state3_viewport_w_scaling_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_viewport_w_scaling_enable = value;
+        self.raw.extended_dynamic_state3_viewport_w_scaling_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3ViewportSwizzle`.
     #[inline]
-    pub fn extended_dynamic_state3_viewport_swizzle(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.extended_dynamic_state3_viewport_swizzle = value;
+    pub fn extended_dynamic_state3_viewport_swizzle(mut self, value: bool) -> Self {
+        self.raw.extended_dynamic_state3_viewport_swizzle = vk::Bool32::from(value);
         self
     }
     ///Sets `extendedDynamicState3CoverageToColorEnable`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_to_color_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_to_color_enable = value;
+        self.raw.extended_dynamic_state3_coverage_to_color_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3CoverageToColorLocation`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_to_color_location(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_to_color_location = value;
+        self.raw.extended_dynamic_state3_coverage_to_color_location = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3CoverageModulationMode`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_modulation_mode(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_modulation_mode = value;
+        self.raw.extended_dynamic_state3_coverage_modulation_mode = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3CoverageModulationTableEnable`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_modulation_table_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_modulation_table_enable = value;
+        self.raw.extended_dynamic_state3_coverage_modulation_table_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3CoverageModulationTable`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_modulation_table(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_modulation_table = value;
+        self.raw.extended_dynamic_state3_coverage_modulation_table = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3CoverageReductionMode`.
     #[inline]
     pub fn extended_dynamic_state3_coverage_reduction_mode(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_coverage_reduction_mode = value;
+        self.raw.extended_dynamic_state3_coverage_reduction_mode = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3RepresentativeFragmentTestEnable`.
     #[inline]
     pub fn extended_dynamic_state3_representative_fragment_test_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_representative_fragment_test_enable = value;
+        self.raw.extended_dynamic_state3_representative_fragment_test_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `extendedDynamicState3ShadingRateImageEnable`.
     #[inline]
     pub fn extended_dynamic_state3_shading_rate_image_enable(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.extended_dynamic_state3_shading_rate_image_enable = value;
+        self.raw.extended_dynamic_state3_shading_rate_image_enable = vk::Bool32::from(
+            value,
+        );
         self
     }
 }
@@ -321,8 +317,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceExtendedDynamicState3PropertiesEXT<'a> {
     ///Sets `dynamicPrimitiveTopologyUnrestricted`.
     #[inline]
-    pub fn dynamic_primitive_topology_unrestricted(mut self, value: vk::Bool32) -> Self {
-        self.raw.dynamic_primitive_topology_unrestricted = value;
+    pub fn dynamic_primitive_topology_unrestricted(mut self, value: bool) -> Self {
+        self.raw.dynamic_primitive_topology_unrestricted = vk::Bool32::from(value);
         self
     }
 }

@@ -24,23 +24,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentDensityMapFeaturesEXT<'a> {
     ///Sets `fragmentDensityMap`.
     #[inline]
-    pub fn fragment_density_map(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_density_map = value;
+    pub fn fragment_density_map(mut self, value: bool) -> Self {
+        self.raw.fragment_density_map = vk::Bool32::from(value);
         self
     }
     ///Sets `fragmentDensityMapDynamic`.
     #[inline]
-    pub fn fragment_density_map_dynamic(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_density_map_dynamic = value;
+    pub fn fragment_density_map_dynamic(mut self, value: bool) -> Self {
+        self.raw.fragment_density_map_dynamic = vk::Bool32::from(value);
         self
     }
     ///Sets `fragmentDensityMapNonSubsampledImages`.
     #[inline]
-    pub fn fragment_density_map_non_subsampled_images(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.fragment_density_map_non_subsampled_images = value;
+    pub fn fragment_density_map_non_subsampled_images(mut self, value: bool) -> Self {
+        self.raw.fragment_density_map_non_subsampled_images = vk::Bool32::from(value);
         self
     }
 }

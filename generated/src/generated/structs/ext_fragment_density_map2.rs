@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentDensityMap2FeaturesEXT<'a> {
     ///Sets `fragmentDensityMapDeferred`.
     #[inline]
-    pub fn fragment_density_map_deferred(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_density_map_deferred = value;
+    pub fn fragment_density_map_deferred(mut self, value: bool) -> Self {
+        self.raw.fragment_density_map_deferred = vk::Bool32::from(value);
         self
     }
 }

@@ -24,20 +24,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentShaderInterlockFeaturesEXT<'a> {
     ///Sets `fragmentShaderSampleInterlock`.
     #[inline]
-    pub fn fragment_shader_sample_interlock(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_shader_sample_interlock = value;
+    pub fn fragment_shader_sample_interlock(mut self, value: bool) -> Self {
+        self.raw.fragment_shader_sample_interlock = vk::Bool32::from(value);
         self
     }
     ///Sets `fragmentShaderPixelInterlock`.
     #[inline]
-    pub fn fragment_shader_pixel_interlock(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_shader_pixel_interlock = value;
+    pub fn fragment_shader_pixel_interlock(mut self, value: bool) -> Self {
+        self.raw.fragment_shader_pixel_interlock = vk::Bool32::from(value);
         self
     }
     ///Sets `fragmentShaderShadingRateInterlock`.
     #[inline]
-    pub fn fragment_shader_shading_rate_interlock(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_shader_shading_rate_interlock = value;
+    pub fn fragment_shader_shading_rate_interlock(mut self, value: bool) -> Self {
+        self.raw.fragment_shader_shading_rate_interlock = vk::Bool32::from(value);
         self
     }
 }

@@ -25,8 +25,8 @@ safe_struct!(
 impl<'a> SurfaceCapabilitiesFullScreenExclusiveEXT<'a> {
     ///Sets `fullScreenExclusiveSupported`.
     #[inline]
-    pub fn full_screen_exclusive_supported(mut self, value: vk::Bool32) -> Self {
-        self.raw.full_screen_exclusive_supported = value;
+    pub fn full_screen_exclusive_supported(mut self, value: bool) -> Self {
+        self.raw.full_screen_exclusive_supported = vk::Bool32::from(value);
         self
     }
 }

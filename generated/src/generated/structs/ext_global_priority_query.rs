@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceGlobalPriorityQueryFeaturesKHR<'a> {
     ///Sets `globalPriorityQuery`.
     #[inline]
-    pub fn global_priority_query(mut self, value: vk::Bool32) -> Self {
-        self.raw.global_priority_query = value;
+    pub fn global_priority_query(mut self, value: bool) -> Self {
+        self.raw.global_priority_query = vk::Bool32::from(value);
         self
     }
 }

@@ -56,8 +56,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceGraphicsPipelineLibraryFeaturesEXT<'a> {
     ///Sets `graphicsPipelineLibrary`.
     #[inline]
-    pub fn graphics_pipeline_library(mut self, value: vk::Bool32) -> Self {
-        self.raw.graphics_pipeline_library = value;
+    pub fn graphics_pipeline_library(mut self, value: bool) -> Self {
+        self.raw.graphics_pipeline_library = vk::Bool32::from(value);
         self
     }
 }
@@ -89,17 +89,19 @@ safe_struct!(
 impl<'a> PhysicalDeviceGraphicsPipelineLibraryPropertiesEXT<'a> {
     ///Sets `graphicsPipelineLibraryFastLinking`.
     #[inline]
-    pub fn graphics_pipeline_library_fast_linking(mut self, value: vk::Bool32) -> Self {
-        self.raw.graphics_pipeline_library_fast_linking = value;
+    pub fn graphics_pipeline_library_fast_linking(mut self, value: bool) -> Self {
+        self.raw.graphics_pipeline_library_fast_linking = vk::Bool32::from(value);
         self
     }
     ///Sets `graphicsPipelineLibraryIndependentInterpolationDecoration`.
     #[inline]
     pub fn graphics_pipeline_library_independent_interpolation_decoration(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.graphics_pipeline_library_independent_interpolation_decoration = value;
+        self.raw.graphics_pipeline_library_independent_interpolation_decoration = vk::Bool32::from(
+            value,
+        );
         self
     }
 }

@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceImage2DViewOf3DFeaturesEXT<'a> {
     ///Sets `image2DViewOf3D`.
     #[inline]
-    pub fn image2_d_view_of3_d(mut self, value: vk::Bool32) -> Self {
-        self.raw.image2_d_view_of3_d = value;
+    pub fn image2_d_view_of3_d(mut self, value: bool) -> Self {
+        self.raw.image2_d_view_of3_d = vk::Bool32::from(value);
         self
     }
     ///Sets `sampler2DViewOf3D`.
     #[inline]
-    pub fn sampler2_d_view_of3_d(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler2_d_view_of3_d = value;
+    pub fn sampler2_d_view_of3_d(mut self, value: bool) -> Self {
+        self.raw.sampler2_d_view_of3_d = vk::Bool32::from(value);
         self
     }
 }

@@ -118,8 +118,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceImageCompressionControlFeaturesEXT<'a> {
     ///Sets `imageCompressionControl`.
     #[inline]
-    pub fn image_compression_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_compression_control = value;
+    pub fn image_compression_control(mut self, value: bool) -> Self {
+        self.raw.image_compression_control = vk::Bool32::from(value);
         self
     }
 }

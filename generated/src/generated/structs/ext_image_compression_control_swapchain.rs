@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceImageCompressionControlSwapchainFeaturesEXT<'a> {
     ///Sets `imageCompressionControlSwapchain`.
     #[inline]
-    pub fn image_compression_control_swapchain(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_compression_control_swapchain = value;
+    pub fn image_compression_control_swapchain(mut self, value: bool) -> Self {
+        self.raw.image_compression_control_swapchain = vk::Bool32::from(value);
         self
     }
 }

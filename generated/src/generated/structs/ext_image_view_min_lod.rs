@@ -55,8 +55,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceImageViewMinLodFeaturesEXT<'a> {
     ///Sets `minLod`.
     #[inline]
-    pub fn min_lod(mut self, value: vk::Bool32) -> Self {
-        self.raw.min_lod = value;
+    pub fn min_lod(mut self, value: bool) -> Self {
+        self.raw.min_lod = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceIndexTypeUint8FeaturesEXT<'a> {
     ///Sets `indexTypeUint8`.
     #[inline]
-    pub fn index_type_uint8(mut self, value: vk::Bool32) -> Self {
-        self.raw.index_type_uint8 = value;
+    pub fn index_type_uint8(mut self, value: bool) -> Self {
+        self.raw.index_type_uint8 = vk::Bool32::from(value);
         self
     }
 }

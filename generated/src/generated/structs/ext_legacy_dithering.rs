@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceLegacyDitheringFeaturesEXT<'a> {
     ///Sets `legacyDithering`.
     #[inline]
-    pub fn legacy_dithering(mut self, value: vk::Bool32) -> Self {
-        self.raw.legacy_dithering = value;
+    pub fn legacy_dithering(mut self, value: bool) -> Self {
+        self.raw.legacy_dithering = vk::Bool32::from(value);
         self
     }
 }

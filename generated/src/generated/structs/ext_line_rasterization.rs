@@ -24,38 +24,38 @@ safe_struct!(
 impl<'a> PhysicalDeviceLineRasterizationFeaturesEXT<'a> {
     ///Sets `rectangularLines`.
     #[inline]
-    pub fn rectangular_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.rectangular_lines = value;
+    pub fn rectangular_lines(mut self, value: bool) -> Self {
+        self.raw.rectangular_lines = vk::Bool32::from(value);
         self
     }
     ///Sets `bresenhamLines`.
     #[inline]
-    pub fn bresenham_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.bresenham_lines = value;
+    pub fn bresenham_lines(mut self, value: bool) -> Self {
+        self.raw.bresenham_lines = vk::Bool32::from(value);
         self
     }
     ///Sets `smoothLines`.
     #[inline]
-    pub fn smooth_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.smooth_lines = value;
+    pub fn smooth_lines(mut self, value: bool) -> Self {
+        self.raw.smooth_lines = vk::Bool32::from(value);
         self
     }
     ///Sets `stippledRectangularLines`.
     #[inline]
-    pub fn stippled_rectangular_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.stippled_rectangular_lines = value;
+    pub fn stippled_rectangular_lines(mut self, value: bool) -> Self {
+        self.raw.stippled_rectangular_lines = vk::Bool32::from(value);
         self
     }
     ///Sets `stippledBresenhamLines`.
     #[inline]
-    pub fn stippled_bresenham_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.stippled_bresenham_lines = value;
+    pub fn stippled_bresenham_lines(mut self, value: bool) -> Self {
+        self.raw.stippled_bresenham_lines = vk::Bool32::from(value);
         self
     }
     ///Sets `stippledSmoothLines`.
     #[inline]
-    pub fn stippled_smooth_lines(mut self, value: vk::Bool32) -> Self {
-        self.raw.stippled_smooth_lines = value;
+    pub fn stippled_smooth_lines(mut self, value: bool) -> Self {
+        self.raw.stippled_smooth_lines = vk::Bool32::from(value);
         self
     }
 }
@@ -120,8 +120,8 @@ impl<'a> PipelineRasterizationLineStateCreateInfoEXT<'a> {
     }
     ///Sets `stippledLineEnable`.
     #[inline]
-    pub fn stippled_line_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.stippled_line_enable = value;
+    pub fn stippled_line_enable(mut self, value: bool) -> Self {
+        self.raw.stippled_line_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `lineStippleFactor`.

@@ -55,8 +55,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMemoryPriorityFeaturesEXT<'a> {
     ///Sets `memoryPriority`.
     #[inline]
-    pub fn memory_priority(mut self, value: vk::Bool32) -> Self {
-        self.raw.memory_priority = value;
+    pub fn memory_priority(mut self, value: bool) -> Self {
+        self.raw.memory_priority = vk::Bool32::from(value);
         self
     }
 }

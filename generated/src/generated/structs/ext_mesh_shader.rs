@@ -26,35 +26,32 @@ safe_struct!(
 impl<'a> PhysicalDeviceMeshShaderFeaturesEXT<'a> {
     ///Sets `taskShader`.
     #[inline]
-    pub fn task_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.task_shader = value;
+    pub fn task_shader(mut self, value: bool) -> Self {
+        self.raw.task_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `meshShader`.
     #[inline]
-    pub fn mesh_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.mesh_shader = value;
+    pub fn mesh_shader(mut self, value: bool) -> Self {
+        self.raw.mesh_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `multiviewMeshShader`.
     #[inline]
-    pub fn multiview_mesh_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_mesh_shader = value;
+    pub fn multiview_mesh_shader(mut self, value: bool) -> Self {
+        self.raw.multiview_mesh_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `primitiveFragmentShadingRateMeshShader`.
     #[inline]
-    pub fn primitive_fragment_shading_rate_mesh_shader(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.primitive_fragment_shading_rate_mesh_shader = value;
+    pub fn primitive_fragment_shading_rate_mesh_shader(mut self, value: bool) -> Self {
+        self.raw.primitive_fragment_shading_rate_mesh_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `meshShaderQueries`.
     #[inline]
-    pub fn mesh_shader_queries(mut self, value: vk::Bool32) -> Self {
-        self.raw.mesh_shader_queries = value;
+    pub fn mesh_shader_queries(mut self, value: bool) -> Self {
+        self.raw.mesh_shader_queries = vk::Bool32::from(value);
         self
     }
 }

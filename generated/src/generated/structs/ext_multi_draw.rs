@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMultiDrawFeaturesEXT<'a> {
     ///Sets `multiDraw`.
     #[inline]
-    pub fn multi_draw(mut self, value: vk::Bool32) -> Self {
-        self.raw.multi_draw = value;
+    pub fn multi_draw(mut self, value: bool) -> Self {
+        self.raw.multi_draw = vk::Bool32::from(value);
         self
     }
 }

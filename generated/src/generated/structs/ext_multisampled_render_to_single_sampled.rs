@@ -27,11 +27,8 @@ safe_struct!(
 impl<'a> MultisampledRenderToSingleSampledInfoEXT<'a> {
     ///Sets `multisampledRenderToSingleSampledEnable`.
     #[inline]
-    pub fn multisampled_render_to_single_sampled_enable(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.multisampled_render_to_single_sampled_enable = value;
+    pub fn multisampled_render_to_single_sampled_enable(mut self, value: bool) -> Self {
+        self.raw.multisampled_render_to_single_sampled_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `rasterizationSamples`.
@@ -69,8 +66,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT<'a> {
     ///Sets `multisampledRenderToSingleSampled`.
     #[inline]
-    pub fn multisampled_render_to_single_sampled(mut self, value: vk::Bool32) -> Self {
-        self.raw.multisampled_render_to_single_sampled = value;
+    pub fn multisampled_render_to_single_sampled(mut self, value: bool) -> Self {
+        self.raw.multisampled_render_to_single_sampled = vk::Bool32::from(value);
         self
     }
 }

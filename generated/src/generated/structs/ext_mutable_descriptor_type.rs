@@ -134,8 +134,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMutableDescriptorTypeFeaturesEXT<'a> {
     ///Sets `mutableDescriptorType`.
     #[inline]
-    pub fn mutable_descriptor_type(mut self, value: vk::Bool32) -> Self {
-        self.raw.mutable_descriptor_type = value;
+    pub fn mutable_descriptor_type(mut self, value: bool) -> Self {
+        self.raw.mutable_descriptor_type = vk::Bool32::from(value);
         self
     }
 }

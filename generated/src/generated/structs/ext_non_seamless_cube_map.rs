@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceNonSeamlessCubeMapFeaturesEXT<'a> {
     ///Sets `nonSeamlessCubeMap`.
     #[inline]
-    pub fn non_seamless_cube_map(mut self, value: vk::Bool32) -> Self {
-        self.raw.non_seamless_cube_map = value;
+    pub fn non_seamless_cube_map(mut self, value: bool) -> Self {
+        self.raw.non_seamless_cube_map = vk::Bool32::from(value);
         self
     }
 }

@@ -360,8 +360,8 @@ impl<'a> MicromapBuildSizesInfoEXT<'a> {
     }
     ///Sets `discardable`.
     #[inline]
-    pub fn discardable(mut self, value: vk::Bool32) -> Self {
-        self.raw.discardable = value;
+    pub fn discardable(mut self, value: bool) -> Self {
+        self.raw.discardable = vk::Bool32::from(value);
         self
     }
 }
@@ -484,20 +484,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceOpacityMicromapFeaturesEXT<'a> {
     ///Sets `micromap`.
     #[inline]
-    pub fn micromap(mut self, value: vk::Bool32) -> Self {
-        self.raw.micromap = value;
+    pub fn micromap(mut self, value: bool) -> Self {
+        self.raw.micromap = vk::Bool32::from(value);
         self
     }
     ///Sets `micromapCaptureReplay`.
     #[inline]
-    pub fn micromap_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.micromap_capture_replay = value;
+    pub fn micromap_capture_replay(mut self, value: bool) -> Self {
+        self.raw.micromap_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `micromapHostCommands`.
     #[inline]
-    pub fn micromap_host_commands(mut self, value: vk::Bool32) -> Self {
-        self.raw.micromap_host_commands = value;
+    pub fn micromap_host_commands(mut self, value: bool) -> Self {
+        self.raw.micromap_host_commands = vk::Bool32::from(value);
         self
     }
 }

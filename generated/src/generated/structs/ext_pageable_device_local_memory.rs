@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePageableDeviceLocalMemoryFeaturesEXT<'a> {
     ///Sets `pageableDeviceLocalMemory`.
     #[inline]
-    pub fn pageable_device_local_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.pageable_device_local_memory = value;
+    pub fn pageable_device_local_memory(mut self, value: bool) -> Self {
+        self.raw.pageable_device_local_memory = vk::Bool32::from(value);
         self
     }
 }

@@ -25,8 +25,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePipelinePropertiesFeaturesEXT<'a> {
     ///Sets `pipelinePropertiesIdentifier`.
     #[inline]
-    pub fn pipeline_properties_identifier(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_properties_identifier = value;
+    pub fn pipeline_properties_identifier(mut self, value: bool) -> Self {
+        self.raw.pipeline_properties_identifier = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePipelineProtectedAccessFeaturesEXT<'a> {
     ///Sets `pipelineProtectedAccess`.
     #[inline]
-    pub fn pipeline_protected_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_protected_access = value;
+    pub fn pipeline_protected_access(mut self, value: bool) -> Self {
+        self.raw.pipeline_protected_access = vk::Bool32::from(value);
         self
     }
 }

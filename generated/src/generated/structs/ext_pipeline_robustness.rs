@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePipelineRobustnessFeaturesEXT<'a> {
     ///Sets `pipelineRobustness`.
     #[inline]
-    pub fn pipeline_robustness(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_robustness = value;
+    pub fn pipeline_robustness(mut self, value: bool) -> Self {
+        self.raw.pipeline_robustness = vk::Bool32::from(value);
         self
     }
 }

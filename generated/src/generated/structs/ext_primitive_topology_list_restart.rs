@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDevicePrimitiveTopologyListRestartFeaturesEXT<'a> {
     ///Sets `primitiveTopologyListRestart`.
     #[inline]
-    pub fn primitive_topology_list_restart(mut self, value: vk::Bool32) -> Self {
-        self.raw.primitive_topology_list_restart = value;
+    pub fn primitive_topology_list_restart(mut self, value: bool) -> Self {
+        self.raw.primitive_topology_list_restart = vk::Bool32::from(value);
         self
     }
     ///Sets `primitiveTopologyPatchListRestart`.
     #[inline]
-    pub fn primitive_topology_patch_list_restart(mut self, value: vk::Bool32) -> Self {
-        self.raw.primitive_topology_patch_list_restart = value;
+    pub fn primitive_topology_patch_list_restart(mut self, value: bool) -> Self {
+        self.raw.primitive_topology_patch_list_restart = vk::Bool32::from(value);
         self
     }
 }

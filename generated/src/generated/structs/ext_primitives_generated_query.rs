@@ -24,26 +24,30 @@ safe_struct!(
 impl<'a> PhysicalDevicePrimitivesGeneratedQueryFeaturesEXT<'a> {
     ///Sets `primitivesGeneratedQuery`.
     #[inline]
-    pub fn primitives_generated_query(mut self, value: vk::Bool32) -> Self {
-        self.raw.primitives_generated_query = value;
+    pub fn primitives_generated_query(mut self, value: bool) -> Self {
+        self.raw.primitives_generated_query = vk::Bool32::from(value);
         self
     }
     ///Sets `primitivesGeneratedQueryWithRasterizerDiscard`.
     #[inline]
     pub fn primitives_generated_query_with_rasterizer_discard(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.primitives_generated_query_with_rasterizer_discard = value;
+        self.raw.primitives_generated_query_with_rasterizer_discard = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `primitivesGeneratedQueryWithNonZeroStreams`.
     #[inline]
     pub fn primitives_generated_query_with_non_zero_streams(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.primitives_generated_query_with_non_zero_streams = value;
+        self.raw.primitives_generated_query_with_non_zero_streams = vk::Bool32::from(
+            value,
+        );
         self
     }
 }

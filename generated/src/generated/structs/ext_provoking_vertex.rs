@@ -24,17 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceProvokingVertexFeaturesEXT<'a> {
     ///Sets `provokingVertexLast`.
     #[inline]
-    pub fn provoking_vertex_last(mut self, value: vk::Bool32) -> Self {
-        self.raw.provoking_vertex_last = value;
+    pub fn provoking_vertex_last(mut self, value: bool) -> Self {
+        self.raw.provoking_vertex_last = vk::Bool32::from(value);
         self
     }
     ///Sets `transformFeedbackPreservesProvokingVertex`.
     #[inline]
-    pub fn transform_feedback_preserves_provoking_vertex(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.transform_feedback_preserves_provoking_vertex = value;
+    pub fn transform_feedback_preserves_provoking_vertex(mut self, value: bool) -> Self {
+        self.raw.transform_feedback_preserves_provoking_vertex = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceRGBA10X6FormatsFeaturesEXT<'a> {
     ///Sets `formatRgba10x6WithoutYCbCrSampler`.
     #[inline]
-    pub fn format_rgba10x6_without_y_cb_cr_sampler(mut self, value: vk::Bool32) -> Self {
-        self.raw.format_rgba10x6_without_y_cb_cr_sampler = value;
+    pub fn format_rgba10x6_without_y_cb_cr_sampler(mut self, value: bool) -> Self {
+        self.raw.format_rgba10x6_without_y_cb_cr_sampler = vk::Bool32::from(value);
         self
     }
 }

@@ -26,20 +26,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceRobustness2FeaturesEXT<'a> {
     ///Sets `robustBufferAccess2`.
     #[inline]
-    pub fn robust_buffer_access2(mut self, value: vk::Bool32) -> Self {
-        self.raw.robust_buffer_access2 = value;
+    pub fn robust_buffer_access2(mut self, value: bool) -> Self {
+        self.raw.robust_buffer_access2 = vk::Bool32::from(value);
         self
     }
     ///Sets `robustImageAccess2`.
     #[inline]
-    pub fn robust_image_access2(mut self, value: vk::Bool32) -> Self {
-        self.raw.robust_image_access2 = value;
+    pub fn robust_image_access2(mut self, value: bool) -> Self {
+        self.raw.robust_image_access2 = vk::Bool32::from(value);
         self
     }
     ///Sets `nullDescriptor`.
     #[inline]
-    pub fn null_descriptor(mut self, value: vk::Bool32) -> Self {
-        self.raw.null_descriptor = value;
+    pub fn null_descriptor(mut self, value: bool) -> Self {
+        self.raw.null_descriptor = vk::Bool32::from(value);
         self
     }
 }

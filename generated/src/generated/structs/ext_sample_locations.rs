@@ -120,8 +120,8 @@ impl<'a> PipelineSampleLocationsStateCreateInfoEXT<'a> {
     }
     ///Sets `sampleLocationsEnable`.
     #[inline]
-    pub fn sample_locations_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.sample_locations_enable = value;
+    pub fn sample_locations_enable(mut self, value: bool) -> Self {
+        self.raw.sample_locations_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `sampleLocationsInfo`.

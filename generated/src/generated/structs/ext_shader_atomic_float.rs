@@ -24,74 +24,74 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderAtomicFloatFeaturesEXT<'a> {
     ///Sets `shaderBufferFloat32Atomics`.
     #[inline]
-    pub fn shader_buffer_float32_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float32_atomics = value;
+    pub fn shader_buffer_float32_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float32_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat32AtomicAdd`.
     #[inline]
-    pub fn shader_buffer_float32_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float32_atomic_add = value;
+    pub fn shader_buffer_float32_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float32_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat64Atomics`.
     #[inline]
-    pub fn shader_buffer_float64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float64_atomics = value;
+    pub fn shader_buffer_float64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat64AtomicAdd`.
     #[inline]
-    pub fn shader_buffer_float64_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float64_atomic_add = value;
+    pub fn shader_buffer_float64_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float64_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat32Atomics`.
     #[inline]
-    pub fn shader_shared_float32_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float32_atomics = value;
+    pub fn shader_shared_float32_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float32_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat32AtomicAdd`.
     #[inline]
-    pub fn shader_shared_float32_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float32_atomic_add = value;
+    pub fn shader_shared_float32_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float32_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat64Atomics`.
     #[inline]
-    pub fn shader_shared_float64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float64_atomics = value;
+    pub fn shader_shared_float64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat64AtomicAdd`.
     #[inline]
-    pub fn shader_shared_float64_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float64_atomic_add = value;
+    pub fn shader_shared_float64_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float64_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderImageFloat32Atomics`.
     #[inline]
-    pub fn shader_image_float32_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_image_float32_atomics = value;
+    pub fn shader_image_float32_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_image_float32_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderImageFloat32AtomicAdd`.
     #[inline]
-    pub fn shader_image_float32_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_image_float32_atomic_add = value;
+    pub fn shader_image_float32_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_image_float32_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `sparseImageFloat32Atomics`.
     #[inline]
-    pub fn sparse_image_float32_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.sparse_image_float32_atomics = value;
+    pub fn sparse_image_float32_atomics(mut self, value: bool) -> Self {
+        self.raw.sparse_image_float32_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `sparseImageFloat32AtomicAdd`.
     #[inline]
-    pub fn sparse_image_float32_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.sparse_image_float32_atomic_add = value;
+    pub fn sparse_image_float32_atomic_add(mut self, value: bool) -> Self {
+        self.raw.sparse_image_float32_atomic_add = vk::Bool32::from(value);
         self
     }
 }

@@ -24,74 +24,74 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderAtomicFloat2FeaturesEXT<'a> {
     ///Sets `shaderBufferFloat16Atomics`.
     #[inline]
-    pub fn shader_buffer_float16_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float16_atomics = value;
+    pub fn shader_buffer_float16_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float16_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat16AtomicAdd`.
     #[inline]
-    pub fn shader_buffer_float16_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float16_atomic_add = value;
+    pub fn shader_buffer_float16_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float16_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat16AtomicMinMax`.
     #[inline]
-    pub fn shader_buffer_float16_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float16_atomic_min_max = value;
+    pub fn shader_buffer_float16_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float16_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat32AtomicMinMax`.
     #[inline]
-    pub fn shader_buffer_float32_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float32_atomic_min_max = value;
+    pub fn shader_buffer_float32_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float32_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferFloat64AtomicMinMax`.
     #[inline]
-    pub fn shader_buffer_float64_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_float64_atomic_min_max = value;
+    pub fn shader_buffer_float64_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_float64_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat16Atomics`.
     #[inline]
-    pub fn shader_shared_float16_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float16_atomics = value;
+    pub fn shader_shared_float16_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float16_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat16AtomicAdd`.
     #[inline]
-    pub fn shader_shared_float16_atomic_add(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float16_atomic_add = value;
+    pub fn shader_shared_float16_atomic_add(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float16_atomic_add = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat16AtomicMinMax`.
     #[inline]
-    pub fn shader_shared_float16_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float16_atomic_min_max = value;
+    pub fn shader_shared_float16_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float16_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat32AtomicMinMax`.
     #[inline]
-    pub fn shader_shared_float32_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float32_atomic_min_max = value;
+    pub fn shader_shared_float32_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float32_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedFloat64AtomicMinMax`.
     #[inline]
-    pub fn shader_shared_float64_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_float64_atomic_min_max = value;
+    pub fn shader_shared_float64_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_shared_float64_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderImageFloat32AtomicMinMax`.
     #[inline]
-    pub fn shader_image_float32_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_image_float32_atomic_min_max = value;
+    pub fn shader_image_float32_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.shader_image_float32_atomic_min_max = vk::Bool32::from(value);
         self
     }
     ///Sets `sparseImageFloat32AtomicMinMax`.
     #[inline]
-    pub fn sparse_image_float32_atomic_min_max(mut self, value: vk::Bool32) -> Self {
-        self.raw.sparse_image_float32_atomic_min_max = value;
+    pub fn sparse_image_float32_atomic_min_max(mut self, value: bool) -> Self {
+        self.raw.sparse_image_float32_atomic_min_max = vk::Bool32::from(value);
         self
     }
 }

@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderImageAtomicInt64FeaturesEXT<'a> {
     ///Sets `shaderImageInt64Atomics`.
     #[inline]
-    pub fn shader_image_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_image_int64_atomics = value;
+    pub fn shader_image_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_image_int64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `sparseImageInt64Atomics`.
     #[inline]
-    pub fn sparse_image_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.sparse_image_int64_atomics = value;
+    pub fn sparse_image_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.sparse_image_int64_atomics = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderModuleIdentifierFeaturesEXT<'a> {
     ///Sets `shaderModuleIdentifier`.
     #[inline]
-    pub fn shader_module_identifier(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_module_identifier = value;
+    pub fn shader_module_identifier(mut self, value: bool) -> Self {
+        self.raw.shader_module_identifier = vk::Bool32::from(value);
         self
     }
 }

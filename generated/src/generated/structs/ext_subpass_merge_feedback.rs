@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceSubpassMergeFeedbackFeaturesEXT<'a> {
     ///Sets `subpassMergeFeedback`.
     #[inline]
-    pub fn subpass_merge_feedback(mut self, value: vk::Bool32) -> Self {
-        self.raw.subpass_merge_feedback = value;
+    pub fn subpass_merge_feedback(mut self, value: bool) -> Self {
+        self.raw.subpass_merge_feedback = vk::Bool32::from(value);
         self
     }
 }
@@ -57,8 +57,8 @@ safe_struct!(
 impl<'a> RenderPassCreationControlEXT<'a> {
     ///Sets `disallowMerging`.
     #[inline]
-    pub fn disallow_merging(mut self, value: vk::Bool32) -> Self {
-        self.raw.disallow_merging = value;
+    pub fn disallow_merging(mut self, value: bool) -> Self {
+        self.raw.disallow_merging = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceSwapchainMaintenance1FeaturesEXT<'a> {
     ///Sets `swapchainMaintenance1`.
     #[inline]
-    pub fn swapchain_maintenance1(mut self, value: vk::Bool32) -> Self {
-        self.raw.swapchain_maintenance1 = value;
+    pub fn swapchain_maintenance1(mut self, value: bool) -> Self {
+        self.raw.swapchain_maintenance1 = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceTexelBufferAlignmentFeaturesEXT<'a> {
     ///Sets `texelBufferAlignment`.
     #[inline]
-    pub fn texel_buffer_alignment(mut self, value: vk::Bool32) -> Self {
-        self.raw.texel_buffer_alignment = value;
+    pub fn texel_buffer_alignment(mut self, value: bool) -> Self {
+        self.raw.texel_buffer_alignment = vk::Bool32::from(value);
         self
     }
 }

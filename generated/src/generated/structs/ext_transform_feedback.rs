@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceTransformFeedbackFeaturesEXT<'a> {
     ///Sets `transformFeedback`.
     #[inline]
-    pub fn transform_feedback(mut self, value: vk::Bool32) -> Self {
-        self.raw.transform_feedback = value;
+    pub fn transform_feedback(mut self, value: bool) -> Self {
+        self.raw.transform_feedback = vk::Bool32::from(value);
         self
     }
     ///Sets `geometryStreams`.
     #[inline]
-    pub fn geometry_streams(mut self, value: vk::Bool32) -> Self {
-        self.raw.geometry_streams = value;
+    pub fn geometry_streams(mut self, value: bool) -> Self {
+        self.raw.geometry_streams = vk::Bool32::from(value);
         self
     }
 }

@@ -24,17 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceVertexAttributeDivisorFeaturesEXT<'a> {
     ///Sets `vertexAttributeInstanceRateDivisor`.
     #[inline]
-    pub fn vertex_attribute_instance_rate_divisor(mut self, value: vk::Bool32) -> Self {
-        self.raw.vertex_attribute_instance_rate_divisor = value;
+    pub fn vertex_attribute_instance_rate_divisor(mut self, value: bool) -> Self {
+        self.raw.vertex_attribute_instance_rate_divisor = vk::Bool32::from(value);
         self
     }
     ///Sets `vertexAttributeInstanceRateZeroDivisor`.
     #[inline]
-    pub fn vertex_attribute_instance_rate_zero_divisor(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.vertex_attribute_instance_rate_zero_divisor = value;
+    pub fn vertex_attribute_instance_rate_zero_divisor(mut self, value: bool) -> Self {
+        self.raw.vertex_attribute_instance_rate_zero_divisor = vk::Bool32::from(value);
         self
     }
 }

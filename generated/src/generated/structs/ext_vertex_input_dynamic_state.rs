@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceVertexInputDynamicStateFeaturesEXT<'a> {
     ///Sets `vertexInputDynamicState`.
     #[inline]
-    pub fn vertex_input_dynamic_state(mut self, value: vk::Bool32) -> Self {
-        self.raw.vertex_input_dynamic_state = value;
+    pub fn vertex_input_dynamic_state(mut self, value: bool) -> Self {
+        self.raw.vertex_input_dynamic_state = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceYcbcr2Plane444FormatsFeaturesEXT<'a> {
     ///Sets `ycbcr2plane444Formats`.
     #[inline]
-    pub fn ycbcr2plane444_formats(mut self, value: vk::Bool32) -> Self {
-        self.raw.ycbcr2plane444_formats = value;
+    pub fn ycbcr2plane444_formats(mut self, value: bool) -> Self {
+        self.raw.ycbcr2plane444_formats = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceYcbcrImageArraysFeaturesEXT<'a> {
     ///Sets `ycbcrImageArrays`.
     #[inline]
-    pub fn ycbcr_image_arrays(mut self, value: vk::Bool32) -> Self {
-        self.raw.ycbcr_image_arrays = value;
+    pub fn ycbcr_image_arrays(mut self, value: bool) -> Self {
+        self.raw.ycbcr_image_arrays = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceInvocationMaskFeaturesHUAWEI<'a> {
     ///Sets `invocationMask`.
     #[inline]
-    pub fn invocation_mask(mut self, value: vk::Bool32) -> Self {
-        self.raw.invocation_mask = value;
+    pub fn invocation_mask(mut self, value: bool) -> Self {
+        self.raw.invocation_mask = vk::Bool32::from(value);
         self
     }
 }

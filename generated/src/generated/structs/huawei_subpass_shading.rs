@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceSubpassShadingFeaturesHUAWEI<'a> {
     ///Sets `subpassShading`.
     #[inline]
-    pub fn subpass_shading(mut self, value: vk::Bool32) -> Self {
-        self.raw.subpass_shading = value;
+    pub fn subpass_shading(mut self, value: bool) -> Self {
+        self.raw.subpass_shading = vk::Bool32::from(value);
         self
     }
 }

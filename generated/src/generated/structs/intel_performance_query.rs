@@ -117,8 +117,8 @@ impl<'a> PerformanceOverrideInfoINTEL<'a> {
     }
     ///Sets `enable`.
     #[inline]
-    pub fn enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.enable = value;
+    pub fn enable(mut self, value: bool) -> Self {
+        self.raw.enable = vk::Bool32::from(value);
         self
     }
     ///Sets `parameter`.

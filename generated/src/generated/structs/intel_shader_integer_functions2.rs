@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderIntegerFunctions2FeaturesINTEL<'a> {
     ///Sets `shaderIntegerFunctions2`.
     #[inline]
-    pub fn shader_integer_functions2(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_integer_functions2 = value;
+    pub fn shader_integer_functions2(mut self, value: bool) -> Self {
+        self.raw.shader_integer_functions2 = vk::Bool32::from(value);
         self
     }
 }

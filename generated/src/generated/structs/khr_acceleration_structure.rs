@@ -305,8 +305,8 @@ safe_struct!(
 impl<'a> AccelerationStructureGeometryInstancesDataKHR<'a> {
     ///Sets `arrayOfPointers`.
     #[inline]
-    pub fn array_of_pointers(mut self, value: vk::Bool32) -> Self {
-        self.raw.array_of_pointers = value;
+    pub fn array_of_pointers(mut self, value: bool) -> Self {
+        self.raw.array_of_pointers = vk::Bool32::from(value);
         self
     }
 }
@@ -605,35 +605,37 @@ safe_struct!(
 impl<'a> PhysicalDeviceAccelerationStructureFeaturesKHR<'a> {
     ///Sets `accelerationStructure`.
     #[inline]
-    pub fn acceleration_structure(mut self, value: vk::Bool32) -> Self {
-        self.raw.acceleration_structure = value;
+    pub fn acceleration_structure(mut self, value: bool) -> Self {
+        self.raw.acceleration_structure = vk::Bool32::from(value);
         self
     }
     ///Sets `accelerationStructureCaptureReplay`.
     #[inline]
-    pub fn acceleration_structure_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.acceleration_structure_capture_replay = value;
+    pub fn acceleration_structure_capture_replay(mut self, value: bool) -> Self {
+        self.raw.acceleration_structure_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `accelerationStructureIndirectBuild`.
     #[inline]
-    pub fn acceleration_structure_indirect_build(mut self, value: vk::Bool32) -> Self {
-        self.raw.acceleration_structure_indirect_build = value;
+    pub fn acceleration_structure_indirect_build(mut self, value: bool) -> Self {
+        self.raw.acceleration_structure_indirect_build = vk::Bool32::from(value);
         self
     }
     ///Sets `accelerationStructureHostCommands`.
     #[inline]
-    pub fn acceleration_structure_host_commands(mut self, value: vk::Bool32) -> Self {
-        self.raw.acceleration_structure_host_commands = value;
+    pub fn acceleration_structure_host_commands(mut self, value: bool) -> Self {
+        self.raw.acceleration_structure_host_commands = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBindingAccelerationStructureUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_acceleration_structure_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_acceleration_structure_update_after_bind = value;
+        self.raw.descriptor_binding_acceleration_structure_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
 }

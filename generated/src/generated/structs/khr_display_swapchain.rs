@@ -37,8 +37,8 @@ impl<'a> DisplayPresentInfoKHR<'a> {
     }
     ///Sets `persistent`.
     #[inline]
-    pub fn persistent(mut self, value: vk::Bool32) -> Self {
-        self.raw.persistent = value;
+    pub fn persistent(mut self, value: bool) -> Self {
+        self.raw.persistent = vk::Bool32::from(value);
         self
     }
 }

@@ -97,14 +97,14 @@ safe_struct!(
 impl<'a> MultiviewPerViewAttributesInfoNVX<'a> {
     ///Sets `perViewAttributes`.
     #[inline]
-    pub fn per_view_attributes(mut self, value: vk::Bool32) -> Self {
-        self.raw.per_view_attributes = value;
+    pub fn per_view_attributes(mut self, value: bool) -> Self {
+        self.raw.per_view_attributes = vk::Bool32::from(value);
         self
     }
     ///Sets `perViewAttributesPositionXOnly`.
     #[inline]
-    pub fn per_view_attributes_position_x_only(mut self, value: vk::Bool32) -> Self {
-        self.raw.per_view_attributes_position_x_only = value;
+    pub fn per_view_attributes_position_x_only(mut self, value: bool) -> Self {
+        self.raw.per_view_attributes_position_x_only = vk::Bool32::from(value);
         self
     }
 }

@@ -36,8 +36,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentShaderBarycentricFeaturesKHR<'a> {
     ///Sets `fragmentShaderBarycentric`.
     #[inline]
-    pub fn fragment_shader_barycentric(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_shader_barycentric = value;
+    pub fn fragment_shader_barycentric(mut self, value: bool) -> Self {
+        self.raw.fragment_shader_barycentric = vk::Bool32::from(value);
         self
     }
 }

@@ -70,20 +70,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentShadingRateFeaturesKHR<'a> {
     ///Sets `pipelineFragmentShadingRate`.
     #[inline]
-    pub fn pipeline_fragment_shading_rate(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_fragment_shading_rate = value;
+    pub fn pipeline_fragment_shading_rate(mut self, value: bool) -> Self {
+        self.raw.pipeline_fragment_shading_rate = vk::Bool32::from(value);
         self
     }
     ///Sets `primitiveFragmentShadingRate`.
     #[inline]
-    pub fn primitive_fragment_shading_rate(mut self, value: vk::Bool32) -> Self {
-        self.raw.primitive_fragment_shading_rate = value;
+    pub fn primitive_fragment_shading_rate(mut self, value: bool) -> Self {
+        self.raw.primitive_fragment_shading_rate = vk::Bool32::from(value);
         self
     }
     ///Sets `attachmentFragmentShadingRate`.
     #[inline]
-    pub fn attachment_fragment_shading_rate(mut self, value: vk::Bool32) -> Self {
-        self.raw.attachment_fragment_shading_rate = value;
+    pub fn attachment_fragment_shading_rate(mut self, value: bool) -> Self {
+        self.raw.attachment_fragment_shading_rate = vk::Bool32::from(value);
         self
     }
 }

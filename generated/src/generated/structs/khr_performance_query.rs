@@ -129,17 +129,14 @@ safe_struct!(
 impl<'a> PhysicalDevicePerformanceQueryFeaturesKHR<'a> {
     ///Sets `performanceCounterQueryPools`.
     #[inline]
-    pub fn performance_counter_query_pools(mut self, value: vk::Bool32) -> Self {
-        self.raw.performance_counter_query_pools = value;
+    pub fn performance_counter_query_pools(mut self, value: bool) -> Self {
+        self.raw.performance_counter_query_pools = vk::Bool32::from(value);
         self
     }
     ///Sets `performanceCounterMultipleQueryPools`.
     #[inline]
-    pub fn performance_counter_multiple_query_pools(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.performance_counter_multiple_query_pools = value;
+    pub fn performance_counter_multiple_query_pools(mut self, value: bool) -> Self {
+        self.raw.performance_counter_multiple_query_pools = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePipelineExecutablePropertiesFeaturesKHR<'a> {
     ///Sets `pipelineExecutableInfo`.
     #[inline]
-    pub fn pipeline_executable_info(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_executable_info = value;
+    pub fn pipeline_executable_info(mut self, value: bool) -> Self {
+        self.raw.pipeline_executable_info = vk::Bool32::from(value);
         self
     }
 }

@@ -24,95 +24,92 @@ safe_struct!(
 impl<'a> PhysicalDevicePortabilitySubsetFeaturesKHR<'a> {
     ///Sets `constantAlphaColorBlendFactors`.
     #[inline]
-    pub fn constant_alpha_color_blend_factors(mut self, value: vk::Bool32) -> Self {
-        self.raw.constant_alpha_color_blend_factors = value;
+    pub fn constant_alpha_color_blend_factors(mut self, value: bool) -> Self {
+        self.raw.constant_alpha_color_blend_factors = vk::Bool32::from(value);
         self
     }
     ///Sets `events`.
     #[inline]
-    pub fn events(mut self, value: vk::Bool32) -> Self {
-        self.raw.events = value;
+    pub fn events(mut self, value: bool) -> Self {
+        self.raw.events = vk::Bool32::from(value);
         self
     }
     ///Sets `imageViewFormatReinterpretation`.
     #[inline]
-    pub fn image_view_format_reinterpretation(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_view_format_reinterpretation = value;
+    pub fn image_view_format_reinterpretation(mut self, value: bool) -> Self {
+        self.raw.image_view_format_reinterpretation = vk::Bool32::from(value);
         self
     }
     ///Sets `imageViewFormatSwizzle`.
     #[inline]
-    pub fn image_view_format_swizzle(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_view_format_swizzle = value;
+    pub fn image_view_format_swizzle(mut self, value: bool) -> Self {
+        self.raw.image_view_format_swizzle = vk::Bool32::from(value);
         self
     }
     ///Sets `imageView2DOn3DImage`.
     #[inline]
-    pub fn image_view2_d_on3_d_image(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_view2_d_on3_d_image = value;
+    pub fn image_view2_d_on3_d_image(mut self, value: bool) -> Self {
+        self.raw.image_view2_d_on3_d_image = vk::Bool32::from(value);
         self
     }
     ///Sets `multisampleArrayImage`.
     #[inline]
-    pub fn multisample_array_image(mut self, value: vk::Bool32) -> Self {
-        self.raw.multisample_array_image = value;
+    pub fn multisample_array_image(mut self, value: bool) -> Self {
+        self.raw.multisample_array_image = vk::Bool32::from(value);
         self
     }
     ///Sets `mutableComparisonSamplers`.
     #[inline]
-    pub fn mutable_comparison_samplers(mut self, value: vk::Bool32) -> Self {
-        self.raw.mutable_comparison_samplers = value;
+    pub fn mutable_comparison_samplers(mut self, value: bool) -> Self {
+        self.raw.mutable_comparison_samplers = vk::Bool32::from(value);
         self
     }
     ///Sets `pointPolygons`.
     #[inline]
-    pub fn point_polygons(mut self, value: vk::Bool32) -> Self {
-        self.raw.point_polygons = value;
+    pub fn point_polygons(mut self, value: bool) -> Self {
+        self.raw.point_polygons = vk::Bool32::from(value);
         self
     }
     ///Sets `samplerMipLodBias`.
     #[inline]
-    pub fn sampler_mip_lod_bias(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler_mip_lod_bias = value;
+    pub fn sampler_mip_lod_bias(mut self, value: bool) -> Self {
+        self.raw.sampler_mip_lod_bias = vk::Bool32::from(value);
         self
     }
     ///Sets `separateStencilMaskRef`.
     #[inline]
-    pub fn separate_stencil_mask_ref(mut self, value: vk::Bool32) -> Self {
-        self.raw.separate_stencil_mask_ref = value;
+    pub fn separate_stencil_mask_ref(mut self, value: bool) -> Self {
+        self.raw.separate_stencil_mask_ref = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSampleRateInterpolationFunctions`.
     #[inline]
-    pub fn shader_sample_rate_interpolation_functions(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.shader_sample_rate_interpolation_functions = value;
+    pub fn shader_sample_rate_interpolation_functions(mut self, value: bool) -> Self {
+        self.raw.shader_sample_rate_interpolation_functions = vk::Bool32::from(value);
         self
     }
     ///Sets `tessellationIsolines`.
     #[inline]
-    pub fn tessellation_isolines(mut self, value: vk::Bool32) -> Self {
-        self.raw.tessellation_isolines = value;
+    pub fn tessellation_isolines(mut self, value: bool) -> Self {
+        self.raw.tessellation_isolines = vk::Bool32::from(value);
         self
     }
     ///Sets `tessellationPointMode`.
     #[inline]
-    pub fn tessellation_point_mode(mut self, value: vk::Bool32) -> Self {
-        self.raw.tessellation_point_mode = value;
+    pub fn tessellation_point_mode(mut self, value: bool) -> Self {
+        self.raw.tessellation_point_mode = vk::Bool32::from(value);
         self
     }
     ///Sets `triangleFans`.
     #[inline]
-    pub fn triangle_fans(mut self, value: vk::Bool32) -> Self {
-        self.raw.triangle_fans = value;
+    pub fn triangle_fans(mut self, value: bool) -> Self {
+        self.raw.triangle_fans = vk::Bool32::from(value);
         self
     }
     ///Sets `vertexAttributeAccessBeyondStride`.
     #[inline]
-    pub fn vertex_attribute_access_beyond_stride(mut self, value: vk::Bool32) -> Self {
-        self.raw.vertex_attribute_access_beyond_stride = value;
+    pub fn vertex_attribute_access_beyond_stride(mut self, value: bool) -> Self {
+        self.raw.vertex_attribute_access_beyond_stride = vk::Bool32::from(value);
         self
     }
 }

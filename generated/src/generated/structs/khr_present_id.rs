@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePresentIdFeaturesKHR<'a> {
     ///Sets `presentId`.
     #[inline]
-    pub fn present_id(mut self, value: vk::Bool32) -> Self {
-        self.raw.present_id = value;
+    pub fn present_id(mut self, value: bool) -> Self {
+        self.raw.present_id = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePresentWaitFeaturesKHR<'a> {
     ///Sets `presentWait`.
     #[inline]
-    pub fn present_wait(mut self, value: vk::Bool32) -> Self {
-        self.raw.present_wait = value;
+    pub fn present_wait(mut self, value: bool) -> Self {
+        self.raw.present_wait = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceRayQueryFeaturesKHR<'a> {
     ///Sets `rayQuery`.
     #[inline]
-    pub fn ray_query(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_query = value;
+    pub fn ray_query(mut self, value: bool) -> Self {
+        self.raw.ray_query = vk::Bool32::from(value);
         self
     }
 }

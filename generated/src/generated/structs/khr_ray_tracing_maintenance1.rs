@@ -24,17 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceRayTracingMaintenance1FeaturesKHR<'a> {
     ///Sets `rayTracingMaintenance1`.
     #[inline]
-    pub fn ray_tracing_maintenance1(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_tracing_maintenance1 = value;
+    pub fn ray_tracing_maintenance1(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_maintenance1 = vk::Bool32::from(value);
         self
     }
     ///Sets `rayTracingPipelineTraceRaysIndirect2`.
     #[inline]
-    pub fn ray_tracing_pipeline_trace_rays_indirect2(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.ray_tracing_pipeline_trace_rays_indirect2 = value;
+    pub fn ray_tracing_pipeline_trace_rays_indirect2(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_pipeline_trace_rays_indirect2 = vk::Bool32::from(value);
         self
     }
 }

@@ -26,41 +26,42 @@ safe_struct!(
 impl<'a> PhysicalDeviceRayTracingPipelineFeaturesKHR<'a> {
     ///Sets `rayTracingPipeline`.
     #[inline]
-    pub fn ray_tracing_pipeline(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_tracing_pipeline = value;
+    pub fn ray_tracing_pipeline(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_pipeline = vk::Bool32::from(value);
         self
     }
     ///Sets `rayTracingPipelineShaderGroupHandleCaptureReplay`.
     #[inline]
     pub fn ray_tracing_pipeline_shader_group_handle_capture_replay(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.ray_tracing_pipeline_shader_group_handle_capture_replay = value;
+        self.raw.ray_tracing_pipeline_shader_group_handle_capture_replay = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `rayTracingPipelineShaderGroupHandleCaptureReplayMixed`.
     #[inline]
     pub fn ray_tracing_pipeline_shader_group_handle_capture_replay_mixed(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.ray_tracing_pipeline_shader_group_handle_capture_replay_mixed = value;
+        self.raw.ray_tracing_pipeline_shader_group_handle_capture_replay_mixed = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `rayTracingPipelineTraceRaysIndirect`.
     #[inline]
-    pub fn ray_tracing_pipeline_trace_rays_indirect(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.ray_tracing_pipeline_trace_rays_indirect = value;
+    pub fn ray_tracing_pipeline_trace_rays_indirect(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_pipeline_trace_rays_indirect = vk::Bool32::from(value);
         self
     }
     ///Sets `rayTraversalPrimitiveCulling`.
     #[inline]
-    pub fn ray_traversal_primitive_culling(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_traversal_primitive_culling = value;
+    pub fn ray_traversal_primitive_culling(mut self, value: bool) -> Self {
+        self.raw.ray_traversal_primitive_culling = vk::Bool32::from(value);
         self
     }
 }

@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderClockFeaturesKHR<'a> {
     ///Sets `shaderSubgroupClock`.
     #[inline]
-    pub fn shader_subgroup_clock(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_subgroup_clock = value;
+    pub fn shader_subgroup_clock(mut self, value: bool) -> Self {
+        self.raw.shader_subgroup_clock = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderDeviceClock`.
     #[inline]
-    pub fn shader_device_clock(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_device_clock = value;
+    pub fn shader_device_clock(mut self, value: bool) -> Self {
+        self.raw.shader_device_clock = vk::Bool32::from(value);
         self
     }
 }

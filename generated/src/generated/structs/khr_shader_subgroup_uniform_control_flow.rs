@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR<'a> {
     ///Sets `shaderSubgroupUniformControlFlow`.
     #[inline]
-    pub fn shader_subgroup_uniform_control_flow(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_subgroup_uniform_control_flow = value;
+    pub fn shader_subgroup_uniform_control_flow(mut self, value: bool) -> Self {
+        self.raw.shader_subgroup_uniform_control_flow = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> SurfaceProtectedCapabilitiesKHR<'a> {
     ///Sets `supportsProtected`.
     #[inline]
-    pub fn supports_protected(mut self, value: vk::Bool32) -> Self {
-        self.raw.supports_protected = value;
+    pub fn supports_protected(mut self, value: bool) -> Self {
+        self.raw.supports_protected = vk::Bool32::from(value);
         self
     }
 }

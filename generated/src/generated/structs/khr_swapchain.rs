@@ -206,8 +206,8 @@ impl<'a> SwapchainCreateInfoKHR<'a> {
     }
     ///Sets `clipped`.
     #[inline]
-    pub fn clipped(mut self, value: vk::Bool32) -> Self {
-        self.raw.clipped = value;
+    pub fn clipped(mut self, value: bool) -> Self {
+        self.raw.clipped = vk::Bool32::from(value);
         self
     }
     ///Sets `oldSwapchain`.

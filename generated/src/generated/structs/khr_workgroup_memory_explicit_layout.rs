@@ -24,35 +24,31 @@ safe_struct!(
 impl<'a> PhysicalDeviceWorkgroupMemoryExplicitLayoutFeaturesKHR<'a> {
     ///Sets `workgroupMemoryExplicitLayout`.
     #[inline]
-    pub fn workgroup_memory_explicit_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.workgroup_memory_explicit_layout = value;
+    pub fn workgroup_memory_explicit_layout(mut self, value: bool) -> Self {
+        self.raw.workgroup_memory_explicit_layout = vk::Bool32::from(value);
         self
     }
     ///Sets `workgroupMemoryExplicitLayoutScalarBlockLayout`.
     #[inline]
     pub fn workgroup_memory_explicit_layout_scalar_block_layout(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.workgroup_memory_explicit_layout_scalar_block_layout = value;
+        self.raw.workgroup_memory_explicit_layout_scalar_block_layout = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `workgroupMemoryExplicitLayout8BitAccess`.
     #[inline]
-    pub fn workgroup_memory_explicit_layout8_bit_access(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.workgroup_memory_explicit_layout8_bit_access = value;
+    pub fn workgroup_memory_explicit_layout8_bit_access(mut self, value: bool) -> Self {
+        self.raw.workgroup_memory_explicit_layout8_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `workgroupMemoryExplicitLayout16BitAccess`.
     #[inline]
-    pub fn workgroup_memory_explicit_layout16_bit_access(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.workgroup_memory_explicit_layout16_bit_access = value;
+    pub fn workgroup_memory_explicit_layout16_bit_access(mut self, value: bool) -> Self {
+        self.raw.workgroup_memory_explicit_layout16_bit_access = vk::Bool32::from(value);
         self
     }
 }

@@ -25,8 +25,8 @@ safe_struct!(
 impl<'a> PipelineViewportWScalingStateCreateInfoNV<'a> {
     ///Sets `viewportWScalingEnable`.
     #[inline]
-    pub fn viewport_w_scaling_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.viewport_w_scaling_enable = value;
+    pub fn viewport_w_scaling_enable(mut self, value: bool) -> Self {
+        self.raw.viewport_w_scaling_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `viewportCount`. `pViewportWScalings` is cleared when its length differs from `value`.

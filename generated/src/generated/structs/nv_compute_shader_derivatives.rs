@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceComputeShaderDerivativesFeaturesNV<'a> {
     ///Sets `computeDerivativeGroupQuads`.
     #[inline]
-    pub fn compute_derivative_group_quads(mut self, value: vk::Bool32) -> Self {
-        self.raw.compute_derivative_group_quads = value;
+    pub fn compute_derivative_group_quads(mut self, value: bool) -> Self {
+        self.raw.compute_derivative_group_quads = vk::Bool32::from(value);
         self
     }
     ///Sets `computeDerivativeGroupLinear`.
     #[inline]
-    pub fn compute_derivative_group_linear(mut self, value: vk::Bool32) -> Self {
-        self.raw.compute_derivative_group_linear = value;
+    pub fn compute_derivative_group_linear(mut self, value: bool) -> Self {
+        self.raw.compute_derivative_group_linear = vk::Bool32::from(value);
         self
     }
 }

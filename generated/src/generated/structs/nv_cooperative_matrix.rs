@@ -96,14 +96,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceCooperativeMatrixFeaturesNV<'a> {
     ///Sets `cooperativeMatrix`.
     #[inline]
-    pub fn cooperative_matrix(mut self, value: vk::Bool32) -> Self {
-        self.raw.cooperative_matrix = value;
+    pub fn cooperative_matrix(mut self, value: bool) -> Self {
+        self.raw.cooperative_matrix = vk::Bool32::from(value);
         self
     }
     ///Sets `cooperativeMatrixRobustBufferAccess`.
     #[inline]
-    pub fn cooperative_matrix_robust_buffer_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.cooperative_matrix_robust_buffer_access = value;
+    pub fn cooperative_matrix_robust_buffer_access(mut self, value: bool) -> Self {
+        self.raw.cooperative_matrix_robust_buffer_access = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceCopyMemoryIndirectFeaturesNV<'a> {
     ///Sets `indirectCopy`.
     #[inline]
-    pub fn indirect_copy(mut self, value: vk::Bool32) -> Self {
-        self.raw.indirect_copy = value;
+    pub fn indirect_copy(mut self, value: bool) -> Self {
+        self.raw.indirect_copy = vk::Bool32::from(value);
         self
     }
 }

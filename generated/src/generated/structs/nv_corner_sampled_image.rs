@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceCornerSampledImageFeaturesNV<'a> {
     ///Sets `cornerSampledImage`.
     #[inline]
-    pub fn corner_sampled_image(mut self, value: vk::Bool32) -> Self {
-        self.raw.corner_sampled_image = value;
+    pub fn corner_sampled_image(mut self, value: bool) -> Self {
+        self.raw.corner_sampled_image = vk::Bool32::from(value);
         self
     }
 }

@@ -43,8 +43,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceCoverageReductionModeFeaturesNV<'a> {
     ///Sets `coverageReductionMode`.
     #[inline]
-    pub fn coverage_reduction_mode(mut self, value: vk::Bool32) -> Self {
-        self.raw.coverage_reduction_mode = value;
+    pub fn coverage_reduction_mode(mut self, value: bool) -> Self {
+        self.raw.coverage_reduction_mode = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> DedicatedAllocationBufferCreateInfoNV<'a> {
     ///Sets `dedicatedAllocation`.
     #[inline]
-    pub fn dedicated_allocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.dedicated_allocation = value;
+    pub fn dedicated_allocation(mut self, value: bool) -> Self {
+        self.raw.dedicated_allocation = vk::Bool32::from(value);
         self
     }
 }
@@ -56,8 +56,8 @@ safe_struct!(
 impl<'a> DedicatedAllocationImageCreateInfoNV<'a> {
     ///Sets `dedicatedAllocation`.
     #[inline]
-    pub fn dedicated_allocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.dedicated_allocation = value;
+    pub fn dedicated_allocation(mut self, value: bool) -> Self {
+        self.raw.dedicated_allocation = vk::Bool32::from(value);
         self
     }
 }

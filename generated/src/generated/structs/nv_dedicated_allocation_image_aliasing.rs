@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDedicatedAllocationImageAliasingFeaturesNV<'a> {
     ///Sets `dedicatedAllocationImageAliasing`.
     #[inline]
-    pub fn dedicated_allocation_image_aliasing(mut self, value: vk::Bool32) -> Self {
-        self.raw.dedicated_allocation_image_aliasing = value;
+    pub fn dedicated_allocation_image_aliasing(mut self, value: bool) -> Self {
+        self.raw.dedicated_allocation_image_aliasing = vk::Bool32::from(value);
         self
     }
 }

@@ -55,8 +55,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDiagnosticsConfigFeaturesNV<'a> {
     ///Sets `diagnosticsConfig`.
     #[inline]
-    pub fn diagnostics_config(mut self, value: vk::Bool32) -> Self {
-        self.raw.diagnostics_config = value;
+    pub fn diagnostics_config(mut self, value: bool) -> Self {
+        self.raw.diagnostics_config = vk::Bool32::from(value);
         self
     }
 }

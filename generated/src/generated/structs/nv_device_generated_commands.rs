@@ -415,8 +415,8 @@ impl<'a> IndirectCommandsLayoutTokenNV<'a> {
     }
     ///Sets `vertexDynamicStride`.
     #[inline]
-    pub fn vertex_dynamic_stride(mut self, value: vk::Bool32) -> Self {
-        self.raw.vertex_dynamic_stride = value;
+    pub fn vertex_dynamic_stride(mut self, value: bool) -> Self {
+        self.raw.vertex_dynamic_stride = vk::Bool32::from(value);
         self
     }
     ///Sets `pushconstantPipelineLayout`.
@@ -549,8 +549,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDeviceGeneratedCommandsFeaturesNV<'a> {
     ///Sets `deviceGeneratedCommands`.
     #[inline]
-    pub fn device_generated_commands(mut self, value: vk::Bool32) -> Self {
-        self.raw.device_generated_commands = value;
+    pub fn device_generated_commands(mut self, value: bool) -> Self {
+        self.raw.device_generated_commands = vk::Bool32::from(value);
         self
     }
 }

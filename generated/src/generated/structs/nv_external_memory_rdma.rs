@@ -73,8 +73,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceExternalMemoryRDMAFeaturesNV<'a> {
     ///Sets `externalMemoryRDMA`.
     #[inline]
-    pub fn external_memory_rdma(mut self, value: vk::Bool32) -> Self {
-        self.raw.external_memory_rdma = value;
+    pub fn external_memory_rdma(mut self, value: bool) -> Self {
+        self.raw.external_memory_rdma = vk::Bool32::from(value);
         self
     }
 }

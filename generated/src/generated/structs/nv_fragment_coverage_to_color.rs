@@ -36,8 +36,8 @@ impl<'a> PipelineCoverageToColorStateCreateInfoNV<'a> {
     }
     ///Sets `coverageToColorEnable`.
     #[inline]
-    pub fn coverage_to_color_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.coverage_to_color_enable = value;
+    pub fn coverage_to_color_enable(mut self, value: bool) -> Self {
+        self.raw.coverage_to_color_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `coverageToColorLocation`.

@@ -24,20 +24,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentShadingRateEnumsFeaturesNV<'a> {
     ///Sets `fragmentShadingRateEnums`.
     #[inline]
-    pub fn fragment_shading_rate_enums(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_shading_rate_enums = value;
+    pub fn fragment_shading_rate_enums(mut self, value: bool) -> Self {
+        self.raw.fragment_shading_rate_enums = vk::Bool32::from(value);
         self
     }
     ///Sets `supersampleFragmentShadingRates`.
     #[inline]
-    pub fn supersample_fragment_shading_rates(mut self, value: vk::Bool32) -> Self {
-        self.raw.supersample_fragment_shading_rates = value;
+    pub fn supersample_fragment_shading_rates(mut self, value: bool) -> Self {
+        self.raw.supersample_fragment_shading_rates = vk::Bool32::from(value);
         self
     }
     ///Sets `noInvocationFragmentShadingRates`.
     #[inline]
-    pub fn no_invocation_fragment_shading_rates(mut self, value: vk::Bool32) -> Self {
-        self.raw.no_invocation_fragment_shading_rates = value;
+    pub fn no_invocation_fragment_shading_rates(mut self, value: bool) -> Self {
+        self.raw.no_invocation_fragment_shading_rates = vk::Bool32::from(value);
         self
     }
 }

@@ -46,8 +46,8 @@ impl<'a> PipelineCoverageModulationStateCreateInfoNV<'a> {
     }
     ///Sets `coverageModulationTableEnable`.
     #[inline]
-    pub fn coverage_modulation_table_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.coverage_modulation_table_enable = value;
+    pub fn coverage_modulation_table_enable(mut self, value: bool) -> Self {
+        self.raw.coverage_modulation_table_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `coverageModulationTableCount`. `pCoverageModulationTable` is cleared when its length differs from `value`.

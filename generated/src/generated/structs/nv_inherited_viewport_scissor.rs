@@ -41,8 +41,8 @@ impl<'a> CommandBufferInheritanceViewportScissorInfoNV<'a> {
     }
     ///Sets `viewportScissor2D`.
     #[inline]
-    pub fn viewport_scissor2_d(mut self, value: vk::Bool32) -> Self {
-        self.raw.viewport_scissor2_d = value;
+    pub fn viewport_scissor2_d(mut self, value: bool) -> Self {
+        self.raw.viewport_scissor2_d = vk::Bool32::from(value);
         self
     }
     ///Sets `viewportDepthCount`.
@@ -83,8 +83,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceInheritedViewportScissorFeaturesNV<'a> {
     ///Sets `inheritedViewportScissor2D`.
     #[inline]
-    pub fn inherited_viewport_scissor2_d(mut self, value: vk::Bool32) -> Self {
-        self.raw.inherited_viewport_scissor2_d = value;
+    pub fn inherited_viewport_scissor2_d(mut self, value: bool) -> Self {
+        self.raw.inherited_viewport_scissor2_d = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceLinearColorAttachmentFeaturesNV<'a> {
     ///Sets `linearColorAttachment`.
     #[inline]
-    pub fn linear_color_attachment(mut self, value: vk::Bool32) -> Self {
-        self.raw.linear_color_attachment = value;
+    pub fn linear_color_attachment(mut self, value: bool) -> Self {
+        self.raw.linear_color_attachment = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMemoryDecompressionFeaturesNV<'a> {
     ///Sets `memoryDecompression`.
     #[inline]
-    pub fn memory_decompression(mut self, value: vk::Bool32) -> Self {
-        self.raw.memory_decompression = value;
+    pub fn memory_decompression(mut self, value: bool) -> Self {
+        self.raw.memory_decompression = vk::Bool32::from(value);
         self
     }
 }

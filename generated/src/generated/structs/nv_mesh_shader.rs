@@ -24,14 +24,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceMeshShaderFeaturesNV<'a> {
     ///Sets `taskShader`.
     #[inline]
-    pub fn task_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.task_shader = value;
+    pub fn task_shader(mut self, value: bool) -> Self {
+        self.raw.task_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `meshShader`.
     #[inline]
-    pub fn mesh_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.mesh_shader = value;
+    pub fn mesh_shader(mut self, value: bool) -> Self {
+        self.raw.mesh_shader = vk::Bool32::from(value);
         self
     }
 }

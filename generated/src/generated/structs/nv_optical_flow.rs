@@ -243,8 +243,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceOpticalFlowFeaturesNV<'a> {
     ///Sets `opticalFlow`.
     #[inline]
-    pub fn optical_flow(mut self, value: vk::Bool32) -> Self {
-        self.raw.optical_flow = value;
+    pub fn optical_flow(mut self, value: bool) -> Self {
+        self.raw.optical_flow = vk::Bool32::from(value);
         self
     }
 }

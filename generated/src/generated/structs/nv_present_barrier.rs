@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDevicePresentBarrierFeaturesNV<'a> {
     ///Sets `presentBarrier`.
     #[inline]
-    pub fn present_barrier(mut self, value: vk::Bool32) -> Self {
-        self.raw.present_barrier = value;
+    pub fn present_barrier(mut self, value: bool) -> Self {
+        self.raw.present_barrier = vk::Bool32::from(value);
         self
     }
 }
@@ -57,8 +57,8 @@ safe_struct!(
 impl<'a> SurfaceCapabilitiesPresentBarrierNV<'a> {
     ///Sets `presentBarrierSupported`.
     #[inline]
-    pub fn present_barrier_supported(mut self, value: vk::Bool32) -> Self {
-        self.raw.present_barrier_supported = value;
+    pub fn present_barrier_supported(mut self, value: bool) -> Self {
+        self.raw.present_barrier_supported = vk::Bool32::from(value);
         self
     }
 }
@@ -88,8 +88,8 @@ safe_struct!(
 impl<'a> SwapchainPresentBarrierCreateInfoNV<'a> {
     ///Sets `presentBarrierEnable`.
     #[inline]
-    pub fn present_barrier_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.present_barrier_enable = value;
+    pub fn present_barrier_enable(mut self, value: bool) -> Self {
+        self.raw.present_barrier_enable = vk::Bool32::from(value);
         self
     }
 }

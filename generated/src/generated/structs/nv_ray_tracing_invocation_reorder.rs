@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceRayTracingInvocationReorderFeaturesNV<'a> {
     ///Sets `rayTracingInvocationReorder`.
     #[inline]
-    pub fn ray_tracing_invocation_reorder(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_tracing_invocation_reorder = value;
+    pub fn ray_tracing_invocation_reorder(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_invocation_reorder = vk::Bool32::from(value);
         self
     }
 }

@@ -84,17 +84,19 @@ safe_struct!(
 impl<'a> PhysicalDeviceRayTracingMotionBlurFeaturesNV<'a> {
     ///Sets `rayTracingMotionBlur`.
     #[inline]
-    pub fn ray_tracing_motion_blur(mut self, value: vk::Bool32) -> Self {
-        self.raw.ray_tracing_motion_blur = value;
+    pub fn ray_tracing_motion_blur(mut self, value: bool) -> Self {
+        self.raw.ray_tracing_motion_blur = vk::Bool32::from(value);
         self
     }
     ///Sets `rayTracingMotionBlurPipelineTraceRaysIndirect`.
     #[inline]
     pub fn ray_tracing_motion_blur_pipeline_trace_rays_indirect(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.ray_tracing_motion_blur_pipeline_trace_rays_indirect = value;
+        self.raw.ray_tracing_motion_blur_pipeline_trace_rays_indirect = vk::Bool32::from(
+            value,
+        );
         self
     }
 }

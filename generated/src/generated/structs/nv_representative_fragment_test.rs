@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceRepresentativeFragmentTestFeaturesNV<'a> {
     ///Sets `representativeFragmentTest`.
     #[inline]
-    pub fn representative_fragment_test(mut self, value: vk::Bool32) -> Self {
-        self.raw.representative_fragment_test = value;
+    pub fn representative_fragment_test(mut self, value: bool) -> Self {
+        self.raw.representative_fragment_test = vk::Bool32::from(value);
         self
     }
 }
@@ -57,8 +57,8 @@ safe_struct!(
 impl<'a> PipelineRepresentativeFragmentTestStateCreateInfoNV<'a> {
     ///Sets `representativeFragmentTestEnable`.
     #[inline]
-    pub fn representative_fragment_test_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.representative_fragment_test_enable = value;
+    pub fn representative_fragment_test_enable(mut self, value: bool) -> Self {
+        self.raw.representative_fragment_test_enable = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceExclusiveScissorFeaturesNV<'a> {
     ///Sets `exclusiveScissor`.
     #[inline]
-    pub fn exclusive_scissor(mut self, value: vk::Bool32) -> Self {
-        self.raw.exclusive_scissor = value;
+    pub fn exclusive_scissor(mut self, value: bool) -> Self {
+        self.raw.exclusive_scissor = vk::Bool32::from(value);
         self
     }
 }

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderImageFootprintFeaturesNV<'a> {
     ///Sets `imageFootprint`.
     #[inline]
-    pub fn image_footprint(mut self, value: vk::Bool32) -> Self {
-        self.raw.image_footprint = value;
+    pub fn image_footprint(mut self, value: bool) -> Self {
+        self.raw.image_footprint = vk::Bool32::from(value);
         self
     }
 }

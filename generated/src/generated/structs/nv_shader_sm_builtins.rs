@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceShaderSMBuiltinsFeaturesNV<'a> {
     ///Sets `shaderSMBuiltins`.
     #[inline]
-    pub fn shader_sm_builtins(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_sm_builtins = value;
+    pub fn shader_sm_builtins(mut self, value: bool) -> Self {
+        self.raw.shader_sm_builtins = vk::Bool32::from(value);
         self
     }
 }

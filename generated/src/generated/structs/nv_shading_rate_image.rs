@@ -67,14 +67,14 @@ safe_struct!(
 impl<'a> PhysicalDeviceShadingRateImageFeaturesNV<'a> {
     ///Sets `shadingRateImage`.
     #[inline]
-    pub fn shading_rate_image(mut self, value: vk::Bool32) -> Self {
-        self.raw.shading_rate_image = value;
+    pub fn shading_rate_image(mut self, value: bool) -> Self {
+        self.raw.shading_rate_image = vk::Bool32::from(value);
         self
     }
     ///Sets `shadingRateCoarseSampleOrder`.
     #[inline]
-    pub fn shading_rate_coarse_sample_order(mut self, value: vk::Bool32) -> Self {
-        self.raw.shading_rate_coarse_sample_order = value;
+    pub fn shading_rate_coarse_sample_order(mut self, value: bool) -> Self {
+        self.raw.shading_rate_coarse_sample_order = vk::Bool32::from(value);
         self
     }
 }
@@ -173,8 +173,8 @@ safe_struct!(
 impl<'a> PipelineViewportShadingRateImageStateCreateInfoNV<'a> {
     ///Sets `shadingRateImageEnable`.
     #[inline]
-    pub fn shading_rate_image_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.shading_rate_image_enable = value;
+    pub fn shading_rate_image_enable(mut self, value: bool) -> Self {
+        self.raw.shading_rate_image_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `pShadingRatePalettes`.

@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM<'a> {
     ///Sets `fragmentDensityMapOffset`.
     #[inline]
-    pub fn fragment_density_map_offset(mut self, value: vk::Bool32) -> Self {
-        self.raw.fragment_density_map_offset = value;
+    pub fn fragment_density_map_offset(mut self, value: bool) -> Self {
+        self.raw.fragment_density_map_offset = vk::Bool32::from(value);
         self
     }
 }

@@ -68,20 +68,20 @@ safe_struct!(
 impl<'a> PhysicalDeviceImageProcessingFeaturesQCOM<'a> {
     ///Sets `textureSampleWeighted`.
     #[inline]
-    pub fn texture_sample_weighted(mut self, value: vk::Bool32) -> Self {
-        self.raw.texture_sample_weighted = value;
+    pub fn texture_sample_weighted(mut self, value: bool) -> Self {
+        self.raw.texture_sample_weighted = vk::Bool32::from(value);
         self
     }
     ///Sets `textureBoxFilter`.
     #[inline]
-    pub fn texture_box_filter(mut self, value: vk::Bool32) -> Self {
-        self.raw.texture_box_filter = value;
+    pub fn texture_box_filter(mut self, value: bool) -> Self {
+        self.raw.texture_box_filter = vk::Bool32::from(value);
         self
     }
     ///Sets `textureBlockMatch`.
     #[inline]
-    pub fn texture_block_match(mut self, value: vk::Bool32) -> Self {
-        self.raw.texture_block_match = value;
+    pub fn texture_block_match(mut self, value: bool) -> Self {
+        self.raw.texture_block_match = vk::Bool32::from(value);
         self
     }
 }

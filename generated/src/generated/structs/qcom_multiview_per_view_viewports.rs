@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceMultiviewPerViewViewportsFeaturesQCOM<'a> {
     ///Sets `multiviewPerViewViewports`.
     #[inline]
-    pub fn multiview_per_view_viewports(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_per_view_viewports = value;
+    pub fn multiview_per_view_viewports(mut self, value: bool) -> Self {
+        self.raw.multiview_per_view_viewports = vk::Bool32::from(value);
         self
     }
 }

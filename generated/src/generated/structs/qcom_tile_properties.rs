@@ -24,8 +24,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceTilePropertiesFeaturesQCOM<'a> {
     ///Sets `tileProperties`.
     #[inline]
-    pub fn tile_properties(mut self, value: vk::Bool32) -> Self {
-        self.raw.tile_properties = value;
+    pub fn tile_properties(mut self, value: bool) -> Self {
+        self.raw.tile_properties = vk::Bool32::from(value);
         self
     }
 }

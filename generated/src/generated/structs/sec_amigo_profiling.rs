@@ -59,8 +59,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceAmigoProfilingFeaturesSEC<'a> {
     ///Sets `amigoProfiling`.
     #[inline]
-    pub fn amigo_profiling(mut self, value: vk::Bool32) -> Self {
-        self.raw.amigo_profiling = value;
+    pub fn amigo_profiling(mut self, value: bool) -> Self {
+        self.raw.amigo_profiling = vk::Bool32::from(value);
         self
     }
 }

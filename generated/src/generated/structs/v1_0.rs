@@ -577,8 +577,8 @@ impl<'a> CommandBufferInheritanceInfo<'a> {
     }
     ///Sets `occlusionQueryEnable`.
     #[inline]
-    pub fn occlusion_query_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.occlusion_query_enable = value;
+    pub fn occlusion_query_enable(mut self, value: bool) -> Self {
+        self.raw.occlusion_query_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `queryFlags`.

@@ -70,8 +70,8 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
     }
     ///Sets `logicOpEnable`.
     #[inline]
-    pub fn logic_op_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.logic_op_enable = value;
+    pub fn logic_op_enable(mut self, value: bool) -> Self {
+        self.raw.logic_op_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `logicOp`.
@@ -138,14 +138,14 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
     }
     ///Sets `depthTestEnable`.
     #[inline]
-    pub fn depth_test_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_test_enable = value;
+    pub fn depth_test_enable(mut self, value: bool) -> Self {
+        self.raw.depth_test_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `depthWriteEnable`.
     #[inline]
-    pub fn depth_write_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_write_enable = value;
+    pub fn depth_write_enable(mut self, value: bool) -> Self {
+        self.raw.depth_write_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `depthCompareOp`.
@@ -156,14 +156,14 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
     }
     ///Sets `depthBoundsTestEnable`.
     #[inline]
-    pub fn depth_bounds_test_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_bounds_test_enable = value;
+    pub fn depth_bounds_test_enable(mut self, value: bool) -> Self {
+        self.raw.depth_bounds_test_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `stencilTestEnable`.
     #[inline]
-    pub fn stencil_test_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.stencil_test_enable = value;
+    pub fn stencil_test_enable(mut self, value: bool) -> Self {
+        self.raw.stencil_test_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `front`.
@@ -263,8 +263,8 @@ impl<'a> PipelineInputAssemblyStateCreateInfo<'a> {
     }
     ///Sets `primitiveRestartEnable`.
     #[inline]
-    pub fn primitive_restart_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.primitive_restart_enable = value;
+    pub fn primitive_restart_enable(mut self, value: bool) -> Self {
+        self.raw.primitive_restart_enable = vk::Bool32::from(value);
         self
     }
 }
@@ -375,8 +375,8 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
     }
     ///Sets `sampleShadingEnable`.
     #[inline]
-    pub fn sample_shading_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.sample_shading_enable = value;
+    pub fn sample_shading_enable(mut self, value: bool) -> Self {
+        self.raw.sample_shading_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `minSampleShading`.
@@ -387,14 +387,14 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
     }
     ///Sets `alphaToCoverageEnable`.
     #[inline]
-    pub fn alpha_to_coverage_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.alpha_to_coverage_enable = value;
+    pub fn alpha_to_coverage_enable(mut self, value: bool) -> Self {
+        self.raw.alpha_to_coverage_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `alphaToOneEnable`.
     #[inline]
-    pub fn alpha_to_one_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.alpha_to_one_enable = value;
+    pub fn alpha_to_one_enable(mut self, value: bool) -> Self {
+        self.raw.alpha_to_one_enable = vk::Bool32::from(value);
         self
     }
 }
@@ -431,14 +431,14 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
     }
     ///Sets `depthClampEnable`.
     #[inline]
-    pub fn depth_clamp_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_clamp_enable = value;
+    pub fn depth_clamp_enable(mut self, value: bool) -> Self {
+        self.raw.depth_clamp_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `rasterizerDiscardEnable`.
     #[inline]
-    pub fn rasterizer_discard_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.rasterizer_discard_enable = value;
+    pub fn rasterizer_discard_enable(mut self, value: bool) -> Self {
+        self.raw.rasterizer_discard_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `polygonMode`.
@@ -461,8 +461,8 @@ impl<'a> PipelineRasterizationStateCreateInfo<'a> {
     }
     ///Sets `depthBiasEnable`.
     #[inline]
-    pub fn depth_bias_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.depth_bias_enable = value;
+    pub fn depth_bias_enable(mut self, value: bool) -> Self {
+        self.raw.depth_bias_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `depthBiasConstantFactor`.
@@ -1032,8 +1032,8 @@ impl<'a> SamplerCreateInfo<'a> {
     }
     ///Sets `anisotropyEnable`.
     #[inline]
-    pub fn anisotropy_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.anisotropy_enable = value;
+    pub fn anisotropy_enable(mut self, value: bool) -> Self {
+        self.raw.anisotropy_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `maxAnisotropy`.
@@ -1044,8 +1044,8 @@ impl<'a> SamplerCreateInfo<'a> {
     }
     ///Sets `compareEnable`.
     #[inline]
-    pub fn compare_enable(mut self, value: vk::Bool32) -> Self {
-        self.raw.compare_enable = value;
+    pub fn compare_enable(mut self, value: bool) -> Self {
+        self.raw.compare_enable = vk::Bool32::from(value);
         self
     }
     ///Sets `compareOp`.
@@ -1074,8 +1074,8 @@ impl<'a> SamplerCreateInfo<'a> {
     }
     ///Sets `unnormalizedCoordinates`.
     #[inline]
-    pub fn unnormalized_coordinates(mut self, value: vk::Bool32) -> Self {
-        self.raw.unnormalized_coordinates = value;
+    pub fn unnormalized_coordinates(mut self, value: bool) -> Self {
+        self.raw.unnormalized_coordinates = vk::Bool32::from(value);
         self
     }
 }

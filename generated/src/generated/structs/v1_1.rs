@@ -1037,26 +1037,26 @@ safe_struct!(PhysicalDevice16BitStorageFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevice16BitStorageFeatures<'a> {
     ///Sets `storageBuffer16BitAccess`.
     #[inline]
-    pub fn storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_buffer16_bit_access = value;
+    pub fn storage_buffer16_bit_access(mut self, value: bool) -> Self {
+        self.raw.storage_buffer16_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `uniformAndStorageBuffer16BitAccess`.
     #[inline]
-    pub fn uniform_and_storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_and_storage_buffer16_bit_access = value;
+    pub fn uniform_and_storage_buffer16_bit_access(mut self, value: bool) -> Self {
+        self.raw.uniform_and_storage_buffer16_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `storagePushConstant16`.
     #[inline]
-    pub fn storage_push_constant16(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_push_constant16 = value;
+    pub fn storage_push_constant16(mut self, value: bool) -> Self {
+        self.raw.storage_push_constant16 = vk::Bool32::from(value);
         self
     }
     ///Sets `storageInputOutput16`.
     #[inline]
-    pub fn storage_input_output16(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_input_output16 = value;
+    pub fn storage_input_output16(mut self, value: bool) -> Self {
+        self.raw.storage_input_output16 = vk::Bool32::from(value);
         self
     }
 }
@@ -1338,20 +1338,20 @@ safe_struct!(PhysicalDeviceMultiviewFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceMultiviewFeatures<'a> {
     ///Sets `multiview`.
     #[inline]
-    pub fn multiview(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview = value;
+    pub fn multiview(mut self, value: bool) -> Self {
+        self.raw.multiview = vk::Bool32::from(value);
         self
     }
     ///Sets `multiviewGeometryShader`.
     #[inline]
-    pub fn multiview_geometry_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_geometry_shader = value;
+    pub fn multiview_geometry_shader(mut self, value: bool) -> Self {
+        self.raw.multiview_geometry_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `multiviewTessellationShader`.
     #[inline]
-    pub fn multiview_tessellation_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_tessellation_shader = value;
+    pub fn multiview_tessellation_shader(mut self, value: bool) -> Self {
+        self.raw.multiview_tessellation_shader = vk::Bool32::from(value);
         self
     }
 }
@@ -1423,8 +1423,8 @@ safe_struct!(PhysicalDeviceProtectedMemoryFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceProtectedMemoryFeatures<'a> {
     ///Sets `protectedMemory`.
     #[inline]
-    pub fn protected_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.protected_memory = value;
+    pub fn protected_memory(mut self, value: bool) -> Self {
+        self.raw.protected_memory = vk::Bool32::from(value);
         self
     }
 }
@@ -1465,8 +1465,8 @@ safe_struct!(PhysicalDeviceSamplerYcbcrConversionFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
     ///Sets `samplerYcbcrConversion`.
     #[inline]
-    pub fn sampler_ycbcr_conversion(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler_ycbcr_conversion = value;
+    pub fn sampler_ycbcr_conversion(mut self, value: bool) -> Self {
+        self.raw.sampler_ycbcr_conversion = vk::Bool32::from(value);
         self
     }
 }
@@ -1491,8 +1491,8 @@ safe_struct!(PhysicalDeviceShaderDrawParametersFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderDrawParametersFeatures<'a> {
     ///Sets `shaderDrawParameters`.
     #[inline]
-    pub fn shader_draw_parameters(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_draw_parameters = value;
+    pub fn shader_draw_parameters(mut self, value: bool) -> Self {
+        self.raw.shader_draw_parameters = vk::Bool32::from(value);
         self
     }
 }
@@ -1588,14 +1588,14 @@ safe_struct!(PhysicalDeviceVariablePointersFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVariablePointersFeatures<'a> {
     ///Sets `variablePointersStorageBuffer`.
     #[inline]
-    pub fn variable_pointers_storage_buffer(mut self, value: vk::Bool32) -> Self {
-        self.raw.variable_pointers_storage_buffer = value;
+    pub fn variable_pointers_storage_buffer(mut self, value: bool) -> Self {
+        self.raw.variable_pointers_storage_buffer = vk::Bool32::from(value);
         self
     }
     ///Sets `variablePointers`.
     #[inline]
-    pub fn variable_pointers(mut self, value: vk::Bool32) -> Self {
-        self.raw.variable_pointers = value;
+    pub fn variable_pointers(mut self, value: bool) -> Self {
+        self.raw.variable_pointers = vk::Bool32::from(value);
         self
     }
 }
@@ -1645,8 +1645,8 @@ safe_struct!(ProtectedSubmitInfo, 'a; zeroed chained);
 impl<'a> ProtectedSubmitInfo<'a> {
     ///Sets `protectedSubmit`.
     #[inline]
-    pub fn protected_submit(mut self, value: vk::Bool32) -> Self {
-        self.raw.protected_submit = value;
+    pub fn protected_submit(mut self, value: bool) -> Self {
+        self.raw.protected_submit = vk::Bool32::from(value);
         self
     }
 }
@@ -1811,8 +1811,8 @@ impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
     }
     ///Sets `forceExplicitReconstruction`.
     #[inline]
-    pub fn force_explicit_reconstruction(mut self, value: vk::Bool32) -> Self {
-        self.raw.force_explicit_reconstruction = value;
+    pub fn force_explicit_reconstruction(mut self, value: bool) -> Self {
+        self.raw.force_explicit_reconstruction = vk::Bool32::from(value);
         self
     }
 }

@@ -579,20 +579,20 @@ safe_struct!(PhysicalDevice8BitStorageFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevice8BitStorageFeatures<'a> {
     ///Sets `storageBuffer8BitAccess`.
     #[inline]
-    pub fn storage_buffer8_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_buffer8_bit_access = value;
+    pub fn storage_buffer8_bit_access(mut self, value: bool) -> Self {
+        self.raw.storage_buffer8_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `uniformAndStorageBuffer8BitAccess`.
     #[inline]
-    pub fn uniform_and_storage_buffer8_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_and_storage_buffer8_bit_access = value;
+    pub fn uniform_and_storage_buffer8_bit_access(mut self, value: bool) -> Self {
+        self.raw.uniform_and_storage_buffer8_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `storagePushConstant8`.
     #[inline]
-    pub fn storage_push_constant8(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_push_constant8 = value;
+    pub fn storage_push_constant8(mut self, value: bool) -> Self {
+        self.raw.storage_push_constant8 = vk::Bool32::from(value);
         self
     }
 }
@@ -616,20 +616,20 @@ safe_struct!(PhysicalDeviceBufferDeviceAddressFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceBufferDeviceAddressFeatures<'a> {
     ///Sets `bufferDeviceAddress`.
     #[inline]
-    pub fn buffer_device_address(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address = value;
+    pub fn buffer_device_address(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressCaptureReplay`.
     #[inline]
-    pub fn buffer_device_address_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_capture_replay = value;
+    pub fn buffer_device_address_capture_replay(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressMultiDevice`.
     #[inline]
-    pub fn buffer_device_address_multi_device(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_multi_device = value;
+    pub fn buffer_device_address_multi_device(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_multi_device = vk::Bool32::from(value);
         self
     }
 }
@@ -672,174 +672,205 @@ impl<'a> PhysicalDeviceDescriptorIndexingFeatures<'a> {
     #[inline]
     pub fn shader_input_attachment_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_input_attachment_array_dynamic_indexing = value;
+        self.raw.shader_input_attachment_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformTexelBufferArrayDynamicIndexing`.
     #[inline]
     pub fn shader_uniform_texel_buffer_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageTexelBufferArrayDynamicIndexing`.
     #[inline]
     pub fn shader_storage_texel_buffer_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_texel_buffer_array_dynamic_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_uniform_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderSampledImageArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_sampled_image_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_sampled_image_array_non_uniform_indexing = value;
+        self.raw.shader_sampled_image_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageImageArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_image_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_image_array_non_uniform_indexing = value;
+        self.raw.shader_storage_image_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderInputAttachmentArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_input_attachment_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_input_attachment_array_non_uniform_indexing = value;
+        self.raw.shader_input_attachment_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformTexelBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_uniform_texel_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageTexelBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_texel_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUniformBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_uniform_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_uniform_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingSampledImageUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_sampled_image_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_sampled_image_update_after_bind = value;
+        self.raw.descriptor_binding_sampled_image_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageImageUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_image_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_image_update_after_bind = value;
+        self.raw.descriptor_binding_storage_image_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUniformTexelBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_uniform_texel_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageTexelBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_texel_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUpdateUnusedWhilePending`.
     #[inline]
     pub fn descriptor_binding_update_unused_while_pending(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_update_unused_while_pending = value;
+        self.raw.descriptor_binding_update_unused_while_pending = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingPartiallyBound`.
     #[inline]
-    pub fn descriptor_binding_partially_bound(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_binding_partially_bound = value;
+    pub fn descriptor_binding_partially_bound(mut self, value: bool) -> Self {
+        self.raw.descriptor_binding_partially_bound = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBindingVariableDescriptorCount`.
     #[inline]
-    pub fn descriptor_binding_variable_descriptor_count(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.descriptor_binding_variable_descriptor_count = value;
+    pub fn descriptor_binding_variable_descriptor_count(mut self, value: bool) -> Self {
+        self.raw.descriptor_binding_variable_descriptor_count = vk::Bool32::from(value);
         self
     }
     ///Sets `runtimeDescriptorArray`.
     #[inline]
-    pub fn runtime_descriptor_array(mut self, value: vk::Bool32) -> Self {
-        self.raw.runtime_descriptor_array = value;
+    pub fn runtime_descriptor_array(mut self, value: bool) -> Self {
+        self.raw.runtime_descriptor_array = vk::Bool32::from(value);
         self
     }
 }
@@ -912,8 +943,8 @@ safe_struct!(PhysicalDeviceHostQueryResetFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceHostQueryResetFeatures<'a> {
     ///Sets `hostQueryReset`.
     #[inline]
-    pub fn host_query_reset(mut self, value: vk::Bool32) -> Self {
-        self.raw.host_query_reset = value;
+    pub fn host_query_reset(mut self, value: bool) -> Self {
+        self.raw.host_query_reset = vk::Bool32::from(value);
         self
     }
 }
@@ -938,8 +969,8 @@ safe_struct!(PhysicalDeviceImagelessFramebufferFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceImagelessFramebufferFeatures<'a> {
     ///Sets `imagelessFramebuffer`.
     #[inline]
-    pub fn imageless_framebuffer(mut self, value: vk::Bool32) -> Self {
-        self.raw.imageless_framebuffer = value;
+    pub fn imageless_framebuffer(mut self, value: bool) -> Self {
+        self.raw.imageless_framebuffer = vk::Bool32::from(value);
         self
     }
 }
@@ -980,8 +1011,8 @@ safe_struct!(PhysicalDeviceScalarBlockLayoutFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceScalarBlockLayoutFeatures<'a> {
     ///Sets `scalarBlockLayout`.
     #[inline]
-    pub fn scalar_block_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.scalar_block_layout = value;
+    pub fn scalar_block_layout(mut self, value: bool) -> Self {
+        self.raw.scalar_block_layout = vk::Bool32::from(value);
         self
     }
 }
@@ -1006,8 +1037,8 @@ safe_struct!(PhysicalDeviceSeparateDepthStencilLayoutsFeatures, 'a; zeroed chain
 impl<'a> PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
     ///Sets `separateDepthStencilLayouts`.
     #[inline]
-    pub fn separate_depth_stencil_layouts(mut self, value: vk::Bool32) -> Self {
-        self.raw.separate_depth_stencil_layouts = value;
+    pub fn separate_depth_stencil_layouts(mut self, value: bool) -> Self {
+        self.raw.separate_depth_stencil_layouts = vk::Bool32::from(value);
         self
     }
 }
@@ -1032,14 +1063,14 @@ safe_struct!(PhysicalDeviceShaderAtomicInt64Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderAtomicInt64Features<'a> {
     ///Sets `shaderBufferInt64Atomics`.
     #[inline]
-    pub fn shader_buffer_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_int64_atomics = value;
+    pub fn shader_buffer_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_int64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedInt64Atomics`.
     #[inline]
-    pub fn shader_shared_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_int64_atomics = value;
+    pub fn shader_shared_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_shared_int64_atomics = vk::Bool32::from(value);
         self
     }
 }
@@ -1064,14 +1095,14 @@ safe_struct!(PhysicalDeviceShaderFloat16Int8Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderFloat16Int8Features<'a> {
     ///Sets `shaderFloat16`.
     #[inline]
-    pub fn shader_float16(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_float16 = value;
+    pub fn shader_float16(mut self, value: bool) -> Self {
+        self.raw.shader_float16 = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderInt8`.
     #[inline]
-    pub fn shader_int8(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_int8 = value;
+    pub fn shader_int8(mut self, value: bool) -> Self {
+        self.raw.shader_int8 = vk::Bool32::from(value);
         self
     }
 }
@@ -1096,8 +1127,8 @@ safe_struct!(PhysicalDeviceShaderSubgroupExtendedTypesFeatures, 'a; zeroed chain
 impl<'a> PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
     ///Sets `shaderSubgroupExtendedTypes`.
     #[inline]
-    pub fn shader_subgroup_extended_types(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_subgroup_extended_types = value;
+    pub fn shader_subgroup_extended_types(mut self, value: bool) -> Self {
+        self.raw.shader_subgroup_extended_types = vk::Bool32::from(value);
         self
     }
 }
@@ -1122,8 +1153,8 @@ safe_struct!(PhysicalDeviceTimelineSemaphoreFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceTimelineSemaphoreFeatures<'a> {
     ///Sets `timelineSemaphore`.
     #[inline]
-    pub fn timeline_semaphore(mut self, value: vk::Bool32) -> Self {
-        self.raw.timeline_semaphore = value;
+    pub fn timeline_semaphore(mut self, value: bool) -> Self {
+        self.raw.timeline_semaphore = vk::Bool32::from(value);
         self
     }
 }
@@ -1164,8 +1195,8 @@ safe_struct!(PhysicalDeviceUniformBufferStandardLayoutFeatures, 'a; zeroed chain
 impl<'a> PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
     ///Sets `uniformBufferStandardLayout`.
     #[inline]
-    pub fn uniform_buffer_standard_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_buffer_standard_layout = value;
+    pub fn uniform_buffer_standard_layout(mut self, value: bool) -> Self {
+        self.raw.uniform_buffer_standard_layout = vk::Bool32::from(value);
         self
     }
 }
@@ -1190,74 +1221,74 @@ safe_struct!(PhysicalDeviceVulkan11Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan11Features<'a> {
     ///Sets `storageBuffer16BitAccess`.
     #[inline]
-    pub fn storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_buffer16_bit_access = value;
+    pub fn storage_buffer16_bit_access(mut self, value: bool) -> Self {
+        self.raw.storage_buffer16_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `uniformAndStorageBuffer16BitAccess`.
     #[inline]
-    pub fn uniform_and_storage_buffer16_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_and_storage_buffer16_bit_access = value;
+    pub fn uniform_and_storage_buffer16_bit_access(mut self, value: bool) -> Self {
+        self.raw.uniform_and_storage_buffer16_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `storagePushConstant16`.
     #[inline]
-    pub fn storage_push_constant16(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_push_constant16 = value;
+    pub fn storage_push_constant16(mut self, value: bool) -> Self {
+        self.raw.storage_push_constant16 = vk::Bool32::from(value);
         self
     }
     ///Sets `storageInputOutput16`.
     #[inline]
-    pub fn storage_input_output16(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_input_output16 = value;
+    pub fn storage_input_output16(mut self, value: bool) -> Self {
+        self.raw.storage_input_output16 = vk::Bool32::from(value);
         self
     }
     ///Sets `multiview`.
     #[inline]
-    pub fn multiview(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview = value;
+    pub fn multiview(mut self, value: bool) -> Self {
+        self.raw.multiview = vk::Bool32::from(value);
         self
     }
     ///Sets `multiviewGeometryShader`.
     #[inline]
-    pub fn multiview_geometry_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_geometry_shader = value;
+    pub fn multiview_geometry_shader(mut self, value: bool) -> Self {
+        self.raw.multiview_geometry_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `multiviewTessellationShader`.
     #[inline]
-    pub fn multiview_tessellation_shader(mut self, value: vk::Bool32) -> Self {
-        self.raw.multiview_tessellation_shader = value;
+    pub fn multiview_tessellation_shader(mut self, value: bool) -> Self {
+        self.raw.multiview_tessellation_shader = vk::Bool32::from(value);
         self
     }
     ///Sets `variablePointersStorageBuffer`.
     #[inline]
-    pub fn variable_pointers_storage_buffer(mut self, value: vk::Bool32) -> Self {
-        self.raw.variable_pointers_storage_buffer = value;
+    pub fn variable_pointers_storage_buffer(mut self, value: bool) -> Self {
+        self.raw.variable_pointers_storage_buffer = vk::Bool32::from(value);
         self
     }
     ///Sets `variablePointers`.
     #[inline]
-    pub fn variable_pointers(mut self, value: vk::Bool32) -> Self {
-        self.raw.variable_pointers = value;
+    pub fn variable_pointers(mut self, value: bool) -> Self {
+        self.raw.variable_pointers = vk::Bool32::from(value);
         self
     }
     ///Sets `protectedMemory`.
     #[inline]
-    pub fn protected_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.protected_memory = value;
+    pub fn protected_memory(mut self, value: bool) -> Self {
+        self.raw.protected_memory = vk::Bool32::from(value);
         self
     }
     ///Sets `samplerYcbcrConversion`.
     #[inline]
-    pub fn sampler_ycbcr_conversion(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler_ycbcr_conversion = value;
+    pub fn sampler_ycbcr_conversion(mut self, value: bool) -> Self {
+        self.raw.sampler_ycbcr_conversion = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderDrawParameters`.
     #[inline]
-    pub fn shader_draw_parameters(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_draw_parameters = value;
+    pub fn shader_draw_parameters(mut self, value: bool) -> Self {
+        self.raw.shader_draw_parameters = vk::Bool32::from(value);
         self
     }
 }
@@ -1297,341 +1328,374 @@ safe_struct!(PhysicalDeviceVulkan12Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan12Features<'a> {
     ///Sets `samplerMirrorClampToEdge`.
     #[inline]
-    pub fn sampler_mirror_clamp_to_edge(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler_mirror_clamp_to_edge = value;
+    pub fn sampler_mirror_clamp_to_edge(mut self, value: bool) -> Self {
+        self.raw.sampler_mirror_clamp_to_edge = vk::Bool32::from(value);
         self
     }
     ///Sets `drawIndirectCount`.
     #[inline]
-    pub fn draw_indirect_count(mut self, value: vk::Bool32) -> Self {
-        self.raw.draw_indirect_count = value;
+    pub fn draw_indirect_count(mut self, value: bool) -> Self {
+        self.raw.draw_indirect_count = vk::Bool32::from(value);
         self
     }
     ///Sets `storageBuffer8BitAccess`.
     #[inline]
-    pub fn storage_buffer8_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_buffer8_bit_access = value;
+    pub fn storage_buffer8_bit_access(mut self, value: bool) -> Self {
+        self.raw.storage_buffer8_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `uniformAndStorageBuffer8BitAccess`.
     #[inline]
-    pub fn uniform_and_storage_buffer8_bit_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_and_storage_buffer8_bit_access = value;
+    pub fn uniform_and_storage_buffer8_bit_access(mut self, value: bool) -> Self {
+        self.raw.uniform_and_storage_buffer8_bit_access = vk::Bool32::from(value);
         self
     }
     ///Sets `storagePushConstant8`.
     #[inline]
-    pub fn storage_push_constant8(mut self, value: vk::Bool32) -> Self {
-        self.raw.storage_push_constant8 = value;
+    pub fn storage_push_constant8(mut self, value: bool) -> Self {
+        self.raw.storage_push_constant8 = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderBufferInt64Atomics`.
     #[inline]
-    pub fn shader_buffer_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_buffer_int64_atomics = value;
+    pub fn shader_buffer_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_buffer_int64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSharedInt64Atomics`.
     #[inline]
-    pub fn shader_shared_int64_atomics(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_shared_int64_atomics = value;
+    pub fn shader_shared_int64_atomics(mut self, value: bool) -> Self {
+        self.raw.shader_shared_int64_atomics = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderFloat16`.
     #[inline]
-    pub fn shader_float16(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_float16 = value;
+    pub fn shader_float16(mut self, value: bool) -> Self {
+        self.raw.shader_float16 = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderInt8`.
     #[inline]
-    pub fn shader_int8(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_int8 = value;
+    pub fn shader_int8(mut self, value: bool) -> Self {
+        self.raw.shader_int8 = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorIndexing`.
     #[inline]
-    pub fn descriptor_indexing(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_indexing = value;
+    pub fn descriptor_indexing(mut self, value: bool) -> Self {
+        self.raw.descriptor_indexing = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderInputAttachmentArrayDynamicIndexing`.
     #[inline]
     pub fn shader_input_attachment_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_input_attachment_array_dynamic_indexing = value;
+        self.raw.shader_input_attachment_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformTexelBufferArrayDynamicIndexing`.
     #[inline]
     pub fn shader_uniform_texel_buffer_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageTexelBufferArrayDynamicIndexing`.
     #[inline]
     pub fn shader_storage_texel_buffer_array_dynamic_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_texel_buffer_array_dynamic_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_dynamic_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_uniform_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderSampledImageArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_sampled_image_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_sampled_image_array_non_uniform_indexing = value;
+        self.raw.shader_sampled_image_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageImageArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_image_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_image_array_non_uniform_indexing = value;
+        self.raw.shader_storage_image_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderInputAttachmentArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_input_attachment_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_input_attachment_array_non_uniform_indexing = value;
+        self.raw.shader_input_attachment_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderUniformTexelBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_uniform_texel_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_uniform_texel_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderStorageTexelBufferArrayNonUniformIndexing`.
     #[inline]
     pub fn shader_storage_texel_buffer_array_non_uniform_indexing(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = value;
+        self.raw.shader_storage_texel_buffer_array_non_uniform_indexing = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUniformBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_uniform_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_uniform_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingSampledImageUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_sampled_image_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_sampled_image_update_after_bind = value;
+        self.raw.descriptor_binding_sampled_image_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageImageUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_image_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_image_update_after_bind = value;
+        self.raw.descriptor_binding_storage_image_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUniformTexelBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_uniform_texel_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_uniform_texel_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingStorageTexelBufferUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_storage_texel_buffer_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = value;
+        self.raw.descriptor_binding_storage_texel_buffer_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingUpdateUnusedWhilePending`.
     #[inline]
     pub fn descriptor_binding_update_unused_while_pending(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_update_unused_while_pending = value;
+        self.raw.descriptor_binding_update_unused_while_pending = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `descriptorBindingPartiallyBound`.
     #[inline]
-    pub fn descriptor_binding_partially_bound(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_binding_partially_bound = value;
+    pub fn descriptor_binding_partially_bound(mut self, value: bool) -> Self {
+        self.raw.descriptor_binding_partially_bound = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBindingVariableDescriptorCount`.
     #[inline]
-    pub fn descriptor_binding_variable_descriptor_count(
-        mut self,
-        value: vk::Bool32,
-    ) -> Self {
-        self.raw.descriptor_binding_variable_descriptor_count = value;
+    pub fn descriptor_binding_variable_descriptor_count(mut self, value: bool) -> Self {
+        self.raw.descriptor_binding_variable_descriptor_count = vk::Bool32::from(value);
         self
     }
     ///Sets `runtimeDescriptorArray`.
     #[inline]
-    pub fn runtime_descriptor_array(mut self, value: vk::Bool32) -> Self {
-        self.raw.runtime_descriptor_array = value;
+    pub fn runtime_descriptor_array(mut self, value: bool) -> Self {
+        self.raw.runtime_descriptor_array = vk::Bool32::from(value);
         self
     }
     ///Sets `samplerFilterMinmax`.
     #[inline]
-    pub fn sampler_filter_minmax(mut self, value: vk::Bool32) -> Self {
-        self.raw.sampler_filter_minmax = value;
+    pub fn sampler_filter_minmax(mut self, value: bool) -> Self {
+        self.raw.sampler_filter_minmax = vk::Bool32::from(value);
         self
     }
     ///Sets `scalarBlockLayout`.
     #[inline]
-    pub fn scalar_block_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.scalar_block_layout = value;
+    pub fn scalar_block_layout(mut self, value: bool) -> Self {
+        self.raw.scalar_block_layout = vk::Bool32::from(value);
         self
     }
     ///Sets `imagelessFramebuffer`.
     #[inline]
-    pub fn imageless_framebuffer(mut self, value: vk::Bool32) -> Self {
-        self.raw.imageless_framebuffer = value;
+    pub fn imageless_framebuffer(mut self, value: bool) -> Self {
+        self.raw.imageless_framebuffer = vk::Bool32::from(value);
         self
     }
     ///Sets `uniformBufferStandardLayout`.
     #[inline]
-    pub fn uniform_buffer_standard_layout(mut self, value: vk::Bool32) -> Self {
-        self.raw.uniform_buffer_standard_layout = value;
+    pub fn uniform_buffer_standard_layout(mut self, value: bool) -> Self {
+        self.raw.uniform_buffer_standard_layout = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderSubgroupExtendedTypes`.
     #[inline]
-    pub fn shader_subgroup_extended_types(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_subgroup_extended_types = value;
+    pub fn shader_subgroup_extended_types(mut self, value: bool) -> Self {
+        self.raw.shader_subgroup_extended_types = vk::Bool32::from(value);
         self
     }
     ///Sets `separateDepthStencilLayouts`.
     #[inline]
-    pub fn separate_depth_stencil_layouts(mut self, value: vk::Bool32) -> Self {
-        self.raw.separate_depth_stencil_layouts = value;
+    pub fn separate_depth_stencil_layouts(mut self, value: bool) -> Self {
+        self.raw.separate_depth_stencil_layouts = vk::Bool32::from(value);
         self
     }
     ///Sets `hostQueryReset`.
     #[inline]
-    pub fn host_query_reset(mut self, value: vk::Bool32) -> Self {
-        self.raw.host_query_reset = value;
+    pub fn host_query_reset(mut self, value: bool) -> Self {
+        self.raw.host_query_reset = vk::Bool32::from(value);
         self
     }
     ///Sets `timelineSemaphore`.
     #[inline]
-    pub fn timeline_semaphore(mut self, value: vk::Bool32) -> Self {
-        self.raw.timeline_semaphore = value;
+    pub fn timeline_semaphore(mut self, value: bool) -> Self {
+        self.raw.timeline_semaphore = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddress`.
     #[inline]
-    pub fn buffer_device_address(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address = value;
+    pub fn buffer_device_address(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressCaptureReplay`.
     #[inline]
-    pub fn buffer_device_address_capture_replay(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_capture_replay = value;
+    pub fn buffer_device_address_capture_replay(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_capture_replay = vk::Bool32::from(value);
         self
     }
     ///Sets `bufferDeviceAddressMultiDevice`.
     #[inline]
-    pub fn buffer_device_address_multi_device(mut self, value: vk::Bool32) -> Self {
-        self.raw.buffer_device_address_multi_device = value;
+    pub fn buffer_device_address_multi_device(mut self, value: bool) -> Self {
+        self.raw.buffer_device_address_multi_device = vk::Bool32::from(value);
         self
     }
     ///Sets `vulkanMemoryModel`.
     #[inline]
-    pub fn vulkan_memory_model(mut self, value: vk::Bool32) -> Self {
-        self.raw.vulkan_memory_model = value;
+    pub fn vulkan_memory_model(mut self, value: bool) -> Self {
+        self.raw.vulkan_memory_model = vk::Bool32::from(value);
         self
     }
     ///Sets `vulkanMemoryModelDeviceScope`.
     #[inline]
-    pub fn vulkan_memory_model_device_scope(mut self, value: vk::Bool32) -> Self {
-        self.raw.vulkan_memory_model_device_scope = value;
+    pub fn vulkan_memory_model_device_scope(mut self, value: bool) -> Self {
+        self.raw.vulkan_memory_model_device_scope = vk::Bool32::from(value);
         self
     }
     ///Sets `vulkanMemoryModelAvailabilityVisibilityChains`.
     #[inline]
     pub fn vulkan_memory_model_availability_visibility_chains(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.vulkan_memory_model_availability_visibility_chains = value;
+        self.raw.vulkan_memory_model_availability_visibility_chains = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `shaderOutputViewportIndex`.
     #[inline]
-    pub fn shader_output_viewport_index(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_output_viewport_index = value;
+    pub fn shader_output_viewport_index(mut self, value: bool) -> Self {
+        self.raw.shader_output_viewport_index = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderOutputLayer`.
     #[inline]
-    pub fn shader_output_layer(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_output_layer = value;
+    pub fn shader_output_layer(mut self, value: bool) -> Self {
+        self.raw.shader_output_layer = vk::Bool32::from(value);
         self
     }
     ///Sets `subgroupBroadcastDynamicId`.
     #[inline]
-    pub fn subgroup_broadcast_dynamic_id(mut self, value: vk::Bool32) -> Self {
-        self.raw.subgroup_broadcast_dynamic_id = value;
+    pub fn subgroup_broadcast_dynamic_id(mut self, value: bool) -> Self {
+        self.raw.subgroup_broadcast_dynamic_id = vk::Bool32::from(value);
         self
     }
 }
@@ -1671,23 +1735,25 @@ safe_struct!(PhysicalDeviceVulkanMemoryModelFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkanMemoryModelFeatures<'a> {
     ///Sets `vulkanMemoryModel`.
     #[inline]
-    pub fn vulkan_memory_model(mut self, value: vk::Bool32) -> Self {
-        self.raw.vulkan_memory_model = value;
+    pub fn vulkan_memory_model(mut self, value: bool) -> Self {
+        self.raw.vulkan_memory_model = vk::Bool32::from(value);
         self
     }
     ///Sets `vulkanMemoryModelDeviceScope`.
     #[inline]
-    pub fn vulkan_memory_model_device_scope(mut self, value: vk::Bool32) -> Self {
-        self.raw.vulkan_memory_model_device_scope = value;
+    pub fn vulkan_memory_model_device_scope(mut self, value: bool) -> Self {
+        self.raw.vulkan_memory_model_device_scope = vk::Bool32::from(value);
         self
     }
     ///Sets `vulkanMemoryModelAvailabilityVisibilityChains`.
     #[inline]
     pub fn vulkan_memory_model_availability_visibility_chains(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.vulkan_memory_model_availability_visibility_chains = value;
+        self.raw.vulkan_memory_model_availability_visibility_chains = vk::Bool32::from(
+            value,
+        );
         self
     }
 }

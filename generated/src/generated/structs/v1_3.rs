@@ -1394,8 +1394,8 @@ safe_struct!(PhysicalDeviceDynamicRenderingFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceDynamicRenderingFeatures<'a> {
     ///Sets `dynamicRendering`.
     #[inline]
-    pub fn dynamic_rendering(mut self, value: vk::Bool32) -> Self {
-        self.raw.dynamic_rendering = value;
+    pub fn dynamic_rendering(mut self, value: bool) -> Self {
+        self.raw.dynamic_rendering = vk::Bool32::from(value);
         self
     }
 }
@@ -1420,8 +1420,8 @@ safe_struct!(PhysicalDeviceImageRobustnessFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceImageRobustnessFeatures<'a> {
     ///Sets `robustImageAccess`.
     #[inline]
-    pub fn robust_image_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.robust_image_access = value;
+    pub fn robust_image_access(mut self, value: bool) -> Self {
+        self.raw.robust_image_access = vk::Bool32::from(value);
         self
     }
 }
@@ -1446,17 +1446,19 @@ safe_struct!(PhysicalDeviceInlineUniformBlockFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceInlineUniformBlockFeatures<'a> {
     ///Sets `inlineUniformBlock`.
     #[inline]
-    pub fn inline_uniform_block(mut self, value: vk::Bool32) -> Self {
-        self.raw.inline_uniform_block = value;
+    pub fn inline_uniform_block(mut self, value: bool) -> Self {
+        self.raw.inline_uniform_block = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBindingInlineUniformBlockUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_inline_uniform_block_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = value;
+        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
 }
@@ -1497,8 +1499,8 @@ safe_struct!(PhysicalDeviceMaintenance4Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceMaintenance4Features<'a> {
     ///Sets `maintenance4`.
     #[inline]
-    pub fn maintenance4(mut self, value: vk::Bool32) -> Self {
-        self.raw.maintenance4 = value;
+    pub fn maintenance4(mut self, value: bool) -> Self {
+        self.raw.maintenance4 = vk::Bool32::from(value);
         self
     }
 }
@@ -1539,8 +1541,8 @@ safe_struct!(PhysicalDevicePipelineCreationCacheControlFeatures, 'a; zeroed chai
 impl<'a> PhysicalDevicePipelineCreationCacheControlFeatures<'a> {
     ///Sets `pipelineCreationCacheControl`.
     #[inline]
-    pub fn pipeline_creation_cache_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_creation_cache_control = value;
+    pub fn pipeline_creation_cache_control(mut self, value: bool) -> Self {
+        self.raw.pipeline_creation_cache_control = vk::Bool32::from(value);
         self
     }
 }
@@ -1565,8 +1567,8 @@ safe_struct!(PhysicalDevicePrivateDataFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDevicePrivateDataFeatures<'a> {
     ///Sets `privateData`.
     #[inline]
-    pub fn private_data(mut self, value: vk::Bool32) -> Self {
-        self.raw.private_data = value;
+    pub fn private_data(mut self, value: bool) -> Self {
+        self.raw.private_data = vk::Bool32::from(value);
         self
     }
 }
@@ -1590,8 +1592,8 @@ safe_struct!(PhysicalDeviceShaderDemoteToHelperInvocationFeatures, 'a; zeroed ch
 impl<'a> PhysicalDeviceShaderDemoteToHelperInvocationFeatures<'a> {
     ///Sets `shaderDemoteToHelperInvocation`.
     #[inline]
-    pub fn shader_demote_to_helper_invocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_demote_to_helper_invocation = value;
+    pub fn shader_demote_to_helper_invocation(mut self, value: bool) -> Self {
+        self.raw.shader_demote_to_helper_invocation = vk::Bool32::from(value);
         self
     }
 }
@@ -1616,8 +1618,8 @@ safe_struct!(PhysicalDeviceShaderIntegerDotProductFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceShaderIntegerDotProductFeatures<'a> {
     ///Sets `shaderIntegerDotProduct`.
     #[inline]
-    pub fn shader_integer_dot_product(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_integer_dot_product = value;
+    pub fn shader_integer_dot_product(mut self, value: bool) -> Self {
+        self.raw.shader_integer_dot_product = vk::Bool32::from(value);
         self
     }
 }
@@ -1658,8 +1660,8 @@ safe_struct!(PhysicalDeviceShaderTerminateInvocationFeatures, 'a; zeroed chained
 impl<'a> PhysicalDeviceShaderTerminateInvocationFeatures<'a> {
     ///Sets `shaderTerminateInvocation`.
     #[inline]
-    pub fn shader_terminate_invocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_terminate_invocation = value;
+    pub fn shader_terminate_invocation(mut self, value: bool) -> Self {
+        self.raw.shader_terminate_invocation = vk::Bool32::from(value);
         self
     }
 }
@@ -1684,14 +1686,14 @@ safe_struct!(PhysicalDeviceSubgroupSizeControlFeatures, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSubgroupSizeControlFeatures<'a> {
     ///Sets `subgroupSizeControl`.
     #[inline]
-    pub fn subgroup_size_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.subgroup_size_control = value;
+    pub fn subgroup_size_control(mut self, value: bool) -> Self {
+        self.raw.subgroup_size_control = vk::Bool32::from(value);
         self
     }
     ///Sets `computeFullSubgroups`.
     #[inline]
-    pub fn compute_full_subgroups(mut self, value: vk::Bool32) -> Self {
-        self.raw.compute_full_subgroups = value;
+    pub fn compute_full_subgroups(mut self, value: bool) -> Self {
+        self.raw.compute_full_subgroups = vk::Bool32::from(value);
         self
     }
 }
@@ -1732,8 +1734,8 @@ safe_struct!(PhysicalDeviceSynchronization2Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceSynchronization2Features<'a> {
     ///Sets `synchronization2`.
     #[inline]
-    pub fn synchronization2(mut self, value: vk::Bool32) -> Self {
-        self.raw.synchronization2 = value;
+    pub fn synchronization2(mut self, value: bool) -> Self {
+        self.raw.synchronization2 = vk::Bool32::from(value);
         self
     }
 }
@@ -1774,8 +1776,8 @@ safe_struct!(PhysicalDeviceTextureCompressionASTCHDRFeatures, 'a; zeroed chained
 impl<'a> PhysicalDeviceTextureCompressionASTCHDRFeatures<'a> {
     ///Sets `textureCompressionASTC_HDR`.
     #[inline]
-    pub fn texture_compression_astc_hdr(mut self, value: vk::Bool32) -> Self {
-        self.raw.texture_compression_astc_hdr = value;
+    pub fn texture_compression_astc_hdr(mut self, value: bool) -> Self {
+        self.raw.texture_compression_astc_hdr = vk::Bool32::from(value);
         self
     }
 }
@@ -1815,95 +1817,97 @@ safe_struct!(PhysicalDeviceVulkan13Features, 'a; zeroed chained);
 impl<'a> PhysicalDeviceVulkan13Features<'a> {
     ///Sets `robustImageAccess`.
     #[inline]
-    pub fn robust_image_access(mut self, value: vk::Bool32) -> Self {
-        self.raw.robust_image_access = value;
+    pub fn robust_image_access(mut self, value: bool) -> Self {
+        self.raw.robust_image_access = vk::Bool32::from(value);
         self
     }
     ///Sets `inlineUniformBlock`.
     #[inline]
-    pub fn inline_uniform_block(mut self, value: vk::Bool32) -> Self {
-        self.raw.inline_uniform_block = value;
+    pub fn inline_uniform_block(mut self, value: bool) -> Self {
+        self.raw.inline_uniform_block = vk::Bool32::from(value);
         self
     }
     ///Sets `descriptorBindingInlineUniformBlockUpdateAfterBind`.
     #[inline]
     pub fn descriptor_binding_inline_uniform_block_update_after_bind(
         mut self,
-        value: vk::Bool32,
+        value: bool,
     ) -> Self {
-        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = value;
+        self.raw.descriptor_binding_inline_uniform_block_update_after_bind = vk::Bool32::from(
+            value,
+        );
         self
     }
     ///Sets `pipelineCreationCacheControl`.
     #[inline]
-    pub fn pipeline_creation_cache_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.pipeline_creation_cache_control = value;
+    pub fn pipeline_creation_cache_control(mut self, value: bool) -> Self {
+        self.raw.pipeline_creation_cache_control = vk::Bool32::from(value);
         self
     }
     ///Sets `privateData`.
     #[inline]
-    pub fn private_data(mut self, value: vk::Bool32) -> Self {
-        self.raw.private_data = value;
+    pub fn private_data(mut self, value: bool) -> Self {
+        self.raw.private_data = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderDemoteToHelperInvocation`.
     #[inline]
-    pub fn shader_demote_to_helper_invocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_demote_to_helper_invocation = value;
+    pub fn shader_demote_to_helper_invocation(mut self, value: bool) -> Self {
+        self.raw.shader_demote_to_helper_invocation = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderTerminateInvocation`.
     #[inline]
-    pub fn shader_terminate_invocation(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_terminate_invocation = value;
+    pub fn shader_terminate_invocation(mut self, value: bool) -> Self {
+        self.raw.shader_terminate_invocation = vk::Bool32::from(value);
         self
     }
     ///Sets `subgroupSizeControl`.
     #[inline]
-    pub fn subgroup_size_control(mut self, value: vk::Bool32) -> Self {
-        self.raw.subgroup_size_control = value;
+    pub fn subgroup_size_control(mut self, value: bool) -> Self {
+        self.raw.subgroup_size_control = vk::Bool32::from(value);
         self
     }
     ///Sets `computeFullSubgroups`.
     #[inline]
-    pub fn compute_full_subgroups(mut self, value: vk::Bool32) -> Self {
-        self.raw.compute_full_subgroups = value;
+    pub fn compute_full_subgroups(mut self, value: bool) -> Self {
+        self.raw.compute_full_subgroups = vk::Bool32::from(value);
         self
     }
     ///Sets `synchronization2`.
     #[inline]
-    pub fn synchronization2(mut self, value: vk::Bool32) -> Self {
-        self.raw.synchronization2 = value;
+    pub fn synchronization2(mut self, value: bool) -> Self {
+        self.raw.synchronization2 = vk::Bool32::from(value);
         self
     }
     ///Sets `textureCompressionASTC_HDR`.
     #[inline]
-    pub fn texture_compression_astc_hdr(mut self, value: vk::Bool32) -> Self {
-        self.raw.texture_compression_astc_hdr = value;
+    pub fn texture_compression_astc_hdr(mut self, value: bool) -> Self {
+        self.raw.texture_compression_astc_hdr = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderZeroInitializeWorkgroupMemory`.
     #[inline]
-    pub fn shader_zero_initialize_workgroup_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_zero_initialize_workgroup_memory = value;
+    pub fn shader_zero_initialize_workgroup_memory(mut self, value: bool) -> Self {
+        self.raw.shader_zero_initialize_workgroup_memory = vk::Bool32::from(value);
         self
     }
     ///Sets `dynamicRendering`.
     #[inline]
-    pub fn dynamic_rendering(mut self, value: vk::Bool32) -> Self {
-        self.raw.dynamic_rendering = value;
+    pub fn dynamic_rendering(mut self, value: bool) -> Self {
+        self.raw.dynamic_rendering = vk::Bool32::from(value);
         self
     }
     ///Sets `shaderIntegerDotProduct`.
     #[inline]
-    pub fn shader_integer_dot_product(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_integer_dot_product = value;
+    pub fn shader_integer_dot_product(mut self, value: bool) -> Self {
+        self.raw.shader_integer_dot_product = vk::Bool32::from(value);
         self
     }
     ///Sets `maintenance4`.
     #[inline]
-    pub fn maintenance4(mut self, value: vk::Bool32) -> Self {
-        self.raw.maintenance4 = value;
+    pub fn maintenance4(mut self, value: bool) -> Self {
+        self.raw.maintenance4 = vk::Bool32::from(value);
         self
     }
 }
@@ -1943,8 +1947,8 @@ safe_struct!(PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures, 'a; zeroed cha
 impl<'a> PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {
     ///Sets `shaderZeroInitializeWorkgroupMemory`.
     #[inline]
-    pub fn shader_zero_initialize_workgroup_memory(mut self, value: vk::Bool32) -> Self {
-        self.raw.shader_zero_initialize_workgroup_memory = value;
+    pub fn shader_zero_initialize_workgroup_memory(mut self, value: bool) -> Self {
+        self.raw.shader_zero_initialize_workgroup_memory = vk::Bool32::from(value);
         self
     }
 }

@@ -105,8 +105,8 @@ safe_struct!(
 impl<'a> PhysicalDeviceDescriptorSetHostMappingFeaturesVALVE<'a> {
     ///Sets `descriptorSetHostMapping`.
     #[inline]
-    pub fn descriptor_set_host_mapping(mut self, value: vk::Bool32) -> Self {
-        self.raw.descriptor_set_host_mapping = value;
+    pub fn descriptor_set_host_mapping(mut self, value: bool) -> Self {
+        self.raw.descriptor_set_host_mapping = vk::Bool32::from(value);
         self
     }
 }
