@@ -202,11 +202,9 @@ fn surface_queries_name_a_family_and_a_surface_and_the_layer_agrees() {
         "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523"
     );
     // With the surface, each query answers.
-    assert_eq!(
-        p.get_physical_device_surface_support_khr(s.family, &surface)
-            .expect("support"),
-        vk::TRUE
-    );
+    assert!(p
+        .get_physical_device_surface_support_khr(s.family, &surface)
+        .expect("support"));
     assert!(!p
         .get_physical_device_surface_formats_khr(Some(&surface))
         .expect("formats")

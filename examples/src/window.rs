@@ -120,10 +120,9 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
         // The surface keeps the window alive, and its swapchains keep the surface.
         let window = tuff::runtime::Vrc::new(window);
         let surface = gpu.instance.create_surface(window.clone())?;
-        if gpu
+        if !gpu
             .physical
             .get_physical_device_surface_support_khr(gpu.family, &surface)?
-            == vk::FALSE
         {
             bail!("\"{}\" cannot present to this window", gpu.name);
         }

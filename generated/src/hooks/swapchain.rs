@@ -15,8 +15,7 @@ pub(crate) fn create_swapchain_checks(
     let families: Vec<u32> = device.live().queue_infos().iter().map(|q| q.0).collect();
     let mut supported = false;
     for family in families {
-        supported |=
-            physical.get_physical_device_surface_support_khr(family, surface)? != vk::FALSE;
+        supported |= physical.get_physical_device_surface_support_khr(family, surface)?;
     }
     if !supported {
         refuse(

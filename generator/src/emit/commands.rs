@@ -506,8 +506,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     call_args.push(quote!(&mut out,));
                     ty
                 };
-                ret_ty = ty;
-                ret_expr = quote!(out);
+                // `bool` where Vulkan writes a `VkBool32`, as for inputs.
+                (ret_ty, ret_expr) = match p.type_name.as_str() {
+                    "VkBool32" => (quote!(bool), quote!(out != vk::FALSE)),
+                    _ => (ty, quote!(out)),
+                };
             }
             Param::Created | Param::CreatedArray => {
                 let w = type_ident(&p.type_name);
@@ -749,19 +752,23 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             #unit_free_ret
         }
     } else {
-        let rt = spelled(model, &cx.facts, &cmd.return_type);
+        // `bool` where Vulkan returns a `VkBool32`.
+        let (rt, value) = match cmd.return_type.as_str() {
+            "VkBool32" => (quote!(bool), quote!(r != vk::FALSE)),
+            t => (spelled(model, &cx.facts, t), quote!(r)),
+        };
         ret_ty = rt;
         quote! {
             #(#pre)*
             __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
             let r = unsafe { #fp(#(#call_args)*) };
             #(#retain)*
-            r
+            #value
         }
     };
     // Nothing kept after the call: its value is the body's.
     let body = if retain.is_empty()
-        && matches!(cmd.return_type.as_str(), t if t != "VkResult" && t != "void")
+        && matches!(cmd.return_type.as_str(), t if t != "VkResult" && t != "void" && t != "VkBool32")
         && two_call.is_none()
     {
         quote! {

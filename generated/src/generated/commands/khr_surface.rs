@@ -211,7 +211,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         crate::hooks::queue_family_exists(
             self,
             queue_family_index,
@@ -240,7 +240,7 @@ The caller upholds the rules that [`Self::get_physical_device_surface_support_kh
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         let fp = self
             .parent()
             .ext()
@@ -254,6 +254,6 @@ The caller upholds the rules that [`Self::get_physical_device_surface_support_kh
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(out)
+        Ok(out != vk::FALSE)
     }
 }

@@ -94,7 +94,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
         &self,
         queue_family_index: u32,
         display: *mut vk::wl_display,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         let fp = self
             .parent()
             .ext()
@@ -104,7 +104,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             .get_physical_device_wayland_presentation_support_khr;
         Ok({
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), queue_family_index, display) }
+            let r = unsafe { fp(self.raw(), queue_family_index, display) };
+            r != vk::FALSE
         })
     }
 }

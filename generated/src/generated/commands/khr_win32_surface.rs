@@ -74,7 +74,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
     pub fn get_physical_device_win32_presentation_support_khr(
         &self,
         queue_family_index: u32,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         crate::hooks::queue_family_exists(
             self,
             queue_family_index,
@@ -97,7 +97,7 @@ The caller upholds the rules that [`Self::get_physical_device_win32_presentation
     pub unsafe fn get_physical_device_win32_presentation_support_khr_unchecked(
         &self,
         queue_family_index: u32,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         let fp = self
             .parent()
             .ext()
@@ -107,7 +107,8 @@ The caller upholds the rules that [`Self::get_physical_device_win32_presentation
             .get_physical_device_win32_presentation_support_khr;
         Ok({
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), queue_family_index) }
+            let r = unsafe { fp(self.raw(), queue_family_index) };
+            r != vk::FALSE
         })
     }
 }

@@ -95,7 +95,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
         queue_family_index: u32,
         connection: *mut vk::xcb_connection_t,
         visual_id: vk::xcb_visualid_t,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         let fp = self
             .parent()
             .ext()
@@ -105,7 +105,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             .get_physical_device_xcb_presentation_support_khr;
         Ok({
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), queue_family_index, connection, visual_id) }
+            let r = unsafe { fp(self.raw(), queue_family_index, connection, visual_id) };
+            r != vk::FALSE
         })
     }
 }

@@ -95,7 +95,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
         queue_family_index: u32,
         dpy: *mut vk::Display,
         visual_id: vk::VisualID,
-    ) -> Result<vk::Bool32> {
+    ) -> Result<bool> {
         let fp = self
             .parent()
             .ext()
@@ -105,7 +105,8 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             .get_physical_device_xlib_presentation_support_khr;
         Ok({
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), queue_family_index, dpy, visual_id) }
+            let r = unsafe { fp(self.raw(), queue_family_index, dpy, visual_id) };
+            r != vk::FALSE
         })
     }
 }
