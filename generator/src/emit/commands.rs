@@ -980,8 +980,23 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .zip(&names)
             .filter(|(_, n)| checks.iter().any(|c| c.reads().contains(&n.to_string())))
             .collect();
-        let v_args = read.iter().map(|(a, _)| a);
-        let v_names = read.iter().map(|(_, n)| n);
+        // The checks compare Vulkan's values: a `bool` argument reaches them as the
+        // `VkBool32` the command passes on.
+        let is_bool = |a: &TokenStream| a.to_string().ends_with(": bool");
+        let v_args: Vec<TokenStream> = read
+            .iter()
+            .map(|(a, n)| match is_bool(a) {
+                true => quote!(#n: vk::Bool32),
+                false => (*a).clone(),
+            })
+            .collect();
+        let v_names: Vec<TokenStream> = read
+            .iter()
+            .map(|(a, n)| match is_bool(a) {
+                true => quote!(vk::Bool32::from(#n)),
+                false => (*n).clone(),
+            })
+            .collect();
         let v_lt = if read.iter().any(|(a, _)| names_a(a)) {
             lt.clone()
         } else {
