@@ -258,6 +258,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let mut ret_expr = quote!(());
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
+    // Parameters taken as `bool` for a `VkBool32`, by name.
+    let mut bools: Vec<String> = Vec::new();
     let special = special(&plan.name);
     let same_len = same_len_checks(plan);
     // A recorded command that an always-on check may refuse returns its error.
@@ -345,6 +347,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             // Rust's `bool` where Vulkan has `VkBool32`, as ash's own wrappers do; the
             // body (and the hooks it calls) sees Vulkan's value.
             Param::Value if p.type_name == "VkBool32" => {
+                bools.push(name.to_string());
                 args.push(quote!(#name: bool));
                 pre.push(quote!(let #name = vk::Bool32::from(#name);));
                 call_args.push(quote!(#name,));
@@ -982,17 +985,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .collect();
         // The checks compare Vulkan's values: a `bool` argument reaches them as the
         // `VkBool32` the command passes on.
-        let is_bool = |a: &TokenStream| a.to_string().ends_with(": bool");
+        let is_bool = |n: &TokenStream| bools.contains(&n.to_string());
         let v_args: Vec<TokenStream> = read
             .iter()
-            .map(|(a, n)| match is_bool(a) {
+            .map(|(a, n)| match is_bool(n) {
                 true => quote!(#n: vk::Bool32),
                 false => (*a).clone(),
             })
             .collect();
         let v_names: Vec<TokenStream> = read
             .iter()
-            .map(|(a, n)| match is_bool(a) {
+            .map(|(_, n)| match is_bool(n) {
                 true => quote!(vk::Bool32::from(#n)),
                 false => (*n).clone(),
             })

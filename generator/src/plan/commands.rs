@@ -89,6 +89,18 @@ pub struct Plan {
     pub unlocked: Vec<String>,
 }
 
+impl Plan {
+    /// Whether the caller must vouch for something no check can: a parameter taken
+    /// raw (`Param::Raw`, `Param::RawData`) or a member the wrappers cannot lock.
+    pub fn caller_vouches(&self) -> bool {
+        !self.unlocked.is_empty()
+            || self
+                .params
+                .iter()
+                .any(|p| matches!(p, Param::Raw | Param::RawData))
+    }
+}
+
 /// A slice parameter sized by another's count (C names).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SameLen {

@@ -121,15 +121,8 @@ impl<'c, 'm> Plans<'c, 'm> {
         let records = settle::records(cx, &checker, &commands, &oracle);
         let enabling = safety::enabling(cx, &methods, &records);
         let mut safety = safety::decide(cx, &methods, &records, &enabling);
-        for plan in &ok {
-            if !plan.unlocked.is_empty()
-                || plan
-                    .params
-                    .iter()
-                    .any(|p| matches!(p, commands::Param::Raw | commands::Param::RawData))
-            {
-                safety.entry(plan.name.clone()).or_default().raw = true;
-            }
+        for plan in ok.iter().filter(|p| p.caller_vouches()) {
+            safety.entry(plan.name.clone()).or_default().raw = true;
         }
         let item_of: BTreeMap<&str, &str> = cx
             .validity
