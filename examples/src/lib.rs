@@ -25,8 +25,10 @@ pub mod pipeline;
 pub mod raw_ash;
 pub mod render;
 pub mod scenes;
+pub mod stages;
 pub mod teapot;
 mod teapot_data;
+pub mod teapots_ash;
 pub mod window;
 
 /// The committed SPIR-V of a shader in `shaders/src` (compiled by

@@ -81,6 +81,17 @@ unsafe extern "system" fn on_message(
     vk::FALSE
 }
 
+/// Whether the Khronos validation layer watches a raw-ash run, and how closely.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layer {
+    /// No layer.
+    Off,
+    /// VK_LAYER_KHRONOS_validation with its default checks.
+    On,
+    /// The layer with synchronization validation too.
+    Sync,
+}
+
 /// Renders the scene `make` builds as `common` says, writes the PNG, prints the frame
 /// rate, and fails on any message of the validation layer.
 pub fn run<S: Scene>(
@@ -95,67 +106,30 @@ pub fn run<S: Scene>(
             common.height
         );
     }
-    if common.validate {
-        // Read by the layer when the instance is created; no other thread runs yet.
-        std::env::set_var(
-            "VK_LAYER_ENABLES",
-            "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT",
+    let layer = if common.validate {
+        Layer::Sync
+    } else {
+        Layer::Off
+    };
+    let mut vulkan = Vulkan::open(req, layer, false)?;
+    let limits = vulkan.properties().limits;
+    let largest = limits
+        .max_image_dimension2_d
+        .min(limits.max_framebuffer_width)
+        .min(limits.max_framebuffer_height);
+    if common.width > largest || common.height > largest {
+        bail!(
+            "cannot render a {}x{} image: \"{}\" allows at most {largest} pixels a side",
+            common.width,
+            common.height,
+            vulkan.name
         );
     }
-    // SAFETY: the Vulkan loader is a system library whose initialisation has no
-    // preconditions; the entry outlives the instance.
-    let entry =
-        unsafe { ash::Entry::load() }.context("cannot load the Vulkan loader (libvulkan1)")?;
-    let app = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_3);
-    let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-        .message_severity(
-            vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
-                | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-        )
-        .message_type(
-            vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE
-                | vk::DebugUtilsMessageTypeFlagsEXT::GENERAL,
-        )
-        .pfn_user_callback(Some(on_message));
-    let layers = [c"VK_LAYER_KHRONOS_validation".as_ptr()];
-    let extensions = [ash::ext::debug_utils::NAME.as_ptr()];
-    let mut info = vk::InstanceCreateInfo::default().application_info(&app);
-    if common.validate {
-        info = info
-            .enabled_layer_names(&layers)
-            .enabled_extension_names(&extensions)
-            .push_next(&mut messenger_info);
-    }
-    // SAFETY: the create info and everything it points at live across the call.
-    let instance = unsafe { entry.create_instance(&info, None) }.context(if common.validate {
-        "cannot create a Vulkan instance with VK_LAYER_KHRONOS_validation and \
-         VK_EXT_debug_utils (apt-get install vulkan-validationlayers)"
-    } else {
-        "cannot create a Vulkan instance"
-    })?;
-    let debug_utils = ash::ext::debug_utils::Instance::new(&entry, &instance);
-    let messenger = common
-        .validate
-        .then(|| {
-            // SAFETY: the instance has VK_EXT_debug_utils enabled; the messenger is
-            // destroyed before it.
-            unsafe { debug_utils.create_debug_utils_messenger(&messenger_info, None) }
-        })
-        .transpose();
-    let outcome = messenger
-        .context("vkCreateDebugUtilsMessengerEXT")
-        .and_then(|_| render_on_device(&instance, common, req, make));
-    // SAFETY: render_on_device destroyed the device and all its objects; the messenger
-    // goes before the instance, which goes last.
-    unsafe {
-        if let Ok(Some(messenger)) = messenger {
-            debug_utils.destroy_debug_utils_messenger(messenger, None);
-        }
-        instance.destroy_instance(None);
-    }
-    outcome?;
-    let messages = MESSAGES.lock().map(|m| m.clone()).unwrap_or_default();
+    let rendered = render(&mut vulkan, common, make);
+    let name = vulkan.name.clone();
+    let messages = vulkan.finish();
+    let (rgba, elapsed) = rendered?;
+    let messages = messages?;
     if !messages.is_empty() {
         for m in &messages {
             eprintln!("{m}");
@@ -165,19 +139,229 @@ pub fn run<S: Scene>(
             messages.len()
         );
     }
+    let out = common
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
+    crate::image_file::write_png(&out, common.width, common.height, &rgba)?;
+    let frames = common.frames.max(1);
+    println!(
+        "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
+        req.scene,
+        out.display(),
+        common.width,
+        common.height,
+        frames,
+        elapsed.as_secs_f64(),
+        frames as f64 / elapsed.as_secs_f64().max(1e-9),
+        name
+    );
     Ok(())
 }
 
-/// Opens the device, renders on it, destroys it, and writes the PNG.
-fn render_on_device<S: Scene>(
+/// An instance (with the layer and a messenger when asked), a device with one graphics
+/// queue, and everything made from it in [`Objects`]. Dropping it (or
+/// [`Vulkan::finish`]) waits for the device to be idle and destroys everything, users
+/// before what they use.
+pub struct Vulkan {
+    /// The loader's entry points.
+    pub entry: ash::Entry,
+    /// The instance.
+    pub instance: ash::Instance,
+    debug_utils: ash::ext::debug_utils::Instance,
+    messenger: Option<vk::DebugUtilsMessengerEXT>,
+    /// The physical device.
+    pub physical: vk::PhysicalDevice,
+    /// The device.
+    pub device: ash::Device,
+    /// The graphics queue.
+    pub queue: vk::Queue,
+    /// The queue's family.
+    pub family: u32,
+    /// The physical device's name.
+    pub name: String,
+    /// Everything made from the device, destroyed with it.
+    pub objects: Objects,
+    destroyed: bool,
+}
+
+impl Vulkan {
+    /// Opens the loader, an instance and a device for a scene that needs `req`, with
+    /// the layer as `layer` says; `window` adds the surface and swapchain extensions
+    /// (X11). The device is the one `TUFF_DEVICE` names, or else a discrete GPU, an
+    /// integrated one, anything, in that order, as in the tuff scenes.
+    pub fn open(req: Requirements, layer: Layer, window: bool) -> Result<Vulkan> {
+        if layer != Layer::Off {
+            // Read by the layer when the instance is created; no other thread runs yet.
+            let enables = if layer == Layer::Sync {
+                "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT"
+            } else {
+                ""
+            };
+            std::env::set_var("VK_LAYER_ENABLES", enables);
+        }
+        // SAFETY: the Vulkan loader is a system library whose initialisation has no
+        // preconditions; the entry outlives the instance.
+        let entry =
+            unsafe { ash::Entry::load() }.context("cannot load the Vulkan loader (libvulkan1)")?;
+        let app = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_3);
+        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
+            .message_severity(
+                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING
+                    | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+            )
+            .message_type(
+                vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE
+                    | vk::DebugUtilsMessageTypeFlagsEXT::GENERAL,
+            )
+            .pfn_user_callback(Some(on_message));
+        let layers = [c"VK_LAYER_KHRONOS_validation".as_ptr()];
+        let mut extensions = Vec::new();
+        if layer != Layer::Off {
+            extensions.push(ash::ext::debug_utils::NAME.as_ptr());
+        }
+        if window {
+            extensions.push(ash::khr::surface::NAME.as_ptr());
+            extensions.push(ash::khr::xlib_surface::NAME.as_ptr());
+        }
+        let mut info = vk::InstanceCreateInfo::default()
+            .application_info(&app)
+            .enabled_extension_names(&extensions);
+        if layer != Layer::Off {
+            info = info
+                .enabled_layer_names(&layers)
+                .push_next(&mut messenger_info);
+        }
+        // SAFETY: the create info and everything it points at live across the call.
+        let instance =
+            unsafe { entry.create_instance(&info, None) }.context(if layer != Layer::Off {
+                "cannot create a Vulkan instance with VK_LAYER_KHRONOS_validation and \
+                 VK_EXT_debug_utils (apt-get install vulkan-validationlayers)"
+            } else {
+                "cannot create a Vulkan instance"
+            })?;
+        let debug_utils = ash::ext::debug_utils::Instance::new(&entry, &instance);
+        let messenger = if layer != Layer::Off {
+            // SAFETY: the instance has VK_EXT_debug_utils enabled; the messenger is
+            // destroyed before it.
+            unsafe { debug_utils.create_debug_utils_messenger(&messenger_info, None) }
+                .context("vkCreateDebugUtilsMessengerEXT")
+                .map(Some)
+        } else {
+            Ok(None)
+        };
+        let opened = messenger
+            .as_ref()
+            .map_err(|e| anyhow::anyhow!("{e:#}"))
+            .and_then(|_| open_device(&instance, req, window));
+        match (messenger, opened) {
+            (Ok(messenger), Ok((physical, device, family, name))) => {
+                // SAFETY: the device is live and has a queue of `family` (its create
+                // info asked for one); the physical device is the instance's.
+                let (queue, types) = unsafe {
+                    (
+                        device.get_device_queue(family, 0),
+                        instance.get_physical_device_memory_properties(physical),
+                    )
+                };
+                Ok(Vulkan {
+                    entry,
+                    instance,
+                    debug_utils,
+                    messenger,
+                    physical,
+                    device,
+                    queue,
+                    family,
+                    name,
+                    objects: Objects {
+                        types,
+                        ..Default::default()
+                    },
+                    destroyed: false,
+                })
+            }
+            (messenger, opened) => {
+                // SAFETY: no device was made; the messenger goes before the instance.
+                unsafe {
+                    if let Ok(Some(m)) = messenger {
+                        debug_utils.destroy_debug_utils_messenger(m, None);
+                    }
+                    instance.destroy_instance(None);
+                }
+                Err(opened.err().unwrap_or_else(|| anyhow::anyhow!("no device")))
+            }
+        }
+    }
+
+    /// The physical device's properties.
+    pub fn properties(&self) -> vk::PhysicalDeviceProperties {
+        // SAFETY: the physical device comes from this live instance.
+        unsafe { self.instance.get_physical_device_properties(self.physical) }
+    }
+
+    /// The driver's name and version string (`VkPhysicalDeviceDriverProperties`).
+    pub fn driver(&self) -> String {
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut properties = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        // SAFETY: a Vulkan 1.3 instance; the chain lives across the call.
+        unsafe {
+            self.instance
+                .get_physical_device_properties2(self.physical, &mut properties)
+        };
+        let name = driver.driver_name_as_c_str().unwrap_or_default();
+        let info = driver.driver_info_as_c_str().unwrap_or_default();
+        format!("{} {}", name.to_string_lossy(), info.to_string_lossy())
+    }
+
+    /// Waits for the device, destroys everything, and returns what the layer reported
+    /// over the whole run (an error if the device could not be waited for).
+    pub fn finish(mut self) -> Result<Vec<String>> {
+        let idle = self.destroy();
+        idle?;
+        Ok(MESSAGES.lock().map(|m| m.clone()).unwrap_or_default())
+    }
+
+    fn destroy(&mut self) -> Result<()> {
+        if self.destroyed {
+            return Ok(());
+        }
+        self.destroyed = true;
+        // SAFETY: every object in `objects` was made from the device, which is idle
+        // after the wait (or lost); the messenger goes before the instance, which goes
+        // last; `destroyed` keeps this from running twice.
+        unsafe {
+            let idle = self.device.device_wait_idle().context("vkDeviceWaitIdle");
+            self.objects.destroy(&self.device);
+            self.device.destroy_device(None);
+            if let Some(messenger) = self.messenger.take() {
+                self.debug_utils
+                    .destroy_debug_utils_messenger(messenger, None);
+            }
+            self.instance.destroy_instance(None);
+            idle
+        }
+    }
+}
+
+impl Drop for Vulkan {
+    fn drop(&mut self) {
+        // An error here was already a failed run; `finish` reports it otherwise.
+        let _ = self.destroy();
+    }
+}
+
+/// Picks the physical device (`TUFF_DEVICE` by name, or else a discrete GPU, an
+/// integrated one, anything) and makes a device with one graphics queue.
+fn open_device(
     instance: &ash::Instance,
-    common: &Common,
     req: Requirements,
-    make: impl FnOnce(&ash::Device, &mut Objects, vk::RenderPass) -> Result<S>,
-) -> Result<()> {
-    // SAFETY: the instance is live throughout; the device is destroyed below, once it
+    window: bool,
+) -> Result<(vk::PhysicalDevice, ash::Device, u32, String)> {
+    // SAFETY: the instance is live; the caller destroys the device made here once it
     // is idle and every object made from it is gone.
-    let (name, rendered, idle) = unsafe {
+    unsafe {
         let physicals = instance
             .enumerate_physical_devices()
             .context("vkEnumeratePhysicalDevices")?;
@@ -212,18 +396,6 @@ fn render_on_device<S: Scene>(
                 )?,
         };
         let name: String = name_of(physical);
-        let limits = instance.get_physical_device_properties(physical).limits;
-        let largest = limits
-            .max_image_dimension2_d
-            .min(limits.max_framebuffer_width)
-            .min(limits.max_framebuffer_height);
-        if common.width > largest || common.height > largest {
-            bail!(
-                "cannot render a {}x{} image: \"{name}\" allows at most {largest} pixels a side",
-                common.width,
-                common.height
-            );
-        }
         let family = instance
             .get_physical_device_queue_family_properties(physical)
             .iter()
@@ -238,58 +410,29 @@ fn render_on_device<S: Scene>(
             .tessellation_shader(req.tessellation_shader)
             .fill_mode_non_solid(req.fill_mode_non_solid)
             .robust_buffer_access(req.robust_buffer_access);
+        let swapchain = [ash::khr::swapchain::NAME.as_ptr()];
+        let mut info = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_features(&features);
+        if window {
+            info = info.enabled_extension_names(&swapchain);
+        }
         let device = instance
-            .create_device(
-                physical,
-                &vk::DeviceCreateInfo::default()
-                    .queue_create_infos(&queues)
-                    .enabled_features(&features),
-                None,
-            )
+            .create_device(physical, &info, None)
             .with_context(|| {
                 format!(
                     "cannot create a device on \"{name}\" for the {} scene",
                     req.scene
                 )
             })?;
-        let queue = device.get_device_queue(family, 0);
-        let mut objects = Objects {
-            types: instance.get_physical_device_memory_properties(physical),
-            ..Default::default()
-        };
-        let rendered = render(&device, queue, family, &mut objects, common, make);
-        let idle = device.device_wait_idle();
-        objects.destroy(&device);
-        device.destroy_device(None);
-        (name, rendered, idle)
-    };
-    let (rgba, elapsed) = rendered?;
-    idle.context("vkDeviceWaitIdle")?;
-    let out = common
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
-    crate::image_file::write_png(&out, common.width, common.height, &rgba)?;
-    let frames = common.frames.max(1);
-    println!(
-        "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
-        req.scene,
-        out.display(),
-        common.width,
-        common.height,
-        frames,
-        elapsed.as_secs_f64(),
-        frames as f64 / elapsed.as_secs_f64().max(1e-9),
-        name
-    );
-    Ok(())
+        Ok((physical, device, family, name))
+    }
 }
-
 /// Everything made from the device, null until made, and the device's memory types.
 #[derive(Default)]
 pub struct Objects {
-    types: vk::PhysicalDeviceMemoryProperties,
-    render_pass: vk::RenderPass,
+    pub(crate) types: vk::PhysicalDeviceMemoryProperties,
+    pub(crate) render_pass: vk::RenderPass,
     /// Descriptor set layouts, which the scenes make themselves.
     pub set_layouts: Vec<vk::DescriptorSetLayout>,
     pipeline_layouts: Vec<vk::PipelineLayout>,
@@ -301,11 +444,11 @@ pub struct Objects {
     images: Vec<vk::Image>,
     memories: Vec<vk::DeviceMemory>,
     views: Vec<vk::ImageView>,
-    framebuffers: Vec<vk::Framebuffer>,
-    command_pool: vk::CommandPool,
-    fences: Vec<vk::Fence>,
+    pub(crate) framebuffers: Vec<vk::Framebuffer>,
+    pub(crate) command_pool: vk::CommandPool,
+    pub(crate) fences: Vec<vk::Fence>,
+    pub(crate) semaphores: Vec<vk::Semaphore>,
 }
-
 impl Objects {
     /// Destroys everything, users before what they use (null handles are no-ops).
     ///
@@ -318,6 +461,9 @@ impl Objects {
         unsafe {
             for &fence in &self.fences {
                 device.destroy_fence(fence, None);
+            }
+            for &semaphore in &self.semaphores {
+                device.destroy_semaphore(semaphore, None);
             }
             device.destroy_command_pool(self.command_pool, None);
             for &framebuffer in &self.framebuffers {
@@ -439,7 +585,7 @@ impl Objects {
     }
 
     /// A 2D image with memory of its own, and a view of all of it.
-    fn image(
+    pub(crate) fn image(
         &mut self,
         device: &ash::Device,
         extent: vk::Extent2D,
@@ -624,18 +770,24 @@ impl Objects {
     }
 }
 
-/// A render pass that clears a color attachment (and a depth attachment), stores the
-/// color and leaves it ready to be copied out.
-fn render_pass(device: &ash::Device, depth: bool) -> Result<vk::RenderPass> {
+/// A render pass that clears a color attachment of `format` (and a depth attachment),
+/// stores the color and leaves it in `final_layout`: ready to be copied out, or
+/// presented. The same dependencies serve both, as in the tuff scenes' render pass.
+pub fn render_pass(
+    device: &ash::Device,
+    format: vk::Format,
+    depth: bool,
+    final_layout: vk::ImageLayout,
+) -> Result<vk::RenderPass> {
     let mut attachments = vec![vk::AttachmentDescription {
-        format: COLOR_FORMAT,
+        format,
         samples: vk::SampleCountFlags::TYPE_1,
         load_op: vk::AttachmentLoadOp::CLEAR,
         store_op: vk::AttachmentStoreOp::STORE,
         stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
         stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
         initial_layout: vk::ImageLayout::UNDEFINED,
-        final_layout: vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+        final_layout,
         ..Default::default()
     }];
     if depth {
@@ -709,20 +861,30 @@ fn render_pass(device: &ash::Device, depth: bool) -> Result<vk::RenderPass> {
 /// reads the last one back: its pixels, and the time from the first recording to the
 /// last completion.
 fn render<S: Scene>(
-    device: &ash::Device,
-    queue: vk::Queue,
-    family: u32,
-    o: &mut Objects,
+    vulkan: &mut Vulkan,
     common: &Common,
     make: impl FnOnce(&ash::Device, &mut Objects, vk::RenderPass) -> Result<S>,
 ) -> Result<(Vec<u8>, Duration)> {
+    let Vulkan {
+        device,
+        queue,
+        family,
+        objects: o,
+        ..
+    } = vulkan;
+    let (queue, family) = (*queue, *family);
     let extent = vk::Extent2D {
         width: common.width,
         height: common.height,
     };
     let area: vk::Rect2D = extent.into();
     let frames = common.frames.max(1);
-    let pass = render_pass(device, S::DEPTH)?;
+    let pass = render_pass(
+        device,
+        COLOR_FORMAT,
+        S::DEPTH,
+        vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+    )?;
     o.render_pass = pass;
     let mut scene = make(device, o, pass)?;
     // SAFETY: every create info and what it points at lives across its call; each

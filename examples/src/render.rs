@@ -235,41 +235,49 @@ pub fn record_frame<S: Scene>(
     scene.draw(&mut rec, view)?;
     let mut rec = rec.cmd_end_render_pass();
     if let Some((image, buffer)) = readback {
-        // The whole color image, in TRANSFER_SRC_OPTIMAL after the render pass, into a
-        // readback buffer of exactly its size.
-        rec.cmd_copy_image_to_buffer(
-            image,
-            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-            buffer,
-            &[vk::BufferImageCopy {
-                image_subresource: vk::ImageSubresourceLayers {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    mip_level: 0,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                },
-                image_extent: view.extent.into(),
-                ..Default::default()
-            }],
-        )?;
-        // A fence wait does not make device writes visible to the host; this does.
-        let to_host = [tuff::BufferMemoryBarrier::new(buffer)
-            .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
-            .dst_access_mask(vk::AccessFlags::HOST_READ)
-            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .offset(0)
-            .size(vk::WHOLE_SIZE)];
-        // The copy's writes, made visible to the host that reads the buffer.
-        rec.cmd_pipeline_barrier(
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::HOST,
-            vk::DependencyFlags::empty(),
-            &[],
-            &to_host,
-            &[],
-        )?;
+        record_readback(&mut rec, image, buffer, view.extent)?;
     }
     rec.end()?;
     Ok(())
+}
+
+/// Records the copy of the whole color image of `extent` (in TRANSFER_SRC_OPTIMAL) into
+/// `buffer`, tightly packed, and the barrier that makes it visible to the host.
+pub fn record_readback(
+    rec: &mut tuff::Recorder<'_, tuff::Outside>,
+    image: &tuff::Image,
+    buffer: &tuff::Buffer,
+    extent: vk::Extent2D,
+) -> tuff::Result<()> {
+    rec.cmd_copy_image_to_buffer(
+        image,
+        vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+        buffer,
+        &[vk::BufferImageCopy {
+            image_subresource: vk::ImageSubresourceLayers {
+                aspect_mask: vk::ImageAspectFlags::COLOR,
+                mip_level: 0,
+                base_array_layer: 0,
+                layer_count: 1,
+            },
+            image_extent: extent.into(),
+            ..Default::default()
+        }],
+    )?;
+    // A fence wait does not make device writes visible to the host; this does.
+    let to_host = [tuff::BufferMemoryBarrier::new(buffer)
+        .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+        .dst_access_mask(vk::AccessFlags::HOST_READ)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .offset(0)
+        .size(vk::WHOLE_SIZE)];
+    rec.cmd_pipeline_barrier(
+        vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::HOST,
+        vk::DependencyFlags::empty(),
+        &[],
+        &to_host,
+        &[],
+    )
 }

@@ -5,6 +5,7 @@
 use crate::cli::Common;
 use crate::gpu::Gpu;
 use crate::render::{self, Framebuffers, Scene, View, FRAMES_IN_FLIGHT};
+use crate::stages::{Samples, Stage, Timer};
 use anyhow::{anyhow, bail, Context as _, Result};
 use std::time::Instant;
 use tuff::vk;
@@ -48,6 +49,17 @@ pub fn run<S: Scene>(
     common: &Common,
     make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
 ) -> Result<()> {
+    run_timed(gpu, common, make, 0).map(|_| ())
+}
+
+/// [`run`], timing each drawn frame's stages (see [`crate::stages`]); the first
+/// `warmup` drawn frames are not kept.
+pub fn run_timed<S: Scene>(
+    gpu: &Gpu,
+    common: &Common,
+    make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
+    warmup: u32,
+) -> Result<Samples> {
     let event_loop = EventLoop::new().context(
         "cannot open a window: no X server (set DISPLAY, or run headless without --window)",
     )?;
@@ -58,12 +70,14 @@ pub fn run<S: Scene>(
         make,
         live: None,
         error: None,
+        samples: Samples::new(warmup),
+        timer: Timer::default(),
     };
     event_loop.run_app(&mut app)?;
     if let Some(e) = app.error {
         return Err(e);
     }
-    Ok(())
+    Ok(app.samples)
 }
 
 /// The window's state once it exists. Field order is drop order: everything made
@@ -104,6 +118,8 @@ struct App<'g, S, F> {
     make: F,
     live: Option<Live<S>>,
     error: Option<anyhow::Error>,
+    samples: Samples,
+    timer: Timer,
 }
 
 impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
@@ -175,7 +191,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
 }
 
 /// A composite alpha mode the surface supports, opaque where it can be.
-fn composite_alpha(supported: vk::CompositeAlphaFlagsKHR) -> vk::CompositeAlphaFlagsKHR {
+pub fn composite_alpha(supported: vk::CompositeAlphaFlagsKHR) -> vk::CompositeAlphaFlagsKHR {
     [
         vk::CompositeAlphaFlagsKHR::OPAQUE,
         vk::CompositeAlphaFlagsKHR::INHERIT,
@@ -291,13 +307,17 @@ impl<S: Scene> Live<S> {
     }
 
     /// Draws and presents one frame, or nothing while the window has no area.
-    fn draw(&mut self, gpu: &Gpu) -> Result<bool> {
+    fn draw(&mut self, gpu: &Gpu, timer: &mut Timer) -> Result<bool> {
+        timer.start();
         let Some(extent) = self.refresh(gpu)? else {
             self.paused_frames += 1;
             self.paused = true;
             return Ok(false);
         };
+        // A recreated swapchain counts as acquiring.
+        timer.lap(Stage::Acquire);
         let mut frame = self.frames.next_frame()?;
+        timer.lap(Stage::Wait);
         let acquired = &self.acquired[frame.index];
         let swapchain = self.swapchain.as_ref().context("no swapchain")?;
         let index =
@@ -315,12 +335,14 @@ impl<S: Scene> Live<S> {
                 }
                 Err(e) => return Err(e.into()),
             };
+        timer.lap(Stage::Acquire);
         let view = View {
             extent,
             time: self.start.elapsed().as_secs_f32(),
             slot: frame.index,
         };
         self.scene.update(&view)?;
+        timer.lap(Stage::Uniform);
         let framebuffers = self.framebuffers.as_ref().context("no framebuffers")?;
         let framebuffer = &framebuffers.framebuffers[index];
         render::record_frame(
@@ -331,9 +353,11 @@ impl<S: Scene> Live<S> {
             &view,
             None,
         )?;
+        timer.lap(Stage::Command);
         let stage = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
         let rendered = &self.rendered[index];
         frame.submit(&gpu.queue, &[(acquired, stage)], &[rendered])?;
+        timer.lap(Stage::Submit);
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
         let signals = tuff::HandleSlice::new(&[rendered]);
@@ -346,6 +370,7 @@ impl<S: Scene> Live<S> {
             Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,
             Err(e) => return Err(e.into()),
         }
+        timer.lap(Stage::Present);
         self.frame += 1;
         Ok(true)
     }
@@ -376,7 +401,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                 live.paused = false;
             }
             WindowEvent::RedrawRequested => {
-                let drawn = match live.draw(self.gpu) {
+                let drawn = match live.draw(self.gpu, &mut self.timer) {
                     Ok(drawn) => drawn,
                     Err(e) => {
                         self.error = Some(e);
@@ -387,6 +412,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                 let common = self.common;
                 if drawn {
                     live.frames_since_request += 1;
+                    self.samples.push(&self.timer);
                 }
                 // Scripted resizes, for tests: wait a few frames between them.
                 if common.resizes > 0 {

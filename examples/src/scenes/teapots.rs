@@ -26,6 +26,8 @@ pub struct Teapots {
     pipeline_layout: tuff::PipelineLayout,
     sets: Vec<tuff::DescriptorSet>,
     uniforms: Vec<tuff::Bound<tuff::Buffer>>,
+    /// Camera blocks written per frame (the shaders read the first).
+    writes: u64,
     vertices: tuff::Bound<tuff::Buffer>,
     indices: tuff::Bound<tuff::Buffer>,
     index_count: u32,
@@ -34,6 +36,19 @@ pub struct Teapots {
 impl Teapots {
     /// Builds the scene for `render_pass`.
     pub fn new(gpu: &Gpu, render_pass: &tuff::RenderPass, layout: Layout) -> Result<Teapots> {
+        Teapots::with_writes(gpu, render_pass, layout, 1)
+    }
+
+    /// Builds the scene for `render_pass`; each frame writes its camera block `writes`
+    /// times (at least once), into consecutive blocks of its uniform buffer, as the
+    /// stage benchmark measures.
+    pub fn with_writes(
+        gpu: &Gpu,
+        render_pass: &tuff::RenderPass,
+        layout: Layout,
+        writes: u64,
+    ) -> Result<Teapots> {
+        let writes = writes.max(1);
         let (d, a) = (&gpu.device, &gpu.allocator);
         let vert = crate::shader(d, crate::spirv!("teapot.vert"))?;
         let frag = crate::shader(d, crate::spirv!("teapot.frag"))?;
@@ -84,7 +99,7 @@ impl Teapots {
         )?;
         let size = std::mem::size_of::<CameraBlock>() as u64;
         let uniforms = (0..FRAMES_IN_FLIGHT)
-            .map(|_| gpu.buffer(size, vk::BufferUsageFlags::UNIFORM_BUFFER, Upload))
+            .map(|_| gpu.buffer(size * writes, vk::BufferUsageFlags::UNIFORM_BUFFER, Upload))
             .collect::<Result<Vec<_>>>()?;
         for (set, buffer) in sets.iter().zip(&uniforms) {
             let info = [tuff::DescriptorBufferInfo::new()
@@ -106,6 +121,7 @@ impl Teapots {
             pipeline_layout,
             sets,
             uniforms,
+            writes,
             vertices,
             indices,
             index_count: index_data.len() as u32,
@@ -120,7 +136,11 @@ impl Scene for Teapots {
 
     fn update(&mut self, view: &View) -> Result<()> {
         let block = self.layout_data.camera(view.extent);
-        self.uniforms[view.slot].memory().write_value(0, &block)?;
+        let memory = self.uniforms[view.slot].memory();
+        let size = std::mem::size_of::<CameraBlock>() as u64;
+        for i in 0..self.writes {
+            memory.write_value(i * size, &block)?;
+        }
         Ok(())
     }
 

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The stage benchmark (issue: what safety costs per frame stage). Builds the `stages`
+# binary three times (plain, with `multi_thread`, with `implicit_checks`), runs every
+# variant over every configuration interleaved, and writes docs/stages/<label>.csv,
+# .md and -<mode>.svg. Then times a full regeneration and, unless STAGES_NO_COMPILE=1,
+# the clean compile of tuff against ash (scripts/compile-time.sh).
+#
+#   bash scripts/stage-bench.sh [label] [stages bench options...]
+#
+# Label defaults to `lavapipe`, which runs on Mesa lavapipe (TUFF_DEVICE=llvmpipe),
+# headless and in a window under Xvfb. Options go to `stages bench` (see --help),
+# e.g. `--rounds 1 --frames 20` for a quick look.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+. scripts/install-deps.sh
+[ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
+label=${1:-lavapipe}
+shift || true
+mkdir -p target/stages
+build() {
+    cargo build -q --release -p tuff-examples --bin stages "$@"
+    cp target/release/stages "target/stages/stages$suffix"
+}
+suffix=-mt build --features multi_thread
+suffix=-checks build --features implicit_checks
+suffix= build
+extra=()
+if [ "$label" = lavapipe ]; then
+    export TUFF_DEVICE=llvmpipe
+    . scripts/xvfb.sh
+    extra+=(--window)
+fi
+target/stages/stages bench --out docs/stages --label "$label" \
+    --mt target/stages/stages-mt --checks target/stages/stages-checks "${extra[@]}" "$@"
+# The generator's full run (regenerate into a scratch folder), and the clean compile
+# of the generated crate against ash alone.
+cargo build -q --release -p tuff-gen
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+start=$(date +%s.%N)
+target/release/tuff-gen --out "$scratch/generated" > /dev/null
+end=$(date +%s.%N)
+python3 -c "import sys; print(f'\nRegeneration (\\\`target/release/tuff-gen --out DIR\\\`, release build): {float(sys.argv[2]) - float(sys.argv[1]):.1f} s\n')" "$start" "$end" | tee -a "docs/stages/$label.md"
+if [ "${STAGES_NO_COMPILE:-0}" != 1 ]; then
+    bash scripts/compile-time.sh | tee -a "docs/stages/$label.md"
+fi
