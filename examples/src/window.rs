@@ -49,7 +49,7 @@ pub fn run<S: Scene>(
     common: &Common,
     make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
 ) -> Result<()> {
-    run_timed(gpu, common, make, 0).map(|_| ())
+    run_with(gpu, common, make, 0, true).map(|_| ())
 }
 
 /// [`run`], timing each drawn frame's stages (see [`crate::stages`]); the first
@@ -59,6 +59,17 @@ pub fn run_timed<S: Scene>(
     common: &Common,
     make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
     warmup: u32,
+) -> Result<Samples> {
+    run_with(gpu, common, make, warmup, false)
+}
+
+/// [`run_timed`], printing what happened at the end when `report` is set.
+fn run_with<S: Scene>(
+    gpu: &Gpu,
+    common: &Common,
+    make: impl Fn(&Gpu, &tuff::RenderPass) -> Result<S>,
+    warmup: u32,
+    report: bool,
 ) -> Result<Samples> {
     let event_loop = EventLoop::new().context(
         "cannot open a window: no X server (set DISPLAY, or run headless without --window)",
@@ -72,6 +83,7 @@ pub fn run_timed<S: Scene>(
         error: None,
         samples: Samples::new(warmup),
         timer: Timer::default(),
+        report,
     };
     event_loop.run_app(&mut app)?;
     if let Some(e) = app.error {
@@ -120,6 +132,8 @@ struct App<'g, S, F> {
     error: Option<anyhow::Error>,
     samples: Samples,
     timer: Timer,
+    /// Print the frame count, resizes and extents at the end.
+    report: bool,
 }
 
 impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
@@ -461,6 +475,9 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
         // Nothing may go while the GPU or the presentation engine still uses it.
         if let Err(e) = self.gpu.device.device_wait_idle() {
             self.error.get_or_insert(e.into());
+        }
+        if !self.report {
+            return;
         }
         let seconds = live.start.elapsed().as_secs_f64();
         println!(

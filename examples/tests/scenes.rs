@@ -394,3 +394,119 @@ fn every_scene_survives_twenty_window_resizes() {
         }
     }
 }
+
+/// Both frame loops of the stage benchmark draw valid frames: tuff's and raw ash's,
+/// headless and in a window, under the layer with synchronization validation.
+#[test]
+fn the_stage_benchmark_loops_are_valid_vulkan() {
+    let stages = env!("CARGO_BIN_EXE_stages");
+    for variant in ["tuff", "ash"] {
+        for window in [false, true] {
+            let mut args = vec![
+                "run",
+                "--variant",
+                variant,
+                "--count",
+                "3",
+                "--writes",
+                "4",
+                "--frames",
+                "4",
+                "--warmup",
+                "1",
+                "--size",
+                "32",
+                "--validate",
+            ];
+            if window {
+                args.push("--window");
+            }
+            let out = run(stages, &args);
+            let timed: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
+            assert_eq!(
+                timed.len(),
+                4,
+                "{variant} window={window}: four timed frames:\n{out}"
+            );
+            for line in timed {
+                let times: Vec<u64> = line.split(',').map(|t| t.parse().expect("ns")).collect();
+                assert_eq!(times.len(), 6, "{line}");
+                // Uniform, command, submit and present each took some time; acquire
+                // only in a window.
+                assert!(times[2..].iter().all(|&t| t > 0), "{variant}: {line}");
+                assert_eq!(times[1] > 0, window, "{variant} acquire: {line}");
+            }
+        }
+    }
+}
+
+/// `stages bench` interleaves the variants this build has (raw ash, tuff, and raw ash
+/// under the layer) and writes the samples, the tables and the charts; a variant that
+/// needs another build is refused by name.
+#[test]
+fn the_stage_benchmark_writes_its_tables() {
+    let stages = env!("CARGO_BIN_EXE_stages");
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().to_str().expect("utf-8 temp path");
+    let text = run(
+        stages,
+        &[
+            "bench",
+            "--out",
+            out,
+            "--label",
+            "test",
+            "--rounds",
+            "2",
+            "--counts",
+            "1",
+            "--many-writes",
+            "3",
+            "--frames",
+            "2",
+            "--warmup",
+            "1",
+            "--size",
+            "16",
+            "--window",
+        ],
+    );
+    let csv = std::fs::read_to_string(dir.path().join("test.csv")).expect("the CSV");
+    let rows = tuff_examples::stages::report::parse_csv(&csv).expect("a CSV it can read");
+    // 2 rounds x 2 modes x 2 configurations x 4 variants x 2 frames.
+    assert_eq!(rows.len(), 64, "{csv}");
+    for variant in ["ash", "tuff", "ash-layer", "ash-sync"] {
+        assert_eq!(
+            rows.iter().filter(|r| r.variant == variant).count(),
+            16,
+            "{variant}"
+        );
+    }
+    assert!(csv.contains("# device: llvmpipe"), "{csv}");
+    let md = std::fs::read_to_string(dir.path().join("test.md")).expect("the tables");
+    assert_eq!(
+        md.matches("| Stage | raw ash | tuff | ash + layer | ash + layer + sync |")
+            .count(),
+        4,
+        "{md}"
+    );
+    assert!(
+        md.contains("**window, 100 teapots, 3 uniform writes per frame**"),
+        "{md}"
+    );
+    assert!(text.contains("| present |"), "{text}");
+    for mode in ["headless", "window"] {
+        let svg =
+            std::fs::read_to_string(dir.path().join(format!("test-{mode}.svg"))).expect("a chart");
+        assert!(svg.starts_with("<svg") && svg.contains("<rect x="), "{svg}");
+    }
+    let mut refused = scene(stages);
+    refused.args(["run", "--variant", "tuff-mt", "--frames", "1"]);
+    let output = output(refused);
+    assert!(!output.status.success());
+    let err = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        err.contains("variant tuff-mt needs a build with multi_thread=true"),
+        "{err}"
+    );
+}

@@ -100,6 +100,10 @@ struct RunArgs {
     size: u32,
     #[arg(long)]
     window: bool,
+    /// Check the run itself: the validation layer with synchronization validation on
+    /// for tuff and raw ash alike (any message fails the run). Not for timing.
+    #[arg(long)]
+    validate: bool,
 }
 
 fn main() -> std::process::ExitCode {
@@ -190,7 +194,14 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
     let samples = if variant.starts_with("tuff") {
         let mut req = tuff_examples::scenes::teapots::REQUIREMENTS;
         req.window = run.window;
-        let gpu = Gpu::new(req, false)?;
+        if a.validate {
+            // Read by the layer when the instance is created; no other thread runs yet.
+            std::env::set_var(
+                "VK_LAYER_ENABLES",
+                "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT",
+            );
+        }
+        let gpu = Gpu::new(req, a.validate)?;
         println!("# device: {}", gpu.name);
         let samples = if run.window {
             let common = tuff_examples::cli::Common {
@@ -215,10 +226,12 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         } else {
             tuff_frames::headless(&gpu, &run)?
         };
-        gpu.finish();
+        let messages = gpu.finish();
+        fail_on_messages(&messages)?;
         samples
     } else {
         let layer = match variant {
+            _ if a.validate => Layer::Sync,
             "ash-layer" => Layer::On,
             "ash-sync" => Layer::Sync,
             _ => Layer::Off,
@@ -249,6 +262,20 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         println!("{}", times.join(","));
     }
     Ok(())
+}
+
+/// Fails when the validation layer reported anything, printing what it said.
+fn fail_on_messages(messages: &[String]) -> Result<()> {
+    if messages.is_empty() {
+        return Ok(());
+    }
+    for m in messages {
+        eprintln!("{m}");
+    }
+    bail!(
+        "the validation layer reported {} message(s) (above)",
+        messages.len()
+    )
 }
 
 struct Plan {
