@@ -9,7 +9,9 @@
 #
 # Label defaults to `lavapipe`, which runs on Mesa lavapipe (TUFF_DEVICE=llvmpipe),
 # headless and in a window under Xvfb. Options go to `stages bench` (see --help),
-# e.g. `--rounds 1 --frames 20` for a quick look.
+# e.g. `--rounds 1 --frames 20` for a quick look. STAGES_BUILD_ONLY=1 only builds
+# target/stages/stages{,-mt,-checks}, to carry to a machine without Rust (README.md
+# says how the GPU tables were made).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
@@ -24,6 +26,9 @@ build() {
 suffix=-mt build --features multi_thread
 suffix=-checks build --features implicit_checks
 suffix= build
+if [ "${STAGES_BUILD_ONLY:-0}" = 1 ]; then
+    exit 0
+fi
 extra=()
 if [ "$label" = lavapipe ]; then
     export TUFF_DEVICE=llvmpipe
@@ -40,7 +45,7 @@ trap 'rm -rf "$scratch"' EXIT
 start=$(date +%s.%N)
 target/release/tuff-gen --out "$scratch/generated" > /dev/null
 end=$(date +%s.%N)
-python3 -c "import sys; print(f'\nRegeneration (\\\`target/release/tuff-gen --out DIR\\\`, release build): {float(sys.argv[2]) - float(sys.argv[1]):.1f} s\n')" "$start" "$end" | tee -a "docs/stages/$label.md"
+python3 -c "import sys; print(f'\nRegeneration (\`target/release/tuff-gen --out DIR\`, release build): {float(sys.argv[2]) - float(sys.argv[1]):.1f} s\n')" "$start" "$end" | tee -a "docs/stages/$label.md"
 if [ "${STAGES_NO_COMPILE:-0}" != 1 ]; then
     bash scripts/compile-time.sh | tee -a "docs/stages/$label.md"
 fi

@@ -383,6 +383,15 @@ fn bench(
 fn write_reports(out: &std::path::Path, label: &str, head: &str, rows: &[Row]) -> Result<()> {
     let info: Vec<&str> = head.lines().map(|l| l.trim_start_matches("# ")).collect();
     let mut md = format!("Stage benchmark on {label} ({}).\n", info.join("; "));
+    for mode in ["headless", "window"] {
+        if rows.iter().any(|r| r.mode == mode) {
+            md.push_str(&format!(
+                "\nMedians, {mode} (raw ash's time; the others as a ratio to it):\n\n"
+            ));
+            md.push_str(&report::compact(rows, mode));
+        }
+    }
+    md.push_str("\nEach configuration: median and 90th percentile per stage, the others' ratios to raw ash's, and their own medians.\n");
     md.push_str(&report::markdown(rows));
     write_file(&out.join(format!("{label}.md")), &md)?;
     for mode in ["headless", "window"] {

@@ -186,6 +186,19 @@ pub fn time(ns: u64) -> String {
     }
 }
 
+/// Frames per second of a frame of `ns` nanoseconds: whole frames from 100 up, three
+/// significant figures below.
+fn fps(ns: u64) -> String {
+    let f = 1e9 / ns.max(1) as f64;
+    if f >= 100.0 {
+        format!("{f:.0}")
+    } else if f >= 10.0 {
+        format!("{f:.1}")
+    } else {
+        format!("{f:.2}")
+    }
+}
+
 /// The Markdown tables: one per configuration, a row per stage, a column per variant
 /// present. Raw ash's cells give its median and p90; the others' their ratio to raw
 /// ash's median and p90, then their own median. Wait, acquire and the whole frame
@@ -219,7 +232,7 @@ pub fn markdown(rows: &[Row]) -> String {
             for (v, _) in &present {
                 let s = variants[*v][i];
                 let cell = match (base, *v == "ash") {
-                    _ if fps => format!("{:.0}", 1e9 / s.median.max(1) as f64),
+                    _ if fps => self::fps(s.median),
                     (_, true) | (None, _) => format!("{} (p90 {})", time(s.median), time(s.p90)),
                     (Some(b), false) => format!(
                         "{:.2}x (p90 {:.2}x), {}",
@@ -242,6 +255,66 @@ pub fn markdown(rows: &[Row]) -> String {
         }
         line("*whole frame*", 6, false);
         line("*frames/s (median frame)*", 6, true);
+    }
+    md
+}
+
+/// One table of a mode's configurations: a row per stage of each teapot count (and
+/// the uniform stage of the many-writes run), raw ash's median time, every other
+/// variant's median as a ratio to it; then frames per second (of the median frame)
+/// per configuration. What README.md shows; [`markdown`] has the rest.
+pub fn compact(rows: &[Row], mode: &str) -> String {
+    let summary = summarise(rows);
+    let configs: Vec<(&Config, &BTreeMap<String, [Stat; 7]>)> =
+        summary.iter().filter(|((m, _, _), _)| m == mode).collect();
+    let present: Vec<(&str, &str)> = VARIANTS
+        .iter()
+        .copied()
+        .filter(|(v, _)| configs.iter().any(|(_, vs)| vs.contains_key(*v)))
+        .collect();
+    let mut md = String::new();
+    let heads: Vec<&str> = present.iter().map(|p| p.1).collect();
+    let _ = writeln!(md, "| Stage | Teapots | {} |", heads.join(" | "));
+    let _ = writeln!(md, "|---|---:|{}", "---:|".repeat(present.len()));
+    let mut line = |label: String, count: String, cells: Vec<String>| {
+        let _ = writeln!(md, "| {label} | {count} | {} |", cells.join(" | "));
+    };
+    for stage in Stage::TABLE {
+        let i = Stage::ALL.iter().position(|s| *s == stage).unwrap_or(0);
+        for ((_, count, writes), variants) in &configs {
+            if *writes > 1 && stage != Stage::Uniform {
+                continue;
+            }
+            let base = variants.get("ash").map(|b| b[i].median);
+            let cells = present
+                .iter()
+                .map(|(v, _)| match (variants.get(*v), base) {
+                    (Some(s), Some(b)) if *v != "ash" => {
+                        format!("{:.2}x ({})", ratio(s[i].median, b), time(s[i].median))
+                    }
+                    (Some(s), _) => time(s[i].median),
+                    (None, _) => "-".into(),
+                })
+                .collect();
+            let label = if *writes > 1 {
+                format!("{} ({writes} writes)", stage.name())
+            } else {
+                stage.name().to_owned()
+            };
+            line(label, count.to_string(), cells);
+        }
+    }
+    for ((_, count, writes), variants) in &configs {
+        let cells = present
+            .iter()
+            .map(|(v, _)| variants.get(*v).map_or("-".into(), |s| fps(s[6].median)))
+            .collect();
+        let label = if *writes > 1 {
+            format!("frames/s ({writes} writes)")
+        } else {
+            "frames/s".to_owned()
+        };
+        line(label, count.to_string(), cells);
     }
     md
 }
@@ -425,6 +498,12 @@ mod tests {
             md.contains("| command | 1.00 µs (p90 1.00 µs) | 1.10x (p90 1.10x), 1.10 µs |"),
             "{md}"
         );
+        let table = compact(&rows, "headless");
+        assert!(
+            table.contains("| uniform | 100 | 0.10 µs | 2.00x (0.21 µs) |"),
+            "{table}"
+        );
+        assert!(table.contains("| frames/s | 100 |"), "{table}");
         let svg = svg(&rows, "headless", "a <title>");
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
         assert!(svg.contains("a &lt;title&gt;"));
