@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: regenerate generated/ and its validation coverage report from the
 # pinned registry (vk.xml and validusage.json at the repository root), then render
-# the three scenes headless on the Vulkan device (lavapipe on a machine without a
+# the scenes headless on the Vulkan device (lavapipe on a machine without a
 # GPU), print their frame rates, and measure what tessellation accuracy costs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,8 +14,10 @@ echo "main-job: coverage report in generated/VALIDATION.md, generated/validation
 cargo build --release -q -p tuff-examples --bins
 mkdir -p out
 # 60 frames each at 512x512; the PNG is the last frame.
-for scene in triangle teapots bezier; do
+for scene in triangle teapots bezier textured_quad; do
     "target/release/$scene" --frames 60 --width 512 --height 512 --out "out/$scene.png"
 done
+# The compute example: a million sums on the device, each checked on the host.
+target/release/compute
 target/release/bezier_levels --size 512 --frames 30 --svg out/bezier-levels.svg
-echo "main-job: scenes in $(pwd)/out/triangle.png, $(pwd)/out/teapots.png and $(pwd)/out/bezier.png"
+echo "main-job: scenes in $(pwd)/out/triangle.png, $(pwd)/out/teapots.png, $(pwd)/out/bezier.png and $(pwd)/out/textured_quad.png"

@@ -1433,3 +1433,111 @@ fn a_render_pass_of_another_device_is_refused() {
     assert_silent(&s.messages);
     assert_silent(&other.messages);
 }
+
+/// `Queue::upload_image` copies the bytes into the image and leaves it in the layout
+/// asked for, through the transitions `Recorder::transition_image` records; what comes
+/// back from the image is what went in, and the layer (with synchronization
+/// validation) has nothing to say.
+#[test]
+fn an_upload_leaves_its_bytes_in_the_image_in_the_layout_asked_for() {
+    let s = setup(true);
+    let usage = vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::TRANSFER_SRC;
+    let (img, _memory) = image(
+        &s,
+        vk::Format::R8G8B8A8_UNORM,
+        vk::SampleCountFlags::TYPE_1,
+        usage,
+    );
+    let allocator = s.device.gpu_allocator().expect("allocator");
+    let bytes: Vec<u8> = (0..SIDE * SIDE * 4).map(|i| (i * 7 % 251) as u8).collect();
+    let color = vk::ImageAspectFlags::COLOR;
+    s.queue
+        .upload_image(&img, color, &bytes, SRC, &allocator)
+        .expect("upload");
+    let (back, back_memory) =
+        host_buffer(&s, bytes.len() as u64, vk::BufferUsageFlags::TRANSFER_DST);
+    let region = vk::BufferImageCopy {
+        image_subresource: vk::ImageSubresourceLayers {
+            aspect_mask: color,
+            mip_level: 0,
+            base_array_layer: 0,
+            layer_count: 1,
+        },
+        image_extent: vk::Extent3D {
+            width: SIDE,
+            height: SIDE,
+            depth: 1,
+        },
+        ..Default::default()
+    };
+    // The image is in SRC now: a copy that says so is accepted at submission, and
+    // `submit_and_wait` hands back what the recording returned.
+    let answer = s
+        .queue
+        .submit_and_wait(|rec| {
+            rec.cmd_copy_image_to_buffer(&img, SRC, &back, &[region])?;
+            let to_host = tuff::MemoryBarrier::new()
+                .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+                .dst_access_mask(vk::AccessFlags::HOST_READ);
+            rec.cmd_pipeline_barrier(
+                vk::PipelineStageFlags::TRANSFER,
+                vk::PipelineStageFlags::HOST,
+                vk::DependencyFlags::empty(),
+                &[to_host],
+                &[],
+                &[],
+            )?;
+            Ok(42)
+        })
+        .expect("copy back");
+    assert_eq!(answer, 42);
+    let mapped = back_memory.map().expect("map");
+    assert_eq!(mapped.read::<u8>(0, bytes.len()).expect("read"), bytes);
+    drop(mapped);
+    assert_silent(&s.messages);
+}
+
+/// A transition from a layout the image is not in is refused when it is submitted,
+/// and so is an upload of fewer bytes than the image holds (by the copy's check,
+/// before anything is submitted); neither leaves the queue waiting.
+#[test]
+fn helpers_refuse_a_wrong_layout_and_too_few_bytes() {
+    let s = setup(true);
+    let usage = vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::TRANSFER_SRC;
+    let (img, _memory) = image(
+        &s,
+        vk::Format::R8G8B8A8_UNORM,
+        vk::SampleCountFlags::TYPE_1,
+        usage,
+    );
+    let allocator = s.device.gpu_allocator().expect("allocator");
+    let color = vk::ImageAspectFlags::COLOR;
+    let short = vec![0u8; (SIDE * SIDE * 4 - 1) as usize];
+    assert_eq!(
+        vuid(s.queue.upload_image(&img, color, &short, SRC, &allocator)),
+        "VUID-vkCmdCopyBufferToImage-pRegions-00171"
+    );
+    let full = vec![9u8; (SIDE * SIDE * 4) as usize];
+    // Depth data must lie in [0, 1], which depends on the format: left to the copy.
+    assert!(matches!(
+        s.queue
+            .upload_image(&img, vk::ImageAspectFlags::DEPTH, &full, SRC, &allocator),
+        Err(tuff::Error::Misuse(_))
+    ));
+    s.queue
+        .upload_image(&img, color, &full, SRC, &allocator)
+        .expect("upload");
+    // The image is in SRC, not DST.
+    assert_eq!(
+        vuid(
+            s.queue
+                .submit_and_wait(|rec| rec.transition_image(&img, color, DST, GENERAL))
+        ),
+        "VUID-VkImageMemoryBarrier-oldLayout-01197"
+    );
+    // From the layout it is in, the same transition goes through.
+    s.queue
+        .submit_and_wait(|rec| rec.transition_image(&img, color, SRC, GENERAL))
+        .expect("transition");
+    assert_silent(&s.messages);
+}

@@ -174,6 +174,48 @@ fn teapots_match_their_golden_image_in_tuff_and_in_raw_ash() {
     assert_ash_port_matches(env!("CARGO_BIN_EXE_teapots_ash"), "teapots", &tuff, &args);
 }
 
+/// The textured quad: the golden image, and independently of it, the checkerboard's
+/// texels where the quad is (its centre texel, and one texel across) and the clear
+/// color where it is not.
+#[test]
+fn textured_quad_shows_its_checkerboard() {
+    use tuff_examples::scenes::textured_quad::{CHECKER, TEXTURE_SIZE};
+    let (w, h, rgba) = golden(env!("CARGO_BIN_EXE_textured_quad"), "textured_quad", &[]);
+    let pixel = |x: u32, y: u32| -> [u8; 4] {
+        let i = ((y * w + x) * 4) as usize;
+        rgba[i..i + 4].try_into().expect("four channels")
+    };
+    // The quad spans the middle 75% of each side; outside it is the clear color.
+    assert_eq!(pixel(2, 2), [0, 0, 0, 255]);
+    assert_eq!(pixel(w - 3, h - 3), [0, 0, 0, 255]);
+    // Texel (i, j) covers quad-relative [i / 8, (i + 1) / 8); the centre of texel
+    // (x, y) in the image is at 1/8 + 3/4 * (x + 0.5) / 8 of each side.
+    let at = |t: u32| ((0.125 + 0.75 * (t as f32 + 0.5) / TEXTURE_SIZE as f32) * w as f32) as u32;
+    for (tx, ty) in [(0, 0), (1, 0), (3, 4), (7, 7), (6, 7)] {
+        assert_eq!(
+            pixel(at(tx), at(ty)),
+            CHECKER[((tx + ty) % 2) as usize],
+            "texel ({tx}, {ty})"
+        );
+    }
+}
+
+/// The compute example adds two arrays of a million floats on the device, under the
+/// layer, and checks every sum on the host.
+#[test]
+fn compute_adds_a_million_floats_and_checks_every_sum() {
+    let out = run(env!("CARGO_BIN_EXE_compute"), &["--validate"]);
+    assert!(
+        out.contains("compute: 1048576 sums computed on llvmpipe"),
+        "{out}"
+    );
+    let mut zero = scene(env!("CARGO_BIN_EXE_compute"));
+    zero.args(["--count", "0"]);
+    let output = output(zero);
+    assert!(!output.status.success());
+    assert!(String::from_utf8_lossy(&output.stderr).contains("--count must be at least 1"));
+}
+
 #[test]
 fn bezier_matches_its_golden_image_in_tuff_and_in_raw_ash() {
     let args = ["--level", "16"];

@@ -196,6 +196,7 @@ mod physical;
 mod presence;
 pub mod recorder;
 mod retention;
+mod setup;
 mod spirv;
 mod submission;
 mod support;

@@ -5,5 +5,6 @@ pub mod bezier;
 pub mod bezier_view;
 pub mod teapot_grid;
 pub mod teapots;
+pub mod textured_quad;
 pub mod triangle;
 pub mod triangle_vertices;

@@ -2,8 +2,8 @@
 
 //! Which hand-written helpers are `unsafe`: exactly those whose generated
 //! method is (see `generator/src/emit/helpers.rs`).
-/// Defines a helper `fn` as safe or `unsafe`, as the generated method of the
-/// command named first is.
+/// Defines a helper `fn` as safe or `unsafe`, as the generated methods of the
+/// commands the name first stands for are (`generator/src/emit/helpers.rs`).
 macro_rules! as_safe_as {
     (vkCreateBuffer, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
         $(#[$m])* $v fn $($rest)*
@@ -15,6 +15,12 @@ macro_rules! as_safe_as {
         $(#[$m])* $v fn $($rest)*
     };
     (vkQueueSubmit, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (vkCmdPipelineBarrier, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (upload_image, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
         $(#[$m])* $v fn $($rest)*
     };
 }

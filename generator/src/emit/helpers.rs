@@ -8,21 +8,41 @@ use crate::plan::Plans;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-/// The commands whose generated methods hand-written helpers call, each helper
-/// promising no more than the method does.
-pub const HELPER_COMMANDS: &[&str] = &[
-    "vkCreateBuffer",
-    "vkCreateImage",
-    "vkCreateSwapchainKHR",
-    "vkQueueSubmit",
+/// The generated methods hand-written helpers call, each helper promising no more
+/// than they do: an arm's name (a command, or the helper calling several), the
+/// commands it is as safe as, and the rules of theirs that the helper upholds itself
+/// (saying how where it calls them). It is safe when no command leaves its caller a
+/// rule outside those.
+pub const HELPER_COMMANDS: &[(&str, &[&str], &[&str])] = &[
+    ("vkCreateBuffer", &["vkCreateBuffer"], &[]),
+    ("vkCreateImage", &["vkCreateImage"], &[]),
+    ("vkCreateSwapchainKHR", &["vkCreateSwapchainKHR"], &[]),
+    ("vkQueueSubmit", &["vkQueueSubmit"], &[]),
+    ("vkCmdPipelineBarrier", &["vkCmdPipelineBarrier"], &[]),
+    (
+        "upload_image",
+        &[
+            "vkQueueSubmit",
+            "vkCmdPipelineBarrier",
+            "vkCmdCopyBufferToImage",
+        ],
+        // `Queue::upload_image` refuses depth aspects.
+        &["VUID-vkCmdCopyBufferToImage-None-00214"],
+    ),
 ];
 
-/// The macro, with one arm per helper command: safe where the plan made the
-/// command's method safe (or did not emit it), `unsafe` otherwise.
+/// The macro, with one arm per helper: safe where the plan made every command's
+/// method safe but for the rules the helper upholds (or did not emit it), `unsafe`
+/// otherwise.
 pub fn emit(plans: &Plans) -> TokenStream {
-    let arms = HELPER_COMMANDS.iter().map(|command| {
-        let ident = format_ident!("{command}");
-        let safe = plans.safety.get(*command).is_none_or(|s| s.safe());
+    let arms = HELPER_COMMANDS.iter().map(|(name, commands, upheld)| {
+        let ident = format_ident!("{name}");
+        let safe = commands.iter().all(|command| {
+            plans
+                .safety
+                .get(*command)
+                .is_none_or(|s| !s.raw && s.owned.iter().all(|o| upheld.contains(&o.vuid.as_str())))
+        });
         let qualifier = if safe { quote!() } else { quote!(unsafe) };
         quote! {
             (#ident, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
@@ -34,8 +54,8 @@ pub fn emit(plans: &Plans) -> TokenStream {
         //! Which hand-written helpers are `unsafe`: exactly those whose generated
         //! method is (see `generator/src/emit/helpers.rs`).
 
-        /// Defines a helper `fn` as safe or `unsafe`, as the generated method of the
-        /// command named first is.
+        /// Defines a helper `fn` as safe or `unsafe`, as the generated methods of the
+        /// commands the name first stands for are (`generator/src/emit/helpers.rs`).
         macro_rules! as_safe_as {
             #(#arms)*
         }
