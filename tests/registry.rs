@@ -1,5 +1,6 @@
 //! The registry pass, the implicit-rule derivation and the report's totals, on the
-//! pinned 1.3.239 registry and on the newer 1.4.309.
+//! pinned 1.3.239 registry and on the newer 1.4.309; the derivation also against the
+//! toolchain's lists of 1.3.281 and 1.4.330.
 
 mod common;
 
@@ -335,4 +336,81 @@ fn rendered_checks_read_what_their_data_says() {
         }
     }
     assert!(checked > 150, "only {checked} command checks");
+}
+
+/// The implicit VUIDs derived from a registry without validusage.json against the
+/// list the specification's own toolchain writes for it (`../shared/registry/<v>/
+/// implicit-vuids-spec-toolchain.txt`): at least 99.9% agreement both ways, and every
+/// difference a checked-in exception with its reason.
+fn check_toolchain_agreement(version: &str) {
+    let dir = shared_registry(version);
+    let l = load(&dir, true);
+    let derived: BTreeSet<String> = l
+        .validity
+        .rules
+        .iter()
+        .filter(|r| r.derived)
+        .map(|r| r.vuid.clone())
+        .collect();
+    let listed: BTreeSet<String> =
+        std::fs::read_to_string(dir.join("implicit-vuids-spec-toolchain.txt"))
+            .expect("the toolchain's list")
+            .lines()
+            .map(str::to_owned)
+            .collect();
+    let both = derived.intersection(&listed).count();
+    let only_derived: Vec<&String> = derived.difference(&listed).collect();
+    let only_listed: Vec<&String> = listed.difference(&derived).collect();
+    println!(
+        "{version}: derived {}, listed {}, both {both}, only derived {:?}, only listed {:?}",
+        derived.len(),
+        listed.len(),
+        only_derived,
+        only_listed
+    );
+    assert!(
+        listed.len() > 5000,
+        "{version}: a list of {} VUIDs",
+        listed.len()
+    );
+    let recall = both as f64 / listed.len() as f64;
+    let precision = both as f64 / derived.len() as f64;
+    assert!(
+        recall >= 0.999,
+        "{version}: listed rules derived: {recall:.4}"
+    );
+    assert!(
+        precision >= 0.999,
+        "{version}: derived rules listed: {precision:.4}"
+    );
+    let text =
+        std::fs::read_to_string(root().join("generator/derivation-exceptions.toml")).unwrap();
+    let file: Exceptions = toml::from_str(&text).unwrap();
+    let expected: BTreeSet<(&str, &str)> = file
+        .exception
+        .iter()
+        .filter(|e| e.registry == version)
+        .map(|e| (e.side.as_str(), e.vuid.as_str()))
+        .collect();
+    let actual: BTreeSet<(&str, &str)> = only_listed
+        .iter()
+        .map(|v| ("listed", v.as_str()))
+        .chain(only_derived.iter().map(|v| ("derived", v.as_str())))
+        .collect();
+    assert_eq!(
+        actual, expected,
+        "the differences must be exactly the checked-in exceptions of {version}"
+    );
+}
+
+#[test]
+fn derivation_agrees_with_the_toolchain_1_3_281() {
+    check_toolchain_agreement("1.3.281");
+}
+
+/// 1.4.330's toolchain writes kinds the older ones did not: `-suspended`,
+/// `-device-queuecount` and `-parameter` for `VkDeviceAddress` values.
+#[test]
+fn derivation_agrees_with_the_toolchain_1_4_330() {
+    check_toolchain_agreement("1.4.330");
 }

@@ -135,6 +135,8 @@ pub struct CommandDef {
     pub cmdbufferlevel: Option<String>,
     /// `tasks`, as written.
     pub tasks: Option<String>,
+    /// `allownoqueues="true"`: callable on a device created with no queues.
+    pub allownoqueues: bool,
     /// `successcodes`, as written.
     pub successcodes: Option<String>,
     /// `errorcodes`, as written.
@@ -153,6 +155,7 @@ impl From<&registry::CommandDef> for CommandDef {
             videocoding: c.videocoding.clone(),
             cmdbufferlevel: c.cmdbufferlevel.clone(),
             tasks: c.tasks.clone(),
+            allownoqueues: c.allownoqueues,
             successcodes: c.successcodes.clone(),
             errorcodes: c.errorcodes.clone(),
         }

@@ -304,6 +304,7 @@ fn convert_command(c: vk::Command) -> Option<CommandDef> {
                 videocoding: d.videocoding,
                 cmdbufferlevel: d.cmdbufferlevel,
                 tasks: d.tasks,
+                allownoqueues: d.allownoqueues.as_deref() == Some("true"),
                 successcodes: d.successcodes,
                 errorcodes: d.errorcodes,
             })

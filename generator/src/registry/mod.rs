@@ -158,6 +158,9 @@ pub struct CommandDef {
     pub cmdbufferlevel: Option<String>,
     /// `tasks`, as written.
     pub tasks: Option<String>,
+    /// `allownoqueues="true"`: the command may be called on a device created with no
+    /// queues (newer registries).
+    pub allownoqueues: bool,
     /// `successcodes`, as written.
     pub successcodes: Option<String>,
     /// `errorcodes`, as written.

@@ -45,6 +45,12 @@ pub enum ImplicitKind {
     VideoCoding,
     /// The queue supports the command's queue types.
     QueueType,
+    /// The command buffer is not in a suspended render pass instance (newer
+    /// toolchains: commands whose `tasks` include action or synchronization).
+    Suspended,
+    /// The device was created with at least one queue (newer toolchains: `vkCreate*`
+    /// and `vkAllocate*` of a device without `allownoqueues`).
+    QueueCount,
 }
 
 impl ImplicitKind {
@@ -66,6 +72,8 @@ impl ImplicitKind {
             ImplicitKind::BufferLevel => "bufferlevel",
             ImplicitKind::VideoCoding => "videocoding",
             ImplicitKind::QueueType => "queuetype",
+            ImplicitKind::Suspended => "suspended",
+            ImplicitKind::QueueCount => "queuecount",
         }
     }
 
@@ -79,6 +87,7 @@ impl ImplicitKind {
                 | ImplicitKind::BufferLevel
                 | ImplicitKind::VideoCoding
                 | ImplicitKind::QueueType
+                | ImplicitKind::Suspended
         )
     }
 
@@ -88,7 +97,7 @@ impl ImplicitKind {
     }
 }
 
-const ALL_KINDS: [ImplicitKind; 15] = [
+const ALL_KINDS: [ImplicitKind; 17] = [
     ImplicitKind::Parameter,
     ImplicitKind::SType,
     ImplicitKind::PNext,
@@ -104,6 +113,8 @@ const ALL_KINDS: [ImplicitKind; 15] = [
     ImplicitKind::BufferLevel,
     ImplicitKind::VideoCoding,
     ImplicitKind::QueueType,
+    ImplicitKind::Suspended,
+    ImplicitKind::QueueCount,
 ];
 
 /// True when `vuid` has the shape of an implicit rule: `VUID-item-param-tag` or
@@ -121,34 +132,53 @@ pub fn is_implicit_vuid(vuid: &str) -> bool {
             ImplicitKind::SType | ImplicitKind::Unique => parts[2] == "sType",
             ImplicitKind::PNext => parts[2] == "pNext",
             ImplicitKind::Recording | ImplicitKind::CmdPool => parts[2] == "commandBuffer",
+            ImplicitKind::QueueCount => parts[2] == "device",
             _ => true,
         },
         _ => false,
     }
 }
 
-/// Where the specification's generator changed its rules between releases.
+/// Where the specification's generator changed its rules between releases. Each
+/// change is placed right after the last registry known to follow the older rule
+/// (validusage.json or the toolchain's list, in `../shared/registry/`), so a registry
+/// newer than every one in the repository gets the newest rules.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Toolchain {
     /// `-parent` looks up the whole parent chain for a parameter of an ancestor's
-    /// type (newer), not just the direct parent (older).
+    /// type (newer), not just the direct parent (older). After 1.3.239 (1.3.281 has it).
     pub parent_chain: bool,
     /// `-requiredbitmask` is skipped when any level of `optional` is true (newer),
-    /// rather than only when `optional` is exactly `true` (older).
+    /// rather than only when `optional` is exactly `true` (older). After 1.3.239.
     pub requiredbitmask_any_optional: bool,
+    /// `-suspended` for recorded commands whose `tasks` include action or
+    /// synchronization. After 1.4.309 (1.4.330 has it).
+    pub suspended: bool,
+    /// `-device-queuecount` for `vkCreate*` and `vkAllocate*` commands of a device
+    /// that lack `allownoqueues`. After 1.4.309.
+    pub queuecount: bool,
+    /// `-parameter` for `VkDeviceAddress` members and parameters. After 1.4.309.
+    pub device_address: bool,
 }
 
 impl Toolchain {
-    /// The rules of the toolchain that published a registry of this version. The
-    /// changes are known to lie between 1.3.239 (older rules) and 1.4.309 (newer);
-    /// the switch is placed at the first 1.4 release.
+    /// The rules of the toolchain that published a registry of this version
+    /// (`major.minor.patch`; missing numbers read as 0).
     pub fn for_version(version: &str) -> Toolchain {
         let mut nums = version.split('.').map(|n| n.parse::<u32>().unwrap_or(0));
-        let (major, minor) = (nums.next().unwrap_or(1), nums.next().unwrap_or(0));
-        let newer = (major, minor) >= (1, 4);
+        let v = (
+            nums.next().unwrap_or(1),
+            nums.next().unwrap_or(0),
+            nums.next().unwrap_or(0),
+        );
+        let after_1_3_239 = v > (1, 3, 239);
+        let after_1_4_309 = v > (1, 4, 309);
         Toolchain {
-            parent_chain: newer,
-            requiredbitmask_any_optional: newer,
+            parent_chain: after_1_3_239,
+            requiredbitmask_any_optional: after_1_3_239,
+            suspended: after_1_4_309,
+            queuecount: after_1_4_309,
+            device_address: after_1_4_309,
         }
     }
 }
@@ -375,6 +405,19 @@ impl<'a> Deriver<'a> {
     }
 
     fn command_state(&mut self, block: &str, cmd: &CommandDef) {
+        let creates = block.starts_with("vkCreate") || block.starts_with("vkAllocate");
+        let on_device = cmd
+            .params
+            .first()
+            .is_some_and(|p| p.type_name == "VkDevice");
+        if self.tc.queuecount && creates && on_device && !cmd.allownoqueues {
+            self.push(
+                block,
+                Some("device"),
+                ImplicitKind::QueueCount,
+                "`device` must have been created with at least one queue".into(),
+            );
+        }
         if block.contains("vkQueue") {
             if let Some(queues) = &cmd.queues {
                 self.push(
@@ -420,6 +463,18 @@ impl<'a> Deriver<'a> {
                     format!("must only be called {videocoding} a video coding scope"),
                 );
             }
+        }
+        let tasks = cmd.tasks.as_deref().unwrap_or("");
+        let acts = tasks
+            .split(',')
+            .any(|t| t == "action" || t == "synchronization");
+        if self.tc.suspended && acts && cmd.cmdbufferlevel.is_some() {
+            self.push(
+                block,
+                None,
+                ImplicitKind::Suspended,
+                "`commandBuffer` must not be in a suspended render pass instance".into(),
+            );
         }
         let level = cmd.cmdbufferlevel.as_deref().unwrap_or("");
         if level != "primary,secondary" {
@@ -667,7 +722,8 @@ impl<'a> Deriver<'a> {
                 }
                 _ if is_array || is_pointer => true,
                 None => !self.struct_always_valid(t, 0),
-                _ => false,
+                // Newer toolchains ask a valid device address.
+                _ => self.tc.device_address && t == "VkDeviceAddress",
             }
         };
         if checked {
@@ -776,8 +832,13 @@ mod tests {
     }
 
     #[test]
-    fn toolchain_switches_at_1_4() {
+    fn toolchain_switches_after_the_last_registry_with_the_older_rule() {
         assert!(!Toolchain::for_version("1.3.239").parent_chain);
+        assert!(Toolchain::for_version("1.3.281").parent_chain);
         assert!(Toolchain::for_version("1.4.309").parent_chain);
+        assert!(!Toolchain::for_version("1.4.309").suspended);
+        assert!(Toolchain::for_version("1.4.330").suspended);
+        assert!(Toolchain::for_version("1.5.0").device_address);
+        assert!(!Toolchain::for_version("1.3.239").queuecount);
     }
 }
