@@ -35,4 +35,4 @@ cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tu
 bash scripts/valgrind.sh
 # The generator outside the pinned inputs: another registry, regenerated into a
 # scratch crate and compiled (scripts/wide-check.sh).
-bash scripts/wide-check.sh 1.4.309
+bash scripts/wide-check.sh 1.4.309 1.4.330

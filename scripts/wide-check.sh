@@ -7,6 +7,13 @@
 # Configurations (one line each in the table below):
 #   1.4.309        the newest registry with validusage.json, the pinned config's
 #                  extensions (core and the scenes' eight)
+#   1.4.330        a newer one without validusage.json (implicit rules derived), whose
+#                  core versions are split into internal feature blocks; same config
+#   all-1.4.309,   the pinned config itself (every extension ash has) on each newer
+#   all-1.4.330    registry. Not in the test command yet: these emit names ash 0.38
+#                  has only under an older alias (promoted to core in 1.4, or renamed),
+#                  and structs and commands its extensions lack, which the reference
+#                  registry's filter does not map or leave out yet.
 #
 # (The pinned config itself emits every extension ash 0.38 has, so the committed crate
 # is the every-extension check; scripts/test.sh builds it with all_extensions.)
@@ -64,18 +71,28 @@ names=("$@")
 status=0
 for name in "${names[@]}"; do
     case "$name" in
-    1.4.309)
+    1.4.309 | 1.4.330)
         # The pinned config's own extensions, not every one: what a newer registry
-        # adds beyond ash's is the version-bump work, not this check's.
+        # adds beyond ash's is the version-bump work, not this check's. 1.4.330 has
+        # no validusage.json: its implicit rules are derived.
         cfg="$scratch/scenes.toml"
         sed -e 's/^all_extensions = true/all_extensions = false/' \
             -e "s#\"reference/vk.xml\"#\"$root/reference/vk.xml\"#" \
             -e "s#\"examples/src\"#\"$root/examples/src\"#" \
             "$root/tuff-gen.toml" >"$cfg"
-        check "$name" --registry "$registry/1.4.309/vk.xml" --config "$cfg" || status=1
+        check "$name" --registry "$registry/$name/vk.xml" --config "$cfg" || status=1
+        ;;
+    all-1.4.309 | all-1.4.330)
+        # The pinned config as it is: every extension ash has, from a newer registry.
+        version="${name#all-}"
+        cfg="$scratch/all.toml"
+        sed -e "s#\"reference/vk.xml\"#\"$root/reference/vk.xml\"#" \
+            -e "s#\"examples/src\"#\"$root/examples/src\"#" \
+            "$root/tuff-gen.toml" >"$cfg"
+        check "$name" --registry "$registry/$version/vk.xml" --config "$cfg" || status=1
         ;;
     *)
-        echo "wide-check: unknown configuration $name (known: 1.4.309)" >&2
+        echo "wide-check: unknown configuration $name (known: 1.4.309, 1.4.330, all-1.4.309, all-1.4.330)" >&2
         status=1
         ;;
     esac

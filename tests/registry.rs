@@ -414,3 +414,37 @@ fn derivation_agrees_with_the_toolchain_1_3_281() {
 fn derivation_agrees_with_the_toolchain_1_4_330() {
     check_toolchain_agreement("1.4.330");
 }
+
+/// A newer registry keeps every command, struct and handle an older one emits: the
+/// 1.4.330 registry, whose core versions are split into internal feature blocks
+/// (`VK_BASE_VERSION_1_0`, ...), emits at least what 1.4.309 does, core included.
+#[test]
+fn a_newer_registry_emits_every_item_the_older_one_does() {
+    let older = load(&shared_registry("1.4.309"), true);
+    let newer = load(&shared_registry("1.4.330"), true);
+    let kept = |l: &Loaded| -> BTreeSet<String> {
+        l.model
+            .emitted
+            .iter()
+            .filter(|n| {
+                l.model.commands.contains_key(*n)
+                    || l.model.types.get(*n).is_some_and(|t| {
+                        matches!(
+                            t.category,
+                            Some(tuff_gen::model::Kind::Struct | tuff_gen::model::Kind::Handle)
+                        )
+                    })
+            })
+            .cloned()
+            .collect()
+    };
+    let (old, new) = (kept(&older), kept(&newer));
+    let lost: Vec<&String> = old.difference(&new).collect();
+    assert!(old.contains("vkCreateBuffer") && new.contains("vkCreateBuffer"));
+    assert!(old.len() > 1000, "{} items", old.len());
+    assert!(
+        lost.is_empty(),
+        "1.4.330 lost {} of 1.4.309's items: {lost:?}",
+        lost.len()
+    );
+}

@@ -606,6 +606,10 @@ pub fn render(check: &Check) -> TokenStream {
             let fail = fail(&msg);
             quote!(if !crate::validation::supports(#flags, #needed) { #fail })
         }
+        CheckKind::DeviceHasQueues => {
+            let fail = fail("the device was created with no queue");
+            quote!(if self.live().queue_infos().is_empty() { #fail })
+        }
         CheckKind::Level { primary } => {
             let (want, level) = if *primary {
                 (quote!(vk::CommandBufferLevel::PRIMARY), "primary")

@@ -185,6 +185,8 @@ pub enum CheckKind {
         /// vk.xml's `queues`, `graphics,compute`.
         queues: String,
     },
+    /// The device the command is called on was created with at least one queue.
+    DeviceHasQueues,
     /// The recording command buffer has this level.
     Level {
         /// Primary rather than secondary.
@@ -234,6 +236,7 @@ impl Check {
                 | CheckKind::NotEmpty { .. }
                 | CheckKind::ZeroFlags { .. }
                 | CheckKind::QueueFlags { .. }
+                | CheckKind::DeviceHasQueues
                 | CheckKind::Level { .. }
         )
     }
@@ -728,6 +731,10 @@ impl<'c, 'm> Checker<'c, 'm> {
                         queues: queues.clone(),
                     },
                     "checks the queue flags of the queue's family, recorded when the queue was retrieved".into(),
+                )),
+                (K::QueueCount, _) if cmd.params.first().is_some_and(|p| p.type_name == "VkDevice") => Some((
+                    CheckKind::DeviceHasQueues,
+                    "checks the device was created with a queue, which it records at its creation".into(),
                 )),
                 (K::BufferLevel, _) => Some((
                     CheckKind::Level {

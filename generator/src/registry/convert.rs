@@ -10,6 +10,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
     let mut reg = Registry::default();
     let mut numbers: BTreeMap<String, i64> = BTreeMap::new();
     let mut aliases: Vec<(String, String)> = Vec::new();
+    let internal = internal_features(&parsed);
     for child in parsed.0 {
         match child {
             vk::RegistryChild::Types(types) => {
@@ -49,15 +50,44 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                 }
             }
             vk::RegistryChild::Feature(f) if is_vulkan_api(Some(&f.api)) => {
-                reg.features.push(Interface {
-                    name: f.name,
-                    number: f.number,
-                    supported: None,
-                    ext_type: None,
-                    depends: f.depends,
-                    promoted_to: None,
-                    requires: convert_requires(f.children, None, &mut numbers, &mut aliases),
-                });
+                let name = internal.get(&f.name).cloned().unwrap_or(f.name);
+                let requires =
+                    convert_requires(f.children, None, &internal, &mut numbers, &mut aliases);
+                // Other blocks it depends on, in public names, less itself.
+                let depends: Vec<String> = f
+                    .depends
+                    .map(|d| publish(&d, &internal))
+                    .unwrap_or_default()
+                    .split(',')
+                    .filter(|d| !d.is_empty() && *d != name)
+                    .map(str::to_owned)
+                    .collect();
+                match reg.features.iter_mut().find(|x| x.name == name) {
+                    // A version's internal blocks and its public one become one feature.
+                    Some(existing) => {
+                        existing.requires.extend(requires);
+                        let mut all: Vec<String> = existing
+                            .depends
+                            .take()
+                            .map(|d| d.split(',').map(str::to_owned).collect())
+                            .unwrap_or_default();
+                        for d in depends {
+                            if !all.contains(&d) {
+                                all.push(d);
+                            }
+                        }
+                        existing.depends = (!all.is_empty()).then(|| all.join(","));
+                    }
+                    None => reg.features.push(Interface {
+                        name,
+                        number: f.number,
+                        supported: None,
+                        ext_type: None,
+                        depends: (!depends.is_empty()).then(|| depends.join(",")),
+                        promoted_to: None,
+                        requires,
+                    }),
+                }
             }
             vk::RegistryChild::Formats(formats) => {
                 for f in formats.children {
@@ -66,7 +96,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
             }
             vk::RegistryChild::Extensions(exts) => {
                 for e in exts.children {
-                    let depends = e.depends.or_else(|| {
+                    let depends = e.depends.map(|d| publish(&d, &internal)).or_else(|| {
                         // Registries before 1.3.241 name dependencies in `requires`
                         // and `requiresCore` instead of `depends`.
                         let mut parts: Vec<String> = Vec::new();
@@ -78,8 +108,13 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                         }
                         (!parts.is_empty()).then(|| parts.join("+"))
                     });
-                    let requires =
-                        convert_requires(e.children, e.number, &mut numbers, &mut aliases);
+                    let requires = convert_requires(
+                        e.children,
+                        e.number,
+                        &internal,
+                        &mut numbers,
+                        &mut aliases,
+                    );
                     reg.extensions.push(Interface {
                         name: e.name,
                         number: e.number.map(|n| n.to_string()),
@@ -401,9 +436,52 @@ fn parse_c_int(text: &str) -> Option<i64> {
     t.parse().ok()
 }
 
+/// Newer registries (1.4.3xx) split each core version into internal feature blocks
+/// (`<feature apitype="internal">`: `VK_BASE_VERSION_1_1`, `VK_COMPUTE_VERSION_1_1`,
+/// ...) that the public `VK_VERSION_1_1` depends on. Each internal block's name, and
+/// the public version of its number that it belongs to.
+fn internal_features(parsed: &vk::Registry) -> BTreeMap<String, String> {
+    parsed
+        .0
+        .iter()
+        .filter_map(|child| match child {
+            vk::RegistryChild::Feature(f)
+                if f.apitype.as_deref() == Some("internal") && is_vulkan_api(Some(&f.api)) =>
+            {
+                let number = f.number.as_deref()?;
+                Some((
+                    f.name.clone(),
+                    format!("VK_VERSION_{}", number.replace('.', "_")),
+                ))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// A dependency expression with every internal feature block named as the public
+/// version it belongs to.
+fn publish(expr: &str, internal: &BTreeMap<String, String>) -> String {
+    let mut out = String::with_capacity(expr.len());
+    let mut word = String::new();
+    for c in expr.chars().chain(std::iter::once('\0')) {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+            continue;
+        }
+        out.push_str(internal.get(&word).map_or(word.as_str(), String::as_str));
+        word.clear();
+        if c != '\0' {
+            out.push(c);
+        }
+    }
+    out
+}
+
 fn convert_requires(
     children: Vec<vk::ExtensionChild>,
     extnumber: Option<i64>,
+    internal: &BTreeMap<String, String>,
     numbers: &mut BTreeMap<String, i64>,
     aliases: &mut Vec<(String, String)>,
 ) -> Vec<Require> {
@@ -421,10 +499,12 @@ fn convert_requires(
             if !is_vulkan_api(api.as_deref()) {
                 continue;
             }
-            let depends = depends.or_else(|| {
-                let parts: Vec<String> = feature.into_iter().chain(extension).collect();
-                (!parts.is_empty()).then(|| parts.join("+"))
-            });
+            let depends = depends
+                .or_else(|| {
+                    let parts: Vec<String> = feature.into_iter().chain(extension).collect();
+                    (!parts.is_empty()).then(|| parts.join("+"))
+                })
+                .map(|d| publish(&d, internal));
             let mut req = Require {
                 depends,
                 ..Require::default()
@@ -510,5 +590,28 @@ mod tests {
         assert_eq!(f.static_array.as_deref(), Some("4"));
         assert!(f.is_const);
         assert_eq!(f.pointers, 0);
+    }
+
+    #[test]
+    fn internal_blocks_are_named_as_their_public_version() {
+        let internal: std::collections::BTreeMap<String, String> = [
+            ("VK_BASE_VERSION_1_1", "VK_VERSION_1_1"),
+            ("VK_GRAPHICS_VERSION_1_2", "VK_VERSION_1_2"),
+        ]
+        .into_iter()
+        .map(|(a, b)| (a.to_owned(), b.to_owned()))
+        .collect();
+        assert_eq!(
+            super::publish(
+                "(VK_KHR_a+VK_BASE_VERSION_1_1),VK_GRAPHICS_VERSION_1_2",
+                &internal
+            ),
+            "(VK_KHR_a+VK_VERSION_1_1),VK_VERSION_1_2"
+        );
+        assert_eq!(
+            super::publish("VK_BASE_VERSION_1_10", &internal),
+            "VK_BASE_VERSION_1_10"
+        );
+        assert_eq!(super::publish("", &internal), "");
     }
 }
