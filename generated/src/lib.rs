@@ -197,6 +197,7 @@ mod presence;
 pub mod recorder;
 mod retention;
 mod setup;
+mod single;
 mod spirv;
 mod submission;
 mod support;

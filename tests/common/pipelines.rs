@@ -207,13 +207,11 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().push_constant_ranges(&push))
         .expect("graphics layout");
     let stages = test_stages(&vert, &frag);
-    let (mut graphics, r) =
-        with_graphics_info(&stages, &graphics_layout, &target.render_pass, |info| {
-            d.create_graphics_pipelines(None, &[info])
-        })
-        .expect("graphics pipeline");
-    assert_eq!(r, vk::Result::SUCCESS);
-    let graphics = graphics.pop().expect("one pipeline");
+    // The one-object forms of the array commands (`create_graphics_pipeline`, ...).
+    let graphics = with_graphics_info(&stages, &graphics_layout, &target.render_pass, |info| {
+        d.create_graphics_pipeline(None, &info)
+    })
+    .expect("graphics pipeline");
 
     let bindings = [
         tuff::DescriptorSetLayoutBinding::new()
@@ -239,14 +237,12 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&comp));
-    let (mut compute, r) = d
-        .create_compute_pipelines(
+    let compute = d
+        .create_compute_pipeline(
             None,
-            &[tuff::ComputePipelineCreateInfo::new(stage, &compute_layout)],
+            &tuff::ComputePipelineCreateInfo::new(stage, &compute_layout),
         )
         .expect("compute pipeline");
-    assert_eq!(r, vk::Result::SUCCESS);
-    let compute = compute.pop().expect("one pipeline");
 
     let sizes = [
         vk::DescriptorPoolSize {
@@ -266,14 +262,8 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
         )
         .expect("descriptor pool");
     let set = d
-        .allocate_descriptor_sets(
-            &descriptor_pool,
-            &tuff::DescriptorSetAllocateInfo::new(&descriptor_pool).set_layouts(&set_layouts),
-        )
-        .expect("descriptor set")
-        .pop()
-        .expect("one set");
-
+        .allocate_descriptor_set(&descriptor_pool, &compute_set_layout)
+        .expect("descriptor set");
     let uniform = host_buffer(s, 256, vk::BufferUsageFlags::UNIFORM_BUFFER);
     access_memory(s, &uniform.1, 4, Some(&FACTOR.to_le_bytes()));
     let output = host_buffer(s, INVOCATIONS * 4, vk::BufferUsageFlags::STORAGE_BUFFER);

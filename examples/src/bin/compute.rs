@@ -133,11 +133,8 @@ fn add_on_gpu(args: &Args, log: &tuff::MessageLog) -> Result<(String, u32)> {
     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
         .stage(vk::ShaderStageFlags::COMPUTE)
         .module(Some(&module));
-    let (mut pipelines, _) = device.create_compute_pipelines(
-        None,
-        &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
-    )?;
-    let pipeline = pipelines.pop().context("no pipeline was created")?;
+    let pipeline = device
+        .create_compute_pipeline(None, &tuff::ComputePipelineCreateInfo::new(stage, &layout))?;
 
     // The descriptor set: a, b and c at bindings 0, 1 and 2.
     let pool = device.create_descriptor_pool(
@@ -148,13 +145,7 @@ fn add_on_gpu(args: &Args, log: &tuff::MessageLog) -> Result<(String, u32)> {
                 descriptor_count: 3,
             }]),
     )?;
-    let set = device
-        .allocate_descriptor_sets(
-            &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
-        )?
-        .pop()
-        .context("no descriptor set was allocated")?;
+    let set = device.allocate_descriptor_set(&pool, &set_layout)?;
     let infos: Vec<[tuff::DescriptorBufferInfo<'_>; 1]> = [&buf_a, &buf_b, &buf_c]
         .into_iter()
         .map(|b| {

@@ -20,6 +20,15 @@ macro_rules! as_safe_as {
     (vkCmdPipelineBarrier, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
         $(#[$m])* $v fn $($rest)*
     };
+    (vkCreateComputePipelines, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (vkCreateGraphicsPipelines, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (vkAllocateDescriptorSets, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
     (upload_image, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
         $(#[$m])* $v fn $($rest)*
     };

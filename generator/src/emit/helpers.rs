@@ -20,6 +20,21 @@ pub const HELPER_COMMANDS: &[(&str, &[&str], &[&str])] = &[
     ("vkQueueSubmit", &["vkQueueSubmit"], &[]),
     ("vkCmdPipelineBarrier", &["vkCmdPipelineBarrier"], &[]),
     (
+        "vkCreateComputePipelines",
+        &["vkCreateComputePipelines"],
+        &[],
+    ),
+    (
+        "vkCreateGraphicsPipelines",
+        &["vkCreateGraphicsPipelines"],
+        &[],
+    ),
+    (
+        "vkAllocateDescriptorSets",
+        &["vkAllocateDescriptorSets"],
+        &[],
+    ),
+    (
         "upload_image",
         &[
             "vkQueueSubmit",
