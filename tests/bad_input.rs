@@ -310,3 +310,31 @@ fn registry_with_a_malformed_dependency_expression() {
         ],
     );
 }
+
+/// A run that would emit fewer commands, structs or handles than the output folder
+/// lists (its `emitted-items.txt`, written by the run before) fails, naming what would
+/// go, and writes nothing; `--allow-shrink` says a human accepts it.
+#[test]
+fn an_output_that_would_lose_items_needs_allow_shrink() {
+    let c = case();
+    std::fs::write(
+        c.out.join("emitted-items.txt"),
+        "# from an earlier run\nvkCreateBuffer\nvkFrobnicateGPU\nVkFrobnicateInfo\n",
+    )
+    .unwrap();
+    fails(
+        &c,
+        &[],
+        &[
+            "would lose 2 of the commands, structs and handles",
+            "vkFrobnicateGPU, VkFrobnicateInfo",
+            "--allow-shrink",
+        ],
+    );
+    let out = c.out.display().to_string();
+    let (code, _, stderr) = cli(&["--out", &out, "--allow-shrink"]);
+    assert_eq!(code, 0, "{stderr}");
+    let items = std::fs::read_to_string(c.out.join("emitted-items.txt")).unwrap();
+    assert!(items.lines().any(|l| l == "vkCreateBuffer"));
+    assert!(!items.contains("vkFrobnicateGPU"));
+}

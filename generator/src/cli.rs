@@ -31,6 +31,10 @@ struct Cli {
     /// Write nothing; fail if the output folder differs from a fresh run
     #[arg(long)]
     check: bool,
+    /// Write the output even if it emits fewer commands, structs or handles than the
+    /// output folder holds now
+    #[arg(long)]
+    allow_shrink: bool,
 }
 
 /// Run the command line with `args` (the first is the program name). Messages go to
@@ -93,11 +97,15 @@ where
         config: cli.config.unwrap_or(pinned.config),
         out: cli.out.unwrap_or(pinned.out),
         allow_version_mismatch: cli.allow_version_mismatch,
+        allow_shrink: cli.allow_shrink,
     };
     let result = generate(&opts).and_then(|g| {
         if cli.check {
             output::check(&opts.out, &g.files)?;
         } else {
+            if !opts.allow_shrink {
+                crate::check_shrink(&opts.out, &g.files)?;
+            }
             output::write_all(&opts.out, &g.files)?;
         }
         Ok(g)

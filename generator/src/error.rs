@@ -82,6 +82,18 @@ pub enum Error {
         /// The version its `version info` names.
         validusage_version: String,
     },
+    /// The new output would emit fewer commands, structs or handles than the output
+    /// folder holds now: a registry bump that loses items is a bug until someone says
+    /// otherwise (`--allow-shrink`).
+    #[error("{out}: the emitted API would lose {count} of the commands, structs and handles it has now ({sample}); nothing was written. Pass --allow-shrink to write it anyway")]
+    Shrink {
+        /// The output folder.
+        out: PathBuf,
+        /// How many items would go.
+        count: usize,
+        /// The first few, comma-separated.
+        sample: String,
+    },
     /// The config file is unreadable as TOML or names something that does not exist.
     #[error("{path}: {message}")]
     Config {
