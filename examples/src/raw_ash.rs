@@ -865,19 +865,18 @@ fn render<S: Scene>(
     common: &Common,
     make: impl FnOnce(&ash::Device, &mut Objects, vk::RenderPass) -> Result<S>,
 ) -> Result<(Vec<u8>, Duration)> {
+    let slots = frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
     let Vulkan {
         device,
         queue,
-        family,
         objects: o,
         ..
     } = vulkan;
-    let (queue, family) = (*queue, *family);
+    let queue = *queue;
     let extent = vk::Extent2D {
         width: common.width,
         height: common.height,
     };
-    let area: vk::Rect2D = extent.into();
     let frames = common.frames.max(1);
     let pass = render_pass(
         device,
@@ -929,45 +928,10 @@ fn render<S: Scene>(
         let (readback, readback_memory) =
             o.buffer(device, bytes, vk::BufferUsageFlags::TRANSFER_DST, cached)?;
 
-        o.command_pool = device
-            .create_command_pool(
-                &vk::CommandPoolCreateInfo::default()
-                    .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
-                    .queue_family_index(family),
-                None,
-            )
-            .context("vkCreateCommandPool")?;
-        let commands = device
-            .allocate_command_buffers(
-                &vk::CommandBufferAllocateInfo::default()
-                    .command_pool(o.command_pool)
-                    .level(vk::CommandBufferLevel::PRIMARY)
-                    .command_buffer_count(FRAMES_IN_FLIGHT as u32),
-            )
-            .context("vkAllocateCommandBuffers")?;
-        for _ in 0..FRAMES_IN_FLIGHT {
-            let info = vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED);
-            o.fences
-                .push(device.create_fence(&info, None).context("vkCreateFence")?);
-        }
-
-        let clear = [
-            vk::ClearValue {
-                color: vk::ClearColorValue {
-                    float32: scene.clear_color(),
-                },
-            },
-            vk::ClearValue {
-                depth_stencil: vk::ClearDepthStencilValue {
-                    depth: DEPTH_CLEAR,
-                    stencil: 0,
-                },
-            },
-        ];
         let start = Instant::now();
         for frame in 0..frames {
             let slot = frame as usize % FRAMES_IN_FLIGHT;
-            let (cb, fence) = (commands[slot], o.fences[slot]);
+            let (cb, fence) = slots[slot];
             device
                 .wait_for_fences(&[fence], true, u64::MAX)
                 .context("vkWaitForFences")?;
@@ -978,79 +942,17 @@ fn render<S: Scene>(
                 slot,
             };
             scene.update(&view);
-
-            device
-                .begin_command_buffer(
-                    cb,
-                    &vk::CommandBufferBeginInfo::default()
-                        .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
-                )
-                .context("vkBeginCommandBuffer")?;
-            device.cmd_begin_render_pass(
+            let last = frame + 1 == frames;
+            let copy = last.then_some((images[slot].0, readback));
+            record_frame(
+                device,
                 cb,
-                &vk::RenderPassBeginInfo::default()
-                    .render_pass(o.render_pass)
-                    .framebuffer(o.framebuffers[slot])
-                    .render_area(area)
-                    // Without a depth attachment, only the color is cleared.
-                    .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
-                vk::SubpassContents::INLINE,
-            );
-            device.cmd_set_viewport(
-                cb,
-                0,
-                &[vk::Viewport {
-                    x: 0.0,
-                    y: 0.0,
-                    width: extent.width as f32,
-                    height: extent.height as f32,
-                    min_depth: 0.0,
-                    max_depth: 1.0,
-                }],
-            );
-            device.cmd_set_scissor(cb, 0, &[area]);
-            scene.draw(device, cb, &view);
-            device.cmd_end_render_pass(cb);
-            if frame + 1 == frames {
-                let region = vk::BufferImageCopy {
-                    image_subresource: vk::ImageSubresourceLayers {
-                        aspect_mask: vk::ImageAspectFlags::COLOR,
-                        mip_level: 0,
-                        base_array_layer: 0,
-                        layer_count: 1,
-                    },
-                    image_extent: extent.into(),
-                    ..Default::default()
-                };
-                device.cmd_copy_image_to_buffer(
-                    cb,
-                    images[slot].0,
-                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                    readback,
-                    &[region],
-                );
-                // A fence wait does not make device writes visible to the host.
-                let to_host = vk::BufferMemoryBarrier::default()
-                    .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
-                    .dst_access_mask(vk::AccessFlags::HOST_READ)
-                    .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                    .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                    .buffer(readback)
-                    .offset(0)
-                    .size(vk::WHOLE_SIZE);
-                device.cmd_pipeline_barrier(
-                    cb,
-                    vk::PipelineStageFlags::TRANSFER,
-                    vk::PipelineStageFlags::HOST,
-                    vk::DependencyFlags::empty(),
-                    &[],
-                    &[to_host],
-                    &[],
-                );
-            }
-            device
-                .end_command_buffer(cb)
-                .context("vkEndCommandBuffer")?;
+                o.render_pass,
+                o.framebuffers[slot],
+                &scene,
+                &view,
+                copy,
+            )?;
             let submit = vk::SubmitInfo::default().command_buffers(std::slice::from_ref(&cb));
             device
                 .queue_submit(queue, &[submit], fence)
@@ -1072,5 +974,171 @@ fn render<S: Scene>(
         let rgba = std::slice::from_raw_parts(ptr.cast::<u8>(), bytes as usize).to_vec();
         device.unmap_memory(readback_memory);
         Ok((rgba, elapsed))
+    }
+}
+
+/// `count` primary command buffers of the objects' pool (made here if there is none
+/// yet, resettable, of the device's queue family), each with a fence created
+/// signalled, kept by the objects.
+pub(crate) fn frame_slots(
+    vulkan: &mut Vulkan,
+    count: usize,
+) -> Result<Vec<(vk::CommandBuffer, vk::Fence)>> {
+    let (device, o) = (&vulkan.device, &mut vulkan.objects);
+    // SAFETY: valid create infos; every object goes into `o`, destroyed once the
+    // device is idle.
+    unsafe {
+        if o.command_pool == vk::CommandPool::null() {
+            o.command_pool = device
+                .create_command_pool(
+                    &vk::CommandPoolCreateInfo::default()
+                        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+                        .queue_family_index(vulkan.family),
+                    None,
+                )
+                .context("vkCreateCommandPool")?;
+        }
+        let buffers = device
+            .allocate_command_buffers(
+                &vk::CommandBufferAllocateInfo::default()
+                    .command_pool(o.command_pool)
+                    .level(vk::CommandBufferLevel::PRIMARY)
+                    .command_buffer_count(count as u32),
+            )
+            .context("vkAllocateCommandBuffers")?;
+        let mut slots = Vec::new();
+        for cb in buffers {
+            let info = vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED);
+            let fence = device.create_fence(&info, None).context("vkCreateFence")?;
+            o.fences.push(fence);
+            slots.push((cb, fence));
+        }
+        Ok(slots)
+    }
+}
+
+/// Records a frame of `scene` into `cb`: the render pass on `framebuffer` with the
+/// scene's draws and, when asked, the copy of an image (in TRANSFER_SRC_OPTIMAL after
+/// the render pass) into a buffer for the host to read, as `render::record_frame`
+/// does in tuff.
+///
+/// # Safety
+///
+/// `cb` is a primary command buffer of `device`, not pending; every handle is live;
+/// the render pass and framebuffer are the scene's, of the view's extent.
+pub(crate) unsafe fn record_frame<S: Scene>(
+    device: &ash::Device,
+    cb: vk::CommandBuffer,
+    render_pass: vk::RenderPass,
+    framebuffer: vk::Framebuffer,
+    scene: &S,
+    view: &View,
+    readback: Option<(vk::Image, vk::Buffer)>,
+) -> Result<()> {
+    let area: vk::Rect2D = view.extent.into();
+    let clear = [
+        vk::ClearValue {
+            color: vk::ClearColorValue {
+                float32: scene.clear_color(),
+            },
+        },
+        vk::ClearValue {
+            depth_stencil: vk::ClearDepthStencilValue {
+                depth: DEPTH_CLEAR,
+                stencil: 0,
+            },
+        },
+    ];
+    // SAFETY: as the caller promises.
+    unsafe {
+        device
+            .begin_command_buffer(
+                cb,
+                &vk::CommandBufferBeginInfo::default()
+                    .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+            )
+            .context("vkBeginCommandBuffer")?;
+        device.cmd_begin_render_pass(
+            cb,
+            &vk::RenderPassBeginInfo::default()
+                .render_pass(render_pass)
+                .framebuffer(framebuffer)
+                .render_area(area)
+                // Without a depth attachment, only the color is cleared.
+                .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
+            vk::SubpassContents::INLINE,
+        );
+        device.cmd_set_viewport(
+            cb,
+            0,
+            &[vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: view.extent.width as f32,
+                height: view.extent.height as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            }],
+        );
+        device.cmd_set_scissor(cb, 0, &[area]);
+        scene.draw(device, cb, view);
+        device.cmd_end_render_pass(cb);
+        if let Some((image, buffer)) = readback {
+            record_readback(device, cb, image, buffer, view.extent);
+        }
+        device.end_command_buffer(cb).context("vkEndCommandBuffer")
+    }
+}
+
+/// Records the copy of the whole color `image` of `extent` (in TRANSFER_SRC_OPTIMAL)
+/// into `buffer`, tightly packed, and the barrier that makes it visible to the host.
+///
+/// # Safety
+///
+/// `cb` is recording, outside a render pass, on `device`; the handles are live.
+pub(crate) unsafe fn record_readback(
+    device: &ash::Device,
+    cb: vk::CommandBuffer,
+    image: vk::Image,
+    buffer: vk::Buffer,
+    extent: vk::Extent2D,
+) {
+    let region = vk::BufferImageCopy {
+        image_subresource: vk::ImageSubresourceLayers {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            mip_level: 0,
+            base_array_layer: 0,
+            layer_count: 1,
+        },
+        image_extent: extent.into(),
+        ..Default::default()
+    };
+    // A fence wait does not make device writes visible to the host; this does.
+    let to_host = vk::BufferMemoryBarrier::default()
+        .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+        .dst_access_mask(vk::AccessFlags::HOST_READ)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .buffer(buffer)
+        .offset(0)
+        .size(vk::WHOLE_SIZE);
+    // SAFETY: as the caller promises.
+    unsafe {
+        device.cmd_copy_image_to_buffer(
+            cb,
+            image,
+            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+            buffer,
+            &[region],
+        );
+        device.cmd_pipeline_barrier(
+            cb,
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[to_host],
+            &[],
+        );
     }
 }

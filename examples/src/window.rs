@@ -218,6 +218,17 @@ pub fn composite_alpha(supported: vk::CompositeAlphaFlagsKHR) -> vk::CompositeAl
     .unwrap_or(vk::CompositeAlphaFlagsKHR::OPAQUE)
 }
 
+/// How many images to ask a swapchain for: two at least (one shown, one drawn), within
+/// what the surface allows (a maximum of 0 means no limit).
+pub fn image_count(caps: &vk::SurfaceCapabilitiesKHR) -> u32 {
+    let count = caps.min_image_count.max(2);
+    if caps.max_image_count == 0 {
+        count
+    } else {
+        count.min(caps.max_image_count)
+    }
+}
+
 /// The swapchain size for a window of `width` x `height` pixels, or `None` while it
 /// has no area (minimised), when rendering pauses rather than failing: a swapchain
 /// cannot have a zero extent.
@@ -268,12 +279,7 @@ impl<S: Scene> Live<S> {
         // Every frame that used the old images, and every present waiting on their
         // semaphores, is done before they go.
         gpu.device.device_wait_idle()?;
-        let count = caps.min_image_count.max(2);
-        let count = if caps.max_image_count == 0 {
-            count
-        } else {
-            count.min(caps.max_image_count)
-        };
+        let count = image_count(&caps);
         let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)
             .min_image_count(count)
             .image_format(self.format.format)

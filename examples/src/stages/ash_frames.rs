@@ -5,7 +5,7 @@
 use super::{Run, Samples, Stage, Timer};
 use crate::headless::COLOR_FORMAT;
 use crate::raw_ash::{self, Scene as _, Vulkan};
-use crate::render::{View, DEPTH_CLEAR, DEPTH_FORMAT, FRAMES_IN_FLIGHT};
+use crate::render::{View, DEPTH_FORMAT, FRAMES_IN_FLIGHT};
 use crate::scenes::teapot_grid::Layout;
 use crate::teapots_ash::Teapots;
 use anyhow::{anyhow, bail, Context as _, Result};
@@ -16,108 +16,6 @@ use winit::event::WindowEvent;
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::raw_window_handle::{self, HasDisplayHandle as _, HasWindowHandle as _};
 use winit::window::{Window, WindowId};
-
-/// Records a frame of `scene` into `cb`: the render pass on `framebuffer` with the
-/// scene's draws, as `render::record_frame` does in tuff.
-///
-/// # Safety
-///
-/// `cb` is a primary command buffer of `device`, not pending; every handle is live;
-/// the slot's last submission completed.
-unsafe fn record(
-    device: &ash::Device,
-    cb: vk::CommandBuffer,
-    render_pass: vk::RenderPass,
-    framebuffer: vk::Framebuffer,
-    scene: &Teapots,
-    view: &View,
-) -> Result<()> {
-    let area: vk::Rect2D = view.extent.into();
-    let clear = [
-        vk::ClearValue {
-            color: vk::ClearColorValue {
-                float32: scene.clear_color(),
-            },
-        },
-        vk::ClearValue {
-            depth_stencil: vk::ClearDepthStencilValue {
-                depth: DEPTH_CLEAR,
-                stencil: 0,
-            },
-        },
-    ];
-    // SAFETY: as the caller promises.
-    unsafe {
-        device
-            .begin_command_buffer(
-                cb,
-                &vk::CommandBufferBeginInfo::default()
-                    .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
-            )
-            .context("vkBeginCommandBuffer")?;
-        device.cmd_begin_render_pass(
-            cb,
-            &vk::RenderPassBeginInfo::default()
-                .render_pass(render_pass)
-                .framebuffer(framebuffer)
-                .render_area(area)
-                .clear_values(&clear),
-            vk::SubpassContents::INLINE,
-        );
-        device.cmd_set_viewport(
-            cb,
-            0,
-            &[vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: view.extent.width as f32,
-                height: view.extent.height as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            }],
-        );
-        device.cmd_set_scissor(cb, 0, &[area]);
-        scene.draw(device, cb, view);
-        device.cmd_end_render_pass(cb);
-        device.end_command_buffer(cb).context("vkEndCommandBuffer")
-    }
-}
-
-/// Command buffers of the objects' pool (made here if it has none yet), and fences
-/// created signalled, one each.
-fn frame_slots(vulkan: &mut Vulkan, count: usize) -> Result<Vec<(vk::CommandBuffer, vk::Fence)>> {
-    let (device, o) = (&vulkan.device, &mut vulkan.objects);
-    // SAFETY: valid create infos; every object goes into `o`, destroyed once the
-    // device is idle.
-    unsafe {
-        if o.command_pool == vk::CommandPool::null() {
-            o.command_pool = device
-                .create_command_pool(
-                    &vk::CommandPoolCreateInfo::default()
-                        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
-                        .queue_family_index(vulkan.family),
-                    None,
-                )
-                .context("vkCreateCommandPool")?;
-        }
-        let buffers = device
-            .allocate_command_buffers(
-                &vk::CommandBufferAllocateInfo::default()
-                    .command_pool(o.command_pool)
-                    .level(vk::CommandBufferLevel::PRIMARY)
-                    .command_buffer_count(count as u32),
-            )
-            .context("vkAllocateCommandBuffers")?;
-        let mut slots = Vec::new();
-        for cb in buffers {
-            let info = vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED);
-            let fence = device.create_fence(&info, None).context("vkCreateFence")?;
-            o.fences.push(fence);
-            slots.push((cb, fence));
-        }
-        Ok(slots)
-    }
-}
 
 /// `count` binary semaphores, owned by the objects.
 fn semaphores(vulkan: &mut Vulkan, count: usize) -> Result<Vec<vk::Semaphore>> {
@@ -186,8 +84,8 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
         let dst = vk::BufferUsageFlags::TRANSFER_DST;
         readbacks.push(o.buffer(&device, bytes, dst, cached)?.0);
     }
-    let frames = frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
-    let copies = frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
+    let frames = raw_ash::frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
+    let copies = raw_ash::frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
     let queue = vulkan.queue;
     let mut samples = Samples::new(run.warmup);
     let mut timer = Timer::default();
@@ -210,7 +108,7 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
             };
             scene.update(&view);
             timer.lap(Stage::Uniform);
-            record(&device, cb, pass, images[slot].1, &scene, &view)?;
+            raw_ash::record_frame(&device, cb, pass, images[slot].1, &scene, &view, None)?;
             timer.lap(Stage::Command);
             let submit = vk::SubmitInfo::default().command_buffers(std::slice::from_ref(&cb));
             device.reset_fences(&[fence]).context("vkResetFences")?;
@@ -223,7 +121,17 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
                 .wait_for_fences(&[copy_fence], true, u64::MAX)
                 .context("vkWaitForFences")?;
             timer.lap(Stage::Wait);
-            record_readback(&device, copy, images[slot].0, readbacks[slot], extent)?;
+            device
+                .begin_command_buffer(
+                    copy,
+                    &vk::CommandBufferBeginInfo::default()
+                        .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+                )
+                .context("vkBeginCommandBuffer")?;
+            raw_ash::record_readback(&device, copy, images[slot].0, readbacks[slot], extent);
+            device
+                .end_command_buffer(copy)
+                .context("vkEndCommandBuffer")?;
             // Ordered after the frame by the render pass's dependency on later
             // transfers, as in tuff's loop.
             let submit = vk::SubmitInfo::default().command_buffers(std::slice::from_ref(&copy));
@@ -239,66 +147,6 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
         device.device_wait_idle().context("vkDeviceWaitIdle")?;
     }
     Ok(samples)
-}
-
-/// Records, into `cb`, the copy of the color `image` (in TRANSFER_SRC_OPTIMAL) into
-/// `buffer` and the barrier that makes it visible to the host.
-///
-/// # Safety
-///
-/// `cb` is a primary command buffer of `device`, not pending; the handles are live.
-unsafe fn record_readback(
-    device: &ash::Device,
-    cb: vk::CommandBuffer,
-    image: vk::Image,
-    buffer: vk::Buffer,
-    extent: vk::Extent2D,
-) -> Result<()> {
-    let region = vk::BufferImageCopy {
-        image_subresource: vk::ImageSubresourceLayers {
-            aspect_mask: vk::ImageAspectFlags::COLOR,
-            mip_level: 0,
-            base_array_layer: 0,
-            layer_count: 1,
-        },
-        image_extent: extent.into(),
-        ..Default::default()
-    };
-    let to_host = vk::BufferMemoryBarrier::default()
-        .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
-        .dst_access_mask(vk::AccessFlags::HOST_READ)
-        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-        .buffer(buffer)
-        .offset(0)
-        .size(vk::WHOLE_SIZE);
-    // SAFETY: as the caller promises.
-    unsafe {
-        device
-            .begin_command_buffer(
-                cb,
-                &vk::CommandBufferBeginInfo::default()
-                    .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
-            )
-            .context("vkBeginCommandBuffer")?;
-        device.cmd_copy_image_to_buffer(
-            cb,
-            image,
-            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-            buffer,
-            &[region],
-        );
-        device.cmd_pipeline_barrier(
-            cb,
-            vk::PipelineStageFlags::TRANSFER,
-            vk::PipelineStageFlags::HOST,
-            vk::DependencyFlags::empty(),
-            &[],
-            &[to_host],
-            &[],
-        );
-        device.end_command_buffer(cb).context("vkEndCommandBuffer")
-    }
 }
 
 /// Renders `run.warmup + run.frames` frames of the teapots into a window in raw ash,
@@ -424,7 +272,7 @@ impl Live {
                 render_pass: pass,
                 scene,
                 chain: None,
-                frames: frame_slots(vulkan, FRAMES_IN_FLIGHT)?,
+                frames: raw_ash::frame_slots(vulkan, FRAMES_IN_FLIGHT)?,
                 acquired: semaphores(vulkan, FRAMES_IN_FLIGHT)?,
                 stale: true,
                 n: 0,
@@ -453,12 +301,7 @@ impl Live {
                 return Ok(false);
             };
             device.device_wait_idle().context("vkDeviceWaitIdle")?;
-            let count = caps.min_image_count.max(2);
-            let count = if caps.max_image_count == 0 {
-                count
-            } else {
-                count.min(caps.max_image_count)
-            };
+            let count = crate::window::image_count(&caps);
             let old = self.chain.take();
             let info = vk::SwapchainCreateInfoKHR::default()
                 .surface(self.surface)
@@ -626,13 +469,14 @@ impl Live {
             };
             self.scene.update(&view);
             timer.lap(Stage::Uniform);
-            record(
+            raw_ash::record_frame(
                 device,
                 cb,
                 self.render_pass,
                 chain.framebuffers[index],
                 &self.scene,
                 &view,
+                None,
             )?;
             timer.lap(Stage::Command);
             let waits = [acquired];
