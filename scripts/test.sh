@@ -7,6 +7,8 @@ cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
 . scripts/xvfb.sh
 [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
+# A clean run builds each crate once; incremental caches would only take disk.
+export CARGO_INCREMENTAL=0
 
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
@@ -36,3 +38,4 @@ bash scripts/valgrind.sh
 # The generator outside the pinned inputs: another registry, regenerated into a
 # scratch crate and compiled (scripts/wide-check.sh).
 bash scripts/wide-check.sh 1.4.309 1.4.330
+echo "test.sh: target folder $(du -sh target | cut -f1)"
