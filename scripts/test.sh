@@ -35,7 +35,7 @@ cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tu
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 bash scripts/valgrind.sh
-# The generator outside the pinned inputs: another registry, regenerated into a
-# scratch crate and compiled (scripts/wide-check.sh).
-bash scripts/wide-check.sh 1.4.309 1.4.330
+# The generator outside the pinned inputs: each newer registry, with every extension
+# ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh).
+bash scripts/wide-check.sh all-1.4.309 all-1.4.330
 echo "test.sh: target folder $(du -sh target | cut -f1)"

@@ -10,10 +10,8 @@
 #   1.4.330        a newer one without validusage.json (implicit rules derived), whose
 #                  core versions are split into internal feature blocks; same config
 #   all-1.4.309,   the pinned config itself (every extension ash has) on each newer
-#   all-1.4.330    registry. Not in the test command yet: these emit names ash 0.38
-#                  has only under an older alias (promoted to core in 1.4, or renamed),
-#                  and structs and commands its extensions lack, which the reference
-#                  registry's filter does not map or leave out yet.
+#   all-1.4.330    registry: what 1.4 promoted is named by the alias ash has, and the
+#                  items ash lacks are left out, each with its reason (gen.log).
 #
 # (The pinned config itself emits every extension ash 0.38 has, so the committed crate
 # is the every-extension check; scripts/test.sh builds it with all_extensions.)

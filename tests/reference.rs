@@ -190,3 +190,86 @@ fn the_report_breaks_the_emitted_api_down_by_version_and_extension() {
         emitted[1].parse::<usize>().unwrap() + emitted[2].parse::<usize>().unwrap();
     assert_eq!(settled, static_dynamic);
 }
+
+/// A registry newer than ash's: 1.4.309 renames what 1.4 promoted
+/// (`VkPhysicalDevicePushDescriptorPropertiesKHR` is an alias of the 1.4 name), adds
+/// items to extensions ash has, and moves two commands to other extensions' require
+/// blocks. With core up to 1.3, the emitted API names each item as ash does, and
+/// leaves out only what ash lacks, each item with its reason.
+#[test]
+fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lacks() {
+    let newer = load_registry(&root().join("../shared/registry/1.4.309/vk.xml"))
+        .expect("the 1.4.309 registry");
+    let (_, reference) = registries();
+    let config = tuff_gen::config::Config {
+        api_version: "1.3".to_owned(),
+        all_extensions: true,
+        ..Default::default()
+    };
+    let model = tuff_gen::model::Model::build(
+        &newer,
+        Some(&reference),
+        &config,
+        std::path::Path::new("test.toml"),
+    )
+    .expect("the model builds");
+    let left: Vec<(&str, &str)> = model
+        .left_out
+        .iter()
+        .map(|l| (l.name.as_str(), l.reason.as_str()))
+        .collect();
+    let reason = |name: &str| {
+        left.iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, r)| *r)
+            .unwrap_or_else(|| panic!("{name} is not left out: {left:?}"))
+    };
+    // Kept although 1.4 renamed their types or added to them: aliases on both sides
+    // and array sizes by value compare alike, and what only the newer registry has
+    // goes alone.
+    for kept in [
+        "VK_KHR_push_descriptor",
+        "VK_EXT_line_rasterization",
+        "VK_KHR_global_priority",
+        "VK_KHR_ray_tracing_pipeline",
+        "VK_NV_optical_flow",
+        "VK_NVX_binary_import",
+    ] {
+        assert!(
+            model.enabled.contains(kept),
+            "{kept} left out: {:?}",
+            left.iter().find(|(n, _)| *n == kept)
+        );
+    }
+    assert!(reason("VkCuModuleTexturingModeCreateInfoNVX").contains("has no type"));
+    assert!(reason("vkGetImageViewHandle64NVX").contains("has no command"));
+    assert!(reason("vkCmdWriteBufferMarker2AMD")
+        .contains("function table of `VK_KHR_synchronization2`"));
+    assert!(!model.emitted.contains("vkCmdWriteBufferMarker2AMD"));
+    // Named as ash names them.
+    assert_eq!(
+        model.spelling("VkPhysicalDevicePushDescriptorProperties"),
+        "VkPhysicalDevicePushDescriptorPropertiesKHR"
+    );
+    assert_eq!(
+        model.spelling("vkCmdPushDescriptorSet"),
+        "vkCmdPushDescriptorSetKHR"
+    );
+    assert_eq!(
+        model.name_in(
+            "vkGetCalibratedTimestampsKHR",
+            "VK_EXT_calibrated_timestamps"
+        ),
+        "vkGetCalibratedTimestampsEXT"
+    );
+    // The pinned registry needs no other spelling.
+    let (pinned, _) = registries();
+    let model = tuff_gen::model::Model::build(
+        &pinned,
+        Some(&reference),
+        &config,
+        std::path::Path::new("test.toml"),
+    )
+    .expect("the model builds");
+    assert!(model.spellings.is_empty(), "{:?}", model.spellings);
+}

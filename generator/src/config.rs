@@ -5,7 +5,7 @@ use serde::Deserialize;
 use std::path::Path;
 
 /// What the emitted API contains.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Config {
     /// The newest core version to emit, as `"1.3"`: every `VK_VERSION_1_x` up to it.

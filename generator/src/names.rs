@@ -172,6 +172,17 @@ pub enum Table {
     Extension(String),
 }
 
+/// The field of `table` that holds `command`'s function pointer: ash names an
+/// extension's field after the name that extension's require blocks use, which for
+/// a command promoted or renamed since is one of its aliases
+/// (`get_ray_tracing_shader_group_handles_nv` in `VK_NV_ray_tracing`'s table).
+pub fn fn_field(model: &Model, command: &str, table: &Table) -> Ident {
+    match table {
+        Table::Core(_) => ident(&command_fn(command)),
+        Table::Extension(e) => ident(&command_fn(model.name_in(command, e))),
+    }
+}
+
 /// Which level a command dispatches at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Level {

@@ -24,7 +24,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     for (name, checks) in &checker.struct_cache {
         needs.extend(checks.iter().flat_map(Check::needs));
         let f = ident(&format!("check_{}", snake(name)));
-        let ty = crate::names::type_ident(name);
+        let ty = crate::names::type_ident(checker.cx.model.spelling(name));
         let lt = if checker.cx.facts.has_lifetime(name) {
             quote!(<'_>)
         } else {
@@ -216,7 +216,7 @@ fn chain_fn(checker: &Checker, origins: &Origins) -> TokenStream {
             continue;
         };
         let f = ident(&format!("check_{}", snake(name)));
-        let ty = crate::names::type_ident(name);
+        let ty = crate::names::type_ident(model.spelling(name));
         let cfg = crate::names::cfg_of(model, model.condition(name));
         let lit = Literal::i32_unsuffixed(stype);
         arms.push(quote! {

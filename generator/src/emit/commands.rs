@@ -193,7 +193,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = crate::names::cfg_of(model, model.condition(&plan.name));
-    let f = ident(&command_fn(&plan.name));
+    let f = ident(&command_fn(model.spelling(&plan.name)));
     // Commands recorded into a command buffer go on the recorder; the others of a
     // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,
     // so that no recorder of it is alive.
@@ -217,10 +217,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // borrow of the receiver's table is held across what the call does to the
     // receiver (and the call fails when the extension is not enabled); for core,
     // alike, which keeps the call on one line.
-    let (load_fp, fallible_ext) = match table(model, &plan.name) {
+    let the_table = table(model, &plan.name);
+    let field = the_table
+        .as_ref()
+        .map(|t| crate::names::fn_field(model, &plan.name, t));
+    let (load_fp, fallible_ext) = match the_table {
         Some(Table::Core(m)) => {
             let table = ident(&format!("fp_v1_{m}"));
-            (quote!(let fp = #device_path.fns().#table().#f;), false)
+            (quote!(let fp = #device_path.fns().#table().#field;), false)
         }
         // A method that moves the recorder returns the next one, not a `Result`: a
         // missing table poisons the recorder (its `end` returns the error), and a
@@ -236,7 +240,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         #skip
                         return self.into_state();
                     };
-                    let fp = table.#f;
+                    let fp = table.#field;
                 },
                 false,
             )
@@ -244,7 +248,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         Some(Table::Extension(e)) => {
             let fe = ident(&crate::names::feature(&e));
             (
-                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#e))?.#f;),
+                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#e))?.#field;),
                 true,
             )
         }
@@ -914,7 +918,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         }
     } else {
-        let unchecked = ident(&format!("{}_unchecked", command_fn(&plan.name)));
+        let unchecked = ident(&format!(
+            "{}_unchecked",
+            command_fn(model.spelling(&plan.name))
+        ));
         let names: Vec<TokenStream> = args
             .iter()
             .filter_map(|a| a.clone().into_iter().next())
@@ -960,7 +967,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let unchecked_doc = format!(
             "`{}` without its dynamic checks.\n\n# Safety\n\nThe caller upholds the rules that [`Self::{}`] checks at run time{}.",
             plan.name,
-            command_fn(&plan.name),
+            command_fn(model.spelling(&plan.name)),
             if owned.is_empty() {
                 " (those of the structs it takes)".to_owned()
             } else {
@@ -977,7 +984,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
         // The checks are a named method beside the command's, taking only the
         // arguments they read.
-        let validate = ident(&format!("validate_{}", command_fn(&plan.name)));
+        let validate = ident(&format!(
+            "validate_{}",
+            command_fn(model.spelling(&plan.name))
+        ));
         let read: Vec<(&TokenStream, &TokenStream)> = args
             .iter()
             .zip(&names)
@@ -1007,7 +1017,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         let v_doc = format!(
             "The dynamic checks of [`Self::{}`], run before the call.",
-            command_fn(&plan.name)
+            command_fn(model.spelling(&plan.name))
         );
         validator = (!checks.is_empty()).then(|| {
             quote! {

@@ -19,7 +19,7 @@ pub(super) fn emit(model: &Model) -> TokenStream {
         if !extends || !model.is_emitted(&t.name) {
             continue;
         }
-        let ty = Ident::new(&type_name(&t.name), Span::call_site());
+        let ty = Ident::new(&type_name(model.spelling(&t.name)), Span::call_site());
         let sets: Vec<TokenStream> = if t.name == "VkPhysicalDeviceFeatures2" {
             vec![quote!(f.v10 = s.features;)]
         } else {

@@ -3,9 +3,7 @@
 //! clone to go destroys or frees the handle, so children keep parents alive and a
 //! command buffer or a pending submission that holds a clone keeps what it uses alive.
 
-use crate::names::{
-    ash_extension_module, cfg_of, command_fn, feature, ident, level, type_ident, Level,
-};
+use crate::names::{ash_extension_module, cfg_of, feature, ident, level, type_ident, Level};
 use crate::plan::commands::parent_of;
 use crate::plan::Context;
 use proc_macro2::TokenStream;
@@ -465,7 +463,9 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     let drop_impl = destroy.as_ref().and_then(|d| {
         let cmd = &model.commands[d];
         let device_path = inner_path(cx, name, &cmd.params[0].type_name)?;
-        let table = match crate::names::table(model, d)? {
+        let the_table = crate::names::table(model, d)?;
+        let f = crate::names::fn_field(model, d, &the_table);
+        let table = match the_table {
             crate::names::Table::Core(m) => {
                 let fp = ident(&format!("fp_v1_{m}"));
                 quote!(self #device_path.fns().#fp())
@@ -475,7 +475,6 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                 quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
             }
         };
-        let f = ident(&command_fn(d));
         let mut args = Vec::new();
         for (i, p) in cmd.params.iter().enumerate() {
             if i == 0 {

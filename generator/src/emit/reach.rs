@@ -29,7 +29,7 @@ pub fn emit(cx: &Context) -> TokenStream {
     let mut fns = Vec::new();
     let mut arms = Vec::new();
     for name in found {
-        let ty = type_ident(name);
+        let ty = type_ident(model.spelling(name));
         let ty = if cx.facts.has_lifetime(name) {
             quote!(#ty<'_>)
         } else {

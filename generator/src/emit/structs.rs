@@ -57,7 +57,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     let model = cx.model;
     let facts: &TypeFacts = &cx.facts;
     let t = &model.types[name];
-    let id = type_ident(name);
+    let id = type_ident(model.spelling(name));
     let raw_ty = if facts.has_lifetime(name) {
         quote!(vk::#id<'a>)
     } else {
@@ -275,7 +275,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     let rules = doc_rules(plans, name);
     let doc = format!(
         "Safe counterpart of [`vk::{}`].{rules}",
-        crate::names::type_name(name)
+        crate::names::type_name(model.spelling(name))
     );
     let mut parts = Vec::new();
     let new_fn = if ctor_args.is_empty() {
@@ -303,7 +303,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         .filter(|head| cx.model.emitted.contains(*head) && cx.facts.is_safe(head))
         .filter(|head| !crate::plan::hooks::unchained(name, head))
         .map(|head| {
-            let h = type_ident(head);
+            let h = type_ident(model.spelling(head));
             let head_cfg = cfg_of(model, model.condition(head));
             // SAFETY: the registry lists this struct in the head's `structextends`.
             // One lifetime for both: a pushed struct holds the head's chain, so it
@@ -343,7 +343,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
 
 /// The generated safe type of a struct, or ash's when it has none.
 pub fn safe_or_ash(cx: &Context, name: &str) -> TokenStream {
-    let id = type_ident(name);
+    let id = type_ident(cx.model.spelling(name));
     if cx.facts.is_safe(name) {
         quote!(#id<'a>)
     } else if cx.facts.has_lifetime(name) {

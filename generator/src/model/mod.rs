@@ -99,6 +99,15 @@ pub struct Model {
     /// The extensions the config wants that the reference lacks or defines
     /// otherwise, with the reason, in name order.
     pub left_out: Vec<reference::LeftOut>,
+    /// For each type and command, the alternatives (`VK_KHR_x`, `VK_KHR_x+dep`) of
+    /// the require blocks that name it under this very name, aliases not merged.
+    pub named_by: BTreeMap<String, BTreeSet<String>>,
+    /// Items of the emitted API that no enabled require block names under their
+    /// own name, with the alias one does: a newer registry names an item promoted
+    /// to a core version the config does not emit by that version's name
+    /// (`VkPhysicalDevicePushDescriptorProperties` of 1.4), while the emitted API
+    /// (and ash) knows it by the extension's (`...PropertiesKHR`).
+    pub spellings: BTreeMap<String, String>,
 }
 
 /// A handle type and what the registry says about its lifetime.
@@ -117,6 +126,37 @@ pub struct Handle {
 }
 
 impl Model {
+    /// The name the emitted API knows an item by: its own, or the alias an enabled
+    /// require block names it by (see [`Model::spellings`]).
+    pub fn spelling<'a>(&'a self, name: &'a str) -> &'a str {
+        self.spellings.get(name).map_or(name, String::as_str)
+    }
+
+    /// The name among `name` and its aliases that `interface`'s require blocks use.
+    pub fn name_in<'a>(&'a self, name: &'a str, interface: &str) -> &'a str {
+        let names_it = |n: &str| {
+            self.named_by.get(n).is_some_and(|alts| {
+                alts.iter()
+                    .any(|a| a == interface || a.split('+').next() == Some(interface))
+            })
+        };
+        if names_it(name) {
+            return name;
+        }
+        self.commands
+            .values()
+            .filter(|c| c.alias.as_deref() == Some(name))
+            .map(|c| c.name.as_str())
+            .chain(
+                self.types
+                    .values()
+                    .filter(|t| t.alias.as_deref() == Some(name))
+                    .map(|t| t.name.as_str()),
+            )
+            .find(|n| names_it(n))
+            .unwrap_or(name)
+    }
+
     /// The version or extension an item belongs to, as vk.xml spells it: its core
     /// version (`VK_VERSION_1_0` for `core`), the oldest version that has it on its
     /// own for an item promoted to core (`VK_KHR_copy_commands2,VK_VERSION_1_3`),
@@ -290,6 +330,7 @@ impl Model {
             }
         }
 
+        let named_by = alternatives.clone();
         // A promoted item exists wherever any of its aliases does (vkCmdDrawIndirectCount
         // also with VK_KHR_draw_indirect_count): the alias's blocks name the same item.
         let aliased: Vec<(String, String)> = types
@@ -301,6 +342,17 @@ impl Model {
                     .filter_map(|c| c.alias.clone().map(|a| (c.name.clone(), a))),
             )
             .collect();
+        let names_enabled = |name: &str| {
+            named_by
+                .get(name)
+                .is_some_and(|alts| alts.iter().any(|a| expr::eval(a, &enabled)))
+        };
+        let mut spellings: BTreeMap<String, String> = BTreeMap::new();
+        for (alias, target) in &aliased {
+            if !names_enabled(target) && names_enabled(alias) && !spellings.contains_key(target) {
+                spellings.insert(target.clone(), alias.clone());
+            }
+        }
         for (alias, target) in aliased {
             if let Some(alts) = alternatives.get(&alias).cloned() {
                 alternatives.entry(target).or_default().extend(alts);
@@ -398,9 +450,11 @@ impl Model {
                 enabled.contains(to).then(|| (e.name.clone(), to.clone()))
             })
             .collect();
-        Ok(Model {
+        let mut model = Model {
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
+            named_by,
+            spellings,
             version: registry.version.clone(),
             types,
             commands,
@@ -441,7 +495,19 @@ impl Model {
                 .filter(|e| e.ext_type.as_deref() == Some("instance"))
                 .map(|e| e.name.clone())
                 .collect(),
-        })
+        };
+        if let Some(reference) = reference {
+            let missing = reference::missing_items(&model, reference);
+            for m in &missing {
+                model.emitted.remove(&m.name);
+            }
+            // A value ash lacks cannot be named in the emitted code.
+            for values in model.enum_values.values_mut() {
+                values.retain(|v| reference.enum_numbers.contains_key(v));
+            }
+            model.left_out.extend(missing);
+        }
+        Ok(model)
     }
 
     /// The category of a type, following no aliases (as the specification's

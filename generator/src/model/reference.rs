@@ -25,7 +25,6 @@ struct Defined<'a> {
     types: BTreeMap<&'a str, &'a crate::registry::TypeDef>,
     commands: BTreeMap<&'a str, &'a crate::registry::CommandDef>,
     extensions: BTreeSet<&'a str>,
-    values: &'a BTreeMap<String, i64>,
 }
 
 impl<'a> Defined<'a> {
@@ -47,33 +46,98 @@ impl<'a> Defined<'a> {
                 .filter(|e| super::is_supported(e.supported.as_deref()))
                 .map(|e| e.name.as_str())
                 .collect(),
-            values: &reference.enum_numbers,
         }
     }
 }
 
-/// The parts of a member or parameter the generated code depends on; a type name
-/// that the reference makes an alias stands for its target (ash defines both names
-/// as one type).
-fn shape<'a>(
-    f: &'a Field,
-    aliases: &BTreeMap<&str, &'a crate::registry::TypeDef>,
-) -> (&'a str, &'a str, usize, Option<&'a str>) {
-    let ty = match aliases
-        .get(f.type_name.as_str())
-        .and_then(|t| t.alias.as_deref())
-    {
-        Some(target) => target,
-        None => f.type_name.as_str(),
-    };
-    (f.name.as_str(), ty, f.pointers, f.static_array.as_deref())
+/// Type names that one of the two registries makes another name of the same type,
+/// each mapped to one representative: a newer registry renames an item promoted to
+/// core (`VkLineRasterizationModeKHR` becomes an alias of `VkLineRasterizationMode`),
+/// and ash defines every name of the reference's class as one type.
+struct Classes<'a> {
+    representative: BTreeMap<&'a str, &'a str>,
+    /// Constants by number (`VK_MAX_GLOBAL_PRIORITY_SIZE_KHR` became
+    /// `VK_MAX_GLOBAL_PRIORITY_SIZE`), so array sizes compare by value.
+    numbers: BTreeMap<&'a str, i64>,
 }
 
-fn fields<'a>(
-    list: &'a [Field],
-    aliases: &BTreeMap<&str, &'a crate::registry::TypeDef>,
-) -> Vec<(&'a str, &'a str, usize, Option<&'a str>)> {
-    list.iter().map(|f| shape(f, aliases)).collect()
+impl<'a> Classes<'a> {
+    fn of(registries: &[&'a Registry]) -> Classes<'a> {
+        let mut parent: BTreeMap<&'a str, &'a str> = BTreeMap::new();
+        fn find<'a>(parent: &BTreeMap<&'a str, &'a str>, mut x: &'a str) -> &'a str {
+            while let Some(&p) = parent.get(x) {
+                if p == x {
+                    break;
+                }
+                x = p;
+            }
+            x
+        }
+        for r in registries {
+            for t in &r.types {
+                if let Some(target) = t.alias.as_deref() {
+                    let (a, b) = (find(&parent, &t.name), find(&parent, target));
+                    if a != b {
+                        // The smaller name represents the class, so that the
+                        // result does not depend on the order of the registries.
+                        let (small, large) = if a < b { (a, b) } else { (b, a) };
+                        parent.insert(large, small);
+                    }
+                }
+            }
+        }
+        let representative = parent
+            .keys()
+            .map(|&name| (name, find(&parent, name)))
+            .collect();
+        let numbers = registries
+            .iter()
+            .flat_map(|r| r.enum_numbers.iter().map(|(k, v)| (k.as_str(), *v)))
+            .collect();
+        Classes {
+            representative,
+            numbers,
+        }
+    }
+
+    fn array(&self, size: Option<&'a str>) -> Option<String> {
+        size.map(|s| match self.numbers.get(s) {
+            Some(n) => n.to_string(),
+            None => s.to_owned(),
+        })
+    }
+
+    fn of_name(&self, name: &'a str) -> &'a str {
+        self.representative.get(name).copied().unwrap_or(name)
+    }
+}
+
+/// The parts of a member or parameter the generated code depends on, its type named
+/// by its class's representative.
+type Shape<'a> = (&'a str, &'a str, usize, Option<String>);
+
+fn shape<'a>(f: &'a Field, classes: &Classes<'a>) -> Shape<'a> {
+    (
+        f.name.as_str(),
+        classes.of_name(f.type_name.as_str()),
+        f.pointers,
+        classes.array(f.static_array.as_deref()),
+    )
+}
+
+fn fields<'a>(list: &'a [Field], classes: &Classes<'a>) -> Vec<Shape<'a>> {
+    list.iter().map(|f| shape(f, classes)).collect()
+}
+
+/// A command's parameters as its function pointer types them: names do not matter
+/// (a newer registry renames `pLocationInfo`), types and pointer levels do.
+fn signature<'a>(list: &'a [Field], classes: &Classes<'a>) -> Vec<Shape<'a>> {
+    list.iter()
+        .map(|f| {
+            let (_, ty, pointers, array) = shape(f, classes);
+            ("", ty, pointers, array)
+        })
+        .collect()
 }
 
 /// The type an alias names (through at most a few aliases), or `t` itself.
@@ -90,8 +154,16 @@ fn resolve<'a>(
     t
 }
 
-/// The first item of `interface` that `defined` lacks or defines otherwise.
-fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> Option<String> {
+/// The first item of `interface` that `defined` lacks or defines otherwise. A require
+/// block whose own condition cannot hold with `possible` enabled (it adds to an
+/// extension the reference lacks) is skipped: none of its items is emitted.
+fn differs<'a>(
+    pinned: &'a Registry,
+    defined: &Defined<'a>,
+    classes: &Classes<'a>,
+    possible: &BTreeSet<String>,
+    interface: &'a Interface,
+) -> Option<String> {
     let types: BTreeMap<&str, &crate::registry::TypeDef> =
         pinned.types.iter().map(|t| (t.name.as_str(), t)).collect();
     let commands: BTreeMap<&str, &crate::registry::CommandDef> = pinned
@@ -100,9 +172,16 @@ fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> O
         .map(|c| (c.name.as_str(), c))
         .collect();
     for require in &interface.requires {
+        if let Some(depends) = require.depends.as_deref() {
+            if !expr::eval(depends, possible) {
+                continue;
+            }
+        }
+        // An item the reference lacks altogether (a newer registry adds it to the
+        // extension) is left out on its own by `missing_items`; the extension stays.
         for name in &require.types {
             let Some(theirs) = defined.types.get(name.as_str()) else {
-                return Some(format!("the reference has no type `{name}`"));
+                continue;
             };
             let Some(ours) = types.get(name.as_str()) else {
                 continue;
@@ -110,8 +189,8 @@ fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> O
             // An alias names its target's members (ash defines it as a type alias).
             let (ours, theirs) = (resolve(&types, ours), resolve(&defined.types, theirs));
             let (a, b) = (
-                fields(&ours.members, &defined.types),
-                fields(&theirs.members, &defined.types),
+                fields(&ours.members, classes),
+                fields(&theirs.members, classes),
             );
             if a != b {
                 let at = a
@@ -119,11 +198,11 @@ fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> O
                     .zip(&b)
                     .position(|(x, y)| x != y)
                     .unwrap_or(a.len().min(b.len()));
-                let show = |f: Option<&(&str, &str, usize, Option<&str>)>| match f {
+                let show = |f: Option<&Shape<'_>>| match f {
                     Some((name, ty, pointers, array)) => format!(
                         "`{ty}{} {name}{}`",
                         "*".repeat(*pointers),
-                        array.map(|n| format!("[{n}]")).unwrap_or_default()
+                        array.as_ref().map(|n| format!("[{n}]")).unwrap_or_default()
                     ),
                     None => "nothing".to_owned(),
                 };
@@ -133,19 +212,10 @@ fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> O
                     show(a.get(at))
                 ));
             }
-            if let Some(group) = pinned.enum_groups.iter().find(|g| &g.name == name) {
-                if let Some(v) = group
-                    .values
-                    .iter()
-                    .find(|v| !defined.values.contains_key(*v))
-                {
-                    return Some(format!("the reference has no value `{v}` of `{name}`"));
-                }
-            }
         }
         for name in &require.commands {
             let Some(theirs) = defined.commands.get(name.as_str()) else {
-                return Some(format!("the reference has no command `{name}`"));
+                continue;
             };
             let Some(ours) = commands.get(name.as_str()) else {
                 continue;
@@ -162,13 +232,8 @@ fn differs(pinned: &Registry, defined: &Defined<'_>, interface: &Interface) -> O
                 Some(target) => target,
                 None => ours,
             };
-            if fields(&ours.params, &defined.types) != fields(&theirs.params, &defined.types) {
+            if signature(&ours.params, classes) != signature(&theirs.params, classes) {
                 return Some(format!("the reference gives `{name}` other parameters"));
-            }
-        }
-        for (value, group) in &require.enum_extensions {
-            if !defined.values.contains_key(value) {
-                return Some(format!("the reference has no value `{value}` of `{group}`"));
             }
         }
     }
@@ -188,6 +253,18 @@ pub fn select(
         return (wanted.to_vec(), Vec::new());
     };
     let defined = Defined::of(reference);
+    let classes = Classes::of(&[pinned, reference]);
+    // What can be enabled at most: the versions and every wanted extension the
+    // reference has.
+    let possible: BTreeSet<String> = versions
+        .iter()
+        .chain(
+            wanted
+                .iter()
+                .filter(|w| defined.extensions.contains(w.as_str())),
+        )
+        .cloned()
+        .collect();
     let mut left: Vec<LeftOut> = Vec::new();
     for name in wanted {
         let reason = if !defined.extensions.contains(name.as_str()) {
@@ -200,7 +277,7 @@ pub fn select(
                 .extensions
                 .iter()
                 .find(|e| &e.name == name)
-                .and_then(|e| differs(pinned, &defined, e))
+                .and_then(|e| differs(pinned, &defined, &classes, &possible, e))
         };
         if let Some(reason) = reason {
             left.push(LeftOut {
@@ -248,4 +325,104 @@ pub fn select(
         .collect();
     left.sort_by(|a, b| a.name.cmp(&b.name));
     (kept, left)
+}
+
+/// The items of the emitted API that ash lacks although it has their extension: a
+/// registry newer than the reference adds a type, a command or a value to an
+/// extension, or moves a command to another extension's require block (ash keeps
+/// a command in the function table of the extension that names it in the
+/// reference). Each is left out on its own, and so is every item that names one
+/// (a struct with such a member, a command with such a parameter, an alias).
+pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut> {
+    let defined = Defined::of(reference);
+    let mut homes: BTreeMap<&str, BTreeSet<&str>> = BTreeMap::new();
+    for iface in reference.features.iter().chain(&reference.extensions) {
+        for require in &iface.requires {
+            for c in &require.commands {
+                homes
+                    .entry(c.as_str())
+                    .or_default()
+                    .insert(iface.name.as_str());
+            }
+        }
+    }
+    let mut out: BTreeMap<String, String> = BTreeMap::new();
+    for name in &model.emitted {
+        let spelled = model.spelling(name);
+        if let Some(t) = model.types.get(name) {
+            if t.alias.is_none() && !defined.types.contains_key(spelled) {
+                out.insert(
+                    name.clone(),
+                    format!(
+                        "the reference registry (Vulkan {}) has no type `{spelled}`",
+                        reference.version
+                    ),
+                );
+            }
+        } else if let Some(c) = model.commands.get(name) {
+            if c.alias.is_some() {
+                continue;
+            }
+            if !defined.commands.contains_key(spelled) {
+                out.insert(
+                    name.clone(),
+                    format!(
+                        "the reference registry (Vulkan {}) has no command `{spelled}`",
+                        reference.version
+                    ),
+                );
+            } else if let Some(crate::names::Table::Extension(e)) = crate::names::table(model, name)
+            {
+                let field = model.name_in(name, &e);
+                let named = [name.as_str(), spelled, field]
+                    .iter()
+                    .any(|n| homes.get(n).is_some_and(|h| h.contains(e.as_str())));
+                if !named {
+                    let there: Vec<&str> =
+                        homes.get(spelled).into_iter().flatten().copied().collect();
+                    out.insert(
+                        name.clone(),
+                        format!(
+                            "ash keeps `{spelled}` in the function table of `{}`, not of `{e}`",
+                            there.join("`, `")
+                        ),
+                    );
+                }
+            }
+        }
+    }
+    // Whatever names a missing item goes too, until nothing more does.
+    loop {
+        let more: Vec<(String, String)> = model
+            .emitted
+            .iter()
+            .filter(|n| !out.contains_key(*n))
+            .filter_map(|n| {
+                let named: Vec<&str> = match (model.types.get(n), model.commands.get(n)) {
+                    (Some(t), _) => t
+                        .alias
+                        .iter()
+                        .map(String::as_str)
+                        .chain(t.members.iter().map(|m| m.type_name.as_str()))
+                        .collect(),
+                    (None, Some(c)) => c
+                        .alias
+                        .iter()
+                        .map(String::as_str)
+                        .chain(c.params.iter().map(|p| p.type_name.as_str()))
+                        .collect(),
+                    (None, None) => Vec::new(),
+                };
+                let gone = named.into_iter().find(|x| out.contains_key(*x))?;
+                Some((n.clone(), format!("it names `{gone}`, which is left out")))
+            })
+            .collect();
+        if more.is_empty() {
+            break;
+        }
+        out.extend(more);
+    }
+    out.into_iter()
+        .map(|(name, reason)| LeftOut { name, reason })
+        .collect()
 }

@@ -155,7 +155,7 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
             let t = model.types.get(name)?;
             return match t.category {
                 Some(Kind::Struct | Kind::Union) => {
-                    let id = type_ident(name);
+                    let id = type_ident(model.spelling(name));
                     Some(if facts.has_lifetime(name) {
                         quote!(vk::#id<'a>)
                     } else {
@@ -164,11 +164,13 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
                 }
                 Some(Kind::Enum) if name.contains("FlagBits") => {
                     // ash has one type for a bitmask and its bits.
-                    let id = ident(&crate::names::type_name(name).replace("FlagBits", "Flags"));
+                    let id = ident(
+                        &crate::names::type_name(model.spelling(name)).replace("FlagBits", "Flags"),
+                    );
                     Some(quote!(vk::#id))
                 }
                 Some(Kind::Handle | Kind::Enum | Kind::Bitmask | Kind::Basetype) => {
-                    let id = type_ident(name);
+                    let id = type_ident(model.spelling(name));
                     Some(quote!(vk::#id))
                 }
                 Some(Kind::Funcpointer) => {

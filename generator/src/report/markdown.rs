@@ -398,14 +398,18 @@ fn reference_section(s: &mut String, r: &Report<'_>) {
         "The emitted code builds on `ash`, which is generated from one registry; the \
          config's `reference_registry` is that registry (Vulkan {version}). An extension \
          the config asks for is left out when the reference lacks it or defines one of \
-         its types, commands or values otherwise (every member and parameter is \
-         compared, aliases resolved), or when it depends on one left out."
+         its types or commands otherwise (every member and parameter is compared, \
+         aliases of either registry resolved, array sizes by value), or when it depends \
+         on one left out. An item of a kept extension is left out alone when the \
+         reference lacks it (a newer registry added it) or ash keeps the command in \
+         another extension's function table, and so is every item that names it; a \
+         value the reference lacks is not emitted."
     );
     if r.left_out.is_empty() {
         let _ = writeln!(s, "\nNothing the config asks for is left out.");
         return;
     }
-    let _ = writeln!(s, "\n| Extension | Why it is left out |\n|---|---|");
+    let _ = writeln!(s, "\n| Extension or item | Why it is left out |\n|---|---|");
     for l in &r.left_out {
         let _ = writeln!(s, "| `{}` | {} |", l.name, l.reason.replace('|', "\\|"));
     }

@@ -37,7 +37,7 @@ pub(crate) fn flags_acceleration_structure_create_flags_khr(
     if s.enabled(&[15u16]) {
         valid |= 8;
     }
-    if s.enabled(&[117u16]) {
+    if s.enabled(&[115u16]) {
         valid |= 4;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -104,7 +104,7 @@ pub(crate) fn enum_acceleration_structure_type_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         2 => &[0u16],
-        0..=1 => &[116u16, 0u16],
+        0..=1 => &[114u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -141,13 +141,13 @@ pub(crate) fn flags_access_flags(
     if s.enabled(&[51u16]) {
         valid |= 234881024;
     }
-    if s.enabled(&[66u16, 116u16]) {
+    if s.enabled(&[64u16, 114u16]) {
         valid |= 6291456;
     }
-    if s.enabled(&[80u16, 119u16]) {
+    if s.enabled(&[78u16, 117u16]) {
         valid |= 8388608;
     }
-    if s.enabled(&[111u16]) {
+    if s.enabled(&[109u16]) {
         valid |= 393216;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -178,22 +178,22 @@ pub(crate) fn flags_access_flags2(
     if s.enabled(&[39u16]) {
         valid |= 52776558133248;
     }
-    if s.enabled(&[61u16]) {
+    if s.enabled(&[59u16]) {
         valid |= 549755813888;
     }
-    if s.enabled(&[91u16]) {
+    if s.enabled(&[89u16]) {
         valid |= 1099511627776;
     }
-    if s.enabled(&[100u16]) {
+    if s.enabled(&[98u16]) {
         valid |= 268304384;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[102u16]) {
         valid |= 103079215104;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[103u16]) {
         valid |= 412316860416;
     }
-    if s.enabled(&[115u16]) {
+    if s.enabled(&[113u16]) {
         valid |= 13194139533312;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -261,7 +261,7 @@ pub(crate) fn enum_attachment_store_op(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000301000 => &[34u16, 74u16, 123u16, 3u16],
+        1000301000 => &[34u16, 72u16, 121u16, 3u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -356,7 +356,7 @@ pub(crate) fn flags_buffer_create_flags(
     if s.enabled(&[1u16]) {
         valid |= 8;
     }
-    if s.enabled(&[10u16, 68u16, 2u16]) {
+    if s.enabled(&[10u16, 66u16, 2u16]) {
         valid |= 16;
     }
     if s.enabled(&[15u16]) {
@@ -384,7 +384,7 @@ pub(crate) fn flags_buffer_usage_flags(
     if s.enabled(&[0u16]) {
         valid |= 511;
     }
-    if s.enabled(&[10u16, 68u16, 2u16]) {
+    if s.enabled(&[10u16, 66u16, 2u16]) {
         valid |= 131072;
     }
     if s.enabled(&[12u16]) {
@@ -399,16 +399,16 @@ pub(crate) fn flags_buffer_usage_flags(
     if s.enabled(&[51u16]) {
         valid |= 6144;
     }
-    if s.enabled(&[66u16]) {
+    if s.enabled(&[64u16]) {
         valid |= 1572864;
     }
-    if s.enabled(&[92u16, 116u16]) {
+    if s.enabled(&[90u16, 114u16]) {
         valid |= 1024;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[102u16]) {
         valid |= 24576;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[103u16]) {
         valid |= 98304;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -433,10 +433,10 @@ pub(crate) fn flags_build_acceleration_structure_flags_khr(
     if s.enabled(&[39u16]) {
         valid |= 448;
     }
-    if s.enabled(&[116u16, 0u16]) {
+    if s.enabled(&[114u16, 0u16]) {
         valid |= 31;
     }
-    if s.enabled(&[117u16]) {
+    if s.enabled(&[115u16]) {
         valid |= 32;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -480,7 +480,7 @@ pub(crate) fn enum_chroma_location(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[94u16, 0u16],
+        0..=1 => &[92u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -816,7 +816,7 @@ pub(crate) fn enum_copy_acceleration_structure_mode_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         2..=3 => &[0u16],
-        0..=1 => &[116u16, 0u16],
+        0..=1 => &[114u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -949,12 +949,12 @@ pub(crate) fn enum_debug_report_object_type_ext(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=30 | 33 => &[0u16],
-        1000085000 => &[13u16, 71u16],
-        1000156000 => &[13u16, 94u16],
-        1000366000 => &[57u16],
-        1000150000 => &[66u16],
-        1000029000..=1000029001 => &[107u16],
-        1000165000 => &[116u16],
+        1000085000 => &[13u16, 69u16],
+        1000156000 => &[13u16, 92u16],
+        1000366000 => &[55u16],
+        1000150000 => &[64u16],
+        1000029000..=1000029001 => &[105u16],
+        1000165000 => &[114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1051,10 +1051,10 @@ pub(crate) fn flags_dependency_flags(
     if s.enabled(&[8u16]) {
         valid |= 8;
     }
-    if s.enabled(&[72u16, 1u16]) {
+    if s.enabled(&[70u16, 1u16]) {
         valid |= 4;
     }
-    if s.enabled(&[85u16, 1u16]) {
+    if s.enabled(&[83u16, 1u16]) {
         valid |= 2;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1104,7 +1104,7 @@ pub(crate) fn flags_descriptor_pool_create_flags(
     if s.enabled(&[16u16, 2u16]) {
         valid |= 2;
     }
-    if s.enabled(&[37u16, 125u16]) {
+    if s.enabled(&[37u16, 123u16]) {
         valid |= 4;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1132,10 +1132,10 @@ pub(crate) fn flags_descriptor_set_layout_create_flags(
     if s.enabled(&[16u16, 2u16]) {
         valid |= 2;
     }
-    if s.enabled(&[37u16, 125u16]) {
+    if s.enabled(&[37u16, 123u16]) {
         valid |= 4;
     }
-    if s.enabled(&[90u16]) {
+    if s.enabled(&[88u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1159,10 +1159,10 @@ pub(crate) fn enum_descriptor_type(
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=10 => &[0u16],
         1000138000 => &[31u16, 3u16],
-        1000351000 => &[37u16, 125u16],
-        1000150000 => &[66u16],
-        1000165000 => &[116u16],
-        1000440000..=1000440001 => &[121u16],
+        1000351000 => &[37u16, 123u16],
+        1000150000 => &[64u16],
+        1000165000 => &[114u16],
+        1000440000..=1000440001 => &[119u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1184,8 +1184,8 @@ pub(crate) fn enum_descriptor_update_template_type(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0 => &[71u16, 0u16],
-        1 => &[71u16, 90u16],
+        0 => &[69u16, 0u16],
+        1 => &[69u16, 88u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1481,11 +1481,11 @@ pub(crate) fn enum_dynamic_state(
         1000259000 => &[33u16],
         1000143000 => &[45u16],
         1000352000 => &[53u16],
-        1000226000 => &[80u16],
-        1000347000 => &[92u16],
-        1000087000 => &[109u16],
-        1000205001 => &[118u16],
-        1000164004 | 1000164006 => &[119u16],
+        1000226000 => &[78u16],
+        1000347000 => &[90u16],
+        1000087000 => &[107u16],
+        1000205001 => &[116u16],
+        1000164004 | 1000164006 => &[117u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1507,7 +1507,7 @@ pub(crate) fn flags_event_create_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[100u16, 3u16]) {
+    if s.enabled(&[98u16, 3u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1551,7 +1551,7 @@ pub(crate) fn enum_external_fence_handle_type_flag_bits(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        1..=2 | 4 | 8 => &[76u16, 0u16],
+        1..=2 | 4 | 8 => &[74u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1573,7 +1573,7 @@ pub(crate) fn flags_external_fence_handle_type_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[76u16, 0u16]) {
+    if s.enabled(&[74u16, 0u16]) {
         valid |= 15;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1598,9 +1598,9 @@ pub(crate) fn enum_external_memory_handle_type_flag_bits(
         1024 => &[5u16],
         512 => &[22u16],
         128 | 256 => &[23u16],
-        2048 => &[58u16],
-        1..=2 | 4 | 8 | 16 | 32 | 64 => &[77u16, 0u16],
-        4096 => &[112u16],
+        2048 => &[56u16],
+        1..=2 | 4 | 8 | 16 | 32 | 64 => &[75u16, 0u16],
+        4096 => &[110u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1631,13 +1631,13 @@ pub(crate) fn flags_external_memory_handle_type_flags(
     if s.enabled(&[23u16]) {
         valid |= 384;
     }
-    if s.enabled(&[58u16]) {
+    if s.enabled(&[56u16]) {
         valid |= 2048;
     }
-    if s.enabled(&[77u16, 0u16]) {
+    if s.enabled(&[75u16, 0u16]) {
         valid |= 127;
     }
-    if s.enabled(&[112u16]) {
+    if s.enabled(&[110u16]) {
         valid |= 4096;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1681,8 +1681,8 @@ pub(crate) fn enum_external_semaphore_handle_type_flag_bits(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        128 => &[59u16],
-        1..=2 | 4 | 8 | 16 => &[79u16, 0u16],
+        128 => &[57u16],
+        1..=2 | 4 | 8 | 16 => &[77u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1704,10 +1704,10 @@ pub(crate) fn flags_external_semaphore_handle_type_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[59u16]) {
+    if s.enabled(&[57u16]) {
         valid |= 128;
     }
-    if s.enabled(&[79u16, 0u16]) {
+    if s.enabled(&[77u16, 0u16]) {
         valid |= 31;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1751,7 +1751,7 @@ pub(crate) fn flags_fence_import_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[75u16, 0u16]) {
+    if s.enabled(&[73u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1774,7 +1774,7 @@ pub(crate) fn enum_filter(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000015000 => &[24u16, 63u16],
+        1000015000 => &[24u16, 61u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1799,10 +1799,10 @@ pub(crate) fn enum_format(
         0..=184 => &[0u16],
         1000340000..=1000340001 => &[7u16, 3u16],
         1000066000..=1000066013 => &[50u16, 3u16],
-        1000330000..=1000330003 => &[56u16, 3u16],
-        1000054000..=1000054007 => &[64u16],
-        1000156000..=1000156033 => &[94u16, 1u16],
-        1000464000 => &[115u16],
+        1000330000..=1000330003 => &[54u16, 3u16],
+        1000054000..=1000054007 => &[62u16],
+        1000156000..=1000156033 => &[92u16, 1u16],
+        1000464000 => &[113u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -1827,7 +1827,7 @@ pub(crate) fn flags_format_feature_flags(
     if s.enabled(&[0u16]) {
         valid |= 8191;
     }
-    if s.enabled(&[24u16, 63u16]) {
+    if s.enabled(&[24u16, 61u16]) {
         valid |= 8192;
     }
     if s.enabled(&[25u16]) {
@@ -1836,22 +1836,22 @@ pub(crate) fn flags_format_feature_flags(
     if s.enabled(&[46u16, 2u16]) {
         valid |= 65536;
     }
-    if s.enabled(&[66u16]) {
+    if s.enabled(&[64u16]) {
         valid |= 536870912;
     }
-    if s.enabled(&[80u16]) {
+    if s.enabled(&[78u16]) {
         valid |= 1073741824;
     }
-    if s.enabled(&[82u16, 1u16]) {
+    if s.enabled(&[80u16, 1u16]) {
         valid |= 49152;
     }
-    if s.enabled(&[94u16, 1u16]) {
+    if s.enabled(&[92u16, 1u16]) {
         valid |= 16646144;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[102u16]) {
         valid |= 100663296;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[103u16]) {
         valid |= 402653184;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1895,7 +1895,7 @@ pub(crate) fn flags_framebuffer_create_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[81u16, 2u16]) {
+    if s.enabled(&[79u16, 2u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1961,7 +1961,7 @@ pub(crate) fn flags_geometry_flags_khr(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[116u16, 0u16]) {
+    if s.enabled(&[114u16, 0u16]) {
         valid |= 3;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -1984,7 +1984,7 @@ pub(crate) fn enum_geometry_type_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         2 => &[0u16],
-        0..=1 => &[116u16, 0u16],
+        0..=1 => &[114u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2030,8 +2030,8 @@ pub(crate) fn enum_image_aspect_flag_bits(
     let origins: &[u16] = match v.as_raw() as i64 {
         1..=2 | 4 | 8 => &[0u16],
         128 | 256 | 512 | 1024 => &[29u16],
-        0 => &[84u16, 3u16],
-        16 | 32 | 64 => &[94u16, 1u16],
+        0 => &[82u16, 3u16],
+        16 | 32 | 64 => &[92u16, 1u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2059,7 +2059,7 @@ pub(crate) fn flags_image_aspect_flags(
     if s.enabled(&[29u16]) {
         valid |= 1920;
     }
-    if s.enabled(&[94u16, 1u16]) {
+    if s.enabled(&[92u16, 1u16]) {
         valid |= 112;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2124,25 +2124,25 @@ pub(crate) fn flags_image_create_flags(
     if s.enabled(&[45u16]) {
         valid |= 4096;
     }
-    if s.enabled(&[67u16, 1u16]) {
+    if s.enabled(&[65u16, 1u16]) {
         valid |= 1024;
     }
-    if s.enabled(&[72u16, 1u16]) {
+    if s.enabled(&[70u16, 1u16]) {
         valid |= 64;
     }
-    if s.enabled(&[82u16, 1u16]) {
+    if s.enabled(&[80u16, 1u16]) {
         valid |= 32;
     }
-    if s.enabled(&[83u16, 1u16]) {
+    if s.enabled(&[81u16, 1u16]) {
         valid |= 384;
     }
-    if s.enabled(&[94u16, 1u16]) {
+    if s.enabled(&[92u16, 1u16]) {
         valid |= 512;
     }
-    if s.enabled(&[110u16]) {
+    if s.enabled(&[108u16]) {
         valid |= 8192;
     }
-    if s.enabled(&[120u16]) {
+    if s.enabled(&[118u16]) {
         valid |= 32768;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2167,14 +2167,14 @@ pub(crate) fn enum_image_layout(
         0..=8 => &[0u16],
         1000339000 => &[8u16],
         1000218000 => &[25u16],
-        1000164003 => &[80u16, 119u16],
-        1000117000..=1000117001 => &[83u16, 1u16],
-        1000241000..=1000241003 => &[95u16, 2u16],
-        1000111000 => &[96u16],
-        1000001002 => &[98u16],
-        1000314000..=1000314001 => &[100u16, 3u16],
-        1000024000..=1000024002 => &[104u16],
-        1000299000..=1000299002 => &[105u16],
+        1000164003 => &[78u16, 117u16],
+        1000117000..=1000117001 => &[81u16, 1u16],
+        1000241000..=1000241003 => &[93u16, 2u16],
+        1000111000 => &[94u16],
+        1000001002 => &[96u16],
+        1000314000..=1000314001 => &[98u16, 3u16],
+        1000024000..=1000024002 => &[102u16],
+        1000299000..=1000299002 => &[103u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2250,19 +2250,19 @@ pub(crate) fn flags_image_usage_flags(
     if s.enabled(&[25u16]) {
         valid |= 512;
     }
-    if s.enabled(&[61u16]) {
+    if s.enabled(&[59u16]) {
         valid |= 262144;
     }
-    if s.enabled(&[80u16, 119u16]) {
+    if s.enabled(&[78u16, 117u16]) {
         valid |= 256;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[102u16]) {
         valid |= 7168;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[103u16]) {
         valid |= 57344;
     }
-    if s.enabled(&[121u16]) {
+    if s.enabled(&[119u16]) {
         valid |= 3145728;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2336,7 +2336,7 @@ pub(crate) fn enum_index_type(
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
         1000265000 => &[30u16],
-        1000165000 => &[66u16, 116u16],
+        1000165000 => &[64u16, 114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2425,7 +2425,7 @@ pub(crate) fn flags_instance_create_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[89u16]) {
+    if s.enabled(&[87u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2491,10 +2491,10 @@ pub(crate) fn flags_memory_allocate_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[68u16, 2u16]) {
+    if s.enabled(&[66u16, 2u16]) {
         valid |= 6;
     }
-    if s.enabled(&[72u16, 0u16]) {
+    if s.enabled(&[70u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -2610,20 +2610,20 @@ pub(crate) fn enum_object_type(
         1000396000 => &[39u16],
         1000295000 => &[43u16, 3u16],
         1000160000 => &[52u16],
-        1000366000 => &[57u16],
-        1000210000 => &[65u16],
-        1000150000 => &[66u16],
-        1000268000 => &[69u16],
-        1000085000 => &[71u16, 1u16],
-        1000002000..=1000002001 => &[73u16],
-        1000156000 => &[94u16, 1u16],
-        1000000000 => &[97u16],
-        1000001000 => &[98u16],
-        1000023000..=1000023001 => &[106u16],
-        1000029000..=1000029001 => &[107u16],
-        1000277000 => &[111u16],
-        1000464000 => &[115u16],
-        1000165000 => &[116u16],
+        1000366000 => &[55u16],
+        1000210000 => &[63u16],
+        1000150000 => &[64u16],
+        1000268000 => &[67u16],
+        1000085000 => &[69u16, 1u16],
+        1000002000..=1000002001 => &[71u16],
+        1000156000 => &[92u16, 1u16],
+        1000000000 => &[95u16],
+        1000001000 => &[96u16],
+        1000023000..=1000023001 => &[104u16],
+        1000029000..=1000029001 => &[105u16],
+        1000277000 => &[109u16],
+        1000464000 => &[113u16],
+        1000165000 => &[114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2866,8 +2866,8 @@ pub(crate) fn enum_pipeline_bind_point(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=1 => &[0u16],
-        1000369003 => &[62u16],
-        1000165000 => &[92u16, 116u16],
+        1000369003 => &[60u16],
+        1000165000 => &[90u16, 114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -2976,28 +2976,28 @@ pub(crate) fn flags_pipeline_create_flags(
     if s.enabled(&[41u16]) {
         valid |= 1207959552;
     }
-    if s.enabled(&[72u16, 1u16]) {
+    if s.enabled(&[70u16, 1u16]) {
         valid |= 24;
     }
-    if s.enabled(&[74u16]) {
+    if s.enabled(&[72u16]) {
         valid |= 6291456;
     }
-    if s.enabled(&[87u16]) {
+    if s.enabled(&[85u16]) {
         valid |= 192;
     }
-    if s.enabled(&[88u16]) {
+    if s.enabled(&[86u16]) {
         valid |= 2048;
     }
-    if s.enabled(&[92u16]) {
+    if s.enabled(&[90u16]) {
         valid |= 782336;
     }
-    if s.enabled(&[111u16]) {
+    if s.enabled(&[109u16]) {
         valid |= 262144;
     }
-    if s.enabled(&[116u16]) {
+    if s.enabled(&[114u16]) {
         valid |= 32;
     }
-    if s.enabled(&[117u16]) {
+    if s.enabled(&[115u16]) {
         valid |= 1048576;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3147,13 +3147,13 @@ pub(crate) fn enum_pipeline_stage_flag_bits(
         | 65536 => &[0u16],
         262144 => &[12u16],
         8388608 => &[25u16],
-        524288 | 1048576 => &[35u16, 114u16],
+        524288 | 1048576 => &[35u16, 112u16],
         16777216 => &[51u16],
-        33554432 => &[66u16, 116u16],
-        4194304 => &[80u16, 119u16],
-        2097152 => &[92u16, 116u16],
-        0 => &[100u16, 3u16],
-        131072 => &[111u16],
+        33554432 => &[64u16, 114u16],
+        4194304 => &[78u16, 117u16],
+        2097152 => &[90u16, 114u16],
+        0 => &[98u16, 3u16],
+        131072 => &[109u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3184,22 +3184,22 @@ pub(crate) fn flags_pipeline_stage_flags(
     if s.enabled(&[25u16]) {
         valid |= 8388608;
     }
-    if s.enabled(&[35u16, 114u16]) {
+    if s.enabled(&[35u16, 112u16]) {
         valid |= 1572864;
     }
     if s.enabled(&[51u16]) {
         valid |= 16777216;
     }
-    if s.enabled(&[66u16, 116u16]) {
+    if s.enabled(&[64u16, 114u16]) {
         valid |= 33554432;
     }
-    if s.enabled(&[80u16, 119u16]) {
+    if s.enabled(&[78u16, 117u16]) {
         valid |= 4194304;
     }
-    if s.enabled(&[92u16, 116u16]) {
+    if s.enabled(&[90u16, 114u16]) {
         valid |= 2097152;
     }
-    if s.enabled(&[111u16]) {
+    if s.enabled(&[109u16]) {
         valid |= 131072;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3227,28 +3227,28 @@ pub(crate) fn flags_pipeline_stage_flags2(
     if s.enabled(&[39u16]) {
         valid |= 1073741824;
     }
-    if s.enabled(&[60u16]) {
+    if s.enabled(&[58u16]) {
         valid |= 2199023255552;
     }
-    if s.enabled(&[61u16]) {
+    if s.enabled(&[59u16]) {
         valid |= 1099511627776;
     }
-    if s.enabled(&[62u16]) {
+    if s.enabled(&[60u16]) {
         valid |= 549755813888;
     }
-    if s.enabled(&[91u16]) {
+    if s.enabled(&[89u16]) {
         valid |= 268435456;
     }
-    if s.enabled(&[100u16]) {
+    if s.enabled(&[98u16]) {
         valid |= 66977792;
     }
-    if s.enabled(&[104u16]) {
+    if s.enabled(&[102u16]) {
         valid |= 67108864;
     }
-    if s.enabled(&[105u16]) {
+    if s.enabled(&[103u16]) {
         valid |= 134217728;
     }
-    if s.enabled(&[115u16]) {
+    if s.enabled(&[113u16]) {
         valid |= 536870912;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3271,7 +3271,7 @@ pub(crate) fn enum_polygon_mode(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=2 => &[0u16],
-        1000153000 => &[113u16],
+        1000153000 => &[111u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3316,7 +3316,7 @@ pub(crate) fn enum_present_mode_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=3 => &[0u16],
-        1000111000..=1000111001 => &[96u16],
+        1000111000..=1000111001 => &[94u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3451,7 +3451,7 @@ pub(crate) fn flags_query_result_flags(
     if s.enabled(&[0u16]) {
         valid |= 15;
     }
-    if s.enabled(&[106u16]) {
+    if s.enabled(&[104u16]) {
         valid |= 16;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3478,13 +3478,12 @@ pub(crate) fn enum_query_type(
         1000396000..=1000396001 => &[39u16],
         1000382000 => &[42u16],
         1000028004 => &[51u16],
-        1000210000 => &[65u16],
-        1000150000..=1000150001 => &[66u16],
-        1000116000 => &[86u16],
-        1000386000..=1000386001 => &[91u16],
-        1000299000 => &[105u16],
-        1000023000 => &[106u16],
-        1000165000 => &[116u16],
+        1000210000 => &[63u16],
+        1000150000..=1000150001 => &[64u16],
+        1000116000 => &[84u16],
+        1000386000..=1000386001 => &[89u16],
+        1000023000 => &[104u16],
+        1000165000 => &[114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3550,7 +3549,7 @@ pub(crate) fn enum_ray_tracing_shader_group_type_khr(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=2 => &[116u16, 0u16],
+        0..=2 => &[114u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3572,7 +3571,7 @@ pub(crate) fn flags_render_pass_create_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[124u16]) {
+    if s.enabled(&[122u16]) {
         valid |= 2;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3619,7 +3618,7 @@ pub(crate) fn enum_resolve_mode_flag_bits(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=2 | 4 | 8 => &[70u16, 0u16],
+        0..=2 | 4 | 8 => &[68u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3664,7 +3663,7 @@ pub(crate) fn enum_sampler_address_mode(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0..=3 => &[0u16],
-        4 => &[93u16, 2u16],
+        4 => &[91u16, 2u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3695,7 +3694,7 @@ pub(crate) fn flags_sampler_create_flags(
     if s.enabled(&[38u16]) {
         valid |= 4;
     }
-    if s.enabled(&[121u16]) {
+    if s.enabled(&[119u16]) {
         valid |= 16;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3761,7 +3760,7 @@ pub(crate) fn enum_sampler_ycbcr_model_conversion(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=4 => &[94u16, 0u16],
+        0..=4 => &[92u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3783,7 +3782,7 @@ pub(crate) fn enum_sampler_ycbcr_range(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[94u16, 0u16],
+        0..=1 => &[92u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3827,7 +3826,7 @@ pub(crate) fn flags_semaphore_import_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[78u16, 0u16]) {
+    if s.enabled(&[76u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3849,7 +3848,7 @@ pub(crate) fn enum_semaphore_type(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[101u16, 0u16],
+        0..=1 => &[99u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3871,7 +3870,7 @@ pub(crate) fn flags_semaphore_wait_flags(
     vuid: &'static str,
 ) -> Result<()> {
     let mut valid: u64 = 0;
-    if s.enabled(&[101u16, 0u16]) {
+    if s.enabled(&[99u16, 0u16]) {
         valid |= 1;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -3938,10 +3937,10 @@ pub(crate) fn enum_shader_stage_flag_bits(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         1..=2 | 4 | 8 | 16 | 31..=32 | 2147483647 => &[0u16],
-        64 | 128 => &[35u16, 114u16],
-        524288 => &[60u16],
-        16384 => &[62u16],
-        256 | 512 | 1024 | 2048 | 4096 | 8192 => &[92u16, 116u16],
+        64 | 128 => &[35u16, 112u16],
+        524288 => &[58u16],
+        16384 => &[60u16],
+        256 | 512 | 1024 | 2048 | 4096 | 8192 => &[90u16, 114u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -3966,16 +3965,16 @@ pub(crate) fn flags_shader_stage_flags(
     if s.enabled(&[0u16]) {
         valid |= 63;
     }
-    if s.enabled(&[35u16, 114u16]) {
+    if s.enabled(&[35u16, 112u16]) {
         valid |= 192;
     }
-    if s.enabled(&[60u16]) {
+    if s.enabled(&[58u16]) {
         valid |= 524288;
     }
-    if s.enabled(&[62u16]) {
+    if s.enabled(&[60u16]) {
         valid |= 16384;
     }
-    if s.enabled(&[92u16, 116u16]) {
+    if s.enabled(&[90u16, 114u16]) {
         valid |= 16128;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -4157,10 +4156,10 @@ pub(crate) fn flags_subpass_description_flags(
     if s.enabled(&[32u16]) {
         valid |= 128;
     }
-    if s.enabled(&[108u16]) {
+    if s.enabled(&[106u16]) {
         valid |= 3;
     }
-    if s.enabled(&[122u16]) {
+    if s.enabled(&[120u16]) {
         valid |= 12;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -4251,13 +4250,13 @@ pub(crate) fn flags_swapchain_create_flags_khr(
     if s.enabled(&[49u16]) {
         valid |= 8;
     }
-    if s.enabled(&[72u16, 98u16]) {
+    if s.enabled(&[70u16, 96u16]) {
         valid |= 1;
     }
-    if s.enabled(&[98u16]) {
+    if s.enabled(&[96u16]) {
         valid |= 2;
     }
-    if s.enabled(&[99u16]) {
+    if s.enabled(&[97u16]) {
         valid |= 4;
     }
     if (v.as_raw() as u64) & !valid == 0 {
@@ -4279,7 +4278,7 @@ pub(crate) fn enum_tessellation_domain_origin(
     vuid: &'static str,
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
-        0..=1 => &[83u16, 0u16],
+        0..=1 => &[81u16, 0u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -4434,10 +4433,8 @@ pub(crate) fn enum_video_codec_operation_flag_bits_khr(
 ) -> Result<()> {
     let origins: &[u16] = match v.as_raw() as i64 {
         0 => &[0u16],
-        65536 => &[54u16],
-        131072 => &[55u16],
-        1 => &[102u16],
-        2 => &[103u16],
+        1 => &[100u16],
+        2 => &[101u16],
         _ => &[],
     };
     if s.enabled(origins) {
@@ -4462,8 +4459,8 @@ pub(crate) fn flags_video_coding_control_flags_khr(
     if s.enabled(&[0u16]) {
         valid |= 1;
     }
-    if s.enabled(&[105u16]) {
-        valid |= 6;
+    if s.enabled(&[103u16]) {
+        valid |= 2;
     }
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
