@@ -338,3 +338,47 @@ fn an_output_that_would_lose_items_needs_allow_shrink() {
     assert!(items.lines().any(|l| l == "vkCreateBuffer"));
     assert!(!items.contains("vkFrobnicateGPU"));
 }
+
+#[test]
+fn registry_without_a_readable_version() {
+    let c = case();
+    // The pinned registry with its header-version defines renamed: everything
+    // else is a good registry.
+    let text = std::fs::read_to_string(root().join("vk.xml"))
+        .unwrap()
+        .replace(
+            "<name>VK_HEADER_VERSION</name>",
+            "<name>VK_HEADER_REVISION</name>",
+        )
+        .replace(
+            "<name>VK_HEADER_VERSION_COMPLETE</name>",
+            "<name>VK_HEADER_REVISION_COMPLETE</name>",
+        );
+    let vk = write(&c.dir, "vk.xml", &text);
+    fails(
+        &c,
+        &["--registry", &vk, "--no-validusage"],
+        &[
+            "vk.xml",
+            "not a usable Vulkan registry",
+            "VK_HEADER_VERSION",
+        ],
+    );
+}
+
+#[test]
+fn a_diff_of_two_registries_of_one_version() {
+    let c = case();
+    // A copy of the pinned registry: another file, the same version.
+    let copy = c.dir.join("copy.xml");
+    std::fs::copy(root().join("vk.xml"), &copy).unwrap();
+    let before = snapshot_dir(&c.dir);
+    let (code, stdout, stderr) = cli(&["diff", &pinned("vk.xml"), &copy.display().to_string()]);
+    assert_ne!(code, 0);
+    assert_eq!(stdout, "", "nothing is printed but the error");
+    assert_eq!(stderr.lines().count(), 1, "one message, got: {stderr}");
+    for n in ["both Vulkan 1.3.239", "copy.xml", "two versions"] {
+        assert!(stderr.contains(n), "`{n}` not in: {stderr}");
+    }
+    assert_eq!(snapshot_dir(&c.dir), before, "nothing was written");
+}

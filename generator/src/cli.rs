@@ -8,8 +8,10 @@ use std::path::PathBuf;
 
 /// Generate the tuff crate and its validation coverage report from the Vulkan registry.
 #[derive(Parser, Debug)]
-#[command(version, about)]
+#[command(version, about, args_conflicts_with_subcommands = true)]
 struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
     /// vk.xml to read [default: the pinned vk.xml at the repository root]
     #[arg(long)]
     registry: Option<PathBuf>,
@@ -37,6 +39,25 @@ struct Cli {
     allow_shrink: bool,
 }
 
+#[derive(clap::Subcommand, Debug)]
+enum Command {
+    /// Compare two registries for a version bump: items and extensions added and
+    /// removed, valid-usage rules added, removed and reworded, and how the emitted
+    /// API's coverage and method signatures change. Writes nothing.
+    Diff {
+        /// The older vk.xml (its validusage.json is read from beside it, when there)
+        old: PathBuf,
+        /// The newer vk.xml (likewise)
+        new: PathBuf,
+        /// Config both are generated with [default: tuff-gen.toml at the repository root]
+        #[arg(long)]
+        config: Option<PathBuf>,
+        /// Print JSON instead of Markdown
+        #[arg(long)]
+        json: bool,
+    },
+}
+
 /// Run the command line with `args` (the first is the program name). Messages go to
 /// `out` and `err`; the return value is the process exit code: 0 on success, 1 on a
 /// generator error, 2 on a usage error.
@@ -59,6 +80,35 @@ where
         }
     };
     let pinned = Options::pinned();
+    if let Some(Command::Diff {
+        old,
+        new,
+        config,
+        json,
+    }) = &cli.command
+    {
+        let config = config.clone().unwrap_or(pinned.config);
+        let result = crate::diff::diff(
+            &crate::diff::Side::beside(old),
+            &crate::diff::Side::beside(new),
+            &config,
+        );
+        return match result {
+            Ok(d) => {
+                let text = if *json {
+                    serde_json::to_string_pretty(&d).unwrap_or_default()
+                } else {
+                    crate::diff::markdown(&d)
+                };
+                let _ = writeln!(out, "{text}");
+                0
+            }
+            Err(e) => {
+                let _ = writeln!(err, "tuff-gen diff: error: {e}");
+                1
+            }
+        };
+    }
     let custom_inputs = cli.registry.is_some()
         || cli.config.is_some()
         || cli.validusage.is_some()

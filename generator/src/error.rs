@@ -94,6 +94,16 @@ pub enum Error {
         /// The first few, comma-separated.
         sample: String,
     },
+    /// `tuff-gen diff` was given two registries of one version.
+    #[error("{old} and {new} are both Vulkan {version}: a diff compares two versions (pass the older registry first)")]
+    SameVersion {
+        /// OLD's vk.xml.
+        old: PathBuf,
+        /// NEW's vk.xml.
+        new: PathBuf,
+        /// The version both have.
+        version: String,
+    },
     /// The config file is unreadable as TOML or names something that does not exist.
     #[error("{path}: {message}")]
     Config {

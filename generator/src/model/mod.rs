@@ -547,7 +547,8 @@ impl Model {
     }
 }
 
-fn is_supported(supported: Option<&str>) -> bool {
+/// Whether an extension's `supported` attribute lists the vulkan API.
+pub fn is_supported(supported: Option<&str>) -> bool {
     supported.is_some_and(|s| s.split(',').any(|x| x == "vulkan"))
 }
 
