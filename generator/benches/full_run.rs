@@ -2,6 +2,10 @@
 //! beside a bare quick-xml pass over the same vk.xml and vk-parse's parse alone, so
 //! the figures compare within one run.
 //!
+//! A second group regenerates the pinned config from the pinned 1.3.239 registry and
+//! from 1.4.330 (no validusage.json: its implicit rules are derived), side by side:
+//! what a version bump costs in generator time.
+//!
 //! Run with `cargo bench -p tuff-gen --bench full_run`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -41,6 +45,30 @@ fn benches(c: &mut Criterion) {
             output::write_all(scratch.path(), &generation.files).expect("writes");
         })
     });
+    group.finish();
+
+    let newer = opts
+        .registry
+        .parent()
+        .map(|root| root.join("../shared/registry/1.4.330/vk.xml"))
+        .expect("the repository root");
+    assert!(newer.is_file(), "{} is missing", newer.display());
+    let bumped = Options {
+        registry: newer,
+        validusage: None,
+        ..opts.clone()
+    };
+    let mut group = c.benchmark_group("version bump");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(20));
+    for (name, o) in [("1.3.239", &opts), ("1.4.330", &bumped)] {
+        group.bench_function(format!("regenerate from {name}"), |b| {
+            b.iter(|| {
+                let generation = generate(black_box(o)).expect("generates");
+                output::write_all(scratch.path(), &generation.files).expect("writes");
+            })
+        });
+    }
     group.finish();
 }
 

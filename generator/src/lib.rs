@@ -198,6 +198,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         path: ITEMS_FILE.into(),
         contents: items_list(&model),
     });
+    standalone(&opts.out, &mut files)?;
     Ok(Generation {
         files,
         version: model.version.clone(),
@@ -206,6 +207,68 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         comparison: validity.comparison.clone(),
         left_out: model.left_out.clone(),
     })
+}
+
+/// For an output folder other than the repository's `generated/`, what makes it a
+/// crate that builds where it is: the crate's hand-written modules, copied from the
+/// repository the generator was built in, and the runtime named by its absolute
+/// path there.
+fn standalone(out: &Path, files: &mut Vec<emit::OutputFile>) -> Result<()> {
+    let root = workspace_root();
+    let template = root.join("generated");
+    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    };
+    if out.as_os_str().is_empty() || same(out, &template) {
+        return Ok(());
+    }
+    let runtime = root.join("runtime");
+    for f in files
+        .iter_mut()
+        .filter(|f| f.path == Path::new("Cargo.toml"))
+    {
+        f.contents = f.contents.replace(
+            "tuff-runtime = { path = \"../runtime\" }",
+            &format!(
+                "tuff-runtime = {{ path = {:?} }}",
+                runtime.display().to_string()
+            ),
+        );
+    }
+    let generated = template.join(emit::GENERATED_DIR);
+    let mut stack = vec![template.join("src")];
+    while let Some(dir) = stack.pop() {
+        let entries = std::fs::read_dir(&dir).map_err(|source| Error::Read {
+            path: dir.clone(),
+            source,
+        })?;
+        for entry in entries {
+            let path = entry
+                .map_err(|source| Error::Read {
+                    path: dir.clone(),
+                    source,
+                })?
+                .path();
+            if path == generated {
+                continue;
+            }
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let contents = std::fs::read_to_string(&path).map_err(|source| Error::Read {
+                    path: path.clone(),
+                    source,
+                })?;
+                let rel = path.strip_prefix(&template).unwrap_or(&path).to_owned();
+                files.push(emit::OutputFile {
+                    path: rel,
+                    contents,
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The output's list of what it emits, which the next run compares with.
