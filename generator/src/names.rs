@@ -4,6 +4,7 @@
 //! the ones ash's own generator derives (snake case of the name without `vk`, `type`
 //! spelled `ty`).
 
+pub use crate::model::tables::{minimal_feature_sets, table, Table};
 use crate::model::{Condition, Model};
 use heck::ToSnakeCase;
 use proc_macro2::{Ident, Span, TokenStream};
@@ -108,70 +109,6 @@ pub fn cfg_of(model: &Model, condition: &Condition) -> Option<TokenStream> {
     })
 }
 
-/// The extensions of the config, each set minimal, under which `condition` holds.
-pub fn minimal_feature_sets(model: &Model, condition: &Condition) -> Vec<BTreeSet<String>> {
-    let versions: BTreeSet<String> = model
-        .enabled
-        .iter()
-        .filter(|n| n.starts_with("VK_VERSION_"))
-        .cloned()
-        .collect();
-    let expr = condition.expr();
-    if expr.eval(&versions) {
-        return vec![BTreeSet::new()];
-    }
-    let fixed = |n: &str| {
-        if n == "core" || n.starts_with("VK_VERSION_") {
-            Some(n == "core" || versions.contains(n))
-        } else if !model.enabled.contains(n) {
-            Some(false)
-        } else {
-            None
-        }
-    };
-    if let Some(sets) = expr.minimal_sets(&fixed) {
-        return sets;
-    }
-    // A negation (validusage.json's keys only): search subsets of the names it
-    // mentions.
-    let mentioned = expr.names();
-    let exts: Vec<&String> = model
-        .enabled
-        .iter()
-        .filter(|n| !n.starts_with("VK_VERSION_") && mentioned.contains(n.as_str()))
-        .collect();
-    let mut found: Vec<BTreeSet<String>> = Vec::new();
-    // Subsets in order of size, so that a superset of a found set is skipped.
-    let mut subsets: Vec<u32> = (1..(1u32 << exts.len().min(16))).collect();
-    subsets.sort_by_key(|m| m.count_ones());
-    for mask in subsets {
-        let set: BTreeSet<String> = exts
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| mask & (1 << i) != 0)
-            .map(|(_, e)| (*e).clone())
-            .collect();
-        if found.iter().any(|f| f.is_subset(&set)) {
-            continue;
-        }
-        let mut names = versions.clone();
-        names.extend(set.iter().cloned());
-        if expr.eval(&names) {
-            found.push(set);
-        }
-    }
-    found
-}
-
-/// Where ash keeps a command's function pointer.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Table {
-    /// A core table: `fp_v1_<minor>()` of the entry, instance or device.
-    Core(u32),
-    /// An extension's `InstanceFn` or `DeviceFn`.
-    Extension(String),
-}
-
 /// The field of `table` that holds `command`'s function pointer: ash names an
 /// extension's field after the name that extension's require blocks use, which for
 /// a command promoted or renamed since is one of its aliases
@@ -206,40 +143,6 @@ pub fn level(model: &Model, command: &str) -> Level {
         Some("VkDevice" | "VkQueue" | "VkCommandBuffer") => Level::Device,
         _ => Level::Entry,
     }
-}
-
-/// The table a command of the emitted API is called through: the oldest core version
-/// that has it, else the first enabled extension that does.
-pub fn table(model: &Model, command: &str) -> Option<Table> {
-    let condition = model.condition(command);
-    if condition.is_core() {
-        return Some(Table::Core(0));
-    }
-    let alternatives = condition.expr().alternatives();
-    let best = alternatives
-        .iter()
-        .filter_map(|alt| match alt {
-            crate::model::expr::Expr::Name(n) if model.enabled.contains(n) => {
-                n.strip_prefix("VK_VERSION_1_")?.parse::<u32>().ok()
-            }
-            _ => None,
-        })
-        .min();
-    if let Some(m) = best {
-        return Some(Table::Core(m));
-    }
-    minimal_feature_sets(model, condition)
-        .into_iter()
-        .next()
-        .and_then(|set| {
-            // The command belongs to the extension whose require block names it.
-            set.into_iter().find(|e| {
-                alternatives
-                    .iter()
-                    .any(|a| a.first_name() == Some(e.as_str()))
-            })
-        })
-        .map(Table::Extension)
 }
 
 #[cfg(test)]

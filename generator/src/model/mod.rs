@@ -11,6 +11,7 @@ pub mod attrs;
 pub mod expr;
 mod item;
 pub mod reference;
+pub mod tables;
 
 use crate::config::Config;
 use crate::error::{Error, Result};

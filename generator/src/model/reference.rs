@@ -371,7 +371,8 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
                         reference.version
                     ),
                 );
-            } else if let Some(crate::names::Table::Extension(e)) = crate::names::table(model, name)
+            } else if let Some(super::tables::Table::Extension(e)) =
+                super::tables::table(model, name)
             {
                 let field = model.name_in(name, &e);
                 let named = [name.as_str(), spelled, field]
