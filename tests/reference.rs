@@ -262,6 +262,23 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
         ),
         "vkGetCalibratedTimestampsEXT"
     );
+    // A config asking for core 1.4, which ash has no table for: the version is
+    // left out and listed first, and the crate is the 1.3 one.
+    let v14 = tuff_gen::config::Config {
+        api_version: "1.4".to_owned(),
+        ..config.clone()
+    };
+    let m14 = tuff_gen::model::Model::build(
+        &newer,
+        Some(&reference),
+        &v14,
+        std::path::Path::new("test.toml"),
+    )
+    .expect("the model builds");
+    assert_eq!(m14.left_out[0].name, "VK_VERSION_1_4");
+    assert!(m14.left_out[0].reason.contains("no such core version"));
+    assert!(!m14.enabled.contains("VK_VERSION_1_4"));
+    assert_eq!(m14.emitted, model.emitted);
     // The pinned registry needs no other spelling.
     let (pinned, _) = registries();
     let model = tuff_gen::model::Model::build(

@@ -184,7 +184,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     let validity = enabled_validity(&model, vu.as_ref());
     let cx = plan::Context::new(&model, &validity);
     let plans = plan::Plans::build(&cx);
-    let emission = emit::emit(&plans, &config);
+    let emission = emit::emit(&plans);
     let mut report = report::build(&model, &validity, &plans.records);
     report.add_methods(
         &plans.methods,

@@ -2,16 +2,16 @@
 //! generated from. It settles no rule.
 
 use super::{Emission, OutputFile};
-use crate::config::Config;
 use crate::model::Model;
 
-pub(super) fn emit(
-    model: &Model,
-    config: &Config,
-    enabling: &crate::plan::safety::Enabling,
-    out: &mut Emission,
-) {
-    let minor = config.api_minor().unwrap_or(0);
+pub(super) fn emit(model: &Model, enabling: &crate::plan::safety::Enabling, out: &mut Emission) {
+    // The newest core version emitted: the config's, less any the reference lacks.
+    let minor = model
+        .enabled
+        .iter()
+        .filter_map(|v| v.strip_prefix("VK_VERSION_1_")?.parse::<u32>().ok())
+        .max()
+        .unwrap_or(0);
     let extensions: Vec<&String> = model
         .enabled
         .iter()

@@ -14,7 +14,6 @@ pub mod reach;
 pub mod structs;
 pub mod sync;
 
-use crate::config::Config;
 use crate::model::Model;
 use crate::names;
 use crate::plan::{Plans, Settlement};
@@ -351,10 +350,10 @@ fn safety_comments(text: &str) -> String {
 }
 
 /// Run every renderer over the plans.
-pub fn emit(plans: &Plans, config: &Config) -> Emission {
+pub fn emit(plans: &Plans) -> Emission {
     let cx = plans.cx;
     let mut emission = Emission::default();
-    api_info::emit(cx.model, config, &plans.enabling, &mut emission);
+    api_info::emit(cx.model, &plans.enabling, &mut emission);
     let ok = plans.ok();
     let (commands, command_checks) = commands::emit(plans, &ok);
     let mut files = vec![

@@ -210,12 +210,38 @@ impl Model {
         config: &Config,
         config_path: &Path,
     ) -> Result<Model> {
-        let (extensions, left_out) = reference::select(
+        // A core version the reference lacks has no function table in ash: it is
+        // left out, listed, and its items come only through the extensions that
+        // bring them.
+        let (versions, mut version_left): (Vec<String>, Vec<String>) = config
+            .enabled_versions()
+            .into_iter()
+            .partition(|v| reference.is_none_or(|r| r.features.iter().any(|f| &f.name == v)));
+        if version_left
+            .iter()
+            .any(|v| !registry.features.iter().any(|f| &f.name == v))
+        {
+            // The registry lacks it too: the config's error, reported below.
+            version_left.clear();
+        }
+        let (extensions, mut left_out) = reference::select(
             registry,
             reference,
-            &config.enabled_versions(),
+            &versions,
             &config.wanted_extensions(registry),
         );
+        for v in &version_left {
+            left_out.insert(
+                0,
+                reference::LeftOut {
+                    name: v.clone(),
+                    reason: format!(
+                        "the reference registry (Vulkan {}) has no such core version, so ash has no function table for it",
+                        reference.map_or("", |r| r.version.as_str())
+                    ),
+                },
+            );
+        }
         let types: BTreeMap<String, TypeDef> = registry
             .types
             .iter()
@@ -229,6 +255,9 @@ impl Model {
 
         let mut enabled: BTreeSet<String> = BTreeSet::new();
         for version in config.enabled_versions() {
+            if version_left.contains(&version) {
+                continue;
+            }
             if !registry.features.iter().any(|f| f.name == version) {
                 let newest = registry
                     .features
