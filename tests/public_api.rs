@@ -132,3 +132,108 @@ fn every_public_type_implements_debug() {
         missing.join("\n")
     );
 }
+
+/// The doc comment right above line `at` (over attributes), as text.
+fn doc_above(lines: &[&str], at: usize) -> String {
+    let mut k = at;
+    while k > 0 && lines[k - 1].trim_start().starts_with("#[") {
+        k -= 1;
+    }
+    let mut doc = Vec::new();
+    if k > 0 && lines[k - 1].trim_end().ends_with("*/") {
+        while k > 0 {
+            k -= 1;
+            doc.push(lines[k]);
+            if lines[k].trim_start().starts_with("/**") {
+                break;
+            }
+        }
+    } else {
+        while k > 0 && lines[k - 1].trim_start().starts_with("///") {
+            k -= 1;
+            doc.push(lines[k]);
+        }
+    }
+    doc.reverse();
+    doc.join("\n")
+}
+
+/// Every command method and every struct the example programs use (the tuff ones:
+/// a file that names `ash` is a raw-ash program) shows, in its docs, a statement of
+/// the examples that uses it.
+#[test]
+fn every_method_and_struct_the_examples_use_shows_an_example() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut called = BTreeSet::new();
+    let mut made = BTreeSet::new();
+    for file in sources(&root.join("examples/src")) {
+        let text = std::fs::read_to_string(&file).unwrap();
+        if text.contains("ash::") || text.contains("use ash") {
+            continue;
+        }
+        let ident = |s: &str| -> String {
+            let rev: String = s
+                .chars()
+                .rev()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            rev.chars().rev().collect()
+        };
+        for line in text.lines() {
+            let code = line.split("//").next().unwrap_or("");
+            for (at, _) in code.match_indices('(') {
+                let name = ident(&code[..at]);
+                let before = &code[..at - name.len()];
+                if before.ends_with('.') {
+                    called.insert(name);
+                } else if name == "new" && before.ends_with("::") {
+                    made.insert(ident(&before[..before.len() - 2]));
+                }
+            }
+        }
+    }
+    // Command methods carry their Vulkan name as a doc alias; structs are
+    // `pub struct`s of the generated struct modules.
+    let mut missing = Vec::new();
+    let (mut methods, mut structs) = (0, 0);
+    for file in sources(&root.join("generated/src/generated")) {
+        let text = std::fs::read_to_string(&file).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            let t = line.trim_start();
+            let fn_name = t
+                .strip_prefix("pub fn ")
+                .or_else(|| t.strip_prefix("pub unsafe fn "))
+                .map(|r| r.split(['(', '<']).next().unwrap_or(""));
+            if let Some(name) = fn_name {
+                let aliased = i > 0
+                    && lines[i.saturating_sub(3)..i]
+                        .iter()
+                        .any(|l| l.contains("#[doc(alias = \"vk"));
+                if aliased && called.contains(name) {
+                    methods += 1;
+                    if !doc_above(&lines, i).contains("# Example") {
+                        missing.push(format!("{name} ({})", file.display()));
+                    }
+                }
+            }
+            if let Some(rest) = t.strip_prefix("pub struct ") {
+                let name = rest.split(['<', ' ', '(', '{', ';']).next().unwrap_or("");
+                if made.contains(name) && file.to_string_lossy().contains("structs") {
+                    structs += 1;
+                    if !doc_above(&lines, i).contains("# Example") {
+                        missing.push(format!("struct {name} ({})", file.display()));
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        methods > 30 && structs > 20,
+        "{methods} methods, {structs} structs"
+    );
+    assert!(
+        missing.is_empty(),
+        "no example in the docs of: {missing:#?}"
+    );
+}

@@ -158,6 +158,156 @@ fn scene_calls(config_path: &Path, config: &config::Config) -> std::collections:
     out
 }
 
+/// For the docs: the first statement of the example programs that calls each method
+/// (`.create_buffer(`) or makes each struct (`BufferCreateInfo::new(`), files in
+/// path order. Files that name `ash` are the raw-ash programs, whose calls are ash's,
+/// and are skipped.
+fn scene_snippets(
+    config_path: &Path,
+    config: &config::Config,
+) -> std::collections::BTreeMap<String, plan::Snippet> {
+    let base = config_path.parent().unwrap_or(Path::new("."));
+    let mut files = Vec::new();
+    let mut todo: Vec<PathBuf> = config.scene_sources.iter().map(|d| base.join(d)).collect();
+    while let Some(path) = todo.pop() {
+        if let Ok(entries) = std::fs::read_dir(&path) {
+            todo.extend(entries.filter_map(|e| e.ok().map(|e| e.path())));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            files.push(path);
+        }
+    }
+    files.sort();
+    let mut out = std::collections::BTreeMap::new();
+    for path in files {
+        let text = std::fs::read_to_string(&path).unwrap_or_default();
+        if text.contains("ash::") || text.contains("use ash") {
+            continue;
+        }
+        let shown = path
+            .strip_prefix(base)
+            .unwrap_or(&path)
+            .to_string_lossy()
+            .replace('\\', "/");
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            let code = line.split("//").next().unwrap_or("");
+            for (at, _) in code.match_indices('(') {
+                let name: String = code[..at]
+                    .chars()
+                    .rev()
+                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                    .collect::<Vec<_>>()
+                    .into_iter()
+                    .rev()
+                    .collect();
+                let before = &code[..at - name.len()];
+                let key = if before.ends_with('.') {
+                    name
+                } else if name == "new" && before.ends_with("::") {
+                    let ty: String = before[..before.len() - 2]
+                        .chars()
+                        .rev()
+                        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                        .collect::<Vec<_>>()
+                        .into_iter()
+                        .rev()
+                        .collect();
+                    if !ty.starts_with(|c: char| c.is_ascii_uppercase()) {
+                        continue;
+                    }
+                    ty
+                } else {
+                    continue;
+                };
+                if key.is_empty() || out.contains_key(&key) {
+                    continue;
+                }
+                if let Some(code) = statement(&lines, i) {
+                    let snippet = plan::Snippet {
+                        file: shown.clone(),
+                        line: i + 1,
+                        code,
+                    };
+                    out.insert(key, snippet);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The statement around line `i`: back to the end of the previous one, then on
+/// until its brackets close at a `;` (or at a block it opens, shown closed), at
+/// most 16 lines, dedented.
+fn statement(lines: &[&str], i: usize) -> Option<String> {
+    let ends = |l: &str| {
+        let t = l.split("//").next().unwrap_or("").trim();
+        t.is_empty() || t.ends_with(';') || t.ends_with('{') || t.ends_with('}')
+    };
+    let mut start = i;
+    while start > 0 && i - start < 6 && !ends(lines[start - 1]) {
+        start -= 1;
+    }
+    // The comments right above it (a `// SAFETY:` justification among them).
+    while start > 0 && i - start < 12 && lines[start - 1].trim_start().starts_with("//") {
+        start -= 1;
+    }
+    // Bracket depth from `start`, outside string literals and comments.
+    let mut depth = 0i32;
+    let mut end = start;
+    let mut opened_block = false;
+    loop {
+        let code = lines[end].split("//").next().unwrap_or("");
+        let mut in_str = false;
+        let mut prev = ' ';
+        for c in code.chars() {
+            match c {
+                '"' if prev != '\\' => in_str = !in_str,
+                '(' | '[' | '{' if !in_str => depth += 1,
+                ')' | ']' | '}' if !in_str => depth -= 1,
+                _ => {}
+            }
+            prev = c;
+        }
+        let t = code.trim_end();
+        // A tail expression ends where the next line closes what encloses it.
+        let closes_next = lines
+            .get(end + 1)
+            .is_some_and(|n| n.trim_start().starts_with(['}', ')', ']']));
+        if depth < 0 || (depth == 0 && (t.ends_with(';') || t.ends_with('}') || closes_next)) {
+            break;
+        }
+        if depth == 1 && t.ends_with('{') && end >= i {
+            opened_block = true;
+            break;
+        }
+        if end + 1 >= lines.len() || end - start >= 15 {
+            break;
+        }
+        end += 1;
+    }
+    let slice = &lines[start..=end];
+    let indent = slice
+        .iter()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| l.len() - l.trim_start().len())
+        .min()
+        .unwrap_or(0);
+    let mut code = slice
+        .iter()
+        .map(|l| l.get(indent..).unwrap_or_else(|| l.trim_start()))
+        .collect::<Vec<_>>()
+        .join("\n");
+    if opened_block {
+        code.push_str("\n    // ...\n}");
+    } else if depth != 0 {
+        // Cut short, or the tail of an enclosing expression: not a statement that
+        // reads on its own.
+        return None;
+    }
+    Some(code)
+}
+
 /// Run every pass and return the files to write. Reads the inputs; writes nothing.
 pub fn generate(opts: &Options) -> Result<Generation> {
     let config = config::Config::load(&opts.config)?;
@@ -182,7 +332,8 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     };
     let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
     let validity = enabled_validity(&model, vu.as_ref());
-    let cx = plan::Context::new(&model, &validity);
+    let mut cx = plan::Context::new(&model, &validity);
+    cx.examples = scene_snippets(&opts.config, &config);
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans);
     let mut report = report::build(&model, &validity, &plans.records);
@@ -349,5 +500,38 @@ mod tests {
             calls.into_iter().collect::<Vec<_>>(),
             ["cmd_draw", "create_buffer"]
         );
+    }
+
+    #[test]
+    fn snippets_are_whole_statements_of_the_tuff_programs() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        std::fs::create_dir(dir.path().join("src")).expect("folder");
+        let tuff = "fn f() {\n    // Why it holds.\n    let info = tuff::BufferCreateInfo::new()\n        .size(64);\n    let b = device\n        .create_buffer(&info)?;\n    items.iter().map(|i| {\n        Ok(x.cmd_draw(i, 1, 0, 0))\n    })\n}\n";
+        std::fs::write(dir.path().join("src/a.rs"), tuff).expect("source");
+        // A raw-ash program's calls are ash's, not tuff's.
+        std::fs::write(
+            dir.path().join("src/b.rs"),
+            "use ash::vk;\nfn g() { device.destroy_buffer(b, None); }\n",
+        )
+        .expect("source");
+        let config = config::Config {
+            api_version: "1.3".into(),
+            scene_sources: vec!["src".into()],
+            ..Default::default()
+        };
+        let s = scene_snippets(&dir.path().join("tuff-gen.toml"), &config);
+        assert_eq!(
+            s["BufferCreateInfo"].code,
+            "// Why it holds.\nlet info = tuff::BufferCreateInfo::new()\n    .size(64);"
+        );
+        assert_eq!(s["BufferCreateInfo"].line, 3);
+        assert_eq!(s["BufferCreateInfo"].file, "src/a.rs");
+        assert_eq!(
+            s["create_buffer"].code,
+            "let b = device\n    .create_buffer(&info)?;"
+        );
+        // A tail expression closed by the next line stands alone.
+        assert_eq!(s["cmd_draw"].code, "Ok(x.cmd_draw(i, 1, 0, 0))");
+        assert!(!s.contains_key("destroy_buffer"));
     }
 }

@@ -782,7 +782,11 @@ impl Drop for DebugReportCallbackEXTInner {
         }
     }
 }
-///A `VkDebugUtilsMessengerEXT`. Clones share it; the last one to go calls `vkDestroyDebugUtilsMessengerEXT`, after every submission that used it has completed.
+/**A `VkDebugUtilsMessengerEXT`. Clones share it; the last one to go calls `vkDestroyDebugUtilsMessengerEXT`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Instance::create_debug_utils_messenger_ext`], whose docs show a call from the example programs.*/
 #[cfg(feature = "ext_debug_utils")]
 #[derive(Clone)]
 pub struct DebugUtilsMessengerEXT {
@@ -918,7 +922,11 @@ impl Drop for DeferredOperationKHRInner {
         }
     }
 }
-///A `VkDescriptorPool`. Clones share it; the last one to go calls `vkDestroyDescriptorPool`, after every submission that used it has completed.
+/**A `VkDescriptorPool`. Clones share it; the last one to go calls `vkDestroyDescriptorPool`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_descriptor_pool`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct DescriptorPool {
     inner: Vrc<DescriptorPoolInner>,
@@ -1049,7 +1057,11 @@ impl Drop for DescriptorPoolInner {
         }
     }
 }
-///A `VkDescriptorSet`. Clones share it; the last one to go calls `vkFreeDescriptorSets`, after every submission that used it has completed.
+/**A `VkDescriptorSet`. Clones share it; the last one to go calls `vkFreeDescriptorSets`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::allocate_descriptor_sets`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct DescriptorSet {
     inner: Vrc<DescriptorSetInner>,
@@ -1131,7 +1143,11 @@ impl Drop for DescriptorSetInner {
         }
     }
 }
-///A `VkDescriptorSetLayout`. Clones share it; the last one to go calls `vkDestroyDescriptorSetLayout`, after every submission that used it has completed.
+/**A `VkDescriptorSetLayout`. Clones share it; the last one to go calls `vkDestroyDescriptorSetLayout`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_descriptor_set_layout`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct DescriptorSetLayout {
     inner: Vrc<DescriptorSetLayoutInner>,
@@ -2863,7 +2879,11 @@ impl Drop for FenceInner {
         }
     }
 }
-///A `VkFramebuffer`. Clones share it; the last one to go calls `vkDestroyFramebuffer`, after every submission that used it has completed.
+/**A `VkFramebuffer`. Clones share it; the last one to go calls `vkDestroyFramebuffer`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_framebuffer`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct Framebuffer {
     inner: Vrc<FramebufferInner>,
@@ -2991,7 +3011,11 @@ impl Drop for ImageInner {
         }
     }
 }
-///A `VkImageView`. Clones share it; the last one to go calls `vkDestroyImageView`, after every submission that used it has completed.
+/**A `VkImageView`. Clones share it; the last one to go calls `vkDestroyImageView`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_image_view`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct ImageView {
     inner: Vrc<ImageViewInner>,
@@ -3867,7 +3891,11 @@ impl Drop for PhysicalDeviceInner {
         self.parent.objects().remove(self.raw);
     }
 }
-///A `VkPipeline`. Clones share it; the last one to go calls `vkDestroyPipeline`, after every submission that used it has completed.
+/**A `VkPipeline`. Clones share it; the last one to go calls `vkDestroyPipeline`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_graphics_pipelines`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct Pipeline {
     inner: Vrc<PipelineInner>,
@@ -3989,7 +4017,11 @@ impl Drop for PipelineCacheInner {
         }
     }
 }
-///A `VkPipelineLayout`. Clones share it; the last one to go calls `vkDestroyPipelineLayout`, after every submission that used it has completed.
+/**A `VkPipelineLayout`. Clones share it; the last one to go calls `vkDestroyPipelineLayout`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_pipeline_layout`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct PipelineLayout {
     inner: Vrc<PipelineLayoutInner>,
@@ -4268,7 +4300,11 @@ impl Drop for QueueInner {
         }
     }
 }
-///A `VkRenderPass`. Clones share it; the last one to go calls `vkDestroyRenderPass`, after every submission that used it has completed.
+/**A `VkRenderPass`. Clones share it; the last one to go calls `vkDestroyRenderPass`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_render_pass`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct RenderPass {
     inner: Vrc<RenderPassInner>,
@@ -4329,7 +4365,11 @@ impl Drop for RenderPassInner {
         }
     }
 }
-///A `VkSampler`. Clones share it; the last one to go calls `vkDestroySampler`, after every submission that used it has completed.
+/**A `VkSampler`. Clones share it; the last one to go calls `vkDestroySampler`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_sampler`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct Sampler {
     inner: Vrc<SamplerInner>,
@@ -4455,7 +4495,11 @@ impl Drop for SamplerYcbcrConversionInner {
         }
     }
 }
-///A `VkSemaphore`. Clones share it; the last one to go calls `vkDestroySemaphore`, after every submission that used it has completed.
+/**A `VkSemaphore`. Clones share it; the last one to go calls `vkDestroySemaphore`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_semaphore`], whose docs show a call from the example programs.*/
 #[derive(Clone)]
 pub struct Semaphore {
     inner: Vrc<SemaphoreInner>,
@@ -4640,7 +4684,11 @@ impl Drop for SurfaceKHRInner {
         }
     }
 }
-///A `VkSwapchainKHR`. Clones share it; the last one to go calls `vkDestroySwapchainKHR`, after every submission that used it has completed.
+/**A `VkSwapchainKHR`. Clones share it; the last one to go calls `vkDestroySwapchainKHR`, after every submission that used it has completed.
+
+# Example
+
+Made by [`Device::create_swapchain_khr`], whose docs show a call from the example programs.*/
 #[cfg(feature = "khr_swapchain")]
 #[derive(Clone)]
 pub struct SwapchainKHR {

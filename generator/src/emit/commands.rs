@@ -894,11 +894,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     } else {
         quote!(-> #ret)
     };
+    let example = super::example_doc(cx, &f.to_string(), "Called");
     let doc = format!(
-        "`{}`{safety}{owned_doc}{}",
+        "`{}`{safety}{owned_doc}{example}{}",
         plan.name,
         super::doc_rules(all, &plan.name)
     );
+    // Search finds the method by its Vulkan name.
+    let alias = model.spelling(&plan.name).to_owned();
     let checks = checker.command_checks(plan);
     let always = special.and_then(|s| s.check);
     let last = special.and_then(|s| s.check_last);
@@ -912,6 +915,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     {
         quote! {
             #[doc = #doc]
+            #[doc(alias = #alias)]
             #[inline]
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #ret_arrow {
                 #body
@@ -1112,6 +1116,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         });
         quote! {
             #[doc = #doc]
+            #[doc(alias = #alias)]
             #[inline]
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #checked_arrow {
                 // Held across the checks too, so what they saw holds at the call.

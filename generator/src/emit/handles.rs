@@ -382,6 +382,10 @@ fn emit_device(cx: &Context) -> TokenStream {
     }
 }
 
+fn command_fn_spelled(model: &crate::model::Model, command: &str) -> String {
+    crate::names::command_fn(model.spelling(command))
+}
+
 fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     let model = cx.model;
     let id = type_ident(name);
@@ -396,7 +400,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
         .iter()
         .find(|d| model.emitted.contains(*d))
         .cloned();
-    let doc = match &destroy {
+    let mut doc = match &destroy {
         Some(d) => format!(
             "A `{name}`. Clones share it; the last one to go calls `{d}`, after every submission that used it has completed."
         ),
@@ -404,6 +408,19 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             "A `{name}`, owned by the implementation: the wrapper keeps its parent alive and never destroys it."
         ),
     };
+    // Where the example programs make one: the maker's docs show the statement
+    // (kept there, so that this file stays short).
+    if let Some((receiver, maker)) = handle.created_by.iter().find_map(|c| {
+        let m = command_fn_spelled(model, c);
+        let receiver = model.commands.get(c)?.params.first()?.type_name.clone();
+        cx.examples
+            .contains_key(&m)
+            .then(|| (crate::names::type_name(&receiver), m))
+    }) {
+        doc.push_str(&format!(
+            "\n\n# Example\n\nMade by [`{receiver}::{maker}`], whose docs show a call from the example programs."
+        ));
+    }
     let parent_field = parent_ty.as_ref().map(|p| quote!(parent: #p,));
     let parent_fn = parent_ty.as_ref().map(|p| {
         quote! {

@@ -72,6 +72,20 @@ pub struct Context<'m> {
     pub facts: types::TypeFacts,
     /// The structs whose walk can find a handle (see [`reach`]).
     pub reaching: BTreeSet<String>,
+    /// Where the example programs call a method or make a struct, by method name
+    /// (`create_buffer`) or type name (`BufferCreateInfo`): the docs show it.
+    pub examples: BTreeMap<String, Snippet>,
+}
+
+/// A statement of the example programs, for an item's docs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Snippet {
+    /// The source file, relative to the repository root, with `/` separators.
+    pub file: String,
+    /// The 1-based line of the call.
+    pub line: usize,
+    /// The statement around it, dedented.
+    pub code: String,
 }
 
 impl<'m> Context<'m> {
@@ -82,6 +96,7 @@ impl<'m> Context<'m> {
             validity,
             facts: types::TypeFacts::new(model),
             reaching: BTreeSet::new(),
+            examples: BTreeMap::new(),
         };
         cx.reaching = reach::reaching(&cx);
         cx

@@ -29,6 +29,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 11: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdWriteBufferMarkerAMD")]
     #[inline]
     pub unsafe fn cmd_write_buffer_marker_amd(
         &mut self,

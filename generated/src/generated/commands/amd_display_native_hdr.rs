@@ -15,6 +15,7 @@ The rules are on [`vkSetLocalDimmingAMD`'s reference page](https://registry.khro
 - `VUID-vkSetLocalDimmingAMD-swapChain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkSetLocalDimmingAMD")]
     #[inline]
     pub fn set_local_dimming_amd(
         &self,

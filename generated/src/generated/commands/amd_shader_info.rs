@@ -17,6 +17,7 @@ The rules are on [`vkGetShaderInfoAMD`'s reference page](https://registry.khrono
 - `VUID-vkGetShaderInfoAMD-pInfoSize-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetShaderInfoAMD-pInfo-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetShaderInfoAMD-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetShaderInfoAMD")]
     #[inline]
     pub fn get_shader_info_amd(
         &self,

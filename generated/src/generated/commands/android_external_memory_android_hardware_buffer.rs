@@ -21,6 +21,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetAndroidHardwareBufferPropertiesANDROID")]
     #[inline]
     pub unsafe fn get_android_hardware_buffer_properties_android<'a>(
         &self,
@@ -89,6 +90,7 @@ The rules are on [`vkGetMemoryAndroidHardwareBufferANDROID`'s reference page](ht
 - `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetMemoryAndroidHardwareBufferANDROID")]
     #[inline]
     pub unsafe fn get_memory_android_hardware_buffer_android<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkAcquireDrmDisplayEXT`'s reference page](https://registry.kh
 - `VUID-vkAcquireDrmDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkAcquireDrmDisplayEXT")]
     #[inline]
     pub unsafe fn acquire_drm_display_ext(
         &self,
@@ -48,6 +49,7 @@ The rules are on [`vkGetDrmDisplayEXT`'s reference page](https://registry.khrono
 
 - `VUID-vkGetDrmDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDrmDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetDrmDisplayEXT")]
     #[inline]
     pub fn get_drm_display_ext(
         &self,

@@ -26,6 +26,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: `parent` rules are not checked yet
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkAcquireXlibDisplayEXT")]
     #[inline]
     pub unsafe fn acquire_xlib_display_ext(
         &self,
@@ -64,6 +65,7 @@ The rules are on [`vkGetRandROutputDisplayEXT`'s reference page](https://registr
 - `VUID-vkGetRandROutputDisplayEXT-pDisplay-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetRandROutputDisplayEXT")]
     #[inline]
     pub unsafe fn get_rand_r_output_display_ext(
         &self,

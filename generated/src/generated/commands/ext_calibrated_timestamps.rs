@@ -25,6 +25,7 @@ The rules are on [`vkGetCalibratedTimestampsEXT`'s reference page](https://regis
 - `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetCalibratedTimestampsEXT")]
     #[inline]
     pub unsafe fn get_calibrated_timestamps_ext<'a>(
         &self,
@@ -86,6 +87,7 @@ The rules are on [`vkGetPhysicalDeviceCalibrateableTimeDomainsEXT`'s reference p
 - `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomainCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomains-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceCalibrateableTimeDomainsEXT")]
     #[inline]
     pub fn get_physical_device_calibrateable_time_domains_ext(
         &self,

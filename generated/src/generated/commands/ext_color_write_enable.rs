@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetColorWriteEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetColorWriteEnableEXT")]
     #[inline]
     pub fn cmd_set_color_write_enable_ext(
         &mut self,

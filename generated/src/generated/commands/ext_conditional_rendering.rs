@@ -17,6 +17,7 @@ The rules are on [`vkCmdBeginConditionalRenderingEXT`'s reference page](https://
 - `VUID-vkCmdBeginConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBeginConditionalRenderingEXT")]
     #[inline]
     pub fn cmd_begin_conditional_rendering_ext<'a>(
         &mut self,
@@ -97,6 +98,7 @@ The rules are on [`vkCmdEndConditionalRenderingEXT`'s reference page](https://re
 - `VUID-vkCmdEndConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndConditionalRenderingEXT")]
     #[inline]
     pub fn cmd_end_conditional_rendering_ext(&mut self) -> Result<()> {
         {

@@ -15,6 +15,7 @@ The rules are on [`vkCmdDebugMarkerBeginEXT`'s reference page](https://registry.
 - `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDebugMarkerBeginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdDebugMarkerBeginEXT")]
     #[inline]
     pub fn cmd_debug_marker_begin_ext<'a>(
         &mut self,
@@ -76,6 +77,7 @@ The rules are on [`vkCmdDebugMarkerEndEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdDebugMarkerEndEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDebugMarkerEndEXT")]
     #[inline]
     pub unsafe fn cmd_debug_marker_end_ext(&mut self) -> Result<()> {
         {
@@ -118,6 +120,7 @@ The rules are on [`vkCmdDebugMarkerInsertEXT`'s reference page](https://registry
 - `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdDebugMarkerInsertEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdDebugMarkerInsertEXT")]
     #[inline]
     pub fn cmd_debug_marker_insert_ext<'a>(
         &mut self,
@@ -179,6 +182,7 @@ The rules are on [`vkDebugMarkerSetObjectNameEXT`'s reference page](https://regi
 
 - `VUID-vkDebugMarkerSetObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkDebugMarkerSetObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkDebugMarkerSetObjectNameEXT")]
     #[inline]
     pub unsafe fn debug_marker_set_object_name_ext<'a>(
         &self,
@@ -236,6 +240,7 @@ The rules are on [`vkDebugMarkerSetObjectTagEXT`'s reference page](https://regis
 
 - `VUID-vkDebugMarkerSetObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkDebugMarkerSetObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkDebugMarkerSetObjectTagEXT")]
     #[inline]
     pub unsafe fn debug_marker_set_object_tag_ext<'a>(
         &self,

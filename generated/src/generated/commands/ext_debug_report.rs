@@ -14,6 +14,7 @@ The rules are on [`vkCreateDebugReportCallbackEXT`'s reference page](https://reg
 - `VUID-vkCreateDebugReportCallbackEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDebugReportCallbackEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDebugReportCallbackEXT-pCallback-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDebugReportCallbackEXT")]
     #[inline]
     pub fn create_debug_report_callback_ext<'a>(
         &self,
@@ -72,6 +73,7 @@ The rules are on [`vkDebugReportMessageEXT`'s reference page](https://registry.k
 - `VUID-vkDebugReportMessageEXT-pMessage-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkDebugReportMessageEXT")]
     #[inline]
     pub fn debug_report_message_ext(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdBeginDebugUtilsLabelEXT")]
     #[inline]
     pub fn cmd_begin_debug_utils_label_ext<'a>(
         &mut self,
@@ -73,6 +74,7 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 - `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndDebugUtilsLabelEXT")]
     #[inline]
     pub unsafe fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
         {
@@ -115,6 +117,7 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdInsertDebugUtilsLabelEXT")]
     #[inline]
     pub fn cmd_insert_debug_utils_label_ext<'a>(
         &mut self,
@@ -159,6 +162,17 @@ The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] che
 impl Instance {
     /**`vkCreateDebugUtilsMessengerEXT`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 68) does; the example programs run in CI:
+
+```ignore
+let _messenger = args
+    .validate
+    .then(|| instance.create_debug_utils_messenger_ext(&log.messenger_info()))
+    .transpose()?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugUtilsMessengerEXT.html). Settled by the wrappers:
@@ -167,6 +181,7 @@ The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://reg
 - `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDebugUtilsMessengerEXT-pMessenger-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDebugUtilsMessengerEXT")]
     #[inline]
     pub fn create_debug_utils_messenger_ext<'a>(
         &self,
@@ -230,6 +245,7 @@ The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://regis
 - `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkSubmitDebugUtilsMessageEXT")]
     #[inline]
     pub unsafe fn submit_debug_utils_message_ext<'a>(
         &self,
@@ -299,6 +315,7 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
 
 - `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkQueueBeginDebugUtilsLabelEXT")]
     #[inline]
     pub fn queue_begin_debug_utils_label_ext<'a>(
         &self,
@@ -334,6 +351,7 @@ The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://regis
 - `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkQueueEndDebugUtilsLabelEXT")]
     #[inline]
     pub unsafe fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
         let fp = self
@@ -357,6 +375,7 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
 
 - `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkQueueInsertDebugUtilsLabelEXT")]
     #[inline]
     pub fn queue_insert_debug_utils_label_ext<'a>(
         &self,
@@ -397,6 +416,7 @@ The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://regis
 - `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkSetDebugUtilsObjectNameEXT")]
     #[inline]
     pub unsafe fn set_debug_utils_object_name_ext<'a>(
         &self,
@@ -474,6 +494,7 @@ The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://regist
 
 - `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkSetDebugUtilsObjectTagEXT")]
     #[inline]
     pub fn set_debug_utils_object_tag_ext<'a>(
         &self,

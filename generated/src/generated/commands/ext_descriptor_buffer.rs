@@ -20,6 +20,7 @@ The rules are on [`vkCmdBindDescriptorBufferEmbeddedSamplersEXT`'s reference pag
 - `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindDescriptorBufferEmbeddedSamplersEXT")]
     #[inline]
     pub fn cmd_bind_descriptor_buffer_embedded_samplers_ext(
         &mut self,
@@ -86,6 +87,7 @@ The rules are on [`vkCmdBindDescriptorBuffersEXT`'s reference page](https://regi
 - `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindDescriptorBuffersEXT")]
     #[inline]
     pub fn cmd_bind_descriptor_buffers_ext<'a>(
         &mut self,
@@ -161,6 +163,7 @@ The rules are on [`vkCmdSetDescriptorBufferOffsetsEXT`'s reference page](https:/
 - `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDescriptorBufferOffsetsEXT")]
     #[inline]
     pub fn cmd_set_descriptor_buffer_offsets_ext(
         &mut self,
@@ -264,6 +267,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_acceleration_structure_opaque_capture_descriptor_data_ext<'a>(
         &self,
@@ -339,6 +343,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetBufferOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_descriptor_data_ext<'a>(
         &self,
@@ -376,6 +381,7 @@ The rules are on [`vkGetDescriptorEXT`'s reference page](https://registry.khrono
 - `VUID-vkGetDescriptorEXT-dataSize-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDescriptorEXT")]
     #[inline]
     pub fn get_descriptor_ext<'a>(
         &self,
@@ -432,6 +438,7 @@ The rules are on [`vkGetDescriptorSetLayoutBindingOffsetEXT`'s reference page](h
 - `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDescriptorSetLayoutBindingOffsetEXT")]
     #[inline]
     pub fn get_descriptor_set_layout_binding_offset_ext(
         &self,
@@ -484,6 +491,7 @@ The rules are on [`vkGetDescriptorSetLayoutSizeEXT`'s reference page](https://re
 - `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDescriptorSetLayoutSizeEXT")]
     #[inline]
     pub fn get_descriptor_set_layout_size_ext(
         &self,
@@ -537,6 +545,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetImageOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_image_opaque_capture_descriptor_data_ext<'a>(
         &self,
@@ -579,6 +588,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetImageViewOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_image_view_opaque_capture_descriptor_data_ext<'a>(
         &self,
@@ -621,6 +631,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetSamplerOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_sampler_opaque_capture_descriptor_data_ext<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkReleaseDisplayEXT`'s reference page](https://registry.khron
 - `VUID-vkReleaseDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkReleaseDisplayEXT")]
     #[inline]
     pub unsafe fn release_display_ext(&self, display: &DisplayKHR) -> Result<()> {
         let fp = self

@@ -21,6 +21,7 @@ The rules are on [`vkCreateDirectFBSurfaceEXT`'s reference page](https://registr
 - `VUID-vkCreateDirectFBSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDirectFBSurfaceEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDirectFBSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDirectFBSurfaceEXT")]
     #[inline]
     pub unsafe fn create_direct_fb_surface_ext<'a>(
         &self,
@@ -89,6 +90,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetPhysicalDeviceDirectFBPresentationSupportEXT")]
     #[inline]
     pub unsafe fn get_physical_device_direct_fb_presentation_support_ext(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetDiscardRectangleEXT`'s reference page](https://regist
 - `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDiscardRectangleEXT")]
     #[inline]
     pub fn cmd_set_discard_rectangle_ext(
         &mut self,

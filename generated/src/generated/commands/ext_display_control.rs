@@ -15,6 +15,7 @@ The rules are on [`vkDisplayPowerControlEXT`'s reference page](https://registry.
 - `VUID-vkDisplayPowerControlEXT-pDisplayPowerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`commonparent` rules are not checked yet).*/
+    #[doc(alias = "vkDisplayPowerControlEXT")]
     #[inline]
     pub fn display_power_control_ext<'a>(
         &self,
@@ -72,6 +73,7 @@ The rules are on [`vkGetSwapchainCounterEXT`'s reference page](https://registry.
 - `VUID-vkGetSwapchainCounterEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetSwapchainCounterEXT")]
     #[inline]
     pub fn get_swapchain_counter_ext(
         &self,
@@ -121,6 +123,7 @@ The rules are on [`vkRegisterDeviceEventEXT`'s reference page](https://registry.
 - `VUID-vkRegisterDeviceEventEXT-pDeviceEventInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkRegisterDeviceEventEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkRegisterDeviceEventEXT-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkRegisterDeviceEventEXT")]
     #[inline]
     pub fn register_device_event_ext<'a>(
         &self,
@@ -178,6 +181,7 @@ The rules are on [`vkRegisterDisplayEventEXT`'s reference page](https://registry
 - `VUID-vkRegisterDisplayEventEXT-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`commonparent` rules are not checked yet).*/
+    #[doc(alias = "vkRegisterDisplayEventEXT")]
     #[inline]
     pub fn register_display_event_ext<'a>(
         &self,

@@ -24,6 +24,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2EXT`'s reference page]
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2EXT")]
     #[inline]
     pub unsafe fn get_physical_device_surface_capabilities2_ext<'a>(
         &self,

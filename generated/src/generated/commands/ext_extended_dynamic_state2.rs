@@ -17,6 +17,7 @@ The rules are on [`vkCmdSetLogicOpEXT`'s reference page](https://registry.khrono
 - `VUID-vkCmdSetLogicOpEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetLogicOpEXT")]
     #[inline]
     pub fn cmd_set_logic_op_ext(&mut self, logic_op: vk::LogicOp) -> Result<()> {
         {
@@ -63,6 +64,7 @@ The rules are on [`vkCmdSetPatchControlPointsEXT`'s reference page](https://regi
 - `VUID-vkCmdSetPatchControlPointsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetPatchControlPointsEXT")]
     #[inline]
     pub fn cmd_set_patch_control_points_ext(
         &mut self,

@@ -16,6 +16,7 @@ The rules are on [`vkCmdSetAlphaToCoverageEnableEXT`'s reference page](https://r
 - `VUID-vkCmdSetAlphaToCoverageEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetAlphaToCoverageEnableEXT")]
     #[inline]
     pub fn cmd_set_alpha_to_coverage_enable_ext(
         &mut self,
@@ -68,6 +69,7 @@ The rules are on [`vkCmdSetAlphaToOneEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetAlphaToOneEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetAlphaToOneEnableEXT")]
     #[inline]
     pub fn cmd_set_alpha_to_one_enable_ext(
         &mut self,
@@ -120,6 +122,7 @@ The rules are on [`vkCmdSetColorBlendAdvancedEXT`'s reference page](https://regi
 - `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetColorBlendAdvancedEXT")]
     #[inline]
     pub fn cmd_set_color_blend_advanced_ext(
         &mut self,
@@ -185,6 +188,7 @@ The rules are on [`vkCmdSetColorBlendEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetColorBlendEnableEXT")]
     #[inline]
     pub fn cmd_set_color_blend_enable_ext(
         &mut self,
@@ -250,6 +254,7 @@ The rules are on [`vkCmdSetColorBlendEquationEXT`'s reference page](https://regi
 - `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetColorBlendEquationEXT")]
     #[inline]
     pub fn cmd_set_color_blend_equation_ext(
         &mut self,
@@ -316,6 +321,7 @@ The rules are on [`vkCmdSetColorWriteMaskEXT`'s reference page](https://registry
 - `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetColorWriteMaskEXT")]
     #[inline]
     pub fn cmd_set_color_write_mask_ext(
         &mut self,
@@ -380,6 +386,7 @@ The rules are on [`vkCmdSetConservativeRasterizationModeEXT`'s reference page](h
 - `VUID-vkCmdSetConservativeRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetConservativeRasterizationModeEXT")]
     #[inline]
     pub fn cmd_set_conservative_rasterization_mode_ext(
         &mut self,
@@ -437,6 +444,7 @@ The rules are on [`vkCmdSetCoverageModulationModeNV`'s reference page](https://r
 - `VUID-vkCmdSetCoverageModulationModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageModulationModeNV")]
     #[inline]
     pub fn cmd_set_coverage_modulation_mode_nv(
         &mut self,
@@ -489,6 +497,7 @@ The rules are on [`vkCmdSetCoverageModulationTableEnableNV`'s reference page](ht
 - `VUID-vkCmdSetCoverageModulationTableEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageModulationTableEnableNV")]
     #[inline]
     pub fn cmd_set_coverage_modulation_table_enable_nv(
         &mut self,
@@ -547,6 +556,7 @@ The rules are on [`vkCmdSetCoverageModulationTableNV`'s reference page](https://
 - `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageModulationTableNV")]
     #[inline]
     pub fn cmd_set_coverage_modulation_table_nv(
         &mut self,
@@ -610,6 +620,7 @@ The rules are on [`vkCmdSetCoverageReductionModeNV`'s reference page](https://re
 - `VUID-vkCmdSetCoverageReductionModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageReductionModeNV")]
     #[inline]
     pub fn cmd_set_coverage_reduction_mode_nv(
         &mut self,
@@ -662,6 +673,7 @@ The rules are on [`vkCmdSetCoverageToColorEnableNV`'s reference page](https://re
 - `VUID-vkCmdSetCoverageToColorEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageToColorEnableNV")]
     #[inline]
     pub fn cmd_set_coverage_to_color_enable_nv(
         &mut self,
@@ -714,6 +726,7 @@ The rules are on [`vkCmdSetCoverageToColorLocationNV`'s reference page](https://
 - `VUID-vkCmdSetCoverageToColorLocationNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoverageToColorLocationNV")]
     #[inline]
     pub fn cmd_set_coverage_to_color_location_nv(
         &mut self,
@@ -767,6 +780,7 @@ The rules are on [`vkCmdSetDepthClampEnableEXT`'s reference page](https://regist
 - `VUID-vkCmdSetDepthClampEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthClampEnableEXT")]
     #[inline]
     pub fn cmd_set_depth_clamp_enable_ext(
         &mut self,
@@ -817,6 +831,7 @@ The rules are on [`vkCmdSetDepthClipEnableEXT`'s reference page](https://registr
 - `VUID-vkCmdSetDepthClipEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthClipEnableEXT")]
     #[inline]
     pub fn cmd_set_depth_clip_enable_ext(
         &mut self,
@@ -867,6 +882,7 @@ The rules are on [`vkCmdSetDepthClipNegativeOneToOneEXT`'s reference page](https
 - `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthClipNegativeOneToOneEXT")]
     #[inline]
     pub fn cmd_set_depth_clip_negative_one_to_one_ext(
         &mut self,
@@ -921,6 +937,7 @@ The rules are on [`vkCmdSetExtraPrimitiveOverestimationSizeEXT`'s reference page
 - `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetExtraPrimitiveOverestimationSizeEXT")]
     #[inline]
     pub fn cmd_set_extra_primitive_overestimation_size_ext(
         &mut self,
@@ -975,6 +992,7 @@ The rules are on [`vkCmdSetLineRasterizationModeEXT`'s reference page](https://r
 - `VUID-vkCmdSetLineRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetLineRasterizationModeEXT")]
     #[inline]
     pub fn cmd_set_line_rasterization_mode_ext(
         &mut self,
@@ -1027,6 +1045,7 @@ The rules are on [`vkCmdSetLineStippleEnableEXT`'s reference page](https://regis
 - `VUID-vkCmdSetLineStippleEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetLineStippleEnableEXT")]
     #[inline]
     pub fn cmd_set_line_stipple_enable_ext(
         &mut self,
@@ -1077,6 +1096,7 @@ The rules are on [`vkCmdSetLogicOpEnableEXT`'s reference page](https://registry.
 - `VUID-vkCmdSetLogicOpEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetLogicOpEnableEXT")]
     #[inline]
     pub fn cmd_set_logic_op_enable_ext(&mut self, logic_op_enable: bool) -> Result<()> {
         {
@@ -1125,6 +1145,7 @@ The rules are on [`vkCmdSetPolygonModeEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetPolygonModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetPolygonModeEXT")]
     #[inline]
     pub fn cmd_set_polygon_mode_ext(
         &mut self,
@@ -1175,6 +1196,7 @@ The rules are on [`vkCmdSetProvokingVertexModeEXT`'s reference page](https://reg
 - `VUID-vkCmdSetProvokingVertexModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetProvokingVertexModeEXT")]
     #[inline]
     pub fn cmd_set_provoking_vertex_mode_ext(
         &mut self,
@@ -1228,6 +1250,7 @@ The rules are on [`vkCmdSetRasterizationSamplesEXT`'s reference page](https://re
 - `VUID-vkCmdSetRasterizationSamplesEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetRasterizationSamplesEXT")]
     #[inline]
     pub fn cmd_set_rasterization_samples_ext(
         &mut self,
@@ -1280,6 +1303,7 @@ The rules are on [`vkCmdSetRasterizationStreamEXT`'s reference page](https://reg
 - `VUID-vkCmdSetRasterizationStreamEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetRasterizationStreamEXT")]
     #[inline]
     pub fn cmd_set_rasterization_stream_ext(
         &mut self,
@@ -1329,6 +1353,7 @@ The rules are on [`vkCmdSetRepresentativeFragmentTestEnableNV`'s reference page]
 - `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetRepresentativeFragmentTestEnableNV")]
     #[inline]
     pub fn cmd_set_representative_fragment_test_enable_nv(
         &mut self,
@@ -1385,6 +1410,7 @@ The rules are on [`vkCmdSetSampleLocationsEnableEXT`'s reference page](https://r
 - `VUID-vkCmdSetSampleLocationsEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetSampleLocationsEnableEXT")]
     #[inline]
     pub fn cmd_set_sample_locations_enable_ext(
         &mut self,
@@ -1445,6 +1471,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkCmdSetSampleMaskEXT")]
     #[inline]
     pub unsafe fn cmd_set_sample_mask_ext(
         &mut self,
@@ -1496,6 +1523,7 @@ The rules are on [`vkCmdSetShadingRateImageEnableNV`'s reference page](https://r
 - `VUID-vkCmdSetShadingRateImageEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetShadingRateImageEnableNV")]
     #[inline]
     pub fn cmd_set_shading_rate_image_enable_nv(
         &mut self,
@@ -1551,6 +1579,7 @@ The rules are on [`vkCmdSetTessellationDomainOriginEXT`'s reference page](https:
 - `VUID-vkCmdSetTessellationDomainOriginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetTessellationDomainOriginEXT")]
     #[inline]
     pub fn cmd_set_tessellation_domain_origin_ext(
         &mut self,
@@ -1602,6 +1631,7 @@ The rules are on [`vkCmdSetViewportSwizzleNV`'s reference page](https://registry
 - `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewportSwizzleNV")]
     #[inline]
     pub fn cmd_set_viewport_swizzle_nv(
         &mut self,
@@ -1662,6 +1692,7 @@ The rules are on [`vkCmdSetViewportWScalingEnableNV`'s reference page](https://r
 - `VUID-vkCmdSetViewportWScalingEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewportWScalingEnableNV")]
     #[inline]
     pub fn cmd_set_viewport_w_scaling_enable_nv(
         &mut self,

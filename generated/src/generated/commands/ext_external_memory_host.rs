@@ -19,6 +19,7 @@ The rules are on [`vkGetMemoryHostPointerPropertiesEXT`'s reference page](https:
 - `VUID-vkGetMemoryHostPointerPropertiesEXT-pMemoryHostPointerProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetMemoryHostPointerPropertiesEXT")]
     #[inline]
     pub unsafe fn get_memory_host_pointer_properties_ext<'a>(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkAcquireFullScreenExclusiveModeEXT`'s reference page](https:
 - `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkAcquireFullScreenExclusiveModeEXT")]
     #[inline]
     pub fn acquire_full_screen_exclusive_mode_ext(
         &self,
@@ -62,6 +63,7 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModes2EXT`'s reference page](ht
 - `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pModes-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDeviceGroupSurfacePresentModes2EXT")]
     #[inline]
     pub fn get_device_group_surface_present_modes2_ext<'a>(
         &self,
@@ -119,6 +121,7 @@ The rules are on [`vkReleaseFullScreenExclusiveModeEXT`'s reference page](https:
 - `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkReleaseFullScreenExclusiveModeEXT")]
     #[inline]
     pub fn release_full_screen_exclusive_mode_ext(
         &self,
@@ -170,6 +173,7 @@ The rules are on [`vkGetPhysicalDeviceSurfacePresentModes2EXT`'s reference page]
 - `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pPresentModes-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModes2EXT")]
     #[inline]
     pub fn get_physical_device_surface_present_modes2_ext<'a>(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkSetHdrMetadataEXT`'s reference page](https://registry.khron
 - `VUID-vkSetHdrMetadataEXT-pMetadata-parameter`: dynamic (checks, in every build, that the slice is as long as `swapchains`)
 - `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkSetHdrMetadataEXT-pSwapchains-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkSetHdrMetadataEXT")]
     #[inline]
     pub fn set_hdr_metadata_ext<'a>(
         &self,

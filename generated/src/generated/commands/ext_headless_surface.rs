@@ -14,6 +14,7 @@ The rules are on [`vkCreateHeadlessSurfaceEXT`'s reference page](https://registr
 - `VUID-vkCreateHeadlessSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateHeadlessSurfaceEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateHeadlessSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateHeadlessSurfaceEXT")]
     #[inline]
     pub fn create_headless_surface_ext<'a>(
         &self,

@@ -17,6 +17,7 @@ The rules are on [`vkGetImageSubresourceLayout2EXT`'s reference page](https://re
 - `VUID-vkGetImageSubresourceLayout2EXT-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetImageSubresourceLayout2EXT")]
     #[inline]
     pub fn get_image_subresource_layout2_ext<'a>(
         &self,

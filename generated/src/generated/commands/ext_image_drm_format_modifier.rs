@@ -16,6 +16,7 @@ The rules are on [`vkGetImageDrmFormatModifierPropertiesEXT`'s reference page](h
 - `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetImageDrmFormatModifierPropertiesEXT")]
     #[inline]
     pub fn get_image_drm_format_modifier_properties_ext<'a>(
         &self,

@@ -16,6 +16,7 @@ The rules are on [`vkCmdSetLineStippleEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetLineStippleEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetLineStippleEXT")]
     #[inline]
     pub fn cmd_set_line_stipple_ext(
         &mut self,

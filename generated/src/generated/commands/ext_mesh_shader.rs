@@ -17,6 +17,7 @@ The rules are on [`vkCmdDrawMeshTasksEXT`'s reference page](https://registry.khr
 - `VUID-vkCmdDrawMeshTasksEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 190 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksEXT")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_ext(
         &mut self,
@@ -80,6 +81,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountEXT`'s reference page](https:/
 - `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksIndirectCountEXT")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_count_ext(
         &mut self,
@@ -164,6 +166,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectEXT`'s reference page](https://regi
 - `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksIndirectEXT")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_ext(
         &mut self,

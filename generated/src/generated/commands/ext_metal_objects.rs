@@ -12,6 +12,7 @@ The rules are on [`vkExportMetalObjectsEXT`'s reference page](https://registry.k
 
 - `VUID-vkExportMetalObjectsEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkExportMetalObjectsEXT-pMetalObjectsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkExportMetalObjectsEXT")]
     #[inline]
     pub fn export_metal_objects_ext<'a>(
         &self,

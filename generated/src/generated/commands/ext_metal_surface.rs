@@ -14,6 +14,7 @@ The rules are on [`vkCreateMetalSurfaceEXT`'s reference page](https://registry.k
 - `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateMetalSurfaceEXT")]
     #[inline]
     pub fn create_metal_surface_ext<'a>(
         &self,

@@ -90,6 +90,7 @@ The rules are on [`vkCmdDrawMultiEXT`'s reference page](https://registry.khronos
 - `VUID-vkCmdDrawMultiEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMultiEXT")]
     #[inline]
     pub unsafe fn cmd_draw_multi_ext(
         &mut self,
@@ -243,6 +244,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
 
 - 198: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkCmdDrawMultiIndexedEXT")]
     #[inline]
     pub unsafe fn cmd_draw_multi_indexed_ext(
         &mut self,

@@ -41,6 +41,7 @@ The rules are on [`vkBuildMicromapsEXT`'s reference page](https://registry.khron
 - `VUID-vkBuildMicromapsEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkBuildMicromapsEXT")]
     #[inline]
     pub unsafe fn build_micromaps_ext<'a>(
         &self,
@@ -113,6 +114,7 @@ The rules are on [`vkCopyMemoryToMicromapEXT`'s reference page](https://registry
 - `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyMemoryToMicromapEXT")]
     #[inline]
     pub unsafe fn copy_memory_to_micromap_ext<'a>(
         &self,
@@ -185,6 +187,7 @@ The rules are on [`vkCopyMicromapEXT`'s reference page](https://registry.khronos
 - `VUID-vkCopyMicromapEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyMicromapEXT")]
     #[inline]
     pub unsafe fn copy_micromap_ext<'a>(
         &self,
@@ -255,6 +258,7 @@ The rules are on [`vkCopyMicromapToMemoryEXT`'s reference page](https://registry
 - `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyMicromapToMemoryEXT")]
     #[inline]
     pub unsafe fn copy_micromap_to_memory_ext<'a>(
         &self,
@@ -324,6 +328,7 @@ The rules are on [`vkCreateMicromapEXT`'s reference page](https://registry.khron
 - `VUID-vkCreateMicromapEXT-pMicromap-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateMicromapEXT")]
     #[inline]
     pub unsafe fn create_micromap_ext<'a>(
         &self,
@@ -407,6 +412,7 @@ The rules are on [`vkGetDeviceMicromapCompatibilityEXT`'s reference page](https:
 - `VUID-vkGetDeviceMicromapCompatibilityEXT-pCompatibility-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDeviceMicromapCompatibilityEXT")]
     #[inline]
     pub unsafe fn get_device_micromap_compatibility_ext<'a>(
         &self,
@@ -456,6 +462,7 @@ The rules are on [`vkGetMicromapBuildSizesEXT`'s reference page](https://registr
 - `VUID-vkGetMicromapBuildSizesEXT-pSizeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetMicromapBuildSizesEXT")]
     #[inline]
     pub unsafe fn get_micromap_build_sizes_ext<'a>(
         &self,
@@ -540,6 +547,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 9: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkWriteMicromapsPropertiesEXT")]
     #[inline]
     pub unsafe fn write_micromaps_properties_ext(
         &self,
@@ -648,6 +656,7 @@ The rules are on [`vkCmdBuildMicromapsEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBuildMicromapsEXT")]
     #[inline]
     pub unsafe fn cmd_build_micromaps_ext<'a>(
         &mut self,
@@ -729,6 +738,7 @@ The rules are on [`vkCmdCopyMemoryToMicromapEXT`'s reference page](https://regis
 - `VUID-vkCmdCopyMemoryToMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyMemoryToMicromapEXT")]
     #[inline]
     pub unsafe fn cmd_copy_memory_to_micromap_ext<'a>(
         &mut self,
@@ -814,6 +824,7 @@ The rules are on [`vkCmdCopyMicromapEXT`'s reference page](https://registry.khro
 - `VUID-vkCmdCopyMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyMicromapEXT")]
     #[inline]
     pub unsafe fn cmd_copy_micromap_ext<'a>(
         &mut self,
@@ -892,6 +903,7 @@ The rules are on [`vkCmdCopyMicromapToMemoryEXT`'s reference page](https://regis
 - `VUID-vkCmdCopyMicromapToMemoryEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyMicromapToMemoryEXT")]
     #[inline]
     pub unsafe fn cmd_copy_micromap_to_memory_ext<'a>(
         &mut self,
@@ -984,6 +996,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 6: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdWriteMicromapsPropertiesEXT")]
     #[inline]
     pub unsafe fn cmd_write_micromaps_properties_ext(
         &mut self,

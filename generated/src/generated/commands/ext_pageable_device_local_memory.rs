@@ -15,6 +15,7 @@ The rules are on [`vkSetDeviceMemoryPriorityEXT`'s reference page](https://regis
 - `VUID-vkSetDeviceMemoryPriorityEXT-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+    #[doc(alias = "vkSetDeviceMemoryPriorityEXT")]
     #[inline]
     pub fn set_device_memory_priority_ext(
         &self,

@@ -22,6 +22,7 @@ The rules are on [`vkGetPipelinePropertiesEXT`'s reference page](https://registr
 - `VUID-vkGetPipelinePropertiesEXT-pPipelineInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPipelinePropertiesEXT")]
     #[inline]
     pub unsafe fn get_pipeline_properties_ext<'a>(
         &self,

@@ -17,6 +17,7 @@ The rules are on [`vkCmdSetSampleLocationsEXT`'s reference page](https://registr
 - `VUID-vkCmdSetSampleLocationsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetSampleLocationsEXT")]
     #[inline]
     pub fn cmd_set_sample_locations_ext<'a>(
         &mut self,
@@ -72,6 +73,7 @@ The rules are on [`vkGetPhysicalDeviceMultisamplePropertiesEXT`'s reference page
 - `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-pMultisampleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceMultisamplePropertiesEXT")]
     #[inline]
     pub fn get_physical_device_multisample_properties_ext<'a>(
         &self,

@@ -32,6 +32,7 @@ The rules are on [`vkGetShaderModuleCreateInfoIdentifierEXT`'s reference page](h
 - `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-pIdentifier-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetShaderModuleCreateInfoIdentifierEXT")]
     #[inline]
     pub unsafe fn get_shader_module_create_info_identifier_ext<'a>(
         &self,
@@ -93,6 +94,7 @@ The rules are on [`vkGetShaderModuleIdentifierEXT`'s reference page](https://reg
 - `VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetShaderModuleIdentifierEXT")]
     #[inline]
     pub fn get_shader_module_identifier_ext<'a>(
         &self,

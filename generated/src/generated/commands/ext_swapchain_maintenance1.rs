@@ -12,6 +12,7 @@ The rules are on [`vkReleaseSwapchainImagesEXT`'s reference page](https://regist
 
 - `VUID-vkReleaseSwapchainImagesEXT-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkReleaseSwapchainImagesEXT-pReleaseInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkReleaseSwapchainImagesEXT")]
     #[inline]
     pub fn release_swapchain_images_ext<'a>(
         &self,

@@ -19,6 +19,7 @@ The rules are on [`vkCmdBeginQueryIndexedEXT`'s reference page](https://registry
 - `VUID-vkCmdBeginQueryIndexedEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBeginQueryIndexedEXT")]
     #[inline]
     pub fn cmd_begin_query_indexed_ext(
         &mut self,
@@ -81,6 +82,7 @@ The rules are on [`vkCmdBindTransformFeedbackBuffersEXT`'s reference page](https
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindTransformFeedbackBuffersEXT")]
     #[inline]
     pub fn cmd_bind_transform_feedback_buffers_ext(
         &mut self,
@@ -183,6 +185,7 @@ The rules are on [`vkCmdEndQueryIndexedEXT`'s reference page](https://registry.k
 - `VUID-vkCmdEndQueryIndexedEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndQueryIndexedEXT")]
     #[inline]
     pub fn cmd_end_query_indexed_ext(
         &mut self,
@@ -243,6 +246,7 @@ The rules are on [`vkCmdBeginTransformFeedbackEXT`'s reference page](https://reg
 - `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBeginTransformFeedbackEXT")]
     #[inline]
     pub fn cmd_begin_transform_feedback_ext(
         &mut self,
@@ -335,6 +339,7 @@ The rules are on [`vkCmdDrawIndirectByteCountEXT`'s reference page](https://regi
 - `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawIndirectByteCountEXT")]
     #[inline]
     pub fn cmd_draw_indirect_byte_count_ext(
         &mut self,
@@ -417,6 +422,7 @@ The rules are on [`vkCmdEndTransformFeedbackEXT`'s reference page](https://regis
 - `VUID-vkCmdEndTransformFeedbackEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndTransformFeedbackEXT")]
     #[inline]
     pub fn cmd_end_transform_feedback_ext(
         &mut self,

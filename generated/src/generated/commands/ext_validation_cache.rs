@@ -21,6 +21,7 @@ The rules are on [`vkCreateValidationCacheEXT`'s reference page](https://registr
 - `VUID-vkCreateValidationCacheEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateValidationCacheEXT-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateValidationCacheEXT-pValidationCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateValidationCacheEXT")]
     #[inline]
     pub unsafe fn create_validation_cache_ext<'a>(
         &self,
@@ -76,6 +77,7 @@ The rules are on [`vkGetValidationCacheDataEXT`'s reference page](https://regist
 - `VUID-vkGetValidationCacheDataEXT-pDataSize-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetValidationCacheDataEXT-pData-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetValidationCacheDataEXT-validationCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetValidationCacheDataEXT")]
     #[inline]
     pub fn get_validation_cache_data_ext(
         &self,
@@ -136,6 +138,7 @@ The rules are on [`vkMergeValidationCachesEXT`'s reference page](https://registr
 - `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkMergeValidationCachesEXT")]
     #[inline]
     pub unsafe fn merge_validation_caches_ext(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetVertexInputEXT`'s reference page](https://registry.kh
 - `VUID-vkCmdSetVertexInputEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetVertexInputEXT")]
     #[inline]
     pub fn cmd_set_vertex_input_ext<'a>(
         &mut self,

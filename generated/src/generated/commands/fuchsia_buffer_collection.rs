@@ -14,6 +14,7 @@ The rules are on [`vkCreateBufferCollectionFUCHSIA`'s reference page](https://re
 - `VUID-vkCreateBufferCollectionFUCHSIA-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateBufferCollectionFUCHSIA-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateBufferCollectionFUCHSIA-pCollection-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateBufferCollectionFUCHSIA")]
     #[inline]
     pub fn create_buffer_collection_fuchsia<'a>(
         &self,
@@ -52,6 +53,7 @@ The rules are on [`vkGetBufferCollectionPropertiesFUCHSIA`'s reference page](htt
 - `VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetBufferCollectionPropertiesFUCHSIA")]
     #[inline]
     pub fn get_buffer_collection_properties_fuchsia<'a>(
         &self,
@@ -117,6 +119,7 @@ The rules are on [`vkSetBufferCollectionBufferConstraintsFUCHSIA`'s reference pa
 - `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkSetBufferCollectionBufferConstraintsFUCHSIA")]
     #[inline]
     pub fn set_buffer_collection_buffer_constraints_fuchsia<'a>(
         &self,
@@ -183,6 +186,7 @@ The rules are on [`vkSetBufferCollectionImageConstraintsFUCHSIA`'s reference pag
 - `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkSetBufferCollectionImageConstraintsFUCHSIA")]
     #[inline]
     pub fn set_buffer_collection_image_constraints_fuchsia<'a>(
         &self,

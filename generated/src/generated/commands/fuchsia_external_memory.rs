@@ -18,6 +18,7 @@ The rules are on [`vkGetMemoryZirconHandleFUCHSIA`'s reference page](https://reg
 - `VUID-vkGetMemoryZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetMemoryZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn get_memory_zircon_handle_fuchsia<'a>(
         &self,
@@ -84,6 +85,7 @@ The rules are on [`vkGetMemoryZirconHandlePropertiesFUCHSIA`'s reference page](h
 - `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-pMemoryZirconHandleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetMemoryZirconHandlePropertiesFUCHSIA")]
     #[inline]
     pub unsafe fn get_memory_zircon_handle_properties_fuchsia<'a>(
         &self,

@@ -28,6 +28,7 @@ The rules are on [`vkGetSemaphoreZirconHandleFUCHSIA`'s reference page](https://
 - `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetSemaphoreZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn get_semaphore_zircon_handle_fuchsia<'a>(
         &self,
@@ -99,6 +100,7 @@ The rules are on [`vkImportSemaphoreZirconHandleFUCHSIA`'s reference page](https
 - `VUID-vkImportSemaphoreZirconHandleFUCHSIA-pImportSemaphoreZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkImportSemaphoreZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn import_semaphore_zircon_handle_fuchsia<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkCreateImagePipeSurfaceFUCHSIA`'s reference page](https://re
 - `VUID-vkCreateImagePipeSurfaceFUCHSIA-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateImagePipeSurfaceFUCHSIA-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImagePipeSurfaceFUCHSIA-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateImagePipeSurfaceFUCHSIA")]
     #[inline]
     pub unsafe fn create_image_pipe_surface_fuchsia<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkCreateStreamDescriptorSurfaceGGP`'s reference page](https:/
 - `VUID-vkCreateStreamDescriptorSurfaceGGP-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateStreamDescriptorSurfaceGGP-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateStreamDescriptorSurfaceGGP-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateStreamDescriptorSurfaceGGP")]
     #[inline]
     pub unsafe fn create_stream_descriptor_surface_ggp<'a>(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkGetPastPresentationTimingGOOGLE`'s reference page](https://
 - `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimingCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimings-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetPastPresentationTimingGOOGLE")]
     #[inline]
     pub fn get_past_presentation_timing_google(
         &self,
@@ -75,6 +76,7 @@ The rules are on [`vkGetRefreshCycleDurationGOOGLE`'s reference page](https://re
 - `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetRefreshCycleDurationGOOGLE-pDisplayTimingProperties-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetRefreshCycleDurationGOOGLE")]
     #[inline]
     pub fn get_refresh_cycle_duration_google(
         &self,

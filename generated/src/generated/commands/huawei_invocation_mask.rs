@@ -20,6 +20,7 @@ The rules are on [`vkCmdBindInvocationMaskHUAWEI`'s reference page](https://regi
 - `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindInvocationMaskHUAWEI")]
     #[inline]
     pub fn cmd_bind_invocation_mask_huawei(
         &mut self,

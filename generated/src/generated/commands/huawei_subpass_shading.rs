@@ -17,6 +17,7 @@ The rules are on [`vkCmdSubpassShadingHUAWEI`'s reference page](https://registry
 - `VUID-vkCmdSubpassShadingHUAWEI-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSubpassShadingHUAWEI")]
     #[inline]
     pub fn cmd_subpass_shading_huawei(&mut self) -> Result<()> {
         {
@@ -61,6 +62,7 @@ The rules are on [`vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI`'s reference 
 - `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-pMaxWorkgroupSize-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI")]
     #[inline]
     pub fn get_device_subpass_shading_max_workgroup_size_huawei(
         &self,

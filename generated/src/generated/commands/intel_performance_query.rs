@@ -13,6 +13,7 @@ The rules are on [`vkAcquirePerformanceConfigurationINTEL`'s reference page](htt
 - `VUID-vkAcquirePerformanceConfigurationINTEL-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAcquirePerformanceConfigurationINTEL-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAcquirePerformanceConfigurationINTEL-pConfiguration-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkAcquirePerformanceConfigurationINTEL")]
     #[inline]
     pub fn acquire_performance_configuration_intel<'a>(
         &self,
@@ -73,6 +74,7 @@ The rules are on [`vkGetPerformanceParameterINTEL`'s reference page](https://reg
 - `VUID-vkGetPerformanceParameterINTEL-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPerformanceParameterINTEL-parameter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPerformanceParameterINTEL-pValue-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPerformanceParameterINTEL")]
     #[inline]
     pub unsafe fn get_performance_parameter_intel(
         &self,
@@ -118,6 +120,7 @@ The rules are on [`vkInitializePerformanceApiINTEL`'s reference page](https://re
 
 - `VUID-vkInitializePerformanceApiINTEL-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkInitializePerformanceApiINTEL-pInitializeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkInitializePerformanceApiINTEL")]
     #[inline]
     pub fn initialize_performance_api_intel<'a>(
         &self,
@@ -159,6 +162,7 @@ The rules are on [`vkReleasePerformanceConfigurationINTEL`'s reference page](htt
 - `VUID-vkReleasePerformanceConfigurationINTEL-configuration-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkReleasePerformanceConfigurationINTEL")]
     #[inline]
     pub unsafe fn release_performance_configuration_intel(
         &self,
@@ -224,6 +228,7 @@ The caller upholds the rules that [`Self::release_performance_configuration_inte
 The rules are on [`vkUninitializePerformanceApiINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUninitializePerformanceApiINTEL.html). Settled by the wrappers:
 
 - `VUID-vkUninitializePerformanceApiINTEL-device-parameter`: static (`self` is a live wrapper)*/
+    #[doc(alias = "vkUninitializePerformanceApiINTEL")]
     #[inline]
     pub fn uninitialize_performance_api_intel(&self) -> Result<()> {
         let fp = self
@@ -252,6 +257,7 @@ The rules are on [`vkCmdSetPerformanceMarkerINTEL`'s reference page](https://reg
 - `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetPerformanceMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetPerformanceMarkerINTEL")]
     #[inline]
     pub fn cmd_set_performance_marker_intel<'a>(
         &mut self,
@@ -314,6 +320,7 @@ The rules are on [`vkCmdSetPerformanceOverrideINTEL`'s reference page](https://r
 - `VUID-vkCmdSetPerformanceOverrideINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetPerformanceOverrideINTEL")]
     #[inline]
     pub unsafe fn cmd_set_performance_override_intel<'a>(
         &mut self,
@@ -374,6 +381,7 @@ The rules are on [`vkCmdSetPerformanceStreamMarkerINTEL`'s reference page](https
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetPerformanceStreamMarkerINTEL")]
     #[inline]
     pub unsafe fn cmd_set_performance_stream_marker_intel<'a>(
         &mut self,
@@ -429,6 +437,7 @@ The rules are on [`vkQueueSetPerformanceConfigurationINTEL`'s reference page](ht
 - `VUID-vkQueueSetPerformanceConfigurationINTEL-queue-parameter`: static (`self` is a live wrapper)
 - `VUID-vkQueueSetPerformanceConfigurationINTEL-configuration-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+    #[doc(alias = "vkQueueSetPerformanceConfigurationINTEL")]
     #[inline]
     pub fn queue_set_performance_configuration_intel(
         &self,

@@ -24,6 +24,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 54.
 
 - 53: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkBuildAccelerationStructuresKHR")]
     #[inline]
     pub unsafe fn build_acceleration_structures_khr<'a>(
         &self,
@@ -91,6 +92,7 @@ The rules are on [`vkCopyAccelerationStructureKHR`'s reference page](https://reg
 - `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyAccelerationStructureKHR")]
     #[inline]
     pub fn copy_acceleration_structure_khr<'a>(
         &self,
@@ -150,6 +152,7 @@ The rules are on [`vkCopyAccelerationStructureToMemoryKHR`'s reference page](htt
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyAccelerationStructureToMemoryKHR")]
     #[inline]
     pub fn copy_acceleration_structure_to_memory_khr<'a>(
         &self,
@@ -215,6 +218,7 @@ The rules are on [`vkCopyMemoryToAccelerationStructureKHR`'s reference page](htt
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCopyMemoryToAccelerationStructureKHR")]
     #[inline]
     pub fn copy_memory_to_acceleration_structure_khr<'a>(
         &self,
@@ -280,6 +284,7 @@ The rules are on [`vkCreateAccelerationStructureKHR`'s reference page](https://r
 - `VUID-vkCreateAccelerationStructureKHR-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateAccelerationStructureKHR")]
     #[inline]
     pub fn create_acceleration_structure_khr<'a>(
         &self,
@@ -364,6 +369,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
 - 4: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetAccelerationStructureBuildSizesKHR")]
     #[inline]
     pub unsafe fn get_acceleration_structure_build_sizes_khr<'a>(
         &self,
@@ -436,6 +442,7 @@ The rules are on [`vkGetAccelerationStructureDeviceAddressKHR`'s reference page]
 - `VUID-vkGetAccelerationStructureDeviceAddressKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetAccelerationStructureDeviceAddressKHR")]
     #[inline]
     pub fn get_acceleration_structure_device_address_khr<'a>(
         &self,
@@ -469,6 +476,7 @@ The rules are on [`vkGetDeviceAccelerationStructureCompatibilityKHR`'s reference
 - `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pCompatibility-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDeviceAccelerationStructureCompatibilityKHR")]
     #[inline]
     pub fn get_device_acceleration_structure_compatibility_khr<'a>(
         &self,
@@ -509,6 +517,7 @@ The rules are on [`vkWriteAccelerationStructuresPropertiesKHR`'s reference page]
 - `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
     pub fn write_acceleration_structures_properties_khr(
         &self,
@@ -603,6 +612,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 72.
 
 - 71: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkCmdBuildAccelerationStructuresIndirectKHR")]
     #[inline]
     pub unsafe fn cmd_build_acceleration_structures_indirect_khr<'a>(
         &mut self,
@@ -720,6 +730,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 64.
 
 - 63: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkCmdBuildAccelerationStructuresKHR")]
     #[inline]
     pub unsafe fn cmd_build_acceleration_structures_khr<'a>(
         &mut self,
@@ -803,6 +814,7 @@ The rules are on [`vkCmdCopyAccelerationStructureKHR`'s reference page](https://
 - `VUID-vkCmdCopyAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyAccelerationStructureKHR")]
     #[inline]
     pub fn cmd_copy_acceleration_structure_khr<'a>(
         &mut self,
@@ -877,6 +889,7 @@ The rules are on [`vkCmdCopyAccelerationStructureToMemoryKHR`'s reference page](
 - `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyAccelerationStructureToMemoryKHR")]
     #[inline]
     pub fn cmd_copy_acceleration_structure_to_memory_khr<'a>(
         &mut self,
@@ -952,6 +965,7 @@ The rules are on [`vkCmdCopyMemoryToAccelerationStructureKHR`'s reference page](
 - `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyMemoryToAccelerationStructureKHR")]
     #[inline]
     pub fn cmd_copy_memory_to_acceleration_structure_khr<'a>(
         &mut self,
@@ -1031,6 +1045,7 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesKHR`'s reference pa
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
     pub fn cmd_write_acceleration_structures_properties_khr(
         &mut self,

@@ -20,6 +20,7 @@ The rules are on [`vkCreateAndroidSurfaceKHR`'s reference page](https://registry
 - `VUID-vkCreateAndroidSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateAndroidSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateAndroidSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateAndroidSurfaceKHR")]
     #[inline]
     pub unsafe fn create_android_surface_khr<'a>(
         &self,

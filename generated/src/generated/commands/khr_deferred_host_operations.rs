@@ -13,6 +13,7 @@ The rules are on [`vkCreateDeferredOperationKHR`'s reference page](https://regis
 - `VUID-vkCreateDeferredOperationKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkCreateDeferredOperationKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDeferredOperationKHR-pDeferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDeferredOperationKHR")]
     #[inline]
     pub fn create_deferred_operation_khr(&self) -> Result<DeferredOperationKHR> {
         let fp = self
@@ -38,6 +39,7 @@ The rules are on [`vkDeferredOperationJoinKHR`'s reference page](https://registr
 - `VUID-vkDeferredOperationJoinKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkDeferredOperationJoinKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkDeferredOperationJoinKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkDeferredOperationJoinKHR")]
     #[inline]
     pub fn deferred_operation_join_khr(
         &self,
@@ -83,6 +85,7 @@ The rules are on [`vkGetDeferredOperationMaxConcurrencyKHR`'s reference page](ht
 - `VUID-vkGetDeferredOperationMaxConcurrencyKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetDeferredOperationMaxConcurrencyKHR")]
     #[inline]
     pub fn get_deferred_operation_max_concurrency_khr(
         &self,
@@ -126,6 +129,7 @@ The rules are on [`vkGetDeferredOperationResultKHR`'s reference page](https://re
 - `VUID-vkGetDeferredOperationResultKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeferredOperationResultKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeferredOperationResultKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetDeferredOperationResultKHR")]
     #[inline]
     pub fn get_deferred_operation_result_khr(
         &self,

@@ -23,6 +23,7 @@ The rules are on [`vkCmdPushDescriptorSetWithTemplateKHR`'s reference page](http
 - `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdPushDescriptorSetWithTemplateKHR")]
     #[inline]
     pub unsafe fn cmd_push_descriptor_set_with_template_khr(
         &mut self,

@@ -24,6 +24,7 @@ The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.kh
 - `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkAcquireNextImage2KHR")]
     #[inline]
     pub unsafe fn acquire_next_image2_khr<'a>(
         &self,
@@ -85,6 +86,7 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
 
 - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDeviceGroupPresentCapabilitiesKHR")]
     #[inline]
     pub fn get_device_group_present_capabilities_khr<'a>(
         &self,
@@ -121,6 +123,7 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](htt
 - `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+    #[doc(alias = "vkGetDeviceGroupSurfacePresentModesKHR")]
     #[inline]
     pub fn get_device_group_surface_present_modes_khr(
         &self,
@@ -197,6 +200,7 @@ The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](ht
 - `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+    #[doc(alias = "vkGetPhysicalDevicePresentRectanglesKHR")]
     #[inline]
     pub fn get_physical_device_present_rectangles_khr(
         &self,

@@ -25,6 +25,7 @@ The rules are on [`vkCreateDisplayModeKHR`'s reference page](https://registry.kh
 - `VUID-vkCreateDisplayModeKHR-pMode-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkCreateDisplayModeKHR")]
     #[inline]
     pub unsafe fn create_display_mode_khr<'a>(
         &self,
@@ -105,6 +106,7 @@ The rules are on [`vkGetDisplayModePropertiesKHR`'s reference page](https://regi
 - `VUID-vkGetDisplayModePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkGetDisplayModePropertiesKHR")]
     #[inline]
     pub unsafe fn get_display_mode_properties_khr(
         &self,
@@ -135,6 +137,7 @@ The rules are on [`vkGetDisplayPlaneCapabilitiesKHR`'s reference page](https://r
 - `VUID-vkGetDisplayPlaneCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDisplayPlaneCapabilitiesKHR-mode-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDisplayPlaneCapabilitiesKHR-pCapabilities-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetDisplayPlaneCapabilitiesKHR")]
     #[inline]
     pub fn get_display_plane_capabilities_khr(
         &self,
@@ -179,6 +182,7 @@ The rules are on [`vkGetDisplayPlaneSupportedDisplaysKHR`'s reference page](http
 - `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-pDisplays-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDisplayPlaneSupportedDisplaysKHR")]
     #[inline]
     pub unsafe fn get_display_plane_supported_displays_khr(
         &self,
@@ -217,6 +221,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlanePropertiesKHR`'s reference pag
 - `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceDisplayPlanePropertiesKHR")]
     #[inline]
     pub fn get_physical_device_display_plane_properties_khr(
         &self,
@@ -246,6 +251,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPropertiesKHR`'s reference page](ht
 - `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceDisplayPropertiesKHR")]
     #[inline]
     pub fn get_physical_device_display_properties_khr(
         &self,
@@ -289,6 +295,7 @@ The rules are on [`vkCreateDisplayPlaneSurfaceKHR`'s reference page](https://reg
 - `VUID-vkCreateDisplayPlaneSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDisplayPlaneSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDisplayPlaneSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDisplayPlaneSurfaceKHR")]
     #[inline]
     pub unsafe fn create_display_plane_surface_khr<'a>(
         &self,

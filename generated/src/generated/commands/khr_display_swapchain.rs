@@ -19,6 +19,7 @@ The rules are on [`vkCreateSharedSwapchainsKHR`'s reference page](https://regist
 - `VUID-vkCreateSharedSwapchainsKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSharedSwapchainsKHR-pSwapchains-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[doc(alias = "vkCreateSharedSwapchainsKHR")]
     #[inline]
     pub unsafe fn create_shared_swapchains_khr<'a>(
         &self,

@@ -22,6 +22,7 @@ The rules are on [`vkGetFenceFdKHR`'s reference page](https://registry.khronos.o
 - `VUID-vkGetFenceFdKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetFenceFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetFenceFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetFenceFdKHR")]
     #[inline]
     pub unsafe fn get_fence_fd_khr<'a>(
         &self,
@@ -84,6 +85,7 @@ The rules are on [`vkImportFenceFdKHR`'s reference page](https://registry.khrono
 - `VUID-vkImportFenceFdKHR-pImportFenceFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkImportFenceFdKHR")]
     #[inline]
     pub unsafe fn import_fence_fd_khr<'a>(
         &self,

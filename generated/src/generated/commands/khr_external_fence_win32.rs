@@ -18,6 +18,7 @@ The rules are on [`vkGetFenceWin32HandleKHR`'s reference page](https://registry.
 - `VUID-vkGetFenceWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetFenceWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_fence_win32_handle_khr<'a>(
         &self,
@@ -75,6 +76,7 @@ The rules are on [`vkImportFenceWin32HandleKHR`'s reference page](https://regist
 - `VUID-vkImportFenceWin32HandleKHR-pImportFenceWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkImportFenceWin32HandleKHR")]
     #[inline]
     pub fn import_fence_win32_handle_khr<'a>(
         &self,

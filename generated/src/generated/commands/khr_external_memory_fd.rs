@@ -13,6 +13,7 @@ The rules are on [`vkGetMemoryFdKHR`'s reference page](https://registry.khronos.
 - `VUID-vkGetMemoryFdKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetMemoryFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetMemoryFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetMemoryFdKHR")]
     #[inline]
     pub fn get_memory_fd_khr<'a>(
         &self,
@@ -67,6 +68,7 @@ The rules are on [`vkGetMemoryFdPropertiesKHR`'s reference page](https://registr
 - `VUID-vkGetMemoryFdPropertiesKHR-pMemoryFdProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetMemoryFdPropertiesKHR")]
     #[inline]
     pub fn get_memory_fd_properties_khr<'a>(
         &self,

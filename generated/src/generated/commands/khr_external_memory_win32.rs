@@ -18,6 +18,7 @@ The rules are on [`vkGetMemoryWin32HandleKHR`'s reference page](https://registry
 - `VUID-vkGetMemoryWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetMemoryWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_khr<'a>(
         &self,
@@ -80,6 +81,7 @@ The rules are on [`vkGetMemoryWin32HandlePropertiesKHR`'s reference page](https:
 - `VUID-vkGetMemoryWin32HandlePropertiesKHR-pMemoryWin32HandleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetMemoryWin32HandlePropertiesKHR")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_properties_khr<'a>(
         &self,

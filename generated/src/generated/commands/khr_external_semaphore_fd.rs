@@ -25,6 +25,7 @@ The rules are on [`vkGetSemaphoreFdKHR`'s reference page](https://registry.khron
 - `VUID-vkGetSemaphoreFdKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSemaphoreFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetSemaphoreFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetSemaphoreFdKHR")]
     #[inline]
     pub unsafe fn get_semaphore_fd_khr<'a>(
         &self,
@@ -90,6 +91,7 @@ The rules are on [`vkImportSemaphoreFdKHR`'s reference page](https://registry.kh
 - `VUID-vkImportSemaphoreFdKHR-pImportSemaphoreFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkImportSemaphoreFdKHR")]
     #[inline]
     pub unsafe fn import_semaphore_fd_khr<'a>(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkGetSemaphoreWin32HandleKHR`'s reference page](https://regis
 - `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetSemaphoreWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_semaphore_win32_handle_khr<'a>(
         &self,
@@ -73,6 +74,7 @@ The rules are on [`vkImportSemaphoreWin32HandleKHR`'s reference page](https://re
 
 - `VUID-vkImportSemaphoreWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkImportSemaphoreWin32HandleKHR-pImportSemaphoreWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkImportSemaphoreWin32HandleKHR")]
     #[inline]
     pub fn import_semaphore_win32_handle_khr<'a>(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetFragmentShadingRateKHR`'s reference page](https://reg
 - `VUID-vkCmdSetFragmentShadingRateKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetFragmentShadingRateKHR")]
     #[inline]
     pub fn cmd_set_fragment_shading_rate_khr(
         &mut self,
@@ -77,6 +78,7 @@ The rules are on [`vkGetPhysicalDeviceFragmentShadingRatesKHR`'s reference page]
 - `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRateCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRates-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceFragmentShadingRatesKHR")]
     #[inline]
     pub fn get_physical_device_fragment_shading_rates_khr(
         &self,

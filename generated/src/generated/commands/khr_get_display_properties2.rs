@@ -24,6 +24,7 @@ The rules are on [`vkGetDisplayModeProperties2KHR`'s reference page](https://reg
 - `VUID-vkGetDisplayModeProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkGetDisplayModeProperties2KHR")]
     #[inline]
     pub unsafe fn get_display_mode_properties2_khr(
         &self,
@@ -54,6 +55,7 @@ The rules are on [`vkGetDisplayPlaneCapabilities2KHR`'s reference page](https://
 - `VUID-vkGetDisplayPlaneCapabilities2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDisplayPlaneCapabilities2KHR-pDisplayPlaneInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDisplayPlaneCapabilities2KHR-pCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDisplayPlaneCapabilities2KHR")]
     #[inline]
     pub fn get_display_plane_capabilities2_khr<'a>(
         &self,
@@ -89,6 +91,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlaneProperties2KHR`'s reference pa
 - `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceDisplayPlaneProperties2KHR")]
     #[inline]
     pub fn get_physical_device_display_plane_properties2_khr(
         &self,
@@ -118,6 +121,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayProperties2KHR`'s reference page](h
 - `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceDisplayProperties2KHR")]
     #[inline]
     pub fn get_physical_device_display_properties2_khr(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2KHR`'s reference page]
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2KHR")]
     #[inline]
     pub fn get_physical_device_surface_capabilities2_khr<'a>(
         &self,
@@ -81,6 +82,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceFormats2KHR`'s reference page](http
 - `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceFormats2KHR")]
     #[inline]
     pub fn get_physical_device_surface_formats2_khr<'a>(
         &self,

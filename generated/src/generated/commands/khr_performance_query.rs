@@ -12,6 +12,7 @@ The rules are on [`vkAcquireProfilingLockKHR`'s reference page](https://registry
 
 - `VUID-vkAcquireProfilingLockKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkAcquireProfilingLockKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkAcquireProfilingLockKHR")]
     #[inline]
     pub fn acquire_profiling_lock_khr<'a>(
         &self,
@@ -59,6 +60,7 @@ The rules are on [`vkReleaseProfilingLockKHR`'s reference page](https://registry
 - `VUID-vkReleaseProfilingLockKHR-device-parameter`: static (`self` is a live wrapper)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkReleaseProfilingLockKHR")]
     #[inline]
     pub fn release_profiling_lock_khr(&self) -> Result<()> {
         let fp = self
@@ -85,6 +87,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`'s re
 - `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pPerformanceQueryCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pNumPasses-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR")]
     #[inline]
     pub fn get_physical_device_queue_family_performance_query_passes_khr<'a>(
         &self,

@@ -16,6 +16,7 @@ The rules are on [`vkGetPipelineExecutableInternalRepresentationsKHR`'s referenc
 - `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pInternalRepresentations-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPipelineExecutableInternalRepresentationsKHR")]
     #[inline]
     pub fn get_pipeline_executable_internal_representations_khr<'a>(
         &self,
@@ -53,6 +54,7 @@ The rules are on [`vkGetPipelineExecutablePropertiesKHR`'s reference page](https
 - `VUID-vkGetPipelineExecutablePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPipelineExecutablePropertiesKHR")]
     #[inline]
     pub fn get_pipeline_executable_properties_khr<'a>(
         &self,
@@ -90,6 +92,7 @@ The rules are on [`vkGetPipelineExecutableStatisticsKHR`'s reference page](https
 - `VUID-vkGetPipelineExecutableStatisticsKHR-pStatistics-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPipelineExecutableStatisticsKHR")]
     #[inline]
     pub fn get_pipeline_executable_statistics_khr<'a>(
         &self,

@@ -15,6 +15,7 @@ The rules are on [`vkWaitForPresentKHR`'s reference page](https://registry.khron
 - `VUID-vkWaitForPresentKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkWaitForPresentKHR")]
     #[inline]
     pub fn wait_for_present_khr(
         &self,

@@ -21,6 +21,7 @@ The rules are on [`vkCmdPushDescriptorSetKHR`'s reference page](https://registry
 - `VUID-vkCmdPushDescriptorSetKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdPushDescriptorSetKHR")]
     #[inline]
     pub fn cmd_push_descriptor_set_khr<'a>(
         &mut self,

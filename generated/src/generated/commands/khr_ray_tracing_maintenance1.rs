@@ -20,6 +20,7 @@ The rules are on [`vkCmdTraceRaysIndirect2KHR`'s reference page](https://registr
 - `VUID-vkCmdTraceRaysIndirect2KHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 64 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdTraceRaysIndirect2KHR")]
     #[inline]
     pub fn cmd_trace_rays_indirect2_khr(
         &mut self,

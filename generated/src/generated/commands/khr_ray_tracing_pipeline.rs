@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetRayTracingPipelineStackSizeKHR`'s reference page](htt
 - `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetRayTracingPipelineStackSizeKHR")]
     #[inline]
     pub fn cmd_set_ray_tracing_pipeline_stack_size_khr(
         &mut self,
@@ -76,6 +77,7 @@ The rules are on [`vkCmdTraceRaysIndirectKHR`'s reference page](https://registry
 - `VUID-vkCmdTraceRaysIndirectKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 91 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdTraceRaysIndirectKHR")]
     #[inline]
     pub fn cmd_trace_rays_indirect_khr(
         &mut self,
@@ -159,6 +161,7 @@ The rules are on [`vkCmdTraceRaysKHR`'s reference page](https://registry.khronos
 - `VUID-vkCmdTraceRaysKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 89 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdTraceRaysKHR")]
     #[inline]
     pub fn cmd_trace_rays_khr(
         &mut self,
@@ -253,6 +256,7 @@ The rules are on [`vkCreateRayTracingPipelinesKHR`'s reference page](https://reg
 - `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateRayTracingPipelinesKHR")]
     #[inline]
     pub fn create_ray_tracing_pipelines_khr<'a>(
         &self,
@@ -356,6 +360,7 @@ The rules are on [`vkGetRayTracingCaptureReplayShaderGroupHandlesKHR`'s referenc
 - `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetRayTracingCaptureReplayShaderGroupHandlesKHR")]
     #[inline]
     pub fn get_ray_tracing_capture_replay_shader_group_handles_khr(
         &self,
@@ -430,6 +435,7 @@ The rules are on [`vkGetRayTracingShaderGroupStackSizeKHR`'s reference page](htt
 - `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetRayTracingShaderGroupStackSizeKHR")]
     #[inline]
     pub fn get_ray_tracing_shader_group_stack_size_khr(
         &self,
@@ -494,6 +500,7 @@ The rules are on [`vkGetRayTracingShaderGroupHandlesKHR`'s reference page](https
 - `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetRayTracingShaderGroupHandlesKHR")]
     #[inline]
     pub fn get_ray_tracing_shader_group_handles_khr(
         &self,

@@ -13,6 +13,7 @@ The rules are on [`vkGetSwapchainStatusKHR`'s reference page](https://registry.k
 - `VUID-vkGetSwapchainStatusKHR-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetSwapchainStatusKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSwapchainStatusKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetSwapchainStatusKHR")]
     #[inline]
     pub fn get_swapchain_status_khr(
         &self,

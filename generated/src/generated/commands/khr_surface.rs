@@ -6,6 +6,16 @@ use super::*;
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 267) does; the example programs run in CI:
+
+```ignore
+let caps = gpu
+    .physical
+    .get_physical_device_surface_capabilities_khr(&self.surface)?;
+```
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html). Settled by the wrappers:
@@ -17,6 +27,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](
 - `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilitiesKHR")]
     #[inline]
     pub fn get_physical_device_surface_capabilities_khr(
         &self,
@@ -63,6 +74,16 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 161) does; the example programs run in CI:
+
+```ignore
+let formats = gpu
+    .physical
+    .get_physical_device_surface_formats_khr(Some(&surface))?;
+```
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html). Settled by the wrappers:
@@ -78,6 +99,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 - 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
 - 2: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceFormatsKHR")]
     #[inline]
     pub fn get_physical_device_surface_formats_khr(
         &self,
@@ -145,6 +167,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 - 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
 - 2: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModesKHR")]
     #[inline]
     pub fn get_physical_device_surface_present_modes_khr(
         &self,
@@ -197,6 +220,19 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
     }
     /**`vkGetPhysicalDeviceSurfaceSupportKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 155) does; the example programs run in CI:
+
+```ignore
+if !gpu
+    .physical
+    .get_physical_device_surface_support_khr(gpu.family, &surface)?
+{
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html). Settled by the wrappers:
@@ -206,6 +242,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+    #[doc(alias = "vkGetPhysicalDeviceSurfaceSupportKHR")]
     #[inline]
     pub fn get_physical_device_surface_support_khr(
         &self,

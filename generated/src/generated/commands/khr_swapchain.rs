@@ -6,6 +6,20 @@ use super::*;
 impl Device {
     /**`vkAcquireNextImageKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 346) does; the example programs run in CI:
+
+```ignore
+let index =
+    match gpu
+        .device
+        .acquire_next_image_khr(swapchain, u64::MAX, Some(acquired), None)
+    {
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html). Settled by the wrappers:
@@ -25,6 +39,7 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
 - `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkAcquireNextImageKHR-semaphore-03265`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)*/
+    #[doc(alias = "vkAcquireNextImageKHR")]
     #[inline]
     pub fn acquire_next_image_khr(
         &self,
@@ -120,6 +135,14 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
     }
     /**`vkCreateSwapchainKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 301) does; the example programs run in CI:
+
+```ignore
+None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
+```
+
 # Valid usage
 
 The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
@@ -128,6 +151,7 @@ The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khro
 - `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateSwapchainKHR")]
     #[inline]
     pub fn create_swapchain_khr<'a>(
         &self,
@@ -213,6 +237,14 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
     }
     /**`vkGetSwapchainImagesKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 304) does; the example programs run in CI:
+
+```ignore
+self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
+```
+
 # Valid usage
 
 The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html). Settled by the wrappers:
@@ -222,6 +254,7 @@ The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.k
 - `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetSwapchainImagesKHR")]
     #[inline]
     pub fn get_swapchain_images_khr(
         &self,
@@ -282,6 +315,20 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
 impl Queue {
     /**`vkQueuePresentKHR`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 384) does; the example programs run in CI:
+
+```ignore
+match gpu.queue.queue_present_khr(
+    &tuff::PresentInfoKHR::new()
+        .wait_semaphores(&signals)
+        .swapchains(&swapchains, &indices)?,
+) {
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueuePresentKHR.html). Settled by the wrappers:
@@ -297,6 +344,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 - 1: checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names (a presentation waits only on binary semaphores: 03267)
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkQueuePresentKHR")]
     #[inline]
     pub fn queue_present_khr<'a>(
         &self,

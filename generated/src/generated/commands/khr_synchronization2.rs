@@ -31,6 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19.
 
 - 6: checked by the safe methods in every build, but no oracle case breaks it yet
 - 13: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdWriteBufferMarker2AMD")]
     #[inline]
     pub unsafe fn cmd_write_buffer_marker2_amd(
         &mut self,
@@ -105,6 +106,7 @@ The rules are on [`vkGetQueueCheckpointData2NV`'s reference page](https://regist
 - `VUID-vkGetQueueCheckpointData2NV-pCheckpointData-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetQueueCheckpointData2NV")]
     #[inline]
     pub unsafe fn get_queue_checkpoint_data2_nv(
         &self,

@@ -19,6 +19,7 @@ The rules are on [`vkCmdDecodeVideoKHR`'s reference page](https://registry.khron
 - `VUID-vkCmdDecodeVideoKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 53 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDecodeVideoKHR")]
     #[inline]
     pub fn cmd_decode_video_khr<'a>(
         &mut self,

@@ -17,6 +17,7 @@ The rules are on [`vkBindVideoSessionMemoryKHR`'s reference page](https://regist
 - `VUID-vkBindVideoSessionMemoryKHR-videoSession-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkBindVideoSessionMemoryKHR")]
     #[inline]
     pub fn bind_video_session_memory_khr<'a>(
         &self,
@@ -93,6 +94,7 @@ The rules are on [`vkCreateVideoSessionKHR`'s reference page](https://registry.k
 - `VUID-vkCreateVideoSessionKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateVideoSessionKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateVideoSessionKHR-pVideoSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateVideoSessionKHR")]
     #[inline]
     pub fn create_video_session_khr<'a>(
         &self,
@@ -147,6 +149,7 @@ The rules are on [`vkCreateVideoSessionParametersKHR`'s reference page](https://
 - `VUID-vkCreateVideoSessionParametersKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateVideoSessionParametersKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateVideoSessionParametersKHR-pVideoSessionParameters-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateVideoSessionParametersKHR")]
     #[inline]
     pub fn create_video_session_parameters_khr<'a>(
         &self,
@@ -222,6 +225,7 @@ The rules are on [`vkGetVideoSessionMemoryRequirementsKHR`'s reference page](htt
 - `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirementsCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetVideoSessionMemoryRequirementsKHR")]
     #[inline]
     pub fn get_video_session_memory_requirements_khr(
         &self,
@@ -274,6 +278,7 @@ The rules are on [`vkUpdateVideoSessionParametersKHR`'s reference page](https://
 - `VUID-vkUpdateVideoSessionParametersKHR-pUpdateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkUpdateVideoSessionParametersKHR")]
     #[inline]
     pub fn update_video_session_parameters_khr<'a>(
         &self,
@@ -341,6 +346,7 @@ The rules are on [`vkCmdBeginVideoCodingKHR`'s reference page](https://registry.
 - `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBeginVideoCodingKHR")]
     #[inline]
     pub fn cmd_begin_video_coding_khr<'a>(
         mut self,
@@ -416,6 +422,7 @@ The rules are on [`vkCmdControlVideoCodingKHR`'s reference page](https://registr
 - `VUID-vkCmdControlVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdControlVideoCodingKHR")]
     #[inline]
     pub fn cmd_control_video_coding_khr<'a>(
         &mut self,
@@ -474,6 +481,7 @@ The rules are on [`vkCmdEndVideoCodingKHR`'s reference page](https://registry.kh
 - `VUID-vkCmdEndVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndVideoCodingKHR")]
     #[inline]
     pub fn cmd_end_video_coding_khr<'a>(
         mut self,
@@ -528,6 +536,7 @@ The rules are on [`vkGetPhysicalDeviceVideoCapabilitiesKHR`'s reference page](ht
 - `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceVideoCapabilitiesKHR")]
     #[inline]
     pub fn get_physical_device_video_capabilities_khr<'a>(
         &self,
@@ -594,6 +603,7 @@ The rules are on [`vkGetPhysicalDeviceVideoFormatPropertiesKHR`'s reference page
 - `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceVideoFormatPropertiesKHR")]
     #[inline]
     pub fn get_physical_device_video_format_properties_khr<'a>(
         &self,

@@ -14,6 +14,7 @@ The rules are on [`vkCreateWin32SurfaceKHR`'s reference page](https://registry.k
 - `VUID-vkCreateWin32SurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateWin32SurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateWin32SurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateWin32SurfaceKHR")]
     #[inline]
     pub fn create_win32_surface_khr<'a>(
         &self,
@@ -70,6 +71,7 @@ The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference p
 - `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests run on Linux).*/
+    #[doc(alias = "vkGetPhysicalDeviceWin32PresentationSupportKHR")]
     #[inline]
     pub fn get_physical_device_win32_presentation_support_khr(
         &self,

@@ -21,6 +21,7 @@ The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.kh
 - `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateXlibSurfaceKHR")]
     #[inline]
     pub unsafe fn create_xlib_surface_khr<'a>(
         &self,
@@ -89,6 +90,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetPhysicalDeviceXlibPresentationSupportKHR")]
     #[inline]
     pub unsafe fn get_physical_device_xlib_presentation_support_khr(
         &self,

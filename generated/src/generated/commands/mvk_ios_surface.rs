@@ -21,6 +21,7 @@ The rules are on [`vkCreateIOSSurfaceMVK`'s reference page](https://registry.khr
 - `VUID-vkCreateIOSSurfaceMVK-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateIOSSurfaceMVK-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateIOSSurfaceMVK-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateIOSSurfaceMVK")]
     #[inline]
     pub unsafe fn create_ios_surface_mvk<'a>(
         &self,

@@ -21,6 +21,7 @@ The rules are on [`vkCreateMacOSSurfaceMVK`'s reference page](https://registry.k
 - `VUID-vkCreateMacOSSurfaceMVK-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateMacOSSurfaceMVK-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateMacOSSurfaceMVK-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateMacOSSurfaceMVK")]
     #[inline]
     pub unsafe fn create_mac_os_surface_mvk<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkCreateViSurfaceNN`'s reference page](https://registry.khron
 - `VUID-vkCreateViSurfaceNN-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateViSurfaceNN-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateViSurfaceNN-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateViSurfaceNN")]
     #[inline]
     pub unsafe fn create_vi_surface_nn<'a>(
         &self,

@@ -20,6 +20,7 @@ The rules are on [`vkAcquireWinrtDisplayNV`'s reference page](https://registry.k
 - `VUID-vkAcquireWinrtDisplayNV-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+    #[doc(alias = "vkAcquireWinrtDisplayNV")]
     #[inline]
     pub unsafe fn acquire_winrt_display_nv(&self, display: &DisplayKHR) -> Result<()> {
         let fp = self
@@ -44,6 +45,7 @@ The rules are on [`vkGetWinrtDisplayNV`'s reference page](https://registry.khron
 
 - `VUID-vkGetWinrtDisplayNV-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetWinrtDisplayNV-pDisplay-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetWinrtDisplayNV")]
     #[inline]
     pub fn get_winrt_display_nv(&self, device_relative_id: u32) -> Result<DisplayKHR> {
         let fp = self

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetViewportWScalingNV`'s reference page](https://registr
 - `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewportWScalingNV")]
     #[inline]
     pub fn cmd_set_viewport_w_scaling_nv(
         &mut self,

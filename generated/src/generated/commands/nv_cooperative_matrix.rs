@@ -23,6 +23,7 @@ The rules are on [`vkGetPhysicalDeviceCooperativeMatrixPropertiesNV`'s reference
 - `VUID-vkGetPhysicalDeviceCooperativeMatrixPropertiesNV-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceCooperativeMatrixPropertiesNV-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceCooperativeMatrixPropertiesNV-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceCooperativeMatrixPropertiesNV")]
     #[inline]
     pub unsafe fn get_physical_device_cooperative_matrix_properties_nv(
         &self,

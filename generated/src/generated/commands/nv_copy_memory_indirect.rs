@@ -26,6 +26,7 @@ The rules are on [`vkCmdCopyMemoryIndirectNV`'s reference page](https://registry
 - `VUID-vkCmdCopyMemoryIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyMemoryIndirectNV")]
     #[inline]
     pub unsafe fn cmd_copy_memory_indirect_nv(
         &mut self,
@@ -112,6 +113,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 15: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdCopyMemoryToImageIndirectNV")]
     #[inline]
     pub unsafe fn cmd_copy_memory_to_image_indirect_nv(
         &mut self,

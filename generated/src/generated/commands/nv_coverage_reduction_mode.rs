@@ -13,6 +13,7 @@ The rules are on [`vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinatio
 - `VUID-vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV-pCombinationCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV-pCombinations-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV")]
     #[inline]
     pub fn get_physical_device_supported_framebuffer_mixed_samples_combinations_nv(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetCheckpointNV`'s reference page](https://registry.khro
 - `VUID-vkCmdSetCheckpointNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetCheckpointNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetCheckpointNV")]
     #[inline]
     pub unsafe fn cmd_set_checkpoint_nv(
         &mut self,
@@ -75,6 +76,7 @@ The rules are on [`vkGetQueueCheckpointDataNV`'s reference page](https://registr
 - `VUID-vkGetQueueCheckpointDataNV-pCheckpointData-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetQueueCheckpointDataNV")]
     #[inline]
     pub unsafe fn get_queue_checkpoint_data_nv(
         &self,

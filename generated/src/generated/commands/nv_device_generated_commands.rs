@@ -19,6 +19,7 @@ The rules are on [`vkCmdBindPipelineShaderGroupNV`'s reference page](https://reg
 - `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindPipelineShaderGroupNV")]
     #[inline]
     pub fn cmd_bind_pipeline_shader_group_nv(
         &mut self,
@@ -88,6 +89,7 @@ The rules are on [`vkCmdExecuteGeneratedCommandsNV`'s reference page](https://re
 - `VUID-vkCmdExecuteGeneratedCommandsNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdExecuteGeneratedCommandsNV")]
     #[inline]
     pub fn cmd_execute_generated_commands_nv<'a>(
         &mut self,
@@ -176,6 +178,7 @@ The rules are on [`vkCmdPreprocessGeneratedCommandsNV`'s reference page](https:/
 - `VUID-vkCmdPreprocessGeneratedCommandsNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdPreprocessGeneratedCommandsNV")]
     #[inline]
     pub fn cmd_preprocess_generated_commands_nv<'a>(
         &mut self,
@@ -255,6 +258,7 @@ The rules are on [`vkCreateIndirectCommandsLayoutNV`'s reference page](https://r
 - `VUID-vkCreateIndirectCommandsLayoutNV-pIndirectCommandsLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateIndirectCommandsLayoutNV")]
     #[inline]
     pub fn create_indirect_commands_layout_nv<'a>(
         &self,
@@ -331,6 +335,7 @@ The rules are on [`vkGetGeneratedCommandsMemoryRequirementsNV`'s reference page]
 - `VUID-vkGetGeneratedCommandsMemoryRequirementsNV-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetGeneratedCommandsMemoryRequirementsNV")]
     #[inline]
     pub fn get_generated_commands_memory_requirements_nv<'a>(
         &self,

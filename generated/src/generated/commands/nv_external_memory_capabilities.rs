@@ -21,6 +21,7 @@ The rules are on [`vkGetPhysicalDeviceExternalImageFormatPropertiesNV`'s referen
 - `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-pExternalImageFormatProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceExternalImageFormatPropertiesNV")]
     #[inline]
     pub fn get_physical_device_external_image_format_properties_nv(
         &self,

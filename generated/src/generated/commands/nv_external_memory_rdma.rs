@@ -19,6 +19,7 @@ The rules are on [`vkGetMemoryRemoteAddressNV`'s reference page](https://registr
 - `VUID-vkGetMemoryRemoteAddressNV-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetMemoryRemoteAddressNV-pMemoryGetRemoteAddressInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetMemoryRemoteAddressNV-pAddress-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetMemoryRemoteAddressNV")]
     #[inline]
     pub unsafe fn get_memory_remote_address_nv<'a>(
         &self,

@@ -24,6 +24,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: explicit rule; the wrappers do not check it
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+    #[doc(alias = "vkGetMemoryWin32HandleNV")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_nv(
         &self,

@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetFragmentShadingRateEnumNV`'s reference page](https://
 - `VUID-vkCmdSetFragmentShadingRateEnumNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetFragmentShadingRateEnumNV")]
     #[inline]
     pub fn cmd_set_fragment_shading_rate_enum_nv(
         &mut self,

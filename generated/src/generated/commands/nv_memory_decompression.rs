@@ -33,6 +33,7 @@ The rules are on [`vkCmdDecompressMemoryIndirectCountNV`'s reference page](https
 - `VUID-vkCmdDecompressMemoryIndirectCountNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDecompressMemoryIndirectCountNV")]
     #[inline]
     pub unsafe fn cmd_decompress_memory_indirect_count_nv(
         &mut self,
@@ -115,6 +116,7 @@ The rules are on [`vkCmdDecompressMemoryNV`'s reference page](https://registry.k
 - `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDecompressMemoryNV")]
     #[inline]
     pub unsafe fn cmd_decompress_memory_nv(
         &mut self,

@@ -20,6 +20,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountNV`'s reference page](https://
 - `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksIndirectCountNV")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_count_nv(
         &mut self,
@@ -104,6 +105,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectNV`'s reference page](https://regis
 - `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksIndirectNV")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_indirect_nv(
         &mut self,
@@ -168,6 +170,7 @@ The rules are on [`vkCmdDrawMeshTasksNV`'s reference page](https://registry.khro
 - `VUID-vkCmdDrawMeshTasksNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 183 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdDrawMeshTasksNV")]
     #[inline]
     pub fn cmd_draw_mesh_tasks_nv(
         &mut self,

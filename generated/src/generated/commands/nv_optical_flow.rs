@@ -17,6 +17,7 @@ The rules are on [`vkBindOpticalFlowSessionImageNV`'s reference page](https://re
 - `VUID-vkBindOpticalFlowSessionImageNV-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkBindOpticalFlowSessionImageNV-session-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkBindOpticalFlowSessionImageNV-view-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkBindOpticalFlowSessionImageNV")]
     #[inline]
     pub fn bind_optical_flow_session_image_nv(
         &self,
@@ -108,6 +109,7 @@ The rules are on [`vkCreateOpticalFlowSessionNV`'s reference page](https://regis
 - `VUID-vkCreateOpticalFlowSessionNV-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateOpticalFlowSessionNV-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateOpticalFlowSessionNV-pSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateOpticalFlowSessionNV")]
     #[inline]
     pub unsafe fn create_optical_flow_session_nv<'a>(
         &self,
@@ -175,6 +177,7 @@ The rules are on [`vkCmdOpticalFlowExecuteNV`'s reference page](https://registry
 - `VUID-vkCmdOpticalFlowExecuteNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdOpticalFlowExecuteNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdOpticalFlowExecuteNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+    #[doc(alias = "vkCmdOpticalFlowExecuteNV")]
     #[inline]
     pub unsafe fn cmd_optical_flow_execute_nv<'a>(
         &mut self,
@@ -234,6 +237,7 @@ The rules are on [`vkGetPhysicalDeviceOpticalFlowImageFormatsNV`'s reference pag
 - `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pOpticalFlowImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pFormatCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceOpticalFlowImageFormatsNV")]
     #[inline]
     pub fn get_physical_device_optical_flow_image_formats_nv<'a>(
         &self,

@@ -13,6 +13,7 @@ The rules are on [`vkBindAccelerationStructureMemoryNV`'s reference page](https:
 - `VUID-vkBindAccelerationStructureMemoryNV-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindAccelerationStructureMemoryNV-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[doc(alias = "vkBindAccelerationStructureMemoryNV")]
     #[inline]
     pub fn bind_acceleration_structure_memory_nv<'a>(
         &self,
@@ -62,6 +63,7 @@ The rules are on [`vkCompileDeferredNV`'s reference page](https://registry.khron
 - `VUID-vkCompileDeferredNV-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCompileDeferredNV")]
     #[inline]
     pub fn compile_deferred_nv(&self, pipeline: &Pipeline, shader: u32) -> Result<()> {
         {
@@ -106,6 +108,7 @@ The rules are on [`vkCreateAccelerationStructureNV`'s reference page](https://re
 - `VUID-vkCreateAccelerationStructureNV-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateAccelerationStructureNV-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateAccelerationStructureNV-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateAccelerationStructureNV")]
     #[inline]
     pub fn create_acceleration_structure_nv<'a>(
         &self,
@@ -186,6 +189,7 @@ The rules are on [`vkCreateRayTracingPipelinesNV`'s reference page](https://regi
 - `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateRayTracingPipelinesNV")]
     #[inline]
     pub fn create_ray_tracing_pipelines_nv<'a>(
         &self,
@@ -278,6 +282,7 @@ The rules are on [`vkGetAccelerationStructureHandleNV`'s reference page](https:/
 - `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetAccelerationStructureHandleNV")]
     #[inline]
     pub fn get_acceleration_structure_handle_nv(
         &self,
@@ -341,6 +346,7 @@ The rules are on [`vkGetAccelerationStructureMemoryRequirementsNV`'s reference p
 - `VUID-vkGetAccelerationStructureMemoryRequirementsNV-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetAccelerationStructureMemoryRequirementsNV")]
     #[inline]
     pub fn get_acceleration_structure_memory_requirements_nv<'a>(
         &self,
@@ -407,6 +413,7 @@ The rules are on [`vkCmdBuildAccelerationStructureNV`'s reference page](https://
 - `VUID-vkCmdBuildAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBuildAccelerationStructureNV")]
     #[inline]
     pub fn cmd_build_acceleration_structure_nv<'a>(
         &mut self,
@@ -532,6 +539,7 @@ The rules are on [`vkCmdCopyAccelerationStructureNV`'s reference page](https://r
 - `VUID-vkCmdCopyAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyAccelerationStructureNV")]
     #[inline]
     pub fn cmd_copy_acceleration_structure_nv(
         &mut self,
@@ -593,6 +601,7 @@ The rules are on [`vkCmdTraceRaysNV`'s reference page](https://registry.khronos.
 - `VUID-vkCmdTraceRaysNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdTraceRaysNV")]
     #[inline]
     pub fn cmd_trace_rays_nv(
         &mut self,
@@ -731,6 +740,7 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesNV`'s reference pag
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesNV")]
     #[inline]
     pub fn cmd_write_acceleration_structures_properties_nv(
         &mut self,

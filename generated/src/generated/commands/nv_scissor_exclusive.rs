@@ -18,6 +18,7 @@ The rules are on [`vkCmdSetExclusiveScissorNV`'s reference page](https://registr
 - `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetExclusiveScissorNV")]
     #[inline]
     pub fn cmd_set_exclusive_scissor_nv(
         &mut self,

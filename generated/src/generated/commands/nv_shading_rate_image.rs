@@ -19,6 +19,7 @@ The rules are on [`vkCmdBindShadingRateImageNV`'s reference page](https://regist
 - `VUID-vkCmdBindShadingRateImageNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindShadingRateImageNV")]
     #[inline]
     pub fn cmd_bind_shading_rate_image_nv(
         &mut self,
@@ -84,6 +85,7 @@ The rules are on [`vkCmdSetCoarseSampleOrderNV`'s reference page](https://regist
 - `VUID-vkCmdSetCoarseSampleOrderNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCoarseSampleOrderNV")]
     #[inline]
     pub fn cmd_set_coarse_sample_order_nv<'a>(
         &mut self,
@@ -153,6 +155,7 @@ The rules are on [`vkCmdSetViewportShadingRatePaletteNV`'s reference page](https
 - `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewportShadingRatePaletteNV")]
     #[inline]
     pub fn cmd_set_viewport_shading_rate_palette_nv<'a>(
         &mut self,

@@ -15,6 +15,7 @@ The rules are on [`vkCmdCuLaunchKernelNVX`'s reference page](https://registry.kh
 - `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdCuLaunchKernelNVX-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdCuLaunchKernelNVX")]
     #[inline]
     pub fn cmd_cu_launch_kernel_nvx<'a>(
         &mut self,
@@ -81,6 +82,7 @@ The rules are on [`vkCreateCuFunctionNVX`'s reference page](https://registry.khr
 - `VUID-vkCreateCuFunctionNVX-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateCuFunctionNVX-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateCuFunctionNVX-pFunction-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateCuFunctionNVX")]
     #[inline]
     pub fn create_cu_function_nvx<'a>(
         &self,
@@ -138,6 +140,7 @@ The rules are on [`vkCreateCuModuleNVX`'s reference page](https://registry.khron
 - `VUID-vkCreateCuModuleNVX-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateCuModuleNVX-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateCuModuleNVX-pModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateCuModuleNVX")]
     #[inline]
     pub fn create_cu_module_nvx<'a>(
         &self,

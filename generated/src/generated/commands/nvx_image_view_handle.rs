@@ -14,6 +14,7 @@ The rules are on [`vkGetImageViewAddressNVX`'s reference page](https://registry.
 - `VUID-vkGetImageViewAddressNVX-imageView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetImageViewAddressNVX-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageViewAddressNVX-imageView-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetImageViewAddressNVX")]
     #[inline]
     pub fn get_image_view_address_nvx<'a>(
         &self,
@@ -74,6 +75,7 @@ The rules are on [`vkGetImageViewHandleNVX`'s reference page](https://registry.k
 
 - `VUID-vkGetImageViewHandleNVX-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageViewHandleNVX-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetImageViewHandleNVX")]
     #[inline]
     pub unsafe fn get_image_view_handle_nvx<'a>(
         &self,

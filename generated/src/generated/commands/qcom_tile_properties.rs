@@ -68,6 +68,7 @@ The rules are on [`vkGetDynamicRenderingTilePropertiesQCOM`'s reference page](ht
 - `VUID-vkGetDynamicRenderingTilePropertiesQCOM-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDynamicRenderingTilePropertiesQCOM")]
     #[inline]
     pub unsafe fn get_dynamic_rendering_tile_properties_qcom<'a>(
         &self,
@@ -129,6 +130,7 @@ The rules are on [`vkGetFramebufferTilePropertiesQCOM`'s reference page](https:/
 - `VUID-vkGetFramebufferTilePropertiesQCOM-pPropertiesCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetFramebufferTilePropertiesQCOM-pProperties-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetFramebufferTilePropertiesQCOM")]
     #[inline]
     pub fn get_framebuffer_tile_properties_qcom(
         &self,

@@ -21,6 +21,7 @@ The rules are on [`vkCreateScreenSurfaceQNX`'s reference page](https://registry.
 - `VUID-vkCreateScreenSurfaceQNX-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateScreenSurfaceQNX-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateScreenSurfaceQNX-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateScreenSurfaceQNX")]
     #[inline]
     pub unsafe fn create_screen_surface_qnx<'a>(
         &self,

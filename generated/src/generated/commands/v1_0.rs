@@ -13,6 +13,7 @@ The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.
 - `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: dynamic (checks the count is not 0)*/
+    #[doc(alias = "vkAllocateCommandBuffers")]
     #[inline]
     pub fn allocate_command_buffers<'a>(
         &self,
@@ -77,6 +78,20 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
     }
     /**`vkAllocateDescriptorSets`
 
+# Example
+
+Called, as `examples/src/scenes/bezier.rs` (line 85) does; the example programs run in CI:
+
+```ignore
+let set = d
+    .allocate_descriptor_sets(
+        &pool,
+        &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+    )?
+    .pop()
+    .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
+```
+
 # Valid usage
 
 The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html). Settled by the wrappers:
@@ -85,6 +100,7 @@ The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: dynamic (checks the count is not 0)*/
+    #[doc(alias = "vkAllocateDescriptorSets")]
     #[inline]
     pub fn allocate_descriptor_sets<'a>(
         &self,
@@ -172,6 +188,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build (the live allocations the device lists against maxMemoryAllocationCount, under a lock held until the new memory is listed), but no test breaks it: lavapipe allows 4,294,967,295 allocations
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkAllocateMemory")]
     #[inline]
     pub fn allocate_memory<'a>(
         &self,
@@ -246,6 +263,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11.
 - 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
 - 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 6: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkBindBufferMemory")]
     #[inline]
     pub fn bind_buffer_memory(
         &self,
@@ -320,6 +338,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 14.
 - 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
 - 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
 - 8: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkBindImageMemory")]
     #[inline]
     pub fn bind_image_memory(
         &self,
@@ -384,6 +403,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build (the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new buffer is listed), but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCreateBuffer")]
     #[inline]
     pub fn create_buffer<'a>(
         &self,
@@ -476,6 +496,7 @@ The rules are on [`vkCreateBufferView`'s reference page](https://registry.khrono
 - `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateBufferView")]
     #[inline]
     pub unsafe fn create_buffer_view<'a>(
         &self,
@@ -553,6 +574,7 @@ The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khron
 - `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateCommandPool")]
     #[inline]
     pub fn create_command_pool<'a>(
         &self,
@@ -615,6 +637,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
 - `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkCreateComputePipelines-pipelineCache-02873`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
+    #[doc(alias = "vkCreateComputePipelines")]
     #[inline]
     pub fn create_compute_pipelines<'a>(
         &self,
@@ -694,6 +717,22 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
     }
     /**`vkCreateDescriptorPool`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 140) does; the example programs run in CI:
+
+```ignore
+// The descriptor set: a, b and c at bindings 0, 1 and 2.
+let pool = device.create_descriptor_pool(
+    &tuff::DescriptorPoolCreateInfo::new()
+        .max_sets(1)
+        .pool_sizes(&[vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::STORAGE_BUFFER,
+            descriptor_count: 3,
+        }]),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
@@ -702,6 +741,7 @@ The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.kh
 - `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDescriptorPool")]
     #[inline]
     pub fn create_descriptor_pool<'a>(
         &self,
@@ -748,6 +788,16 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
     }
     /**`vkCreateDescriptorSetLayout`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 114) does; the example programs run in CI:
+
+```ignore
+let set_layout = device.create_descriptor_set_layout(
+    &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&[binding(0), binding(1), binding(2)]),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
@@ -756,6 +806,7 @@ The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://regist
 - `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDescriptorSetLayout")]
     #[inline]
     pub fn create_descriptor_set_layout<'a>(
         &self,
@@ -835,6 +886,7 @@ The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateEvent")]
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
         {
@@ -887,6 +939,7 @@ The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org
 - `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateFence")]
     #[inline]
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
         {
@@ -926,6 +979,20 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time: `VU
     }
     /**`vkCreateFramebuffer`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 175) does; the example programs run in CI:
+
+```ignore
+Ok(gpu.device.create_framebuffer(
+    &tuff::FramebufferCreateInfo::new(render_pass)
+        .attachments(&attachments)
+        .width(extent.width)
+        .height(extent.height)
+        .layers(1),
+)?)
+```
+
 # Valid usage
 
 The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
@@ -936,6 +1003,7 @@ The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khron
 - `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (each view must be one the device recorded), but no test breaks it: a view of another device is refused by the common-parent check first).*/
+    #[doc(alias = "vkCreateFramebuffer")]
     #[inline]
     pub fn create_framebuffer<'a>(
         &self,
@@ -1005,6 +1073,14 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
     }
     /**`vkCreateGraphicsPipelines`
 
+# Example
+
+Called, as `examples/src/pipeline.rs` (line 90) does; the example programs run in CI:
+
+```ignore
+let (mut pipelines, _) = gpu.device.create_graphics_pipelines(None, &[info])?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
@@ -1019,6 +1095,7 @@ The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry
 - `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
+    #[doc(alias = "vkCreateGraphicsPipelines")]
     #[inline]
     pub fn create_graphics_pipelines<'a>(
         &self,
@@ -1113,6 +1190,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new image is listed), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCreateImage")]
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
         {
@@ -1180,6 +1258,19 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
     }
     /**`vkCreateImageView`
 
+# Example
+
+Called, as `examples/src/gpu.rs` (line 222) does; the example programs run in CI:
+
+```ignore
+Ok(self.device.create_image_view(
+    &tuff::ImageViewCreateInfo::new(image)
+        .view_type(vk::ImageViewType::TYPE_2D)
+        .format(format)
+        .subresource_range(whole(aspect)),
+)?)
+```
+
 # Valid usage
 
 The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
@@ -1188,6 +1279,7 @@ The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos
 - `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateImageView")]
     #[inline]
     pub fn create_image_view<'a>(
         &self,
@@ -1272,6 +1364,7 @@ The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khr
 - `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreatePipelineCache")]
     #[inline]
     pub unsafe fn create_pipeline_cache<'a>(
         &self,
@@ -1313,6 +1406,18 @@ The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run 
     }
     /**`vkCreatePipelineLayout`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 123) does; the example programs run in CI:
+
+```ignore
+let layout = device.create_pipeline_layout(
+    &tuff::PipelineLayoutCreateInfo::new()
+        .set_layouts(&set_layouts)
+        .push_constant_ranges(&count_range),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
@@ -1321,6 +1426,7 @@ The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.kh
 - `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreatePipelineLayout")]
     #[inline]
     pub fn create_pipeline_layout<'a>(
         &self,
@@ -1398,6 +1504,7 @@ The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos
 - `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateQueryPool")]
     #[inline]
     pub fn create_query_pool<'a>(
         &self,
@@ -1446,6 +1553,19 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
     }
     /**`vkCreateRenderPass`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 131) does; the example programs run in CI:
+
+```ignore
+Ok(gpu.device.create_render_pass(
+    &tuff::RenderPassCreateInfo::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies),
+)?)
+```
+
 # Valid usage
 
 The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
@@ -1454,6 +1574,7 @@ The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khrono
 - `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateRenderPass")]
     #[inline]
     pub fn create_render_pass<'a>(
         &self,
@@ -1516,6 +1637,19 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 - `VUID-VkSamplerCreateInfo-None-01647`: if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
 - `VUID-VkSamplerCreateInfo-nonSeamlessCubeMap-06788`: If the `nonSeamlessCubeMap` feature is not enabled, `flags` must not include `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`
 
+# Example
+
+Called, as `examples/src/scenes/textured_quad.rs` (line 66) does; the example programs run in CI:
+
+```ignore
+// SAFETY: the rules `create_sampler` leaves to its caller: this is the scene's
+// only sampler (far below maxSamplerAllocationCount, at least 4,000); no
+// address mode is CLAMP_TO_BORDER and comparison is off, so the border color
+// and compare op are not read; nothing is chained (no YCbCr conversion, no
+// border swizzle); no flags (no non-seamless cube maps).
+let sampler = unsafe { d.create_sampler(&info) }?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
@@ -1526,6 +1660,7 @@ The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.o
 - `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateSampler")]
     #[inline]
     pub unsafe fn create_sampler<'a>(
         &self,
@@ -1595,6 +1730,15 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
     }
     /**`vkCreateSemaphore`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 186) does; the example programs run in CI:
+
+```ignore
+gpu.device
+    .create_semaphore(&tuff::SemaphoreCreateInfo::new())
+```
+
 # Valid usage
 
 The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
@@ -1603,6 +1747,7 @@ The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos
 - `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateSemaphore")]
     #[inline]
     pub fn create_semaphore<'a>(
         &self,
@@ -1682,6 +1827,7 @@ The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khro
 - `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCreateShaderModule")]
     #[inline]
     pub unsafe fn create_shader_module<'a>(
         &self,
@@ -1750,11 +1896,22 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
     }
     /**`vkDeviceWaitIdle`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 281) does; the example programs run in CI:
+
+```ignore
+// Every frame that used the old images, and every present waiting on their
+// semaphores, is done before they go.
+gpu.device.device_wait_idle()?;
+```
+
 # Valid usage
 
 The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html). Settled by the wrappers:
 
 - `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
+    #[doc(alias = "vkDeviceWaitIdle")]
     #[inline]
     pub fn device_wait_idle(&self) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -1792,6 +1949,7 @@ The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry
 - `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[doc(alias = "vkFlushMappedMemoryRanges")]
     #[inline]
     pub unsafe fn flush_mapped_memory_ranges<'a>(
         &self,
@@ -1835,6 +1993,7 @@ The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://regi
 - `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetBufferMemoryRequirements-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetBufferMemoryRequirements")]
     #[inline]
     pub fn get_buffer_memory_requirements(
         &self,
@@ -1875,6 +2034,7 @@ The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://regist
 - `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetDeviceMemoryCommitment")]
     #[inline]
     pub fn get_device_memory_commitment(
         &self,
@@ -1907,6 +2067,14 @@ The caller upholds the rules that [`Self::get_device_memory_commitment`] checks 
     }
     /**`vkGetDeviceQueue`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 85) does; the example programs run in CI:
+
+```ignore
+let queue = device.get_device_queue(family, 0)?;
+```
+
 # Valid usage
 
 The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
@@ -1916,6 +2084,7 @@ The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.
 - `VUID-vkGetDeviceQueue-flags-01841`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
 - `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetDeviceQueue")]
     #[inline]
     pub fn get_device_queue(
         &self,
@@ -1958,6 +2127,7 @@ The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetEventStatus")]
     #[inline]
     pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
         crate::hooks::host_event(self, event, "VUID-vkGetEventStatus-event-03940")?;
@@ -1996,6 +2166,7 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetFenceStatus")]
     #[inline]
     pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
         {
@@ -2040,6 +2211,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetImageMemoryRequirements")]
     #[inline]
     pub fn get_image_memory_requirements(
         &self,
@@ -2081,6 +2253,7 @@ The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https:/
 - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSparseMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetImageSparseMemoryRequirements")]
     #[inline]
     pub fn get_image_sparse_memory_requirements(
         &self,
@@ -2145,6 +2318,7 @@ The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://regist
 - `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetImageSubresourceLayout")]
     #[inline]
     pub unsafe fn get_image_subresource_layout(
         &self,
@@ -2194,6 +2368,7 @@ The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.kh
 - `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPipelineCacheData-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetPipelineCacheData")]
     #[inline]
     pub fn get_pipeline_cache_data(
         &self,
@@ -2249,6 +2424,7 @@ The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khr
 - `VUID-vkGetQueryPoolResults-flags-02827`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetQueryPoolResults")]
     #[inline]
     pub fn get_query_pool_results(
         &self,
@@ -2329,6 +2505,7 @@ The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registr
 - `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetRenderAreaGranularity-renderPass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetRenderAreaGranularity")]
     #[inline]
     pub fn get_render_area_granularity(
         &self,
@@ -2378,6 +2555,7 @@ The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://reg
 - `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[doc(alias = "vkInvalidateMappedMemoryRanges")]
     #[inline]
     pub unsafe fn invalidate_mapped_memory_ranges<'a>(
         &self,
@@ -2424,6 +2602,7 @@ The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khr
 - `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 - `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkMergePipelineCaches")]
     #[inline]
     pub fn merge_pipeline_caches(
         &self,
@@ -2492,6 +2671,7 @@ The rules are on [`vkResetCommandPool`'s reference page](https://registry.khrono
 - `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkResetCommandPool")]
     #[inline]
     pub fn reset_command_pool(
         &self,
@@ -2550,6 +2730,7 @@ The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khr
 - `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkResetDescriptorPool")]
     #[inline]
     pub fn reset_descriptor_pool(
         &self,
@@ -2616,6 +2797,7 @@ The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/
 - `VUID-vkResetEvent-event-03823`: dynamic (checks the event was not created device-only, which the device records at its creation)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkResetEvent")]
     #[inline]
     pub unsafe fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2665,6 +2847,7 @@ The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org
 - `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkResetFences")]
     #[inline]
     pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2721,6 +2904,7 @@ The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vu
 - `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkSetEvent")]
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -2761,6 +2945,14 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
     }
     /**`vkUpdateDescriptorSets`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 167) does; the example programs run in CI:
+
+```ignore
+device.update_descriptor_sets(&writes, &[])?;
+```
+
 # Valid usage
 
 The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
@@ -2777,6 +2969,7 @@ The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.kh
 - `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: static (every descriptor update and every submission holds the device's descriptor gate, so no two of them touch a set at once)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkUpdateDescriptorSets")]
     #[inline]
     pub fn update_descriptor_sets<'a>(
         &self,
@@ -2843,6 +3036,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
 - `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkWaitForFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkWaitForFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkWaitForFences")]
     #[inline]
     pub fn wait_for_fences(
         &self,

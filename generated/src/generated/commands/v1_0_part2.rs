@@ -5,6 +5,15 @@ use super::*;
 impl PhysicalDevice {
     /**`vkCreateDevice`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 84) does; the example programs run in CI:
+
+```ignore
+let device =
+    physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html). Settled by the wrappers:
@@ -14,6 +23,7 @@ The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.or
 - `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDevice")]
     #[inline]
     pub fn create_device<'a>(
         &self,
@@ -65,6 +75,7 @@ The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https
 - `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
 - `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumerateDeviceExtensionProperties")]
     #[inline]
     pub fn enumerate_device_extension_properties(
         &self,
@@ -94,6 +105,7 @@ The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://r
 - `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumerateDeviceLayerProperties")]
     #[inline]
     pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
         let fp = self.parent().fns().fp_v1_0().enumerate_device_layer_properties;
@@ -114,6 +126,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://regist
 
 - `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceFeatures")]
     #[inline]
     pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
         let fp = self.parent().fns().fp_v1_0().get_physical_device_features;
@@ -131,6 +144,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
 - `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceFormatProperties")]
     #[inline]
     pub fn get_physical_device_format_properties(
         &self,
@@ -176,6 +190,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](h
 - `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties")]
     #[inline]
     pub fn get_physical_device_image_format_properties(
         &self,
@@ -243,6 +258,7 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https:
 
 - `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceMemoryProperties")]
     #[inline]
     pub fn get_physical_device_memory_properties(
         &self,
@@ -255,12 +271,25 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https:
     }
     /**`vkGetPhysicalDeviceProperties`
 
+# Example
+
+Called, as `examples/src/gpu.rs` (line 103) does; the example programs run in CI:
+
+```ignore
+// A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
+// TUFF_DEVICE picks by name instead (the scene tests pin lavapipe with it).
+let rank = |p: &tuff::PhysicalDevice| match p.get_physical_device_properties().device_type {
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html). Settled by the wrappers:
 
 - `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceProperties")]
     #[inline]
     pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
         let fp = self.parent().fns().fp_v1_0().get_physical_device_properties;
@@ -278,6 +307,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties")]
     #[inline]
     pub fn get_physical_device_queue_family_properties(
         &self,
@@ -315,6 +345,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties")]
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties(
         &self,
@@ -396,6 +427,14 @@ The caller upholds the rules that [`Self::get_physical_device_sparse_image_forma
 impl Entry {
     /**`vkCreateInstance`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 65) does; the example programs run in CI:
+
+```ignore
+let instance = tuff::Entry::load()?.create_instance(&info)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateInstance.html). Settled by the wrappers:
@@ -404,6 +443,7 @@ The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.
 - `VUID-vkCreateInstance-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateInstance")]
     #[inline]
     pub fn create_instance<'a>(
         &self,
@@ -452,6 +492,7 @@ The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](htt
 - `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
 - `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumerateInstanceExtensionProperties")]
     #[inline]
     pub fn enumerate_instance_extension_properties(
         &self,
@@ -479,6 +520,7 @@ The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https:/
 
 - `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumerateInstanceLayerProperties")]
     #[inline]
     pub fn enumerate_instance_layer_properties(
         &self,
@@ -497,6 +539,14 @@ The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https:/
 impl Instance {
     /**`vkEnumeratePhysicalDevices`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 70) does; the example programs run in CI:
+
+```ignore
+let physicals = instance.enumerate_physical_devices()?;
+```
+
 # Valid usage
 
 The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDevices.html). Settled by the wrappers:
@@ -504,6 +554,7 @@ The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registr
 - `VUID-vkEnumeratePhysicalDevices-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumeratePhysicalDevices")]
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
         let fp = self.fns().fp_v1_0().enumerate_physical_devices;
@@ -573,6 +624,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names*/
+    #[doc(alias = "vkQueueBindSparse")]
     #[inline]
     pub unsafe fn queue_bind_sparse<'a>(
         &self,
@@ -658,6 +710,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
 - 1: checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names (a timeline semaphore may be waited on before its signal is submitted, as the timeline rules allow)
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
 - 4: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkQueueSubmit")]
     #[inline]
     pub fn queue_submit<'a>(
         &self,
@@ -717,6 +770,7 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
 The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html). Settled by the wrappers:
 
 - `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
+    #[doc(alias = "vkQueueWaitIdle")]
     #[inline]
     pub fn queue_wait_idle(&self) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
@@ -746,6 +800,7 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
 - `VUID-vkResetCommandBuffer-commandBuffer-00046`: dynamic (refuses a buffer whose pool was created without RESET_COMMAND_BUFFER)
 - `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
 - `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+    #[doc(alias = "vkResetCommandBuffer")]
     #[inline]
     pub fn reset_command_buffer(
         &mut self,

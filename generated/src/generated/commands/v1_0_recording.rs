@@ -33,6 +33,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29.
 - 3: checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute
 - 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
 - 25: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBeginQuery")]
     #[inline]
     pub unsafe fn cmd_begin_query(
         &mut self,
@@ -97,6 +98,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 1: checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet
 - 3: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdEndQuery")]
     #[inline]
     pub unsafe fn cmd_end_query(
         &mut self,
@@ -135,6 +137,21 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
     }
     /**`vkCmdPipelineBarrier`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 184) does; the example programs run in CI:
+
+```ignore
+rec.cmd_pipeline_barrier(
+    vk::PipelineStageFlags::COMPUTE_SHADER,
+    vk::PipelineStageFlags::HOST,
+    vk::DependencyFlags::empty(),
+    &[to_host],
+    &[],
+    &[],
+)
+```
+
 # Valid usage
 
 The rules are on [`vkCmdPipelineBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier.html). Settled by the wrappers:
@@ -172,6 +189,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
 - 2: checked by the safe methods in every build (the specification's table of the stages each queue capability supports), but no test breaks it: lavapipe's only queue family supports every stage
 - 18: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdPipelineBarrier")]
     #[inline]
     pub fn cmd_pipeline_barrier<'a>(
         &mut self,
@@ -324,6 +342,7 @@ The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdWaitEvents-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdWaitEvents")]
     #[inline]
     pub unsafe fn cmd_wait_events<'a>(
         &mut self,
@@ -466,6 +485,7 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 - `VUID-vkCmdWriteTimestamp-synchronization2-06489`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
 Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdWriteTimestamp")]
     #[inline]
     pub unsafe fn cmd_write_timestamp(
         &mut self,

@@ -5,6 +5,20 @@ use super::*;
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRenderPass`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 216) does; the example programs run in CI:
+
+```ignore
+let mut rec = frame.record()?.cmd_begin_render_pass(
+    &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+        .render_area(area)
+        // Without a depth attachment, only the color is cleared.
+        .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
+    vk::SubpassContents::INLINE,
+);
+```
+
 # Valid usage
 
 The rules are on [`vkCmdBeginRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRenderPass.html). Settled by the wrappers:
@@ -28,6 +42,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
 - 2: checked by the safe methods in every build, but no test breaks it yet
 - 3: checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts
 - 3: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBeginRenderPass")]
     #[inline]
     pub fn cmd_begin_render_pass<'a>(
         mut self,
@@ -165,6 +180,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdBlitImage-dstImageLayout-00227`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
 Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBlitImage")]
     #[inline]
     pub unsafe fn cmd_blit_image(
         &mut self,
@@ -295,6 +311,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 10: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdClearColorImage")]
     #[inline]
     pub unsafe fn cmd_clear_color_image(
         &mut self,
@@ -394,6 +411,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 14: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdClearDepthStencilImage")]
     #[inline]
     pub unsafe fn cmd_clear_depth_stencil_image(
         &mut self,
@@ -497,6 +515,7 @@ The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyBuffer")]
     #[inline]
     pub unsafe fn cmd_copy_buffer(
         &mut self,
@@ -604,6 +623,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 - 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
 - 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
 - 4: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdCopyBufferToImage")]
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image(
         &mut self,
@@ -777,6 +797,7 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdCopyImage-dstImageLayout-00134`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
 Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyImage")]
     #[inline]
     pub unsafe fn cmd_copy_image(
         &mut self,
@@ -865,6 +886,28 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
     }
     /**`vkCmdCopyImageToBuffer`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 252) does; the example programs run in CI:
+
+```ignore
+rec.cmd_copy_image_to_buffer(
+    image,
+    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+    buffer,
+    &[vk::BufferImageCopy {
+        image_subresource: vk::ImageSubresourceLayers {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            mip_level: 0,
+            base_array_layer: 0,
+            layer_count: 1,
+        },
+        image_extent: extent.into(),
+        ..Default::default()
+    }],
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdCopyImageToBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html). Settled by the wrappers:
@@ -918,6 +961,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 - 1: checked by the safe methods in every build: a 3D image has one array layer, so the check of the layer range, which comes first, names its own VUID
 - 1: checked by the safe methods in every build: the checks of the x, y and z ranges, which together are this rule and come first, name their own VUIDs
 - 3: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdCopyImageToBuffer")]
     #[inline]
     pub fn cmd_copy_image_to_buffer(
         &mut self,
@@ -1034,6 +1078,7 @@ The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry
 - `VUID-vkCmdCopyQueryPoolResults-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyQueryPoolResults")]
     #[inline]
     pub unsafe fn cmd_copy_query_pool_results(
         &mut self,
@@ -1108,6 +1153,14 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
     }
     /**`vkCmdDispatch`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 180) does; the example programs run in CI:
+
+```ignore
+rec.cmd_dispatch(args.count.div_ceil(GROUP), 1, 1)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdDispatch`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatch.html). Settled by the wrappers:
@@ -1143,6 +1196,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 48.
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
 - 32: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDispatch")]
     #[inline]
     pub fn cmd_dispatch(
         &mut self,
@@ -1255,6 +1309,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47.
 - 1: checked by the safe methods in every build (on a device that enabled protectedMemory without protectedNoFault, a draw or dispatch in an unprotected command buffer is refused while a protected buffer or image is alive, as which resources its pipeline reaches is not followed; without protectedMemory no protected object can be made, their creation checking the feature), but no test breaks it: lavapipe has no protectedMemory
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
 - 32: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDispatchIndirect")]
     #[inline]
     pub unsafe fn cmd_dispatch_indirect(
         &mut self,
@@ -1347,6 +1402,7 @@ The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdFillBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdFillBuffer")]
     #[inline]
     pub unsafe fn cmd_fill_buffer(
         &mut self,
@@ -1409,6 +1465,7 @@ The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khron
 - `VUID-vkCmdResetQueryPool-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdResetQueryPool")]
     #[inline]
     pub unsafe fn cmd_reset_query_pool(
         &mut self,
@@ -1514,6 +1571,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 - `VUID-vkCmdResolveImage-dstImageLayout-00263`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
 
 Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdResolveImage")]
     #[inline]
     pub unsafe fn cmd_resolve_image(
         &mut self,
@@ -1631,6 +1689,7 @@ The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos
 - `VUID-vkCmdUpdateBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdUpdateBuffer")]
     #[inline]
     pub unsafe fn cmd_update_buffer(
         &mut self,

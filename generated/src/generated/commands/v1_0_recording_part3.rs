@@ -5,6 +5,14 @@ use super::*;
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindDescriptorSets`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 173) does; the example programs run in CI:
+
+```ignore
+rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdBindDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorSets.html). Settled by the wrappers:
@@ -32,6 +40,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 1: checked by the safe methods in every build (the bind point against the queue flags of the pool's family, recorded when the pool was created), but no test breaks it: lavapipe's only queue family has graphics and compute
 - 3: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBindDescriptorSets")]
     #[inline]
     pub fn cmd_bind_descriptor_sets(
         &mut self,
@@ -119,6 +128,14 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
     }
     /**`vkCmdBindIndexBuffer`
 
+# Example
+
+Called, as `examples/src/scenes/bezier.rs` (line 142) does; the example programs run in CI:
+
+```ignore
+rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindIndexBuffer.html). Settled by the wrappers:
@@ -136,6 +153,7 @@ The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khro
 - `VUID-vkCmdBindIndexBuffer-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBindIndexBuffer")]
     #[inline]
     pub fn cmd_bind_index_buffer(
         &mut self,
@@ -176,6 +194,14 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
     }
     /**`vkCmdBindPipeline`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 172) does; the example programs run in CI:
+
+```ignore
+rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdBindPipeline`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindPipeline.html). Settled by the wrappers:
@@ -195,6 +221,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 - 2: checked by the safe methods in every build (against the pool's queue family flags), but no test breaks it: lavapipe's one queue family supports graphics and compute
 - 15: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBindPipeline")]
     #[inline]
     pub fn cmd_bind_pipeline(
         &mut self,
@@ -233,6 +260,14 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
     }
     /**`vkCmdBindVertexBuffers`
 
+# Example
+
+Called, as `examples/src/scenes/teapots.rs` (line 160) does; the example programs run in CI:
+
+```ignore
+rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdBindVertexBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers.html). Settled by the wrappers:
@@ -255,6 +290,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBindVertexBuffers")]
     #[inline]
     pub fn cmd_bind_vertex_buffers(
         &mut self,
@@ -387,6 +423,7 @@ The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khro
 - `VUID-vkCmdExecuteCommands-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 50 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdExecuteCommands")]
     #[inline]
     pub unsafe fn cmd_execute_commands(
         &mut self,
@@ -436,6 +473,19 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
     }
     /**`vkCmdPushConstants`
 
+# Example
+
+Called, as `examples/src/bin/compute.rs` (line 174) does; the example programs run in CI:
+
+```ignore
+rec.cmd_push_constants(
+    &layout,
+    vk::ShaderStageFlags::COMPUTE,
+    0,
+    &args.count.to_ne_bytes(),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushConstants.html). Settled by the wrappers:
@@ -456,6 +506,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 - `VUID-vkCmdPushConstants-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdPushConstants-size-arraylength`: dynamic (checks the slice is not empty)
 - `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+    #[doc(alias = "vkCmdPushConstants")]
     #[inline]
     pub fn cmd_push_constants(
         &mut self,
@@ -520,6 +571,7 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
 - `VUID-vkCmdSetBlendConstants-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetBlendConstants-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetBlendConstants")]
     #[inline]
     pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
         {
@@ -562,6 +614,7 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetDepthBias-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetDepthBias-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetDepthBias")]
     #[inline]
     pub fn cmd_set_depth_bias(
         &mut self,
@@ -627,6 +680,7 @@ The rules are on [`vkCmdSetDepthBounds`'s reference page](https://registry.khron
 - `VUID-vkCmdSetDepthBounds-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthBounds")]
     #[inline]
     pub fn cmd_set_depth_bounds(
         &mut self,
@@ -677,6 +731,7 @@ The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetLineWidth-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetLineWidth-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetLineWidth")]
     #[inline]
     pub fn cmd_set_line_width(&mut self, line_width: f32) {
         {
@@ -707,6 +762,14 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
     }
     /**`vkCmdSetScissor`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 234) does; the example programs run in CI:
+
+```ignore
+rec.cmd_set_scissor(0, &[area])?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetScissor.html). Settled by the wrappers:
@@ -725,6 +788,7 @@ The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdSetScissor-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetScissor")]
     #[inline]
     pub fn cmd_set_scissor(
         &mut self,
@@ -782,6 +846,7 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
 - `VUID-vkCmdSetStencilCompareMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilCompareMask-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetStencilCompareMask")]
     #[inline]
     pub fn cmd_set_stencil_compare_mask(
         &mut self,
@@ -830,6 +895,7 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
 - `VUID-vkCmdSetStencilReference-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilReference-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetStencilReference")]
     #[inline]
     pub fn cmd_set_stencil_reference(
         &mut self,
@@ -878,6 +944,7 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
 - `VUID-vkCmdSetStencilWriteMask-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
 - `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 - `VUID-vkCmdSetStencilWriteMask-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+    #[doc(alias = "vkCmdSetStencilWriteMask")]
     #[inline]
     pub fn cmd_set_stencil_write_mask(
         &mut self,
@@ -917,6 +984,24 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
     }
     /**`vkCmdSetViewport`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 223) does; the example programs run in CI:
+
+```ignore
+rec.cmd_set_viewport(
+    0,
+    &[vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: view.extent.width as f32,
+        height: view.extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    }],
+)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewport.html). Settled by the wrappers:
@@ -932,6 +1017,7 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetViewport-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewport")]
     #[inline]
     pub fn cmd_set_viewport(
         &mut self,

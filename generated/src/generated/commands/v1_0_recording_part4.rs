@@ -36,6 +36,7 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 - `VUID-vkCmdClearAttachments-rectCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdClearAttachments")]
     #[inline]
     pub unsafe fn cmd_clear_attachments(
         &mut self,
@@ -77,6 +78,14 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
         self.state_changed();
     }
     /**`vkCmdDraw`
+
+# Example
+
+Called, as `examples/src/scenes/textured_quad.rs` (line 145) does; the example programs run in CI:
+
+```ignore
+rec.cmd_draw(4, 1, 0, 0)
+```
 
 # Valid usage
 
@@ -149,6 +158,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 - 1: checked by the safe methods in every build (the check of None-02699: every descriptor of a binding an input attachment variable of the pipeline's modules declares was written when the set was bound), but no test breaks it apart from that rule
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 128: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDraw")]
     #[inline]
     pub fn cmd_draw(
         &mut self,
@@ -292,6 +302,14 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
     }
     /**`vkCmdDrawIndexed`
 
+# Example
+
+Called, as `examples/src/scenes/bezier.rs` (line 148) does; the example programs run in CI:
+
+```ignore
+rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
+```
+
 # Valid usage
 
 The rules are on [`vkCmdDrawIndexed`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDrawIndexed.html). Settled by the wrappers:
@@ -365,6 +383,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 - 1: checked by the safe methods in every build (the check of None-02699: every descriptor of a binding an input attachment variable of the pipeline's modules declares was written when the set was bound), but no test breaks it apart from that rule
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 128: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDrawIndexed")]
     #[inline]
     pub fn cmd_draw_indexed(
         &mut self,
@@ -615,6 +634,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 152.
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 133: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDrawIndexedIndirect")]
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect(
         &mut self,
@@ -838,6 +858,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 151.
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 132: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDrawIndirect")]
     #[inline]
     pub unsafe fn cmd_draw_indirect(
         &mut self,
@@ -974,6 +995,14 @@ The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time
 impl<'c> Recorder<'c, InRenderPass> {
     /**`vkCmdEndRenderPass`
 
+# Example
+
+Called, as `examples/src/render.rs` (line 236) does; the example programs run in CI:
+
+```ignore
+let mut rec = rec.cmd_end_render_pass();
+```
+
 # Valid usage
 
 The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndRenderPass.html). Settled by the wrappers:
@@ -989,6 +1018,7 @@ The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khrono
 - `VUID-vkCmdEndRenderPass-None-06170`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndRenderPass")]
     #[inline]
     pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_render_pass_checks(
@@ -1035,6 +1065,7 @@ The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.
 - `VUID-vkCmdNextSubpass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdNextSubpass")]
     #[inline]
     pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
         let always: Result<()> = crate::hooks::next_subpass_checks(
@@ -1098,6 +1129,7 @@ The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdResetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdResetEvent")]
     #[inline]
     pub unsafe fn cmd_reset_event(
         &mut self,
@@ -1158,6 +1190,7 @@ The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org
 - `VUID-vkCmdSetEvent-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetEvent")]
     #[inline]
     pub unsafe fn cmd_set_event(
         &mut self,

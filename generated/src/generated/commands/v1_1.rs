@@ -27,6 +27,7 @@ The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khron
 - `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
+    #[doc(alias = "vkBindBufferMemory2")]
     #[inline]
     pub unsafe fn bind_buffer_memory2<'a>(
         &self,
@@ -108,6 +109,7 @@ The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khrono
 - `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkBindImageMemory2")]
     #[inline]
     pub unsafe fn bind_image_memory2<'a>(
         &self,
@@ -163,6 +165,7 @@ The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://r
 - `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateDescriptorUpdateTemplate")]
     #[inline]
     pub unsafe fn create_descriptor_update_template<'a>(
         &self,
@@ -258,6 +261,7 @@ The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://reg
 - `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+    #[doc(alias = "vkCreateSamplerYcbcrConversion")]
     #[inline]
     pub unsafe fn create_sampler_ycbcr_conversion<'a>(
         &self,
@@ -312,6 +316,7 @@ The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://reg
 - `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetBufferMemoryRequirements2")]
     #[inline]
     pub fn get_buffer_memory_requirements2<'a>(
         &self,
@@ -359,6 +364,7 @@ The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://re
 - `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDescriptorSetLayoutSupport")]
     #[inline]
     pub fn get_descriptor_set_layout_support<'a>(
         &self,
@@ -417,6 +423,7 @@ The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https:/
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetDeviceGroupPeerMemoryFeatures")]
     #[inline]
     pub unsafe fn get_device_group_peer_memory_features(
         &self,
@@ -441,6 +448,7 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
 - `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetDeviceQueue2")]
     #[inline]
     pub fn get_device_queue2<'a>(
         &self,
@@ -490,6 +498,7 @@ The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://regi
 - `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetImageMemoryRequirements2")]
     #[inline]
     pub fn get_image_memory_requirements2<'a>(
         &self,
@@ -540,6 +549,7 @@ The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https:
 - `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetImageSparseMemoryRequirements2")]
     #[inline]
     pub fn get_image_sparse_memory_requirements2<'a>(
         &self,
@@ -573,6 +583,7 @@ The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos
 - `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
 - `VUID-vkTrimCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkTrimCommandPool")]
     #[inline]
     pub fn trim_command_pool(
         &self,
@@ -636,6 +647,7 @@ The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://
 - `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkUpdateDescriptorSetWithTemplate")]
     #[inline]
     pub unsafe fn update_descriptor_set_with_template(
         &self,
@@ -698,6 +710,7 @@ impl Entry {
 The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html). Settled by the wrappers:
 
 - `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumerateInstanceVersion")]
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
         let fp = self.fns().fp_v1_1().enumerate_instance_version;
@@ -720,6 +733,7 @@ The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://re
 - `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter`: static (`self` is a live wrapper)
 - `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkEnumeratePhysicalDeviceGroups")]
     #[inline]
     pub fn enumerate_physical_device_groups(
         &self,
@@ -745,6 +759,7 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceExternalBufferProperties")]
     #[inline]
     pub fn get_physical_device_external_buffer_properties<'a>(
         &self,
@@ -803,6 +818,7 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceExternalFenceProperties")]
     #[inline]
     pub fn get_physical_device_external_fence_properties<'a>(
         &self,
@@ -861,6 +877,7 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceExternalSemaphoreProperties")]
     #[inline]
     pub fn get_physical_device_external_semaphore_properties<'a>(
         &self,
@@ -919,6 +936,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
 
 - `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceFeatures2")]
     #[inline]
     pub fn get_physical_device_features2<'a>(
         &self,
@@ -939,6 +957,7 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
 - `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceFormatProperties2")]
     #[inline]
     pub fn get_physical_device_format_properties2<'a>(
         &self,
@@ -995,6 +1014,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](
 - `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties2")]
     #[inline]
     pub fn get_physical_device_image_format_properties2<'a>(
         &self,
@@ -1056,6 +1076,7 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
 
 - `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceMemoryProperties2")]
     #[inline]
     pub fn get_physical_device_memory_properties2<'a>(
         &self,
@@ -1100,6 +1121,7 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
 
 - `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetPhysicalDeviceProperties2")]
     #[inline]
     pub fn get_physical_device_properties2<'a>(
         &self,
@@ -1139,6 +1161,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties2")]
     #[inline]
     pub fn get_physical_device_queue_family_properties2(
         &self,
@@ -1170,6 +1193,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties2")]
     #[inline]
     pub fn get_physical_device_sparse_image_format_properties2<'a>(
         &self,

@@ -47,6 +47,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55.
 - 4: checked by the safe methods in every build (the samplers that may sample each image view the bound sets hold, as for a draw's rules of the same text, which the draw tests break), but no dispatch test breaks it yet
 - 3: checked by the safe methods in every build, but no oracle case breaks it yet
 - 36: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDispatchBase")]
     #[inline]
     pub unsafe fn cmd_dispatch_base(
         &mut self,
@@ -159,6 +160,7 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDeviceMask")]
     #[inline]
     pub unsafe fn cmd_set_device_mask(&mut self, device_mask: u32) {
         {

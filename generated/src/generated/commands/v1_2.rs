@@ -67,6 +67,7 @@ The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreateRenderPass2")]
     #[inline]
     pub unsafe fn create_render_pass2<'a>(
         &self,
@@ -135,6 +136,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 3: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetBufferDeviceAddress")]
     #[inline]
     pub unsafe fn get_buffer_device_address<'a>(
         &self,
@@ -183,6 +185,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetBufferOpaqueCaptureAddress")]
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_address<'a>(
         &self,
@@ -230,6 +233,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 1: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkGetDeviceMemoryOpaqueCaptureAddress")]
     #[inline]
     pub unsafe fn get_device_memory_opaque_capture_address<'a>(
         &self,
@@ -273,6 +277,7 @@ The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registr
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetSemaphoreCounterValue")]
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
         crate::hooks::get_semaphore_counter_value_checks(self, semaphore)?;
@@ -325,6 +330,7 @@ The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.
 - `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkResetQueryPool")]
     #[inline]
     pub unsafe fn reset_query_pool(
         &self,
@@ -373,6 +379,7 @@ The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos
 
 - `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkSignalSemaphore")]
     #[inline]
     pub unsafe fn signal_semaphore<'a>(
         &self,
@@ -406,12 +413,27 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
     }
     /**`vkWaitSemaphores`
 
+# Example
+
+Called, as `examples/src/window.rs` (line 386) does; the example programs run in CI:
+
+```ignore
+match gpu.queue.queue_present_khr(
+    &tuff::PresentInfoKHR::new()
+        .wait_semaphores(&signals)
+        .swapchains(&swapchains, &indices)?,
+) {
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html). Settled by the wrappers:
 
 - `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkWaitSemaphores")]
     #[inline]
     pub fn wait_semaphores<'a>(
         &self,

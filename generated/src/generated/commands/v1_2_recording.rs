@@ -29,6 +29,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9.
 - 2: checked by the safe methods in every build, but no test breaks it yet
 - 3: checked by the safe methods in every build, but no test breaks it: the framebuffer's creation already needs the usage each attachment's role in the render pass implies, and no test begins an instance of another render pass that gives the attachment these layouts
 - 2: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBeginRenderPass2")]
     #[inline]
     pub fn cmd_begin_render_pass2<'a>(
         mut self,
@@ -200,6 +201,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
 - 1: checked by the safe methods in every build (the check of None-02699: every descriptor of a binding an input attachment variable of the pipeline's modules declares was written when the set was bound), but no test breaks it apart from that rule
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 137: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDrawIndexedIndirectCount")]
     #[inline]
     pub unsafe fn cmd_draw_indexed_indirect_count(
         &mut self,
@@ -457,6 +459,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154.
 - 1: checked by the safe methods in every build (the check of None-02699: every descriptor of a binding an input attachment variable of the pipeline's modules declares was written when the set was bound), but no test breaks it apart from that rule
 - 1: checked by the safe methods in every build: no safe draw reads or writes an attachment's memory other than as an attachment (None-06537 and None-06538 refuse it), so no command of the subpass reads it before a draw writes it as an attachment; no test breaks it apart from those rules
 - 136: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdDrawIndirectCount")]
     #[inline]
     pub unsafe fn cmd_draw_indirect_count(
         &mut self,
@@ -639,6 +642,7 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCmdEndRenderPass2-None-06171`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndRenderPass2")]
     #[inline]
     pub fn cmd_end_render_pass2<'a>(
         mut self,
@@ -698,6 +702,7 @@ The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos
 - `VUID-vkCmdNextSubpass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdNextSubpass2")]
     #[inline]
     pub fn cmd_next_subpass2<'a>(
         &mut self,

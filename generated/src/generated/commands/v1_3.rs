@@ -14,6 +14,7 @@ The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.k
 - `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
 - `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+    #[doc(alias = "vkCreatePrivateDataSlot")]
     #[inline]
     pub fn create_private_data_slot<'a>(
         &self,
@@ -62,6 +63,7 @@ The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https:
 - `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDeviceBufferMemoryRequirements")]
     #[inline]
     pub fn get_device_buffer_memory_requirements<'a>(
         &self,
@@ -124,6 +126,7 @@ The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https:/
 - `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDeviceImageMemoryRequirements")]
     #[inline]
     pub unsafe fn get_device_image_memory_requirements<'a>(
         &self,
@@ -187,6 +190,7 @@ The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](h
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetDeviceImageSparseMemoryRequirements")]
     #[inline]
     pub unsafe fn get_device_image_sparse_memory_requirements<'a>(
         &self,
@@ -240,6 +244,7 @@ The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.
 - `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkGetPrivateData")]
     #[inline]
     pub fn get_private_data(
         &self,
@@ -294,6 +299,7 @@ The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.
 - `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
 - `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 - `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+    #[doc(alias = "vkSetPrivateData")]
     #[inline]
     pub fn set_private_data(
         &self,
@@ -352,6 +358,7 @@ The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://
 - `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
 - `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
+    #[doc(alias = "vkGetPhysicalDeviceToolProperties")]
     #[inline]
     pub fn get_physical_device_tool_properties(
         &self,
@@ -410,6 +417,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
 - 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
 - 7: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkQueueSubmit2")]
     #[inline]
     pub unsafe fn queue_submit2<'a>(
         &self,

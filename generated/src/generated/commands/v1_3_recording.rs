@@ -74,6 +74,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 - `VUID-vkCmdBeginRendering-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBeginRendering")]
     #[inline]
     pub unsafe fn cmd_begin_rendering<'a>(
         mut self,
@@ -169,6 +170,7 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdBlitImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdBlitImage2")]
     #[inline]
     pub unsafe fn cmd_blit_image2<'a>(
         &mut self,
@@ -248,6 +250,7 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdCopyBuffer2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyBuffer2")]
     #[inline]
     pub unsafe fn cmd_copy_buffer2<'a>(
         &mut self,
@@ -315,6 +318,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
 
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
+    #[doc(alias = "vkCmdCopyBufferToImage2")]
     #[inline]
     pub unsafe fn cmd_copy_buffer_to_image2<'a>(
         &mut self,
@@ -443,6 +447,7 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 - `VUID-vkCmdCopyImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdCopyImage2")]
     #[inline]
     pub unsafe fn cmd_copy_image2<'a>(
         &mut self,
@@ -515,6 +520,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
 
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory
 - 2: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
+    #[doc(alias = "vkCmdCopyImageToBuffer2")]
     #[inline]
     pub fn cmd_copy_image_to_buffer2<'a>(
         &mut self,
@@ -616,6 +622,7 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 - `VUID-vkCmdResolveImage2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdResolveImage2")]
     #[inline]
     pub unsafe fn cmd_resolve_image2<'a>(
         &mut self,
@@ -710,6 +717,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 - 1: checked by the safe methods in every build, but no oracle case breaks it yet
 - 2: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdBindVertexBuffers2")]
     #[inline]
     pub unsafe fn cmd_bind_vertex_buffers2(
         &mut self,
@@ -836,6 +844,7 @@ The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.
 - `VUID-vkCmdSetCullMode-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetCullMode")]
     #[inline]
     pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         {
@@ -876,6 +885,7 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthBiasEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthBiasEnable")]
     #[inline]
     pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: bool) {
         {
@@ -920,6 +930,7 @@ The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://regi
 - `VUID-vkCmdSetDepthBoundsTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthBoundsTestEnable")]
     #[inline]
     pub fn cmd_set_depth_bounds_test_enable(&mut self, depth_bounds_test_enable: bool) {
         {
@@ -967,6 +978,7 @@ The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.kh
 - `VUID-vkCmdSetDepthCompareOp-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthCompareOp")]
     #[inline]
     pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         {
@@ -1010,6 +1022,7 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 - `VUID-vkCmdSetDepthTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthTestEnable")]
     #[inline]
     pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: bool) {
         {
@@ -1055,6 +1068,7 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 - `VUID-vkCmdSetDepthWriteEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetDepthWriteEnable")]
     #[inline]
     pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: bool) {
         {
@@ -1101,6 +1115,7 @@ The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetFrontFace-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetFrontFace")]
     #[inline]
     pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
         {
@@ -1141,6 +1156,7 @@ The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://reg
 - `VUID-vkCmdSetPrimitiveRestartEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetPrimitiveRestartEnable")]
     #[inline]
     pub fn cmd_set_primitive_restart_enable(&mut self, primitive_restart_enable: bool) {
         {
@@ -1188,6 +1204,7 @@ The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry
 - `VUID-vkCmdSetPrimitiveTopology-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetPrimitiveTopology")]
     #[inline]
     pub fn cmd_set_primitive_topology(
         &mut self,
@@ -1234,6 +1251,7 @@ The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://re
 - `VUID-vkCmdSetRasterizerDiscardEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetRasterizerDiscardEnable")]
     #[inline]
     pub fn cmd_set_rasterizer_discard_enable(
         &mut self,
@@ -1291,6 +1309,7 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 - `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetScissorWithCount")]
     #[inline]
     pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
         crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
@@ -1343,6 +1362,7 @@ The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetStencilOp-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetStencilOp")]
     #[inline]
     pub fn cmd_set_stencil_op(
         &mut self,
@@ -1418,6 +1438,7 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 - `VUID-vkCmdSetStencilTestEnable-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetStencilTestEnable")]
     #[inline]
     pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: bool) {
         {
@@ -1467,6 +1488,7 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 - `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`: dynamic (checks the slice is not empty)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetViewportWithCount")]
     #[inline]
     pub fn cmd_set_viewport_with_count(
         &mut self,
@@ -1522,6 +1544,7 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 - `VUID-vkCmdEndRendering-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdEndRendering")]
     #[inline]
     pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
@@ -1607,6 +1630,7 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 - `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdPipelineBarrier2")]
     #[inline]
     pub unsafe fn cmd_pipeline_barrier2<'a>(
         &mut self,
@@ -1715,6 +1739,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdWaitEvents2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdWaitEvents2")]
     #[inline]
     pub unsafe fn cmd_wait_events2<'a>(
         &mut self,
@@ -1818,6 +1843,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
 - 2: checked by the safe methods in every build, but no oracle case breaks it yet
 - 18: explicit rule; the wrappers do not check it*/
+    #[doc(alias = "vkCmdWriteTimestamp2")]
     #[inline]
     pub unsafe fn cmd_write_timestamp2(
         &mut self,
@@ -1882,6 +1908,7 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 - `VUID-vkCmdResetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdResetEvent2")]
     #[inline]
     pub unsafe fn cmd_reset_event2(
         &mut self,
@@ -1970,6 +1997,7 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 - `VUID-vkCmdSetEvent2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+    #[doc(alias = "vkCmdSetEvent2")]
     #[inline]
     pub unsafe fn cmd_set_event2<'a>(
         &mut self,

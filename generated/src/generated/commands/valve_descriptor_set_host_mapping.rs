@@ -22,6 +22,7 @@ The rules are on [`vkGetDescriptorSetHostMappingVALVE`'s reference page](https:/
 - `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+    #[doc(alias = "vkGetDescriptorSetHostMappingVALVE")]
     #[inline]
     pub unsafe fn get_descriptor_set_host_mapping_valve(
         &self,
@@ -49,6 +50,7 @@ The rules are on [`vkGetDescriptorSetLayoutHostMappingInfoVALVE`'s reference pag
 - `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-device-parameter`: static (`self` is a live wrapper)
 - `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pBindingReference-parameter`: static (taken as a reference or slice: a valid pointer with its length)
 - `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pHostMapping-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+    #[doc(alias = "vkGetDescriptorSetLayoutHostMappingInfoVALVE")]
     #[inline]
     pub fn get_descriptor_set_layout_host_mapping_info_valve<'a>(
         &self,

@@ -4,6 +4,20 @@
 use super::*;
 /**Safe counterpart of [`vk::PresentInfoKHR`].
 
+# Example
+
+Made, as `examples/src/window.rs` (line 385) does; the example programs run in CI:
+
+```ignore
+match gpu.queue.queue_present_khr(
+    &tuff::PresentInfoKHR::new()
+        .wait_semaphores(&signals)
+        .swapchains(&swapchains, &indices)?,
+) {
+    // ...
+}
+```
+
 # Valid usage
 
 The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentInfoKHR.html). Settled by the wrappers:
@@ -65,6 +79,25 @@ impl<'a> PresentInfoKHR<'a> {
     }
 }
 /**Safe counterpart of [`vk::SwapchainCreateInfoKHR`].
+
+# Example
+
+Made, as `examples/src/window.rs` (line 283) does; the example programs run in CI:
+
+```ignore
+let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)
+    .min_image_count(count)
+    .image_format(self.format.format)
+    .image_color_space(self.format.color_space)
+    .image_extent(extent)
+    .image_array_layers(1)
+    .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT)
+    .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
+    .pre_transform(caps.current_transform)
+    .composite_alpha(composite_alpha(caps.supported_composite_alpha))
+    .present_mode(vk::PresentModeKHR::FIFO)
+    .clipped(true);
+```
 
 # Valid usage
 

@@ -62,6 +62,16 @@ impl<'a> AllocationCallbacks<'a> {
 }
 /**Safe counterpart of [`vk::ApplicationInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 54) does; the example programs run in CI:
+
+```ignore
+// An instance (with the layer and a messenger into `log` when validating) and a
+// device with one queue of a family that computes.
+let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
+```
+
 # Valid usage
 
 The rules are on [`VkApplicationInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkApplicationInfo.html). Settled by the wrappers:
@@ -227,6 +237,16 @@ impl<'a> BindSparseInfo<'a> {
 }
 /**Safe counterpart of [`vk::BufferCreateInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 93) does; the example programs run in CI:
+
+```ignore
+let info = tuff::BufferCreateInfo::new()
+    .size(bytes)
+    .usage(vk::BufferUsageFlags::STORAGE_BUFFER);
+```
+
 # Valid usage
 
 The rules are on [`VkBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCreateInfo.html). Settled by the wrappers:
@@ -294,6 +314,21 @@ impl<'a> BufferCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::BufferMemoryBarrier`].
+
+# Example
+
+Made, as `examples/src/render.rs` (line 268) does; the example programs run in CI:
+
+```ignore
+// A fence wait does not make device writes visible to the host; this does.
+let to_host = [tuff::BufferMemoryBarrier::new(buffer)
+    .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+    .dst_access_mask(vk::AccessFlags::HOST_READ)
+    .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+    .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+    .offset(0)
+    .size(vk::WHOLE_SIZE)];
+```
 
 # Valid usage
 
@@ -630,6 +665,15 @@ impl<'a> CommandPoolCreateInfo<'a> {
 }
 /**Safe counterpart of [`vk::ComputePipelineCreateInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 137) does; the example programs run in CI:
+
+```ignore
+let pipeline = device
+    .create_compute_pipeline(None, &tuff::ComputePipelineCreateInfo::new(stage, &layout))?;
+```
+
 # Valid usage
 
 The rules are on [`VkComputePipelineCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkComputePipelineCreateInfo.html). Settled by the wrappers:
@@ -803,6 +847,16 @@ impl<'a> CopyDescriptorSet<'a> {
 }
 /**Safe counterpart of [`vk::DescriptorBufferInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 152) does; the example programs run in CI:
+
+```ignore
+[tuff::DescriptorBufferInfo::new()
+    .buffer(Some(b))
+    .range(vk::WHOLE_SIZE)]
+```
+
 # Valid usage
 
 The rules are on [`VkDescriptorBufferInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferInfo.html). Settled by the wrappers:
@@ -842,6 +896,14 @@ impl<'a> DescriptorBufferInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::DescriptorImageInfo`].
+
+# Example
+
+Made, as `examples/src/scenes/textured_quad.rs` (line 91) does; the example programs run in CI:
+
+```ignore
+let texture = [tuff::DescriptorImageInfo::new(&sampler, &view).image_layout(read)];
+```
 
 # Valid usage
 
@@ -899,6 +961,22 @@ impl<'a> DescriptorImageInfo<'a> {
 }
 /**Safe counterpart of [`vk::DescriptorPoolCreateInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 141) does; the example programs run in CI:
+
+```ignore
+// The descriptor set: a, b and c at bindings 0, 1 and 2.
+let pool = device.create_descriptor_pool(
+    &tuff::DescriptorPoolCreateInfo::new()
+        .max_sets(1)
+        .pool_sizes(&[vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::STORAGE_BUFFER,
+            descriptor_count: 3,
+        }]),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`VkDescriptorPoolCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorPoolCreateInfo.html). Settled by the wrappers:
@@ -940,6 +1018,20 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::DescriptorSetAllocateInfo`].
+
+# Example
+
+Made, as `examples/src/scenes/bezier.rs` (line 87) does; the example programs run in CI:
+
+```ignore
+let set = d
+    .allocate_descriptor_sets(
+        &pool,
+        &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+    )?
+    .pop()
+    .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
+```
 
 # Valid usage
 
@@ -995,6 +1087,18 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::DescriptorSetLayoutBinding`].
+
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 108) does; the example programs run in CI:
+
+```ignore
+tuff::DescriptorSetLayoutBinding::new()
+    .binding(i)
+    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+    .descriptor_count(1)
+    .stage_flags(vk::ShaderStageFlags::COMPUTE)
+```
 
 # Valid usage
 
@@ -1057,6 +1161,16 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
 }
 /**Safe counterpart of [`vk::DescriptorSetLayoutCreateInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 115) does; the example programs run in CI:
+
+```ignore
+let set_layout = device.create_descriptor_set_layout(
+    &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&[binding(0), binding(1), binding(2)]),
+)?;
+```
+
 # Valid usage
 
 The rules are on [`VkDescriptorSetLayoutCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutCreateInfo.html). Settled by the wrappers:
@@ -1095,6 +1209,15 @@ impl<'a> DescriptorSetLayoutCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::DeviceCreateInfo`].
+
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 84) does; the example programs run in CI:
+
+```ignore
+let device =
+    physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))?;
+```
 
 # Valid usage
 
@@ -1162,6 +1285,16 @@ impl<'a> DeviceCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::DeviceQueueCreateInfo`].
+
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 80) does; the example programs run in CI:
+
+```ignore
+let queues = [tuff::DeviceQueueCreateInfo::new()
+    .queue_family_index(family)
+    .queue_priorities(&[1.0])];
+```
 
 # Valid usage
 
@@ -1260,6 +1393,20 @@ impl<'a> FenceCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::FramebufferCreateInfo`].
+
+# Example
+
+Made, as `examples/src/render.rs` (line 176) does; the example programs run in CI:
+
+```ignore
+Ok(gpu.device.create_framebuffer(
+    &tuff::FramebufferCreateInfo::new(render_pass)
+        .attachments(&attachments)
+        .width(extent.width)
+        .height(extent.height)
+        .layers(1),
+)?)
+```
 
 # Valid usage
 
@@ -1362,6 +1509,25 @@ impl<'a> FramebufferCreateInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::GraphicsPipelineCreateInfo`].
+
+# Example
+
+Made, as `examples/src/pipeline.rs` (line 72) does; the example programs run in CI:
+
+```ignore
+let mut info = tuff::GraphicsPipelineCreateInfo::new()
+    .stages(&stages)
+    .vertex_input_state(Some(&vertex_input))
+    .input_assembly_state(Some(&assembly))
+    .viewport_state(Some(&viewport))
+    .rasterization_state(Some(&raster))
+    .multisample_state(Some(&multisample))
+    .color_blend_state(Some(&blend))
+    .dynamic_state(Some(&dynamic))
+    .layout(Some(layout))
+    .render_pass(Some(render_pass))
+    .subpass(0);
+```
 
 # Valid usage
 
@@ -1645,6 +1811,21 @@ impl<'a> GraphicsPipelineCreateInfo<'a> {
 }
 /**Safe counterpart of [`vk::ImageCreateInfo`].
 
+# Example
+
+Made, as `examples/src/gpu.rs` (line 199) does; the example programs run in CI:
+
+```ignore
+let info = tuff::ImageCreateInfo::new()
+    .image_type(vk::ImageType::TYPE_2D)
+    .format(format)
+    .extent(extent.into())
+    .mip_levels(1)
+    .array_layers(1)
+    .samples(vk::SampleCountFlags::TYPE_1)
+    .usage(usage);
+```
+
 # Valid usage
 
 The rules are on [`VkImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCreateInfo.html). Settled by the wrappers:
@@ -1914,6 +2095,19 @@ impl<'a> ImageMemoryBarrier<'a> {
 }
 /**Safe counterpart of [`vk::ImageViewCreateInfo`].
 
+# Example
+
+Made, as `examples/src/gpu.rs` (line 223) does; the example programs run in CI:
+
+```ignore
+Ok(self.device.create_image_view(
+    &tuff::ImageViewCreateInfo::new(image)
+        .view_type(vk::ImageViewType::TYPE_2D)
+        .format(format)
+        .subresource_range(whole(aspect)),
+)?)
+```
+
 # Valid usage
 
 The rules are on [`VkImageViewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCreateInfo.html). Settled by the wrappers:
@@ -2022,6 +2216,14 @@ impl<'a> ImageViewCreateInfo<'a> {
 }
 /**Safe counterpart of [`vk::InstanceCreateInfo`].
 
+# Example
+
+Made, as `examples/src/bin/compute.rs` (line 58) does; the example programs run in CI:
+
+```ignore
+let mut info = tuff::InstanceCreateInfo::new().application_info(Some(&app));
+```
+
 # Valid usage
 
 The rules are on [`VkInstanceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkInstanceCreateInfo.html). Settled by the wrappers:
@@ -2122,78 +2324,6 @@ impl<'a> MappedMemoryRange<'a> {
     #[inline]
     pub fn size(mut self, value: vk::DeviceSize) -> Self {
         self.raw.size = value;
-        self
-    }
-}
-/**Safe counterpart of [`vk::MemoryAllocateInfo`].
-
-# Valid usage
-
-The rules are on [`VkMemoryAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateInfo.html). Settled by the wrappers:
-
-- `VUID-VkMemoryAllocateInfo-None-06657`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
-- `VUID-VkMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryAllocateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkMemoryAllocateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkMemoryAllocateInfo-allocationSize-00638`: dynamic (checks the rule as written (recogniser: number compared with a constant, member or limit))
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-VkMemoryAllocateInfo-flags-03330`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-VkMemoryAllocateInfo-flags-03331`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 36.
-
-- 1: checked by the safe methods in every build (the memory type's flags against protectedMemory), but no test breaks it: lavapipe has no protected memory type
-- 35: explicit rule; the wrappers do not check it*/
-#[repr(transparent)]
-#[derive(Clone, Copy)]
-pub struct MemoryAllocateInfo<'a> {
-    pub(super) raw: vk::MemoryAllocateInfo<'a>,
-    _marker: PhantomData<&'a ()>,
-}
-safe_struct!(MemoryAllocateInfo, 'a; zeroed chained);
-impl<'a> MemoryAllocateInfo<'a> {
-    ///Sets `allocationSize`.
-    #[inline]
-    pub fn allocation_size(mut self, value: vk::DeviceSize) -> Self {
-        self.raw.allocation_size = value;
-        self
-    }
-    ///Sets `memoryTypeIndex`.
-    #[inline]
-    pub fn memory_type_index(mut self, value: u32) -> Self {
-        self.raw.memory_type_index = value;
-        self
-    }
-}
-/**Safe counterpart of [`vk::MemoryBarrier`].
-
-# Valid usage
-
-The rules are on [`VkMemoryBarrier`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryBarrier.html). Settled by the wrappers:
-
-- `VUID-VkMemoryBarrier-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryBarrier-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryBarrier-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkMemoryBarrier-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
-#[repr(transparent)]
-#[derive(Clone, Copy)]
-pub struct MemoryBarrier<'a> {
-    pub(super) raw: vk::MemoryBarrier<'a>,
-    _marker: PhantomData<&'a ()>,
-}
-safe_struct!(MemoryBarrier, 'a; zeroed chained);
-impl<'a> MemoryBarrier<'a> {
-    ///Sets `srcAccessMask`.
-    #[inline]
-    pub fn src_access_mask(mut self, value: vk::AccessFlags) -> Self {
-        self.raw.src_access_mask = value;
-        self
-    }
-    ///Sets `dstAccessMask`.
-    #[inline]
-    pub fn dst_access_mask(mut self, value: vk::AccessFlags) -> Self {
-        self.raw.dst_access_mask = value;
         self
     }
 }
