@@ -152,6 +152,11 @@ fn wait(device: &Device, fences: &[&Fence]) -> Result<()> {
 
 /// The frame whose turn it is: its command buffer is free to record, and nothing
 /// the frame's previous submission used is still in use by it.
+///
+/// # Example
+///
+/// [`FramesInFlight`]'s example is the loop: `next_frame` gives the frame, which is
+/// recorded and submitted.
 pub struct Frame<'r> {
     /// Which of the ring's frames this is, `0..len`: the index of the frame's own
     /// uniform buffers, descriptor sets or semaphores.

@@ -26,9 +26,22 @@ pub trait Inside: State {}
 pub trait OutsideRenderPass: Scope {}
 
 /// Recording, outside any render pass instance.
+///
+/// ```no_run
+/// # fn f(cb: &mut tuff::CommandBuffer, begin: &tuff::RenderPassBeginInfo<'_>) -> tuff::Result<()> {
+/// let rec: tuff::Recorder<'_, tuff::Outside> = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+/// // Beginning a render pass moves the recorder into the other state, and ending
+/// // it moves it back: a draw outside one does not compile.
+/// let inside: tuff::Recorder<'_, tuff::InRenderPass> =
+///     rec.cmd_begin_render_pass(begin, tuff::vk::SubpassContents::INLINE);
+/// let rec = inside.cmd_end_render_pass();
+/// rec.end()?;
+/// # Ok(()) }
+/// ```
 #[derive(Debug)]
 pub struct Outside;
-/// Recording inside a render pass begun with `cmd_begin_render_pass`.
+/// Recording inside a render pass begun with `cmd_begin_render_pass` (see
+/// [`Outside`]'s example).
 #[derive(Debug)]
 pub struct InRenderPass;
 /// Recording inside dynamic rendering begun with `cmd_begin_rendering`.

@@ -8,6 +8,17 @@ use tuff_runtime::Vrc;
 
 /// Errors of the generated wrappers. New kinds may come with new checks, so a
 /// `match` on it needs a catch-all arm.
+///
+/// ```no_run
+/// # fn f(device: &tuff::Device) {
+/// // A buffer of size 0 breaks a rule: the safe method names it, Vulkan never sees it.
+/// match device.create_buffer(&tuff::BufferCreateInfo::new()) {
+///     Err(tuff::Error::Validation { vuid, message }) => eprintln!("{vuid}: {message}"),
+///     Err(other) => eprintln!("{other}"),
+///     Ok(_buffer) => {}
+/// }
+/// # }
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
@@ -72,6 +83,12 @@ pub enum Error {
 }
 
 /// The result of a fallible wrapper call.
+///
+/// ```no_run
+/// fn idle(device: &tuff::Device) -> tuff::Result<()> {
+///     device.device_wait_idle()
+/// }
+/// ```
 pub type Result<T> = core::result::Result<T, Error>;
 
 impl From<vk::Result> for Error {
