@@ -879,11 +879,11 @@ fn sets_in_use_are_not_rewritten() {
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-        assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), invalid);
+        assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), invalid);
         assert_silent(&s.messages);
         s.messages.abort_on_error(true);
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, &fence) };
+        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
         s.messages.abort_on_error(false);
         // The 1.3.239 layer names the invalid state by its cause.
         let cause = "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer-VkDescriptorSet";
@@ -913,7 +913,9 @@ fn sets_in_use_are_not_rewritten() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    s.queue.queue_submit(&gated, &fence).expect("gated submit");
+    s.queue
+        .queue_submit(&gated, Some(&fence))
+        .expect("gated submit");
     let in_use = "VUID-vkUpdateDescriptorSets-None-03047";
     assert_eq!(vuid(d.update_descriptor_sets(&[write], &[])), in_use);
     assert_silent(&s.messages);
@@ -939,7 +941,7 @@ fn sets_in_use_are_not_rewritten() {
         .expect("an update after the wait");
     d.reset_fences(&[&fence]).expect("reset");
     let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), invalid);
+    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), invalid);
     assert_silent(&s.messages);
 }
 
@@ -1144,7 +1146,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         s.messages.abort_on_error(true);
         // SAFETY: as above.
-        let r = unsafe { s.queue.queue_submit_unchecked(&submit, &fence) };
+        let r = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
         s.messages.abort_on_error(false);
         let said = s.messages.take();
         assert!(
@@ -1171,11 +1173,11 @@ fn image_descriptors_are_read_in_their_layouts() {
     rec.end().expect("end");
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
-    assert_eq!(vuid(s.queue.queue_submit(&submit, &fence)), rule);
+    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), rule);
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
     // SAFETY: the layer names the rule (lavapipe reads the image whatever its layout).
-    let r = unsafe { s.queue.queue_submit_unchecked(&submit, &fence) };
+    let r = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
     s.messages.abort_on_error(false);
     // Across command buffers the 1.3.239 layer states the same mismatch without the
     // rule's VUID.
@@ -1197,7 +1199,7 @@ fn image_descriptors_are_read_in_their_layouts() {
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
     s.queue
-        .queue_submit(&submit, &fence)
+        .queue_submit(&submit, Some(&fence))
         .expect("a dispatch of a GENERAL image");
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),

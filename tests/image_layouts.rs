@@ -536,8 +536,10 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(cbs);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)?;
+    s.queue.queue_submit(
+        &[tuff::SubmitInfo::new().command_buffers(&handles)],
+        Some(&fence),
+    )?;
     let waited = s
         .device
         .wait_for_fences(&[&fence], true, u64::MAX)

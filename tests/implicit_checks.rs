@@ -105,7 +105,7 @@ fn objects_of_another_device_are_refused() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence of the other device");
     assert_eq!(
-        vuid(s.queue.queue_submit(&[], &foreign_fence)),
+        vuid(s.queue.queue_submit(&[], Some(&foreign_fence))),
         "VUID-vkQueueSubmit-commonparent"
     );
     assert_silent(&s.messages);

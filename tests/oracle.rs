@@ -2389,7 +2389,10 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            Some(&fence),
+        )
         .expect("submit");
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);

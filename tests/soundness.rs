@@ -84,8 +84,10 @@ fn record_gated_fill(
 
 fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff::Result<()> {
     let handles = tuff::HandleSlice::new(cbs);
-    s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], fence)
+    s.queue.queue_submit(
+        &[tuff::SubmitInfo::new().command_buffers(&handles)],
+        Some(fence),
+    )
 }
 
 fn wait(s: &Setup, fence: &tuff::Fence) {
@@ -94,6 +96,47 @@ fn wait(s: &Setup, fence: &tuff::Fence) {
         .wait_for_fences(&[fence], true, u64::MAX)
         .expect("wait");
     assert_eq!(r, vk::Result::SUCCESS);
+}
+
+/// A submission without a fence (Vulkan allows none): the queue holds what it uses
+/// until an idle wait, or a later fence of the queue, shows it complete; the command
+/// buffer stays pending until then, so it cannot be re-recorded under the GPU.
+#[test]
+fn a_submission_without_a_fence_is_held_by_its_queue() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let gate = event(&s);
+    let later = fence(&s);
+    {
+        let (buffer, memory) = transfer_buffer(&s);
+        let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        record_gated_fill(
+            &mut cb,
+            vk::CommandBufferUsageFlags::empty(),
+            &gate,
+            &buffer,
+        );
+        let handles = tuff::HandleSlice::new(&[&cb]);
+        s.queue
+            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], None)
+            .expect("submit without a fence");
+        // Pending: recording it again is refused.
+        assert!(cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .is_err_and(|e| e.to_string().contains("pending")));
+        // Everything the submission uses goes while it waits for the host.
+        drop(cb);
+        drop(pool);
+        drop(buffer);
+        drop(memory);
+    }
+    // A later fenced submission of the same queue completes the first with it.
+    submit(&s, &[], &later).expect("a later submission with a fence");
+    s.device.set_event(&gate).expect("set event");
+    wait(&s, &later);
+    // And an idle wait shows the rest complete.
+    s.queue.queue_wait_idle().expect("idle");
+    assert_silent(&s.messages);
 }
 
 #[test]
@@ -118,7 +161,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         let submits = [tuff::SubmitInfo2::new()
             .command_buffer_infos(&cb_infos)
             .signal_semaphore_infos(&signal_infos)];
-        unsafe { s.queue.queue_submit2(&submits, &done) }.expect("submit2");
+        unsafe { s.queue.queue_submit2(&submits, Some(&done)) }.expect("submit2");
         // Everything the submission uses goes while it waits for the host.
         drop(cb);
         drop(pool);
@@ -245,11 +288,11 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)],
-                &first,
+                Some(&first),
             )
             .expect("first submit");
         s.queue
-            .queue_submit(&[], &second)
+            .queue_submit(&[], Some(&second))
             .expect("second submit, no command buffers");
     }
     // The semaphore is in use by the pending batch; the second fence has no command
@@ -275,14 +318,14 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00063"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.queue_submit2(&[], &signalled) }),
+        vuid(unsafe { s.queue.queue_submit2(&[], Some(&signalled)) }),
         "VUID-vkQueueSubmit2-fence-04894"
     );
     assert_silent(&s.messages);
     // The same call without tuff's checks: the layer names the same rule.
     // SAFETY: an empty submission with a signalled fence breaks only the rule under
     // test, which the layer reports; the fence is waited for before it goes.
-    unsafe { s.queue.queue_submit_unchecked(&[], &signalled) }.expect("unchecked submit");
+    unsafe { s.queue.queue_submit_unchecked(&[], Some(&signalled)) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00063");
     s.queue.queue_wait_idle().expect("idle");
     let signalled = s
@@ -290,7 +333,7 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
         .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
         .expect("fence");
     // SAFETY: as above.
-    unsafe { s.queue.queue_submit2_unchecked(&[], &signalled) }.expect("unchecked submit2");
+    unsafe { s.queue.queue_submit2_unchecked(&[], Some(&signalled)) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04894");
     s.queue.queue_wait_idle().expect("idle");
     let signalled = s
@@ -331,7 +374,7 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00064"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.queue_submit2(&[], &done) }),
+        vuid(unsafe { s.queue.queue_submit2(&[], Some(&done)) }),
         "VUID-vkQueueSubmit2-fence-04895"
     );
     assert_eq!(
@@ -351,10 +394,10 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
     // program keeps the buffer and the command buffer until the queue is idle.
     // SAFETY: an empty submission signals the fence after the pending one; the
     // reset only breaks the rule under test.
-    unsafe { s.queue.queue_submit_unchecked(&[], &done) }.expect("unchecked submit");
+    unsafe { s.queue.queue_submit_unchecked(&[], Some(&done)) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00064");
     // SAFETY: as above.
-    unsafe { s.queue.queue_submit2_unchecked(&[], &done) }.expect("unchecked submit2");
+    unsafe { s.queue.queue_submit2_unchecked(&[], Some(&done)) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04895");
     // SAFETY: as above; an empty bind binds nothing (and lavapipe refuses it).
     let _ = unsafe { s.queue.queue_bind_sparse_unchecked(&[], &done) };
@@ -447,8 +490,10 @@ fn command_buffers_in_the_wrong_state_are_refused() {
         // secondary's fill as a primary's; the program keeps everything until the
         // fence is waited for.
         unsafe {
-            s.queue
-                .queue_submit_unchecked(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+            s.queue.queue_submit_unchecked(
+                &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+                Some(&done),
+            )
         }
         .expect("unchecked submit");
         assert_layer_reports(&s, rule);
@@ -1072,7 +1117,10 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
                     queue
-                        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+                        .queue_submit(
+                            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+                            Some(&done),
+                        )
                         .expect("submit");
                     wait(s, &done);
                     s.device.reset_fences(&[&done]).expect("reset");
@@ -1255,7 +1303,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let timelines = tuff::HandleSlice::new(&[&timeline]);
     let no_values = s.queue.queue_submit(
         &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
-        &done,
+        Some(&done),
     );
     assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
     // A count without values, and values of another count.
@@ -1264,7 +1312,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         &[tuff::SubmitInfo::new()
             .signal_semaphores(&timelines)
             .push_next(&mut counted)],
-        &done,
+        Some(&done),
     );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
@@ -1272,7 +1320,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         &[tuff::SubmitInfo::new()
             .signal_semaphores(&timelines)
             .push_next(&mut two)],
-        &done,
+        Some(&done),
     );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     // Waits on a timeline semaphore with values of another count.
@@ -1283,7 +1331,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
             .wait_semaphores(&timelines, &stages)
             .expect("one stage per semaphore")
             .push_next(&mut two_waits)],
-        &done,
+        Some(&done),
     );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03240");
     assert_silent(&s.messages);
@@ -1294,7 +1342,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
             &[tuff::SubmitInfo::new()
                 .signal_semaphores(&timelines)
                 .push_next(&mut one)],
-            &done,
+            Some(&done),
         )
         .expect("submit with its value");
     let wait_one = tuff::SemaphoreWaitInfo::new()
@@ -1339,7 +1387,7 @@ impl Submitter {
                 unsafe {
                     s.queue.queue_submit2(
                         &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
-                        fence,
+                        Some(fence),
                     )
                 }
             }
@@ -1514,7 +1562,7 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)
                     .push_next(&mut values)],
-                &done,
+                Some(&done),
             )
             .expect("submit");
     }
@@ -2380,7 +2428,7 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
         s.queue
             .queue_submit(
                 &[tuff::SubmitInfo::new().signal_semaphores(&signals)],
-                &first,
+                Some(&first),
             )
             .expect("signal");
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -2450,12 +2498,12 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
                 batch = batch.push_next(&mut group);
             }
             let batch = [batch];
-            assert_eq!(vuid(s.queue.queue_submit(&batch, &done)), expected);
+            assert_eq!(vuid(s.queue.queue_submit(&batch, Some(&done))), expected);
             s.messages.take();
             s.messages.abort_on_error(true);
             // SAFETY: the layer skips the submission, which breaks only the rule under
             // test.
-            let _ = unsafe { s.queue.queue_submit_unchecked(&batch, &done) };
+            let _ = unsafe { s.queue.queue_submit_unchecked(&batch, Some(&done)) };
             s.messages.abort_on_error(false);
             if expected.ends_with("-00085") {
                 let said = s.messages.take();
@@ -3183,7 +3231,7 @@ fn indices_and_chained_counts_match_what_they_index() {
     let batch = [tuff::SubmitInfo::new().push_next(&mut group)];
     let done = fence(&s);
     assert_eq!(
-        vuid(s.queue.queue_submit(&batch, &done)),
+        vuid(s.queue.queue_submit(&batch, Some(&done))),
         "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
     );
     let set_layout = d
@@ -3206,7 +3254,7 @@ fn indices_and_chained_counts_match_what_they_index() {
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
     // SAFETY: the layer skips the call, which breaks only the rule under test.
-    let r = unsafe { s.queue.queue_submit_unchecked(&batch, &done) };
+    let r = unsafe { s.queue.queue_submit_unchecked(&batch, Some(&done)) };
     assert!(r.is_err(), "the layer skipped the call");
     assert_layer_reports(&s, "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083");
     // SAFETY: as above.

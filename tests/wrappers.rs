@@ -161,7 +161,10 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     rec.end().expect("end");
     let handles = tuff::HandleSlice::new(&[&cbs[0]]);
     s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            Some(&fence),
+        )
         .expect("submit");
     let ColorTarget {
         image,
@@ -291,7 +294,9 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
         let submits = [tuff::SubmitInfo::new().command_buffers(&cb_handles)];
-        s.queue.queue_submit(&submits, &fence).expect("submit");
+        s.queue
+            .queue_submit(&submits, Some(&fence))
+            .expect("submit");
         // Everything the submission uses goes while it may still run; the fence
         // keeps the command buffer, and through it the buffer and memory, alive.
         let _ = submits;
@@ -431,7 +436,7 @@ fn present_one_frame(
                 .expect("one stage per semaphore")
                 .command_buffers(&cbs)
                 .signal_semaphores(&signals)],
-            &fence,
+            Some(&fence),
         )
         .expect("submit");
     let swapchains = tuff::HandleSlice::new(&[swapchain]);
@@ -730,7 +735,10 @@ fn pipelines_draw_and_dispatch() {
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            Some(&fence),
+        )
         .expect("submit");
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
     assert_eq!(status, vk::Result::SUCCESS);
@@ -801,7 +809,10 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], &fence)
+        .queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            Some(&fence),
+        )
         .expect("submit");
     drop(kept);
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
@@ -1483,7 +1494,10 @@ fn acquire_for_present(
         .expect("fence");
     let cbs = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&cbs)], &done)
+        .queue_submit(
+            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+            Some(&done),
+        )
         .expect("submit");
     assert_eq!(
         d.wait_for_fences(&[&done], true, u64::MAX).expect("moved"),
@@ -1701,7 +1715,9 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    s.queue.queue_submit(&gated, &done).expect("gated submit");
+    s.queue
+        .queue_submit(&gated, Some(&done))
+        .expect("gated submit");
     // A second wait on it, with no signal between, is refused too.
     let unsignaled_wait = "VUID-vkQueueSubmit-pWaitSemaphores-03238";
     let one_wait = tuff::HandleSlice::new(&[&acquired]);
@@ -1711,12 +1727,12 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .expect("one stage per wait")];
     let other = fence(unsignaled);
     assert_eq!(
-        refused(s.queue.queue_submit(&second, &other)),
+        refused(s.queue.queue_submit(&second, Some(&other))),
         unsignaled_wait
     );
     layer_names(&s, unsignaled_wait, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&second, &other) };
+        let _ = unsafe { s.queue.queue_submit_unchecked(&second, Some(&other)) };
     });
     let pending = "VUID-vkAcquireNextImageKHR-semaphore-01779";
     assert_eq!(
@@ -1742,11 +1758,11 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     let twice = semaphore();
     let signals = tuff::HandleSlice::new(&[&twice]);
     let signal = [tuff::SubmitInfo::new().signal_semaphores(&signals)];
-    s.queue.queue_submit(&signal, &other).expect("signal");
+    s.queue.queue_submit(&signal, Some(&other)).expect("signal");
     let signaled_again = "VUID-vkQueueSubmit-pSignalSemaphores-00067";
     let third = fence(unsignaled);
     assert_eq!(
-        refused(s.queue.queue_submit(&signal, &third)),
+        refused(s.queue.queue_submit(&signal, Some(&third))),
         signaled_again
     );
     // The 1.3.239 layer reports this rule under an unassigned name ("... was
@@ -1756,7 +1772,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         "UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress",
         || {
             // SAFETY: the layer reports the rule and skips the call.
-            let _ = unsafe { s.queue.queue_submit_unchecked(&signal, &third) };
+            let _ = unsafe { s.queue.queue_submit_unchecked(&signal, Some(&third)) };
         },
     );
     // A presentation that waits on a semaphore nothing signals.

@@ -244,14 +244,14 @@ impl Frame<'_> {
             #[allow(unused_unsafe)]
             // SAFETY: where `queue_submit` is `unsafe`, so is this method, and its caller
             // upholds the rules of this submission.
-            let submitted = unsafe { queue.queue_submit(&[info], self.fence) };
+            let submitted = unsafe { queue.queue_submit(&[info], Some(self.fence)) };
             if let Err(e) = submitted {
                 // An empty batch signals the fence once the queue's earlier work is done,
                 // so the next wait for this frame does not hang on a failed submission.
                 #[allow(unused_unsafe)]
                 // SAFETY: an empty batch has no command buffer or semaphore for a rule to
                 // be about.
-                let _ = unsafe { queue.queue_submit(&[], self.fence) };
+                let _ = unsafe { queue.queue_submit(&[], Some(self.fence)) };
                 return Err(e);
             }
             // The submission holds its semaphores; the frame needs a new recording.

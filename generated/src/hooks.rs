@@ -117,7 +117,7 @@ unsafe fn check_batch(
 pub(crate) fn queue_submit_checks(
     queue: &Queue,
     submits: &[SubmitInfo<'_>],
-    fence: &Fence,
+    fence: Option<&Fence>,
 ) -> Result<()> {
     submit_checks(
         queue,
@@ -332,7 +332,7 @@ pub(crate) fn sampler_created(
 pub(crate) fn queue_submit2_checks(
     queue: &Queue,
     submits: &[SubmitInfo2<'_>],
-    fence: &Fence,
+    fence: Option<&Fence>,
 ) -> Result<()> {
     submit_checks(
         queue,
@@ -424,19 +424,22 @@ pub(crate) fn queue_bind_sparse_checks(
 
 fn submit_checks(
     queue: &Queue,
-    fence: &Fence,
+    fence: Option<&Fence>,
     cbs: &[vk::CommandBuffer],
     rules: &SubmitRules,
 ) -> Result<()> {
-    submission::check_fence(fence, rules)?;
+    if let Some(fence) = fence {
+        submission::check_fence(fence, rules)?;
+    }
     submission::check_command_buffers(queue.parent(), cbs, rules)?;
     submission::check_layouts(queue.parent(), cbs)
 }
 
 /// After `vkQueueSubmit`: the fence holds everything the submission names (its
 /// command buffers, which keep what their recordings use, its semaphores, and whatever
-/// else its structs reach) until the submission is known complete.
-pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: &Fence) {
+/// else its structs reach) until the submission is known complete; without a fence,
+/// the queue does, until a later fence of the queue or an idle wait shows it complete.
+pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: Option<&Fence>) {
     let device = queue.parent();
     let mut kept = Vec::new();
     for s in submits {
@@ -445,15 +448,22 @@ pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence
     }
     let batches = submission::submit_timeline_batches(device.live(), submits);
     let cbs = submit_command_buffers(submits);
-    let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
     let ops = submit_semaphore_ops(submits);
     submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
     let values = submission::submit_timeline_ops(device.live(), submits);
     submission::record_timeline_values(device.live(), &values, &sub);
+    if fence.is_none() {
+        queue.hold(sub);
+    }
 }
 
 /// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
-pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fence: &Fence) {
+pub(crate) fn queue_submit2_done(
+    queue: &Queue,
+    submits: &[SubmitInfo2<'_>],
+    fence: Option<&Fence>,
+) {
     let device = queue.parent();
     let mut kept = Vec::new();
     for s in submits {
@@ -462,7 +472,7 @@ pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fen
     }
     let batches = submission::submit2_timeline_batches(device.live(), submits);
     let cbs = submit2_command_buffers(submits);
-    let sub = submission::submitted(device, queue.raw(), Some(fence), &cbs, kept, batches);
+    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
     let ops = submit2_semaphore_ops(submits);
     submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
     let live = device.live();
@@ -487,6 +497,9 @@ pub(crate) fn queue_submit2_done(queue: &Queue, submits: &[SubmitInfo2<'_>], fen
         values.extend(ops);
     }
     submission::record_timeline_values(live, &values, &sub);
+    if fence.is_none() {
+        queue.hold(sub);
+    }
 }
 
 /// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal

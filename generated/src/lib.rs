@@ -129,7 +129,7 @@
 //!     // until it is seen signalled.
 //!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
 //!     let submitted = tuff::HandleSlice::new(&[&cb]);
-//!     queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], &fence)?;
+//!     queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], Some(&fence))?;
 //!     device.wait_for_fences(&[&fence], true, u64::MAX)?;
 //!     Ok(buffer.memory().read::<u32>(0, 64)?)
 //! }

@@ -192,7 +192,7 @@ impl Queue {
             #[allow(unused_unsafe)]
             // SAFETY: where `queue_submit` is `unsafe`, so is this method, and its
             // caller upholds the rules of this submission.
-            unsafe { self.queue_submit(&[SubmitInfo::new().command_buffers(&submitted)], &fence) }?;
+            unsafe { self.queue_submit(&[SubmitInfo::new().command_buffers(&submitted)], Some(&fence)) }?;
             match device.wait_for_fences(&[&fence], true, u64::MAX)? {
                 vk::Result::SUCCESS => Ok(out),
                 other => Err(Error::Vk(other)),

@@ -230,10 +230,10 @@ fn submits_tuff(b: &Bench, checked: bool) {
         let cbs = tuff::HandleSlice::new(&one);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         let r = if checked {
-            b.s.queue.queue_submit(&submit, fence)
+            b.s.queue.queue_submit(&submit, Some(fence))
         } else {
             // SAFETY: as in `submits_ash`.
-            unsafe { b.s.queue.queue_submit_unchecked(&submit, fence) }
+            unsafe { b.s.queue.queue_submit_unchecked(&submit, Some(fence)) }
         };
         r.expect("submit");
     }

@@ -112,11 +112,11 @@ fn submit2(
             .expect("fence")
     };
     let (a, b) = (fence(), fence());
-    let safe = unsafe { s.queue.queue_submit2(safe, &a) };
+    let safe = unsafe { s.queue.queue_submit2(safe, Some(&a)) };
     // SAFETY: as in `buffer_create_info`; the queue is idle again before the
     // fences and semaphores are dropped.
     let layer = under_layer(s, || {
-        let _ = unsafe { s.queue.queue_submit2_unchecked(unchecked, &b) };
+        let _ = unsafe { s.queue.queue_submit2_unchecked(unchecked, Some(&b)) };
     });
     s.queue.queue_wait_idle().expect("wait idle");
     Outcome { safe, layer }

@@ -4265,8 +4265,8 @@ impl Queue {
     pub(crate) fn queue_flags(&self) -> vk::QueueFlags {
         self.inner.queue_flags.get().copied().unwrap_or_default()
     }
-    /// Holds a queue operation without a fence (a presentation) until
-    /// it is known complete.
+    /// Holds a queue operation without a fence (a presentation, or a submission
+    /// without one) until it is known complete.
     #[allow(dead_code)]
     pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
         let done: Vec<_> = {

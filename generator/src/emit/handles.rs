@@ -869,8 +869,8 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                 quote!(#i unfenced: Vutex::new(Vec::new()),),
                 quote! {
                     #fns
-                    /// Holds a queue operation without a fence (a presentation) until
-                    /// it is known complete.
+                    /// Holds a queue operation without a fence (a presentation, or a submission
+                    /// without one) until it is known complete.
                     #[allow(dead_code)]
                     pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
                         let done: Vec<_> = {

@@ -83,9 +83,10 @@ pub struct Special {
     pub scope: Option<Call>,
     /// What the created object keeps alive of what its create info names.
     pub keeps: Keeps,
-    /// Optional parameters the method takes as required (C names): a submission's
-    /// fence is what keeps the submitted command buffers alive until they complete,
-    /// and queue operations have no other completion a host can see.
+    /// Optional parameters the method takes as required (C names): a sparse
+    /// binding's fence is the one completion a host can see of it. (A submission
+    /// without a fence is held by its queue until a later fence of that queue or an
+    /// idle wait shows it complete.)
     pub required: &'static [&'static str],
     /// The rules the row settles.
     pub settles: &'static [(&'static str, How)],
@@ -826,7 +827,6 @@ pub const SPECIALS: &[Special] = &[
         check: call("hooks::queue_submit_checks", &["self", "submits", "fence"]),
         hold: call("hooks::queue_submit_gate", &["self", "submits"]),
         after: call("hooks::queue_submit_done", &["self", "submits", "fence"]),
-        required: &["fence"],
         settles: &[
             ("VUID-vkQueueSubmit-fence-00063", How::Dynamic(FENCE)),
             ("VUID-vkQueueSubmit-fence-00064", How::Dynamic(FENCE)),
@@ -868,7 +868,6 @@ pub const SPECIALS: &[Special] = &[
         check: call("hooks::queue_submit2_checks", &["self", "submits", "fence"]),
         hold: call("hooks::queue_submit2_gate", &["self", "submits"]),
         after: call("hooks::queue_submit2_done", &["self", "submits", "fence"]),
-        required: &["fence"],
         settles: &[
             ("VUID-vkQueueSubmit2-fence-04894", How::Dynamic(FENCE)),
             ("VUID-vkQueueSubmit2-fence-04895", How::Dynamic(FENCE)),

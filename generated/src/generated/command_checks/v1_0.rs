@@ -842,17 +842,19 @@ impl Queue {
     pub(crate) fn validate_queue_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         let s = &self.parent().scope();
-        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkQueueSubmit-commonparent",
-                    "`fence` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
+        if let Some(h) = fence {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkQueueSubmit-commonparent",
+                        "`fence` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
         }
         for x in submits.iter() {
             crate::checks::check_submit_info(x, s)?;

@@ -105,17 +105,19 @@ impl Queue {
     pub(crate) fn validate_queue_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         let s = &self.parent().scope();
-        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkQueueSubmit2-commonparent",
-                    "`fence` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
-            );
+        if let Some(h) = fence {
+            if !s.owned_by_device(h.raw()) {
+                return Err(
+                    fail(
+                        "VUID-vkQueueSubmit2-commonparent",
+                        "`fence` does not come from the VkDevice the command is called on"
+                            .into(),
+                    ),
+                );
+            }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)

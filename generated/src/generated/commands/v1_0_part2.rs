@@ -715,13 +715,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
     pub fn queue_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
             tuff_runtime::lock_all(syncs)
         };
         crate::hooks::queue_submit_checks(self, submits, fence)?;
@@ -743,19 +745,26 @@ The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VU
     pub unsafe fn queue_submit_unchecked<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.parent().fns().fp_v1_0().queue_submit;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            fp(self.raw(), submits.len() as u32, submits.as_ptr().cast(), fence.raw())
+            fp(
+                self.raw(),
+                submits.len() as u32,
+                submits.as_ptr().cast(),
+                fence.map_or(vk::Fence::null(), |h| h.raw()),
+            )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));

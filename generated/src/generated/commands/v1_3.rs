@@ -422,13 +422,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
     pub unsafe fn queue_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
             tuff_runtime::lock_all(syncs)
         };
         crate::hooks::queue_submit2_checks(self, submits, fence)?;
@@ -450,19 +452,26 @@ The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `V
     pub unsafe fn queue_submit2_unchecked<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
-        fence: &Fence,
+        fence: Option<&Fence>,
     ) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
             syncs.push(self.host_sync().clone());
-            syncs.push(fence.host_sync().clone());
+            if let Some(h) = fence {
+                syncs.push(h.host_sync().clone());
+            }
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.parent().fns().fp_v1_3().queue_submit2;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            fp(self.raw(), submits.len() as u32, submits.as_ptr().cast(), fence.raw())
+            fp(
+                self.raw(),
+                submits.len() as u32,
+                submits.as_ptr().cast(),
+                fence.map_or(vk::Fence::null(), |h| h.raw()),
+            )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
