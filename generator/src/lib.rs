@@ -125,47 +125,10 @@ pub fn enabled_validity(
     validity::analyze_with(model, vu, &reach)
 }
 
-/// The method names the programs in the config's `scene_sources` call (every
-/// `.name(` in their `.rs` files). A folder that cannot be read names nothing.
-fn scene_calls(config_path: &Path, config: &config::Config) -> std::collections::BTreeSet<String> {
-    let base = config_path.parent().unwrap_or(Path::new("."));
-    let mut out = std::collections::BTreeSet::new();
-    let mut todo: Vec<PathBuf> = config.scene_sources.iter().map(|d| base.join(d)).collect();
-    while let Some(path) = todo.pop() {
-        if let Ok(entries) = std::fs::read_dir(&path) {
-            todo.extend(entries.filter_map(|e| e.ok().map(|e| e.path())));
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            let text = std::fs::read_to_string(&path).unwrap_or_default();
-            for (i, _) in text.match_indices('(') {
-                let name: String = text[..i]
-                    .chars()
-                    .rev()
-                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                    .collect::<Vec<_>>()
-                    .into_iter()
-                    .rev()
-                    .collect();
-                let before = text[..i - name.len()]
-                    .chars()
-                    .rev()
-                    .find(|c| !c.is_whitespace());
-                if !name.is_empty() && before == Some('.') {
-                    out.insert(name);
-                }
-            }
-        }
-    }
-    out
-}
-
-/// For the docs: the first statement of the example programs that calls each method
-/// (`.create_buffer(`) or makes each struct (`BufferCreateInfo::new(`), files in
-/// path order. Files that name `ash` are the raw-ash programs, whose calls are ash's,
-/// and are skipped.
-fn scene_snippets(
-    config_path: &Path,
-    config: &config::Config,
-) -> std::collections::BTreeMap<String, plan::Snippet> {
+/// The `.rs` files under the config's `scene_sources`, in path order, each with its
+/// path relative to the config's folder and its text, read once for every scan. A
+/// folder that cannot be read names nothing.
+fn scene_sources(config_path: &Path, config: &config::Config) -> Vec<(String, String)> {
     let base = config_path.parent().unwrap_or(Path::new("."));
     let mut files = Vec::new();
     let mut todo: Vec<PathBuf> = config.scene_sources.iter().map(|d| base.join(d)).collect();
@@ -177,41 +140,68 @@ fn scene_snippets(
         }
     }
     files.sort();
+    files
+        .into_iter()
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            let shown = path
+                .strip_prefix(base)
+                .unwrap_or(&path)
+                .to_string_lossy()
+                .replace('\\', "/");
+            (shown, text)
+        })
+        .collect()
+}
+
+/// The identifier `text` ends with (empty if none).
+fn trailing_ident(text: &str) -> &str {
+    let start = text
+        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .map_or(0, |at| at + 1);
+    &text[start..]
+}
+
+/// The method names the scene sources call (every `.name(`).
+fn scene_calls(sources: &[(String, String)]) -> std::collections::BTreeSet<String> {
+    let mut out = std::collections::BTreeSet::new();
+    for (_, text) in sources {
+        for (i, _) in text.match_indices('(') {
+            let name = trailing_ident(&text[..i]);
+            let before = text[..i - name.len()]
+                .chars()
+                .rev()
+                .find(|c| !c.is_whitespace());
+            if !name.is_empty() && before == Some('.') {
+                out.insert(name.to_owned());
+            }
+        }
+    }
+    out
+}
+
+/// For the docs: the first statement of the scene sources that calls each method
+/// (`.create_buffer(`) or makes each struct (`BufferCreateInfo::new(`), files in
+/// path order. Files that name `ash` are the raw-ash programs, whose calls are ash's,
+/// and are skipped.
+fn scene_snippets(
+    sources: &[(String, String)],
+) -> std::collections::BTreeMap<String, plan::Snippet> {
     let mut out = std::collections::BTreeMap::new();
-    for path in files {
-        let text = std::fs::read_to_string(&path).unwrap_or_default();
+    for (shown, text) in sources {
         if text.contains("ash::") || text.contains("use ash") {
             continue;
         }
-        let shown = path
-            .strip_prefix(base)
-            .unwrap_or(&path)
-            .to_string_lossy()
-            .replace('\\', "/");
         let lines: Vec<&str> = text.lines().collect();
         for (i, line) in lines.iter().enumerate() {
             let code = line.split("//").next().unwrap_or("");
             for (at, _) in code.match_indices('(') {
-                let name: String = code[..at]
-                    .chars()
-                    .rev()
-                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                    .collect::<Vec<_>>()
-                    .into_iter()
-                    .rev()
-                    .collect();
+                let name = trailing_ident(&code[..at]);
                 let before = &code[..at - name.len()];
                 let key = if before.ends_with('.') {
                     name
                 } else if name == "new" && before.ends_with("::") {
-                    let ty: String = before[..before.len() - 2]
-                        .chars()
-                        .rev()
-                        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                        .collect::<Vec<_>>()
-                        .into_iter()
-                        .rev()
-                        .collect();
+                    let ty = trailing_ident(&before[..before.len() - 2]);
                     if !ty.starts_with(|c: char| c.is_ascii_uppercase()) {
                         continue;
                     }
@@ -219,7 +209,7 @@ fn scene_snippets(
                 } else {
                     continue;
                 };
-                if key.is_empty() || out.contains_key(&key) {
+                if key.is_empty() || out.contains_key(key) {
                     continue;
                 }
                 if let Some(code) = statement(&lines, i) {
@@ -228,7 +218,7 @@ fn scene_snippets(
                         line: i + 1,
                         code,
                     };
-                    out.insert(key, snippet);
+                    out.insert(key.to_owned(), snippet);
                 }
             }
         }
@@ -333,7 +323,8 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
     let validity = enabled_validity(&model, vu.as_ref());
     let mut cx = plan::Context::new(&model, &validity);
-    cx.examples = scene_snippets(&opts.config, &config);
+    let sources = scene_sources(&opts.config, &config);
+    cx.examples = scene_snippets(&sources);
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans);
     let mut report = report::build(&model, &validity, &plans.records);
@@ -341,7 +332,7 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         &plans.methods,
         &plans.safety,
         &plans.enabling,
-        &scene_calls(&opts.config, &config),
+        &scene_calls(&sources),
     );
     let mut files = emission.files;
     files.extend(report::render(&report));
@@ -495,7 +486,7 @@ mod tests {
             reference_registry: None,
             scene_sources: vec!["scenes".into(), "missing".into()],
         };
-        let calls = scene_calls(&dir.path().join("tuff-gen.toml"), &config);
+        let calls = scene_calls(&scene_sources(&dir.path().join("tuff-gen.toml"), &config));
         assert_eq!(
             calls.into_iter().collect::<Vec<_>>(),
             ["cmd_draw", "create_buffer"]
@@ -519,7 +510,7 @@ mod tests {
             scene_sources: vec!["src".into()],
             ..Default::default()
         };
-        let s = scene_snippets(&dir.path().join("tuff-gen.toml"), &config);
+        let s = scene_snippets(&scene_sources(&dir.path().join("tuff-gen.toml"), &config));
         assert_eq!(
             s["BufferCreateInfo"].code,
             "// Why it holds.\nlet info = tuff::BufferCreateInfo::new()\n    .size(64);"

@@ -34,6 +34,12 @@ pub fn command_fn(name: &str) -> String {
     name.strip_prefix("vk").unwrap_or(name).to_snake_case()
 }
 
+/// The method of a command of the emitted API: `command_fn` of the name the emitted
+/// API knows it by ([`Model::spelling`]).
+pub fn method(model: &Model, command: &str) -> String {
+    command_fn(model.spelling(command))
+}
+
 /// A member or parameter name as ash spells it.
 pub fn field(name: &str) -> String {
     let snake = name.to_snake_case();

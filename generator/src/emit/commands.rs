@@ -8,7 +8,7 @@ use super::structs::safe_or_ash;
 use crate::model::CommandDef;
 use crate::model::Kind;
 use crate::model::LenEntry;
-use crate::names::{command_fn, field_ident, ident, level, param, table, type_ident, Level, Table};
+use crate::names::{field_ident, ident, level, param, table, type_ident, Level, Table};
 use crate::plan::checks::Checker;
 use crate::plan::commands::{
     parent_of, parent_param, recorded, Param, Plan, RecorderState, Transition,
@@ -193,7 +193,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = crate::names::cfg_of(model, model.condition(&plan.name));
-    let f = ident(&command_fn(model.spelling(&plan.name)));
+    let f = ident(&crate::names::method(model, &plan.name));
     // Commands recorded into a command buffer go on the recorder; the others of a
     // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,
     // so that no recorder of it is alive.
@@ -922,10 +922,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
         }
     } else {
-        let unchecked = ident(&format!(
-            "{}_unchecked",
-            command_fn(model.spelling(&plan.name))
-        ));
+        let unchecked = ident(&format!("{}_unchecked", f));
         let names: Vec<TokenStream> = args
             .iter()
             .filter_map(|a| a.clone().into_iter().next())
@@ -971,7 +968,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let unchecked_doc = format!(
             "`{}` without its dynamic checks.\n\n# Safety\n\nThe caller upholds the rules that [`Self::{}`] checks at run time{}.",
             plan.name,
-            command_fn(model.spelling(&plan.name)),
+            f,
             if owned.is_empty() {
                 " (those of the structs it takes)".to_owned()
             } else {
@@ -988,10 +985,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
         // The checks are a named method beside the command's, taking only the
         // arguments they read.
-        let validate = ident(&format!(
-            "validate_{}",
-            command_fn(model.spelling(&plan.name))
-        ));
+        let validate = ident(&format!("validate_{}", f));
         let read: Vec<(&TokenStream, &TokenStream)> = args
             .iter()
             .zip(&names)
@@ -1021,7 +1015,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         let v_doc = format!(
             "The dynamic checks of [`Self::{}`], run before the call.",
-            command_fn(model.spelling(&plan.name))
+            f
         );
         validator = (!checks.is_empty()).then(|| {
             quote! {

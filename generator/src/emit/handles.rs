@@ -382,10 +382,6 @@ fn emit_device(cx: &Context) -> TokenStream {
     }
 }
 
-fn command_fn_spelled(model: &crate::model::Model, command: &str) -> String {
-    crate::names::command_fn(model.spelling(command))
-}
-
 fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     let model = cx.model;
     let id = type_ident(name);
@@ -411,7 +407,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     // Where the example programs make one: the maker's docs show the statement
     // (kept there, so that this file stays short).
     if let Some((receiver, maker)) = handle.created_by.iter().find_map(|c| {
-        let m = command_fn_spelled(model, c);
+        let m = crate::names::method(model, c);
         let receiver = model.commands.get(c)?.params.first()?.type_name.clone();
         cx.examples
             .contains_key(&m)

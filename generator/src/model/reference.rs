@@ -399,22 +399,10 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
             .iter()
             .filter(|n| !out.contains_key(*n))
             .filter_map(|n| {
-                let named: Vec<&str> = match (model.types.get(n), model.commands.get(n)) {
-                    (Some(t), _) => t
-                        .alias
-                        .iter()
-                        .map(String::as_str)
-                        .chain(t.members.iter().map(|m| m.type_name.as_str()))
-                        .collect(),
-                    (None, Some(c)) => c
-                        .alias
-                        .iter()
-                        .map(String::as_str)
-                        .chain(c.params.iter().map(|p| p.type_name.as_str()))
-                        .collect(),
-                    (None, None) => Vec::new(),
-                };
-                let gone = named.into_iter().find(|x| out.contains_key(*x))?;
+                // The same walk as the model's requirement closure: aliases, member,
+                // parameter and result types, bit values, parents.
+                let named = super::references(n, &model.types, &model.commands);
+                let gone = named.into_iter().find(|x| out.contains_key(x))?;
                 Some((n.clone(), format!("it names `{gone}`, which is left out")))
             })
             .collect();

@@ -61,7 +61,7 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
             items.extend(seen);
             MethodRow {
                 command: plan.name.clone(),
-                method: crate::names::command_fn(model.spelling(&plan.name)),
+                method: crate::names::method(model, &plan.name),
                 items,
             }
         })
