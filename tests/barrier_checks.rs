@@ -8,7 +8,7 @@
 //! call with the rule's VUID, and the validation layer, for the `_unchecked` twin
 //! (told to skip the call it reports), must name the same VUID.
 //!
-//! SAFETY of the `unsafe` blocks: `cmd_pipeline_barrier` is `unsafe` for rules its
+//! SAFETY of the `unsafe` blocks: `pipeline_barrier` is `unsafe` for rules its
 //! `# Safety` section lists, which these barriers keep but for the one each case
 //! breaks on purpose, which tuff refuses and the layer skips; no command buffer is
 //! submitted.
@@ -173,7 +173,7 @@ impl<'a> Barrier<'a> {
         let (src, dst) = self.stages;
         unsafe {
             if unchecked {
-                rec.cmd_pipeline_barrier_unchecked(
+                rec.pipeline_barrier_unchecked(
                     src,
                     dst,
                     self.flags,
@@ -182,7 +182,7 @@ impl<'a> Barrier<'a> {
                     &self.images,
                 )
             } else {
-                rec.cmd_pipeline_barrier(
+                rec.pipeline_barrier(
                     src,
                     dst,
                     self.flags,
@@ -651,7 +651,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
         let safe = match b.record(&mut rec, false) {
             Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
             other => format!("{other:?}"),
@@ -661,7 +661,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
         let _ = b.record(&mut rec, true);
         s.messages.abort_on_error(false);
         let layer = s.messages.take();
-        rec.cmd_end_render_pass().end().expect("end");
+        rec.end_render_pass().end().expect("end");
         if safe != *rule || !layer.iter().any(|m| m.contains(rule)) {
             wrong.push(format!(
                 "tuff said {safe}, expected {rule}; the layer said {:?}",
@@ -702,7 +702,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
     to_attachment
         .record(&mut rec, false)
         .expect("to COLOR_ATTACHMENT_OPTIMAL");
-    let mut rec = unsafe { rec.cmd_begin_rendering(&info) };
+    let mut rec = unsafe { rec.begin_rendering(&info) };
     assert_eq!(vuid(b.record(&mut rec, false)), rule);
     s.messages.take();
     s.messages.abort_on_error(true);
@@ -713,7 +713,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
         layer.iter().any(|m| m.contains(rule)),
         "the layer did not name {rule}: {layer:?}"
     );
-    rec.cmd_end_rendering().end().expect("end");
+    rec.end_rendering().end().expect("end");
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert_silent(&s.messages);
 }

@@ -327,14 +327,14 @@ fn record(
         .regions(&region2);
     unsafe {
         match (which, unchecked) {
-            (0, false) => rec.cmd_copy_buffer_to_image(buffer, image, DST, &[region]),
-            (0, true) => rec.cmd_copy_buffer_to_image_unchecked(buffer, image, DST, &[region]),
-            (1, false) => rec.cmd_copy_image_to_buffer(image, SRC, buffer, &[region]),
-            (1, true) => rec.cmd_copy_image_to_buffer_unchecked(image, SRC, buffer, &[region]),
-            (2, false) => rec.cmd_copy_buffer_to_image2(&to_image),
-            (2, true) => rec.cmd_copy_buffer_to_image2_unchecked(&to_image),
-            (3, false) => rec.cmd_copy_image_to_buffer2(&to_buffer),
-            _ => rec.cmd_copy_image_to_buffer2_unchecked(&to_buffer),
+            (0, false) => rec.copy_buffer_to_image(buffer, image, DST, &[region]),
+            (0, true) => rec.copy_buffer_to_image_unchecked(buffer, image, DST, &[region]),
+            (1, false) => rec.copy_image_to_buffer(image, SRC, buffer, &[region]),
+            (1, true) => rec.copy_image_to_buffer_unchecked(image, SRC, buffer, &[region]),
+            (2, false) => rec.copy_buffer_to_image2(&to_image),
+            (2, true) => rec.copy_buffer_to_image2_unchecked(&to_image),
+            (3, false) => rec.copy_image_to_buffer2(&to_buffer),
+            _ => rec.copy_image_to_buffer2_unchecked(&to_buffer),
         }
     }
 }

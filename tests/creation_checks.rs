@@ -343,7 +343,7 @@ fn device_creation_rules_are_refused_and_the_layer_agrees() {
 fn allocation_rules_are_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = tuff_setup::setup(true);
-    let memory = s.physical.get_physical_device_memory_properties();
+    let memory = s.physical.get_memory_properties();
     let buffer = s
         .device
         .create_buffer(
@@ -894,7 +894,7 @@ fn create_image(s: &Setup, p: ImageParts) -> (tuff::Result<()>, Vec<String>) {
 fn image_rules_are_refused_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = tuff_setup::setup(true);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let depth = ImageParts {
         format: vk::Format::D32_SFLOAT_S8_UINT,
         usage: vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,

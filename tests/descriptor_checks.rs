@@ -533,7 +533,7 @@ fn buffer_descriptors_fit_their_type() {
     let _serial = vulkan::serial();
     let s = setup_full_features(true);
     let o = objects(&s);
-    let limits = s.device.parent().get_physical_device_properties().limits;
+    let limits = s.device.parent().get_properties().limits;
     let info = buffer_info;
     let null = info(None, 0, 16);
     let misaligned = info(Some(&o.buffer), 1, 16);
@@ -879,11 +879,11 @@ fn sets_in_use_are_not_rewritten() {
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-        assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), invalid);
+        assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), invalid);
         assert_silent(&s.messages);
         s.messages.abort_on_error(true);
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
+        let _ = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
         s.messages.abort_on_error(false);
         // The 1.3.239 layer names the invalid state by its cause.
         let cause = "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer-VkDescriptorSet";
@@ -913,9 +913,7 @@ fn sets_in_use_are_not_rewritten() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    s.queue
-        .queue_submit(&gated, Some(&fence))
-        .expect("gated submit");
+    s.queue.submit(&gated, Some(&fence)).expect("gated submit");
     let in_use = "VUID-vkUpdateDescriptorSets-None-03047";
     assert_eq!(vuid(d.update_descriptor_sets(&[write], &[])), in_use);
     assert_silent(&s.messages);
@@ -941,7 +939,7 @@ fn sets_in_use_are_not_rewritten() {
         .expect("an update after the wait");
     d.reset_fences(&[&fence]).expect("reset");
     let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
-    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), invalid);
+    assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), invalid);
     assert_silent(&s.messages);
 }
 
@@ -1080,7 +1078,7 @@ fn transition(rec: &mut tuff::Recorder<'_, tuff::Outside>, image: &tuff::Image, 
             base_array_layer: 0,
             layer_count: 1,
         });
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TOP_OF_PIPE,
         vk::PipelineStageFlags::COMPUTE_SHADER,
         vk::DependencyFlags::empty(),
@@ -1109,9 +1107,9 @@ fn image_descriptors_are_read_in_their_layouts() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let bind = |rec: &mut tuff::Recorder<'_, tuff::Outside>| {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+        rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
             .expect("pipeline");
-        rec.cmd_bind_descriptor_sets(
+        rec.bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &reader.layout,
             0,
@@ -1129,7 +1127,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .expect("begin");
     transition(&mut rec, &image, L::UNDEFINED, L::TRANSFER_DST_OPTIMAL);
     bind(&mut rec);
-    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), rule);
     drop(rec);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -1139,14 +1137,14 @@ fn image_descriptors_are_read_in_their_layouts() {
     // SAFETY: recorded for the layer, which names the rule at the submission, which
     // it checks after the driver took it (lavapipe reads the image whatever its
     // layout).
-    let _ = unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) };
+    let _ = unsafe { rec.dispatch_unchecked(1, 1, 1) };
     rec.end().expect("end");
     {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         s.messages.abort_on_error(true);
         // SAFETY: as above.
-        let r = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
+        let r = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
         s.messages.abort_on_error(false);
         let said = s.messages.take();
         assert!(
@@ -1168,16 +1166,16 @@ fn image_descriptors_are_read_in_their_layouts() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     bind(&mut rec);
-    rec.cmd_dispatch(1, 1, 1)
+    rec.dispatch(1, 1, 1)
         .expect("a dispatch of an image the recording leaves alone");
     rec.end().expect("end");
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
-    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), rule);
+    assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), rule);
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
     // SAFETY: the layer names the rule (lavapipe reads the image whatever its layout).
-    let r = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
+    let r = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
     s.messages.abort_on_error(false);
     // Across command buffers the 1.3.239 layer states the same mismatch without the
     // rule's VUID.
@@ -1199,7 +1197,7 @@ fn image_descriptors_are_read_in_their_layouts() {
     let both = tuff::HandleSlice::new(&[&first, &cb]);
     let submit = [tuff::SubmitInfo::new().command_buffers(&both)];
     s.queue
-        .queue_submit(&submit, Some(&fence))
+        .submit(&submit, Some(&fence))
         .expect("a dispatch of a GENERAL image");
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
@@ -1226,9 +1224,9 @@ fn dispatches_see_the_layouts_of_their_moment() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     transition(&mut rec, &image, L::UNDEFINED, L::GENERAL);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+    rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
         .expect("pipeline");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
@@ -1236,7 +1234,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[],
     )
     .expect("set");
-    rec.cmd_dispatch(1, 1, 1)
+    rec.dispatch(1, 1, 1)
         .expect("a dispatch of a GENERAL image");
     let after_read = tuff::ImageMemoryBarrier::new(&image)
         .old_layout(L::GENERAL)
@@ -1252,7 +1250,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
             base_array_layer: 0,
             layer_count: 1,
         });
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::COMPUTE_SHADER,
         vk::PipelineStageFlags::COMPUTE_SHADER,
         vk::DependencyFlags::empty(),
@@ -1261,16 +1259,16 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[after_read],
     )
     .expect("barrier");
-    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), rule);
     drop(rec);
 
     let both = image_reader_with(&s, &view, Some(&output), Some(&view), IMAGE_COMP);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &both.pipeline)
+    rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &both.pipeline)
         .expect("pipeline");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::COMPUTE,
         &both.layout,
         0,
@@ -1278,7 +1276,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         &[],
     )
     .expect("set");
-    assert_eq!(vuid(rec.cmd_dispatch(1, 1, 1)), rule);
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), rule);
     drop(rec);
     assert_silent(&s.messages);
 }
@@ -1348,9 +1346,9 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
         L::UNDEFINED,
         L::TRANSFER_DST_OPTIMAL,
     );
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+    rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
         .expect("pipeline");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
@@ -1359,7 +1357,7 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
     )
     .expect("set");
     assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
+        vuid(rec.dispatch(1, 1, 1)),
         "VUID-VkDescriptorImageInfo-imageLayout-00344"
     );
     drop(rec);
@@ -1423,9 +1421,9 @@ fn dispatches_read_views_their_shaders_can_read() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+                rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
                     .expect("pipeline");
-                rec.cmd_bind_descriptor_sets(
+                rec.bind_descriptor_sets(
                     vk::PipelineBindPoint::COMPUTE,
                     &reader.layout,
                     0,
@@ -1462,9 +1460,9 @@ fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+    rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
         .expect("pipeline");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
@@ -1472,10 +1470,7 @@ fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
         &[],
     )
     .expect("set");
-    assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
-        "VUID-vkCmdDispatch-None-02699"
-    );
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02699");
     drop(rec);
     assert_silent(&s.messages);
 }
@@ -1530,9 +1525,9 @@ fn dispatches_read_pushed_constants() {
             let mut rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)
+            rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)
                 .expect("pipeline");
-            rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])
+            rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])
                 .expect("set");
             if unchecked {
                 s.messages.abort_on_error(true);
@@ -1546,10 +1541,10 @@ fn dispatches_read_pushed_constants() {
                 assert_eq!(vuid(dispatch(&mut rec, &args, false)), rule);
                 assert_silent(&s.messages);
                 // Half the block pushed is not enough; all of it is.
-                rec.cmd_push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 0, &[0u8; 8])
+                rec.push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 0, &[0u8; 8])
                     .expect("push");
                 assert_eq!(vuid(dispatch(&mut rec, &args, false)), rule);
-                rec.cmd_push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 8, &[0u8; 8])
+                rec.push_constants(&layout, vk::ShaderStageFlags::COMPUTE, 8, &[0u8; 8])
                     .expect("push");
                 dispatch(&mut rec, &args, false).expect("a dispatch with its push constants");
             }
@@ -1580,9 +1575,9 @@ fn secondaries_leave_nothing_bound() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
+    rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &reader.pipeline)
         .expect("pipeline");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
@@ -1591,11 +1586,8 @@ fn secondaries_leave_nothing_bound() {
     )
     .expect("set");
     // SAFETY: the secondary records nothing; the dispatch is refused.
-    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
-    assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
-        "VUID-vkCmdDispatch-None-02700"
-    );
+    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02700");
     drop(rec);
     assert_silent(&s.messages);
 }
@@ -1611,23 +1603,23 @@ fn dispatch_commands() -> [(&'static str, Dispatch); 3] {
     [
         ("vkCmdDispatch", |r, _, unchecked| {
             if unchecked {
-                unsafe { r.cmd_dispatch_unchecked(1, 1, 1) }
+                unsafe { r.dispatch_unchecked(1, 1, 1) }
             } else {
-                r.cmd_dispatch(1, 1, 1)
+                r.dispatch(1, 1, 1)
             }
         }),
         ("vkCmdDispatchBase", |r, _, unchecked| {
             if unchecked {
-                unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
+                unsafe { r.dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
             } else {
-                unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) }
+                unsafe { r.dispatch_base(0, 0, 0, 1, 1, 1) }
             }
         }),
         ("vkCmdDispatchIndirect", |r, args, unchecked| {
             if unchecked {
-                unsafe { r.cmd_dispatch_indirect_unchecked(args, 0) }
+                unsafe { r.dispatch_indirect_unchecked(args, 0) }
             } else {
-                unsafe { r.cmd_dispatch_indirect(args, 0) }
+                unsafe { r.dispatch_indirect(args, 0) }
             }
         }),
     ]

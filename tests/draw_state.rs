@@ -114,35 +114,25 @@ fn draws<'a, S: tuff::recorder::Inside + 'a>(
         };
     }
     let indexed = move |r: &mut tuff::Recorder<'_, S>| {
-        r.cmd_bind_index_buffer(index, 0, vk::IndexType::UINT32)
+        r.bind_index_buffer(index, 0, vk::IndexType::UINT32)
             .expect("index buffer");
     };
     vec![
         (
             "vkCmdDraw",
-            Box::new(|r, u| call!(r, u, cmd_draw, cmd_draw_unchecked(3, 1, 0, 0))),
+            Box::new(|r, u| call!(r, u, draw, draw_unchecked(3, 1, 0, 0))),
         ),
         (
             "vkCmdDrawIndexed",
             Box::new(move |r, u| {
                 indexed(r);
-                call!(
-                    r,
-                    u,
-                    cmd_draw_indexed,
-                    cmd_draw_indexed_unchecked(3, 1, 0, 0, 0)
-                )
+                call!(r, u, draw_indexed, draw_indexed_unchecked(3, 1, 0, 0, 0))
             }),
         ),
         (
             "vkCmdDrawIndirect",
             Box::new(move |r, u| {
-                call!(
-                    r,
-                    u,
-                    cmd_draw_indirect,
-                    cmd_draw_indirect_unchecked(args, 0, 1, 16)
-                )
+                call!(r, u, draw_indirect, draw_indirect_unchecked(args, 0, 1, 16))
             }),
         ),
         (
@@ -152,8 +142,8 @@ fn draws<'a, S: tuff::recorder::Inside + 'a>(
                 call!(
                     r,
                     u,
-                    cmd_draw_indexed_indirect,
-                    cmd_draw_indexed_indirect_unchecked(args, 0, 1, 20)
+                    draw_indexed_indirect,
+                    draw_indexed_indirect_unchecked(args, 0, 1, 20)
                 )
             }),
         ),
@@ -163,8 +153,8 @@ fn draws<'a, S: tuff::recorder::Inside + 'a>(
                 call!(
                     r,
                     u,
-                    cmd_draw_indirect_count,
-                    cmd_draw_indirect_count_unchecked(args, 0, args, 64, 1, 16)
+                    draw_indirect_count,
+                    draw_indirect_count_unchecked(args, 0, args, 64, 1, 16)
                 )
             }),
         ),
@@ -175,8 +165,8 @@ fn draws<'a, S: tuff::recorder::Inside + 'a>(
                 call!(
                     r,
                     u,
-                    cmd_draw_indexed_indirect_count,
-                    cmd_draw_indexed_indirect_count_unchecked(args, 0, args, 64, 1, 20)
+                    draw_indexed_indirect_count,
+                    draw_indexed_indirect_count_unchecked(args, 0, args, 64, 1, 20)
                 )
             }),
         ),
@@ -200,11 +190,11 @@ fn set_viewport(r: &mut Inside<'_>) {
         max_depth: 1.0,
         ..Default::default()
     };
-    r.cmd_set_viewport(0, &[viewport]).expect("viewport");
+    r.set_viewport(0, &[viewport]).expect("viewport");
 }
 
 fn set_scissor(r: &mut Inside<'_>) {
-    r.cmd_set_scissor(0, &[area()]).expect("scissor");
+    r.set_scissor(0, &[area()]).expect("scissor");
 }
 
 #[test]
@@ -249,14 +239,14 @@ fn draws_check_their_pipeline_and_dynamic_state() {
         .collect();
     let extended = pipeline(&s, &p, &target.render_pass, 0, &all_dynamic);
     let set_named = |r: &mut Inside<'_>, state: D| match state {
-        D::PRIMITIVE_TOPOLOGY => r.cmd_set_primitive_topology(vk::PrimitiveTopology::TRIANGLE_LIST),
+        D::PRIMITIVE_TOPOLOGY => r.set_primitive_topology(vk::PrimitiveTopology::TRIANGLE_LIST),
         D::VERTEX_INPUT_BINDING_STRIDE => {
-            unsafe { r.cmd_bind_vertex_buffers2(0, &[&args], &[0], &[], &[16]) }
+            unsafe { r.bind_vertex_buffers2(0, &[&args], &[0], &[], &[16]) }
                 .expect("vertex buffer with its stride")
         }
-        D::RASTERIZER_DISCARD_ENABLE => r.cmd_set_rasterizer_discard_enable(false),
-        D::DEPTH_BIAS_ENABLE => r.cmd_set_depth_bias_enable(false),
-        D::PRIMITIVE_RESTART_ENABLE => r.cmd_set_primitive_restart_enable(false),
+        D::RASTERIZER_DISCARD_ENABLE => r.set_rasterizer_discard_enable(false),
+        D::DEPTH_BIAS_ENABLE => r.set_depth_bias_enable(false),
+        D::PRIMITIVE_RESTART_ENABLE => r.set_primitive_restart_enable(false),
         _ => unreachable!("a named state"),
     };
 
@@ -267,7 +257,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             "renderPass-02684".into(),
             false,
             Box::new(|r| {
-                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &incompatible)
+                r.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &incompatible)
                     .expect("bind");
                 set_viewport(r);
                 set_scissor(r);
@@ -277,7 +267,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             "commandBuffer-02701".into(),
             false,
             Box::new(|r| {
-                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
+                r.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
                     .expect("bind");
                 set_scissor(r);
             }),
@@ -286,11 +276,11 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             "None-02859".into(),
             false,
             Box::new(|r| {
-                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
+                r.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &plain)
                     .expect("bind");
                 set_viewport(r);
                 set_scissor(r);
-                r.cmd_set_line_width(1.0);
+                r.set_line_width(1.0);
             }),
         ),
     ];
@@ -300,7 +290,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
             suffix.into(),
             false,
             Box::new(move |r| {
-                r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, extended)
+                r.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, extended)
                     .expect("bind");
                 set_viewport(r);
                 set_scissor(r);
@@ -316,7 +306,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
         "subpass-02685".into(),
         true,
         Box::new(|r| {
-            r.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &second_subpass)
+            r.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &second_subpass)
                 .expect("bind");
             set_viewport(r);
             set_scissor(r);
@@ -340,7 +330,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
                 prepare(&mut rec);
                 pipelines::push_color(&mut rec, &p);
                 let r = draw(&mut rec, unchecked);
@@ -501,8 +491,8 @@ fn dynamic_rendering_draws_check_their_pipeline_formats() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.cmd_begin_rendering(rendering) };
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                let mut rec = unsafe { rec.begin_rendering(rendering) };
+                rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
                 let viewport = vk::Viewport {
                     width: SIZE as f32,
@@ -510,8 +500,8 @@ fn dynamic_rendering_draws_check_their_pipeline_formats() {
                     max_depth: 1.0,
                     ..Default::default()
                 };
-                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                rec.set_viewport(0, &[viewport]).expect("viewport");
+                rec.set_scissor(0, &[area()]).expect("scissor");
                 if unchecked {
                     s.messages.abort_on_error(true);
                     let _ = draw(&mut rec, true);
@@ -575,25 +565,25 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+            let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
                 .expect("bind");
             set_viewport(&mut rec);
             set_scissor(&mut rec);
-            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[offset])
+            rec.bind_vertex_buffers(0, &[&vertices], &[offset])
                 .expect("vertex buffer");
             if unchecked {
                 s.messages.abort_on_error(true);
-                let _ = unsafe { rec.cmd_draw_unchecked(count, 1, first, 0) };
+                let _ = unsafe { rec.draw_unchecked(count, 1, first, 0) };
                 s.messages.abort_on_error(false);
                 // The 1.3.239 layer does not check vertex fetches: tuff's error
                 // alone proves the rule (the command buffer is never submitted).
                 let said = s.messages.take();
                 assert!(said.is_empty(), "the layer said {said:?}");
             } else if refused {
-                assert_eq!(vuid(rec.cmd_draw(count, 1, first, 0)), rule);
+                assert_eq!(vuid(rec.draw(count, 1, first, 0)), rule);
             } else {
-                rec.cmd_draw(count, 1, first, 0)
+                rec.draw(count, 1, first, 0)
                     .expect("a draw inside the buffer");
             }
             drop(rec);
@@ -797,8 +787,8 @@ fn draws_read_pushed_constants() {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+            let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
                 .expect("bind");
             set_viewport(&mut rec);
             set_scissor(&mut rec);
@@ -815,7 +805,7 @@ fn draws_read_pushed_constants() {
                 assert_silent(&s.messages);
                 pipelines::push_color(&mut rec, &p);
                 draw(&mut rec, false).expect("a draw with its push constants");
-                rec.cmd_push_constants(&other, vk::ShaderStageFlags::VERTEX, 0, &[0u8; 4])
+                rec.push_constants(&other, vk::ShaderStageFlags::VERTEX, 0, &[0u8; 4])
                     .expect("push with another layout");
                 assert_eq!(vuid(draw(&mut rec, false)), rule);
             }
@@ -871,27 +861,24 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
             "viewportCount-03417",
             &viewport_with_count,
             Box::new(|r| {
-                r.cmd_set_viewport_with_count(&[viewport])
-                    .expect("viewports");
-                r.cmd_set_scissor(0, &[area(), area()]).expect("scissors");
+                r.set_viewport_with_count(&[viewport]).expect("viewports");
+                r.set_scissor(0, &[area(), area()]).expect("scissors");
             }),
         ),
         (
             "scissorCount-03418",
             &scissor_with_count,
             Box::new(|r| {
-                r.cmd_set_viewport(0, &[viewport, viewport])
-                    .expect("viewports");
-                r.cmd_set_scissor_with_count(&[area()]).expect("scissors");
+                r.set_viewport(0, &[viewport, viewport]).expect("viewports");
+                r.set_scissor_with_count(&[area()]).expect("scissors");
             }),
         ),
         (
             "viewportCount-03419",
             &both,
             Box::new(|r| {
-                r.cmd_set_viewport_with_count(&[viewport])
-                    .expect("viewports");
-                r.cmd_set_scissor_with_count(&[area(), area()])
+                r.set_viewport_with_count(&[viewport]).expect("viewports");
+                r.set_scissor_with_count(&[area(), area()])
                     .expect("scissors");
             }),
         ),
@@ -908,8 +895,8 @@ fn draws_use_the_viewport_and_scissor_counts_they_set() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
                 prepare(&mut rec);
                 pipelines::push_color(&mut rec, &p);
@@ -945,16 +932,16 @@ fn multiview_draws_stay_under_the_instance_limit() {
     let commands: [(&str, Direct); 2] = [
         ("vkCmdDraw", |r, unchecked| {
             if unchecked {
-                unsafe { r.cmd_draw_unchecked(3, 1, 0, u32::MAX) }
+                unsafe { r.draw_unchecked(3, 1, 0, u32::MAX) }
             } else {
-                r.cmd_draw(3, 1, 0, u32::MAX)
+                r.draw(3, 1, 0, u32::MAX)
             }
         }),
         ("vkCmdDrawIndexed", |r, unchecked| {
             if unchecked {
-                unsafe { r.cmd_draw_indexed_unchecked(3, 1, 0, 0, u32::MAX) }
+                unsafe { r.draw_indexed_unchecked(3, 1, 0, 0, u32::MAX) }
             } else {
-                r.cmd_draw_indexed(3, 1, 0, 0, u32::MAX)
+                r.draw_indexed(3, 1, 0, 0, u32::MAX)
             }
         }),
     ];
@@ -965,10 +952,10 @@ fn multiview_draws_stay_under_the_instance_limit() {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+            let mut rec = unsafe { rec.begin_rendering(&rendering) };
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
                 .expect("bind");
-            rec.cmd_bind_index_buffer(&index, 0, vk::IndexType::UINT32)
+            rec.bind_index_buffer(&index, 0, vk::IndexType::UINT32)
                 .expect("index buffer");
             let viewport = vk::Viewport {
                 width: SIZE as f32,
@@ -976,8 +963,8 @@ fn multiview_draws_stay_under_the_instance_limit() {
                 max_depth: 1.0,
                 ..Default::default()
             };
-            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-            rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+            rec.set_viewport(0, &[viewport]).expect("viewport");
+            rec.set_scissor(0, &[area()]).expect("scissor");
             // The 1.3.239 layer does not check the rule: tuff's error alone
             // proves it (the command buffer is never submitted).
             let r = draw(&mut rec, unchecked);
@@ -1156,11 +1143,11 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+                rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
-                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                rec.set_viewport(0, &[viewport]).expect("viewport");
+                rec.set_scissor(0, &[area()]).expect("scissor");
                 let r = draw(&mut rec, unchecked);
                 drop(rec);
                 r
@@ -1186,16 +1173,15 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_write)
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_write)
         .expect("bind");
-    rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-    rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-    rec.cmd_set_depth_write_enable(false);
-    rec.cmd_draw(3, 1, 0, 0)
-        .expect("a draw with depth writes off");
-    rec.cmd_set_depth_write_enable(true);
-    assert_eq!(vuid(rec.cmd_draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06886");
+    rec.set_viewport(0, &[viewport]).expect("viewport");
+    rec.set_scissor(0, &[area()]).expect("scissor");
+    rec.set_depth_write_enable(false);
+    rec.draw(3, 1, 0, 0).expect("a draw with depth writes off");
+    rec.set_depth_write_enable(true);
+    assert_eq!(vuid(rec.draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06886");
     drop(rec);
 
     // A pipeline that has the stencil operations static, bound in between, leaves
@@ -1219,32 +1205,31 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
         .expect("bind");
-    rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-    rec.cmd_set_scissor(0, &[area()]).expect("scissor");
-    rec.cmd_set_stencil_op(
+    rec.set_viewport(0, &[viewport]).expect("viewport");
+    rec.set_scissor(0, &[area()]).expect("scissor");
+    rec.set_stencil_op(
         vk::StencilFaceFlags::FRONT_AND_BACK,
         keep,
         keep,
         keep,
         vk::CompareOp::ALWAYS,
     );
-    rec.cmd_draw(3, 1, 0, 0)
-        .expect("a draw that keeps the stencil");
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pass_cases[1].1)
+    rec.draw(3, 1, 0, 0).expect("a draw that keeps the stencil");
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pass_cases[1].1)
         .expect("bind the static pipeline");
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &dynamic_ops)
         .expect("bind again");
-    rec.cmd_set_stencil_op(
+    rec.set_stencil_op(
         vk::StencilFaceFlags::FRONT,
         keep,
         keep,
         keep,
         vk::CompareOp::ALWAYS,
     );
-    assert_eq!(vuid(rec.cmd_draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06887");
+    assert_eq!(vuid(rec.draw(3, 1, 0, 0)), "VUID-vkCmdDraw-None-06887");
     drop(rec);
 
     // Dynamic rendering: the rule follows the layout of the attachment info (the
@@ -1313,11 +1298,11 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+                let mut rec = unsafe { rec.begin_rendering(&rendering) };
+                rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
-                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                rec.set_viewport(0, &[viewport]).expect("viewport");
+                rec.set_scissor(0, &[area()]).expect("scissor");
                 // The 1.3.239 layer does not check these rules: tuff's error
                 // alone proves them (the command buffer is never submitted).
                 let r = draw(&mut rec, unchecked);
@@ -1388,11 +1373,11 @@ fn draws_rasterize_their_attachments_samples() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
-                rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
+                let mut rec = unsafe { rec.begin_rendering(&rendering) };
+                rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
                     .expect("bind");
-                rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-                rec.cmd_set_scissor(0, &[area()]).expect("scissor");
+                rec.set_viewport(0, &[viewport]).expect("viewport");
+                rec.set_scissor(0, &[area()]).expect("scissor");
                 let r = draw(&mut rec, unchecked);
                 drop(rec);
                 r
@@ -1438,10 +1423,10 @@ fn record_descriptor_draw(
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &draw.pipeline)
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &draw.pipeline)
         .expect("bind");
-    rec.cmd_bind_descriptor_sets(
+    rec.bind_descriptor_sets(
         vk::PipelineBindPoint::GRAPHICS,
         &draw.layout,
         0,
@@ -1586,16 +1571,16 @@ fn indexed_draws_fetch_inside_their_vertex_buffers() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+        let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
             .expect("bind");
-        rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
+        rec.bind_vertex_buffers(0, &[&vertices], &[0])
             .expect("vertex buffer");
-        rec.cmd_bind_index_buffer(&indices, 0, vk::IndexType::UINT32)
+        rec.bind_index_buffer(&indices, 0, vk::IndexType::UINT32)
             .expect("index buffer");
         set_viewport(&mut rec);
         set_scissor(&mut rec);
-        let r = rec.cmd_draw_indexed(3, 1, 0, 0, 0);
+        let r = rec.draw_indexed(3, 1, 0, 0, 0);
         if robust {
             r.expect("a draw whose fetches robust buffer access keeps inside");
         } else {
@@ -1626,29 +1611,29 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
         (
             "vkCmdDispatch",
             Box::new(|r, unchecked| match unchecked {
-                true => unsafe { r.cmd_dispatch_unchecked(1, 1, 1) },
-                false => r.cmd_dispatch(1, 1, 1),
+                true => unsafe { r.dispatch_unchecked(1, 1, 1) },
+                false => r.dispatch(1, 1, 1),
             }),
         ),
         (
             "vkCmdDispatchBase",
             Box::new(|r, unchecked| match unchecked {
-                true => unsafe { r.cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1) },
-                false => unsafe { r.cmd_dispatch_base(0, 0, 0, 1, 1, 1) },
+                true => unsafe { r.dispatch_base_unchecked(0, 0, 0, 1, 1, 1) },
+                false => unsafe { r.dispatch_base(0, 0, 0, 1, 1, 1) },
             }),
         ),
         (
             "vkCmdDispatchIndirect",
             Box::new(|r, unchecked| match unchecked {
-                true => unsafe { r.cmd_dispatch_indirect_unchecked(&args, 0) },
-                false => unsafe { r.cmd_dispatch_indirect(&args, 0) },
+                true => unsafe { r.dispatch_indirect_unchecked(&args, 0) },
+                false => unsafe { r.dispatch_indirect(&args, 0) },
             }),
         ),
     ];
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+        r.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
-        r.cmd_bind_descriptor_sets(
+        r.bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
@@ -1665,7 +1650,7 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
             bind(&mut rec);
-            rec.cmd_set_line_width(1.0);
+            rec.set_line_width(1.0);
             dispatch(&mut rec, unchecked)
         });
         let mut rec = cb
@@ -1673,7 +1658,7 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
             .expect("begin");
         bind(&mut rec);
         dispatch(&mut rec, false).expect("a dispatch with nothing set since the bind");
-        rec.cmd_set_line_width(1.0);
+        rec.set_line_width(1.0);
         bind(&mut rec);
         dispatch(&mut rec, false).expect("a dispatch after the pipeline is bound again");
         rec.end().expect("end");

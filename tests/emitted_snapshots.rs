@@ -113,8 +113,8 @@ fn buffer_create_drop_and_bind() {
 #[test]
 fn cmd_draw() {
     let commands = parse("commands.rs");
-    let mut items = methods(&commands, &["cmd_draw", "cmd_draw_unchecked"]);
-    items.extend(methods(&parse("command_checks.rs"), &["validate_cmd_draw"]));
+    let mut items = methods(&commands, &["draw", "draw_unchecked"]);
+    items.extend(methods(&parse("command_checks.rs"), &["validate_draw"]));
     snapshot("emitted-vkCmdDraw", show(items));
 }
 
@@ -122,11 +122,8 @@ fn cmd_draw() {
 fn queue_submit_and_submit_info() {
     let commands = parse("commands.rs");
     let structs = parse("structs.rs");
-    let mut items = methods(&commands, &["queue_submit", "queue_submit_unchecked"]);
-    items.extend(methods(
-        &parse("command_checks.rs"),
-        &["validate_queue_submit"],
-    ));
+    let mut items = methods(&commands, &["submit", "submit_unchecked"]);
+    items.extend(methods(&parse("command_checks.rs"), &["validate_submit"]));
     items.extend(items_of(&structs, "SubmitInfo"));
     snapshot("emitted-vkQueueSubmit", show(items));
 }
@@ -136,11 +133,11 @@ fn cmd_begin_render_pass() {
     let commands = parse("commands.rs");
     let mut items = methods(
         &commands,
-        &["cmd_begin_render_pass", "cmd_begin_render_pass_unchecked"],
+        &["begin_render_pass", "begin_render_pass_unchecked"],
     );
     items.extend(methods(
         &parse("command_checks.rs"),
-        &["validate_cmd_begin_render_pass"],
+        &["validate_begin_render_pass"],
     ));
     snapshot("emitted-vkCmdBeginRenderPass", show(items));
 }

@@ -8,7 +8,7 @@ use common::root;
 use std::collections::BTreeMap;
 use tuff_gen::{config::Config, model::Model, plan, registry, Options};
 
-/// Each method's safety, by method name.
+/// Each method's safety, by command.
 type Safety = BTreeMap<String, bool>;
 /// Each refused extension with the VUIDs of the rules it would bring elsewhere.
 type Refused = Vec<(String, Vec<String>)>;
@@ -27,7 +27,7 @@ fn plan_for(config: &Config) -> (Safety, Refused) {
     let safety = plans
         .methods
         .iter()
-        .map(|m| (m.method.clone(), plans.safety[&m.command].safe()))
+        .map(|m| (m.command.clone(), plans.safety[&m.command].safe()))
         .collect();
     let refused = plans
         .enabling

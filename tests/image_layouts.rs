@@ -126,7 +126,7 @@ fn transition(
         .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .subresource_range(range(aspect));
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TRANSFER,
         vk::PipelineStageFlags::TRANSFER,
         vk::DependencyFlags::empty(),
@@ -232,9 +232,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdCopyBufferToImage-dstImageLayout-00180",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_copy_buffer_to_image_unchecked(&buffer, &b, GENERAL, &[buffer_region])
+                    rec.copy_buffer_to_image_unchecked(&buffer, &b, GENERAL, &[buffer_region])
                 } else {
-                    rec.cmd_copy_buffer_to_image(&buffer, &b, GENERAL, &[buffer_region])
+                    rec.copy_buffer_to_image(&buffer, &b, GENERAL, &[buffer_region])
                 }
             }),
         ),
@@ -242,9 +242,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_copy_image_to_buffer_unchecked(&a, GENERAL, &buffer, &[buffer_region])
+                    rec.copy_image_to_buffer_unchecked(&a, GENERAL, &buffer, &[buffer_region])
                 } else {
-                    rec.cmd_copy_image_to_buffer(&a, GENERAL, &buffer, &[buffer_region])
+                    rec.copy_image_to_buffer(&a, GENERAL, &buffer, &[buffer_region])
                 }
             }),
         ),
@@ -255,9 +255,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .dst_image_layout(GENERAL)
                     .regions(&buffer_region2);
                 if unchecked {
-                    rec.cmd_copy_buffer_to_image2_unchecked(&info)
+                    rec.copy_buffer_to_image2_unchecked(&info)
                 } else {
-                    rec.cmd_copy_buffer_to_image2(&info)
+                    rec.copy_buffer_to_image2(&info)
                 }
             }),
         ),
@@ -268,9 +268,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .src_image_layout(GENERAL)
                     .regions(&buffer_region2);
                 if unchecked {
-                    rec.cmd_copy_image_to_buffer2_unchecked(&info)
+                    rec.copy_image_to_buffer2_unchecked(&info)
                 } else {
-                    rec.cmd_copy_image_to_buffer2(&info)
+                    rec.copy_image_to_buffer2(&info)
                 }
             }),
         ),
@@ -278,9 +278,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdCopyImage-srcImageLayout-00128",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_copy_image_unchecked(&a, GENERAL, &b, DST, &[copy])
+                    rec.copy_image_unchecked(&a, GENERAL, &b, DST, &[copy])
                 } else {
-                    rec.cmd_copy_image(&a, GENERAL, &b, DST, &[copy])
+                    rec.copy_image(&a, GENERAL, &b, DST, &[copy])
                 }
             }),
         ),
@@ -288,9 +288,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdCopyImage-dstImageLayout-00133",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_copy_image_unchecked(&a, SRC, &b, GENERAL, &[copy])
+                    rec.copy_image_unchecked(&a, SRC, &b, GENERAL, &[copy])
                 } else {
-                    rec.cmd_copy_image(&a, SRC, &b, GENERAL, &[copy])
+                    rec.copy_image(&a, SRC, &b, GENERAL, &[copy])
                 }
             }),
         ),
@@ -302,9 +302,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .dst_image_layout(DST)
                     .regions(&copy2);
                 if unchecked {
-                    rec.cmd_copy_image2_unchecked(&info)
+                    rec.copy_image2_unchecked(&info)
                 } else {
-                    rec.cmd_copy_image2(&info)
+                    rec.copy_image2(&info)
                 }
             }),
         ),
@@ -316,9 +316,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .dst_image_layout(GENERAL)
                     .regions(&copy2);
                 if unchecked {
-                    rec.cmd_copy_image2_unchecked(&info)
+                    rec.copy_image2_unchecked(&info)
                 } else {
-                    rec.cmd_copy_image2(&info)
+                    rec.copy_image2(&info)
                 }
             }),
         ),
@@ -326,9 +326,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdBlitImage-srcImageLayout-00221",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_blit_image_unchecked(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
+                    rec.blit_image_unchecked(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
                 } else {
-                    rec.cmd_blit_image(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
+                    rec.blit_image(&a, GENERAL, &b, DST, &[blit], vk::Filter::NEAREST)
                 }
             }),
         ),
@@ -336,9 +336,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdBlitImage-dstImageLayout-00226",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_blit_image_unchecked(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
+                    rec.blit_image_unchecked(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
                 } else {
-                    rec.cmd_blit_image(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
+                    rec.blit_image(&a, SRC, &b, GENERAL, &[blit], vk::Filter::NEAREST)
                 }
             }),
         ),
@@ -351,9 +351,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .regions(&blit2)
                     .filter(vk::Filter::NEAREST);
                 if unchecked {
-                    rec.cmd_blit_image2_unchecked(&info)
+                    rec.blit_image2_unchecked(&info)
                 } else {
-                    rec.cmd_blit_image2(&info)
+                    rec.blit_image2(&info)
                 }
             }),
         ),
@@ -366,9 +366,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .regions(&blit2)
                     .filter(vk::Filter::NEAREST);
                 if unchecked {
-                    rec.cmd_blit_image2_unchecked(&info)
+                    rec.blit_image2_unchecked(&info)
                 } else {
-                    rec.cmd_blit_image2(&info)
+                    rec.blit_image2(&info)
                 }
             }),
         ),
@@ -376,9 +376,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdResolveImage-srcImageLayout-00260",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_resolve_image_unchecked(&multi, GENERAL, &b, DST, &[resolve])
+                    rec.resolve_image_unchecked(&multi, GENERAL, &b, DST, &[resolve])
                 } else {
-                    rec.cmd_resolve_image(&multi, GENERAL, &b, DST, &[resolve])
+                    rec.resolve_image(&multi, GENERAL, &b, DST, &[resolve])
                 }
             }),
         ),
@@ -386,9 +386,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdResolveImage-dstImageLayout-00262",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_resolve_image_unchecked(&multi, SRC, &b, GENERAL, &[resolve])
+                    rec.resolve_image_unchecked(&multi, SRC, &b, GENERAL, &[resolve])
                 } else {
-                    rec.cmd_resolve_image(&multi, SRC, &b, GENERAL, &[resolve])
+                    rec.resolve_image(&multi, SRC, &b, GENERAL, &[resolve])
                 }
             }),
         ),
@@ -400,9 +400,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .dst_image_layout(DST)
                     .regions(&resolve2);
                 if unchecked {
-                    rec.cmd_resolve_image2_unchecked(&info)
+                    rec.resolve_image2_unchecked(&info)
                 } else {
-                    rec.cmd_resolve_image2(&info)
+                    rec.resolve_image2(&info)
                 }
             }),
         ),
@@ -414,9 +414,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
                     .dst_image_layout(GENERAL)
                     .regions(&resolve2);
                 if unchecked {
-                    rec.cmd_resolve_image2_unchecked(&info)
+                    rec.resolve_image2_unchecked(&info)
                 } else {
-                    rec.cmd_resolve_image2(&info)
+                    rec.resolve_image2(&info)
                 }
             }),
         ),
@@ -424,9 +424,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             "VUID-vkCmdClearColorImage-imageLayout-00004",
             Box::new(|rec, unchecked| unsafe {
                 if unchecked {
-                    rec.cmd_clear_color_image_unchecked(&b, GENERAL, &clear, &[range(COLOR)])
+                    rec.clear_color_image_unchecked(&b, GENERAL, &clear, &[range(COLOR)])
                 } else {
-                    rec.cmd_clear_color_image(&b, GENERAL, &clear, &[range(COLOR)])
+                    rec.clear_color_image(&b, GENERAL, &clear, &[range(COLOR)])
                 }
             }),
         ),
@@ -435,14 +435,9 @@ fn each_command_that_names_a_layout_is_checked_and_the_layer_agrees() {
             Box::new(|rec, unchecked| unsafe {
                 let ranges = [range(depth_aspect)];
                 if unchecked {
-                    rec.cmd_clear_depth_stencil_image_unchecked(
-                        &depth,
-                        GENERAL,
-                        &clear_depth,
-                        &ranges,
-                    )
+                    rec.clear_depth_stencil_image_unchecked(&depth, GENERAL, &clear_depth, &ranges)
                 } else {
-                    rec.cmd_clear_depth_stencil_image(&depth, GENERAL, &clear_depth, &ranges)
+                    rec.clear_depth_stencil_image(&depth, GENERAL, &clear_depth, &ranges)
                 }
             }),
         ),
@@ -489,7 +484,7 @@ fn a_barrier_from_a_layout_the_image_is_not_in_is_refused_and_the_layer_agrees()
         .subresource_range(range(COLOR));
     layer_names(&s, rule, || {
         let _ = unsafe {
-            rec.cmd_pipeline_barrier_unchecked(
+            rec.pipeline_barrier_unchecked(
                 vk::PipelineStageFlags::TRANSFER,
                 vk::PipelineStageFlags::TRANSFER,
                 vk::DependencyFlags::empty(),
@@ -510,12 +505,9 @@ fn a_barrier_from_a_layout_the_image_is_not_in_is_refused_and_the_layer_agrees()
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .subresource_range(range(COLOR))];
     let dependency = tuff::DependencyInfo::new().image_memory_barriers(&barrier2);
-    assert_eq!(
-        vuid(unsafe { rec.cmd_pipeline_barrier2(&dependency) }),
-        rule2
-    );
+    assert_eq!(vuid(unsafe { rec.pipeline_barrier2(&dependency) }), rule2);
     layer_names(&s, rule2, || {
-        let _ = unsafe { rec.cmd_pipeline_barrier2_unchecked(&dependency) };
+        let _ = unsafe { rec.pipeline_barrier2_unchecked(&dependency) };
     });
     rec.end().expect("end");
     // The layout the recording left is the one a barrier may leave from (in a new
@@ -536,7 +528,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     let handles = tuff::HandleSlice::new(cbs);
-    s.queue.queue_submit(
+    s.queue.submit(
         &[tuff::SubmitInfo::new().command_buffers(&handles)],
         Some(&fence),
     )?;
@@ -577,14 +569,14 @@ fn layouts_are_followed_across_submissions() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     transition(&mut rec, &a, COLOR, UNDEFINED, DST).expect("to DST");
-    unsafe { rec.cmd_clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    unsafe { rec.clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
     rec.end().expect("end");
     // Reads the image in TRANSFER_SRC_OPTIMAL, which it sets nowhere.
     let (_pool2, mut read) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = read
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_copy_image_to_buffer(&a, SRC, &buffer, &[region])
+    rec.copy_image_to_buffer(&a, SRC, &buffer, &[region])
         .expect("copy");
     rec.end().expect("end");
     let (_pool3, mut to_src) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -630,7 +622,7 @@ fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin");
-    unsafe { rec.cmd_clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    unsafe { rec.clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
     rec.end().expect("end");
     let (_pool2, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = primary
@@ -638,11 +630,11 @@ fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
         .expect("begin");
     transition(&mut rec, &a, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
     assert_eq!(
-        vuid(unsafe { rec.cmd_execute_commands(&[&secondary]) }),
+        vuid(unsafe { rec.execute_commands(&[&secondary]) }),
         "VUID-vkCmdClearColorImage-imageLayout-00004"
     );
     transition(&mut rec, &a, COLOR, GENERAL, DST).expect("to DST");
-    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
     // The secondary leaves the image in TRANSFER_DST_OPTIMAL, as the primary knows.
     transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
     rec.end().expect("end");
@@ -787,17 +779,17 @@ fn render_pass_instance<'c>(
     unsafe {
         match (two, unchecked) {
             (false, false) => rec
-                .cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
-                .cmd_end_render_pass(),
+                .begin_render_pass(&begin, vk::SubpassContents::INLINE)
+                .end_render_pass(),
             (false, true) => rec
-                .cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
-                .cmd_end_render_pass_unchecked(),
+                .begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                .end_render_pass_unchecked(),
             (true, false) => rec
-                .cmd_begin_render_pass2(&begin, &contents)
-                .cmd_end_render_pass2(&end),
+                .begin_render_pass2(&begin, &contents)
+                .end_render_pass2(&end),
             (true, true) => rec
-                .cmd_begin_render_pass2_unchecked(&begin, &contents)
-                .cmd_end_render_pass2_unchecked(&end),
+                .begin_render_pass2_unchecked(&begin, &contents)
+                .end_render_pass2_unchecked(&end),
         }
     }
 }
@@ -882,7 +874,7 @@ fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
         .expect("begin");
     let mut rec = render_pass_instance(rec, &passes[0], false, false);
     // The final layout, TRANSFER_SRC_OPTIMAL, is the one the copy names.
-    rec.cmd_copy_image_to_buffer(&target.image, SRC, &buffer, &[region])
+    rec.copy_image_to_buffer(&target.image, SRC, &buffer, &[region])
         .expect("copy");
     rec.end().expect("end");
     assert_eq!(vuid(submit(&s, &[&load])), rules[0]);
@@ -891,8 +883,7 @@ fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     transition(&mut rec, &target.image, COLOR, UNDEFINED, DST).expect("to DST");
-    unsafe { rec.cmd_clear_color_image(&target.image, DST, &clear, &[range(COLOR)]) }
-        .expect("clear");
+    unsafe { rec.clear_color_image(&target.image, DST, &clear, &[range(COLOR)]) }.expect("clear");
     transition(&mut rec, &target.image, COLOR, DST, ATTACHMENT).expect("to ATTACHMENT");
     rec.end().expect("end");
     submit(&s, &[&prepare, &load]).expect("prepared, then loaded and copied");
@@ -931,11 +922,11 @@ fn a_render_pass_begin_is_checked_against_its_framebuffer() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         let rec = if two {
-            rec.cmd_begin_render_pass2(&begin, &contents)
-                .cmd_end_render_pass2(&end)
+            rec.begin_render_pass2(&begin, &contents)
+                .end_render_pass2(&end)
         } else {
-            rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
-                .cmd_end_render_pass()
+            rec.begin_render_pass(&begin, vk::SubpassContents::INLINE)
+                .end_render_pass()
         };
         assert_eq!(vuid(rec.end()), rule, "two: {two}");
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -946,11 +937,11 @@ fn a_render_pass_begin_is_checked_against_its_framebuffer() {
         s.messages.abort_on_error(true);
         let rec = unsafe {
             if two {
-                rec.cmd_begin_render_pass2_unchecked(&begin, &contents)
-                    .cmd_end_render_pass2_unchecked(&end)
+                rec.begin_render_pass2_unchecked(&begin, &contents)
+                    .end_render_pass2_unchecked(&end)
             } else {
-                rec.cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
-                    .cmd_end_render_pass_unchecked()
+                rec.begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                    .end_render_pass_unchecked()
             }
         };
         s.messages.abort_on_error(false);
@@ -1027,7 +1018,7 @@ fn a_device_group_render_pass_begin_is_checked() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let target = s.color_target(8, vk::ImageUsageFlags::empty());
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let area = |x: i32, y: i32, w: u32, h: u32| vk::Rect2D {
         offset: vk::Offset2D { x, y },
         extent: vk::Extent2D {
@@ -1074,8 +1065,8 @@ fn a_device_group_render_pass_begin_is_checked() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         let rec = rec
-            .cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE)
-            .cmd_end_render_pass();
+            .begin_render_pass(&begin, vk::SubpassContents::INLINE)
+            .end_render_pass();
         let said = match rec.end() {
             Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
             other => format!("{other:?}"),
@@ -1087,8 +1078,8 @@ fn a_device_group_render_pass_begin_is_checked() {
         s.messages.take();
         s.messages.abort_on_error(true);
         let rec = unsafe {
-            rec.cmd_begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
-                .cmd_end_render_pass_unchecked()
+            rec.begin_render_pass_unchecked(&begin, vk::SubpassContents::INLINE)
+                .end_render_pass_unchecked()
         };
         s.messages.abort_on_error(false);
         drop(rec);
@@ -1357,8 +1348,8 @@ fn try_begin(s: &Setup, begin: &tuff::RenderPassBeginInfo<'_>, rule: &str) -> Op
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     let rec = rec
-        .cmd_begin_render_pass(begin, vk::SubpassContents::INLINE)
-        .cmd_end_render_pass();
+        .begin_render_pass(begin, vk::SubpassContents::INLINE)
+        .end_render_pass();
     let said = match rec.end() {
         Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
         other => format!("{other:?}"),
@@ -1370,8 +1361,8 @@ fn try_begin(s: &Setup, begin: &tuff::RenderPassBeginInfo<'_>, rule: &str) -> Op
     s.messages.take();
     s.messages.abort_on_error(true);
     let rec = unsafe {
-        rec.cmd_begin_render_pass_unchecked(begin, vk::SubpassContents::INLINE)
-            .cmd_end_render_pass_unchecked()
+        rec.begin_render_pass_unchecked(begin, vk::SubpassContents::INLINE)
+            .end_render_pass_unchecked()
     };
     s.messages.abort_on_error(false);
     drop(rec);
@@ -1406,8 +1397,8 @@ fn a_render_pass_of_another_device_is_refused() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     let rec = rec
-        .cmd_begin_render_pass2(&begin, &contents)
-        .cmd_end_render_pass2(&end);
+        .begin_render_pass2(&begin, &contents)
+        .end_render_pass2(&end);
     assert_eq!(vuid(rec.end()), rule);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = cb
@@ -1416,8 +1407,8 @@ fn a_render_pass_of_another_device_is_refused() {
     s.messages.take();
     s.messages.abort_on_error(true);
     let rec = unsafe {
-        rec.cmd_begin_render_pass2_unchecked(&begin, &contents)
-            .cmd_end_render_pass2_unchecked(&end)
+        rec.begin_render_pass2_unchecked(&begin, &contents)
+            .end_render_pass2_unchecked(&end)
     };
     s.messages.abort_on_error(false);
     drop(rec);
@@ -1477,11 +1468,11 @@ fn an_upload_leaves_its_bytes_in_the_image_in_the_layout_asked_for() {
     let answer = s
         .queue
         .submit_and_wait(|rec| {
-            rec.cmd_copy_image_to_buffer(&img, SRC, &back, &[region])?;
+            rec.copy_image_to_buffer(&img, SRC, &back, &[region])?;
             let to_host = tuff::MemoryBarrier::new()
                 .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
                 .dst_access_mask(vk::AccessFlags::HOST_READ);
-            rec.cmd_pipeline_barrier(
+            rec.pipeline_barrier(
                 vk::PipelineStageFlags::TRANSFER,
                 vk::PipelineStageFlags::HOST,
                 vk::DependencyFlags::empty(),

@@ -105,7 +105,7 @@ fn objects_of_another_device_are_refused() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence of the other device");
     assert_eq!(
-        vuid(s.queue.queue_submit(&[], Some(&foreign_fence))),
+        vuid(s.queue.submit(&[], Some(&foreign_fence))),
         "VUID-vkQueueSubmit-commonparent"
     );
     assert_silent(&s.messages);
@@ -158,8 +158,8 @@ fn a_primary_only_command_in_a_secondary_buffer_fails_at_end() {
         })
         .clear_values(&clear);
     // Neither the begin nor the matching end reaches the driver.
-    let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    let rec = rec.cmd_end_render_pass();
+    let rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    let rec = rec.end_render_pass();
     assert_eq!(vuid(rec.end()), "VUID-vkCmdBeginRenderPass-bufferlevel");
     assert!(!cb.is_executable());
     assert_silent(&s.messages);

@@ -366,7 +366,7 @@ fn barrier(s: &Setup, info: &tuff::DependencyInfo<'_>) -> Outcome {
         .expect("begin");
     // A refused barrier is not recorded; one the implicit checks refuse poisons
     // the recording, whose end returns the error.
-    let recorded = unsafe { rec.cmd_pipeline_barrier2(info) };
+    let recorded = unsafe { rec.pipeline_barrier2(info) };
     let ended = rec.end();
     let safe = recorded.and(ended);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -375,7 +375,7 @@ fn barrier(s: &Setup, info: &tuff::DependencyInfo<'_>) -> Outcome {
         .expect("begin");
     // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
     let layer = under_layer(s, || {
-        let _ = unsafe { rec.cmd_pipeline_barrier2_unchecked(info) };
+        let _ = unsafe { rec.pipeline_barrier2_unchecked(info) };
     });
     rec.end().expect("end");
     Outcome { safe, layer }
@@ -1110,7 +1110,7 @@ fn event(s: &Setup) -> tuff::Event {
 
 /// A fixture for a command on one event with a stage mask: set, reset, reset2.
 macro_rules! event_fixture {
-    ($name:ident, $args:ty, $stage:expr, $unchecked:ident) => {
+    ($name:ident, $args:ty, $stage:expr, $method:ident, $unchecked:ident) => {
         fn $name(
             s: &Setup,
             limits: &Limits,
@@ -1121,7 +1121,7 @@ macro_rules! event_fixture {
             let e = event(s);
             record(
                 s,
-                |r| unsafe { r.$name(&e, a.stage_mask) },
+                |r| unsafe { r.$method(&e, a.stage_mask) },
                 // SAFETY: as in `buffer_create_info`; the command buffer is never
                 // submitted.
                 |r| unsafe { r.$unchecked(&e, a.stage_mask) },
@@ -1134,19 +1134,22 @@ event_fixture!(
     cmd_set_event,
     args::CmdSetEvent,
     vk::PipelineStageFlags::TRANSFER,
-    cmd_set_event_unchecked
+    set_event,
+    set_event_unchecked
 );
 event_fixture!(
     cmd_reset_event,
     args::CmdResetEvent,
     vk::PipelineStageFlags::TRANSFER,
-    cmd_reset_event_unchecked
+    reset_event,
+    reset_event_unchecked
 );
 event_fixture!(
     cmd_reset_event2,
     args::CmdResetEvent2,
     vk::PipelineStageFlags2::TRANSFER,
-    cmd_reset_event2_unchecked
+    reset_event2,
+    reset_event2_unchecked
 );
 
 fn cmd_wait_events(
@@ -1164,21 +1167,14 @@ fn cmd_wait_events(
     record(
         s,
         |r| {
-            unsafe { r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER) };
-            unsafe { r.cmd_wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[]) }
+            unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
+            unsafe { r.wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[]) }
         },
         |r| {
-            unsafe { r.cmd_set_event(&e, vk::PipelineStageFlags::TRANSFER) };
+            unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe {
-                r.cmd_wait_events_unchecked(
-                    &events,
-                    a.src_stage_mask,
-                    a.dst_stage_mask,
-                    &[],
-                    &[],
-                    &[],
-                )
+                r.wait_events_unchecked(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[])
             }
         },
     )
@@ -1198,7 +1194,7 @@ fn cmd_pipeline_barrier(
     record(
         s,
         |r| {
-            r.cmd_pipeline_barrier(
+            r.pipeline_barrier(
                 a.src_stage_mask,
                 a.dst_stage_mask,
                 a.dependency_flags,
@@ -1209,7 +1205,7 @@ fn cmd_pipeline_barrier(
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_pipeline_barrier_unchecked(
+            r.pipeline_barrier_unchecked(
                 a.src_stage_mask,
                 a.dst_stage_mask,
                 a.dependency_flags,
@@ -1244,13 +1240,13 @@ fn cmd_write_timestamp(
     record(
         s,
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
-            unsafe { r.cmd_write_timestamp(a.pipeline_stage, &pool, 0) }
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.write_timestamp(a.pipeline_stage, &pool, 0) }
         },
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-            unsafe { r.cmd_write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
+            unsafe { r.write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
         },
     )
 }
@@ -1289,11 +1285,11 @@ fn cmd_clear_color_image(
     record(
         s,
         |r| unsafe {
-            r.cmd_clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range])
+            r.clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range])
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_clear_color_image_unchecked(
+            r.clear_color_image_unchecked(
                 &image,
                 a.image_layout,
                 &color,
@@ -1319,12 +1315,10 @@ fn cmd_copy_image(
     let region = [o.image_copy];
     record(
         s,
-        |r| unsafe {
-            r.cmd_copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
-        },
+        |r| unsafe { r.copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_copy_image_unchecked(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
+            r.copy_image_unchecked(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)
         },
     )
 }
@@ -1347,7 +1341,7 @@ fn cmd_blit_image(
     record(
         s,
         |r| unsafe {
-            r.cmd_blit_image(
+            r.blit_image(
                 &src,
                 a.src_image_layout,
                 &dst,
@@ -1358,7 +1352,7 @@ fn cmd_blit_image(
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_blit_image_unchecked(
+            r.blit_image_unchecked(
                 &src,
                 a.src_image_layout,
                 &dst,
@@ -1385,10 +1379,10 @@ fn cmd_copy_buffer_to_image(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| unsafe { r.cmd_copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region) },
+        |r| unsafe { r.copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_copy_buffer_to_image_unchecked(&buffer, &image, a.dst_image_layout, &region)
+            r.copy_buffer_to_image_unchecked(&buffer, &image, a.dst_image_layout, &region)
         },
     )
 }
@@ -1408,10 +1402,10 @@ fn cmd_copy_image_to_buffer(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| r.cmd_copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region),
+        |r| r.copy_image_to_buffer(&image, a.src_image_layout, &buffer, &region),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_copy_image_to_buffer_unchecked(&image, a.src_image_layout, &buffer, &region)
+            r.copy_image_to_buffer_unchecked(&image, a.src_image_layout, &buffer, &region)
         },
     )
 }
@@ -1749,8 +1743,8 @@ const DST: vk::ImageLayout = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
 transfer2_fixture!(
     copy_buffer_info2,
     CopyBufferInfo2,
-    cmd_copy_buffer2,
-    cmd_copy_buffer2_unchecked,
+    copy_buffer2,
+    copy_buffer2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::CopyBufferInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_buffer(s, &o.src_buffer);
@@ -1768,8 +1762,8 @@ transfer2_fixture!(
 transfer2_fixture!(
     copy_image_info2,
     CopyImageInfo2,
-    cmd_copy_image2,
-    cmd_copy_image2_unchecked,
+    copy_image2,
+    copy_image2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::CopyImageInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_image(s, &o.src_image);
@@ -1792,8 +1786,8 @@ transfer2_fixture!(
 transfer2_fixture!(
     blit_image_info2,
     BlitImageInfo2,
-    cmd_blit_image2,
-    cmd_blit_image2_unchecked,
+    blit_image2,
+    blit_image2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::BlitImageInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_image(s, &o.src_image);
@@ -1816,8 +1810,8 @@ transfer2_fixture!(
 transfer2_fixture!(
     copy_buffer_to_image_info2,
     CopyBufferToImageInfo2,
-    cmd_copy_buffer_to_image2,
-    cmd_copy_buffer_to_image2_unchecked,
+    copy_buffer_to_image2,
+    copy_buffer_to_image2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::CopyBufferToImageInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_buffer(s, &o.src_buffer);
@@ -1833,8 +1827,8 @@ transfer2_fixture!(
 transfer2_fixture!(
     copy_image_to_buffer_info2,
     CopyImageToBufferInfo2,
-    cmd_copy_image_to_buffer2,
-    cmd_copy_image_to_buffer2_unchecked,
+    copy_image_to_buffer2,
+    copy_image_to_buffer2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::CopyImageToBufferInfo2<'_>) -> Outcome| {
             let (src, _m1) = make_image(s, &o.src_image);
@@ -1878,20 +1872,20 @@ fn draw(
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = rec.cmd_begin_render_pass(
+            let mut rec = rec.begin_render_pass(
                 &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
                     .render_area(area)
                     .clear_values(&clear),
                 vk::SubpassContents::INLINE,
             );
-            rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
                 .expect("bind");
-            rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-            rec.cmd_set_scissor(0, &[area]).expect("scissor");
-            rec.cmd_push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
+            rec.set_viewport(0, &[viewport]).expect("viewport");
+            rec.set_scissor(0, &[area]).expect("scissor");
+            rec.push_constants(&p.graphics_layout, vk::ShaderStageFlags::FRAGMENT, 0, &push)
                 .expect("push");
             call(&mut rec);
-            rec.cmd_end_render_pass().end()
+            rec.end_render_pass().end()
         };
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut safe = Some(safe);
@@ -1932,9 +1926,9 @@ fn cmd_draw_indirect(
     let (buffer, _memory) = make_buffer(s, &o.buffer);
     draw(
         s,
-        |r| unsafe { r.cmd_draw_indirect(&buffer, a.offset, a.draw_count, 16) },
+        |r| unsafe { r.draw_indirect(&buffer, a.offset, a.draw_count, 16) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| drop(unsafe { r.cmd_draw_indirect_unchecked(&buffer, a.offset, a.draw_count, 16) }),
+        |r| drop(unsafe { r.draw_indirect_unchecked(&buffer, a.offset, a.draw_count, 16) }),
     )
 }
 
@@ -1956,18 +1950,16 @@ fn cmd_draw_indexed_indirect(
     draw(
         s,
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
+            r.bind_index_buffer(&indices, 0, index)
                 .expect("index buffer");
-            unsafe { r.cmd_draw_indexed_indirect(&buffer, a.offset, a.draw_count, 20) }
+            unsafe { r.draw_indexed_indirect(&buffer, a.offset, a.draw_count, 20) }
         },
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
+            r.bind_index_buffer(&indices, 0, index)
                 .expect("index buffer");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
-            drop(unsafe {
-                r.cmd_draw_indexed_indirect_unchecked(&buffer, a.offset, a.draw_count, 20)
-            })
+            drop(unsafe { r.draw_indexed_indirect_unchecked(&buffer, a.offset, a.draw_count, 20) })
         },
     )
 }
@@ -1984,9 +1976,9 @@ fn cmd_dispatch_indirect(
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+        r.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
-        r.cmd_bind_descriptor_sets(
+        r.bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
@@ -2000,13 +1992,13 @@ fn cmd_dispatch_indirect(
         s,
         |r| {
             bind(r);
-            result = unsafe { r.cmd_dispatch_indirect(&buffer, a.offset) };
+            result = unsafe { r.dispatch_indirect(&buffer, a.offset) };
         },
         |r| {
             bind(r);
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
-            drop(unsafe { r.cmd_dispatch_indirect_unchecked(&buffer, a.offset) });
+            drop(unsafe { r.dispatch_indirect_unchecked(&buffer, a.offset) });
         },
     );
     // A dispatch returns its refusal itself, rather than through `end`.
@@ -2039,7 +2031,7 @@ fn cmd_resolve_image(
     record(
         s,
         |r| unsafe {
-            r.cmd_resolve_image(
+            r.resolve_image(
                 &src,
                 a.src_image_layout,
                 &dst,
@@ -2049,7 +2041,7 @@ fn cmd_resolve_image(
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_resolve_image_unchecked(
+            r.resolve_image_unchecked(
                 &src,
                 a.src_image_layout,
                 &dst,
@@ -2063,8 +2055,8 @@ fn cmd_resolve_image(
 transfer2_fixture!(
     resolve_image_info2,
     ResolveImageInfo2,
-    cmd_resolve_image2,
-    cmd_resolve_image2_unchecked,
+    resolve_image2,
+    resolve_image2_unchecked,
     |s, o| {
         |run: &mut dyn FnMut(&mut tuff::ResolveImageInfo2<'_>) -> Outcome| {
             let o = resolve_objects(|x| {
@@ -2111,17 +2103,15 @@ fn cmd_copy_query_pool_results(
     record(
         s,
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
-            unsafe {
-                r.cmd_copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags)
-            }
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags) }
         },
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             unsafe {
-                r.cmd_copy_query_pool_results_unchecked(
+                r.copy_query_pool_results_unchecked(
                     &pool,
                     0,
                     1,
@@ -2162,9 +2152,9 @@ fn barrier1(
     let flags = vk::DependencyFlags::empty();
     record(
         s,
-        |r| r.cmd_pipeline_barrier(stage, stage, flags, &[], buffers, images),
+        |r| r.pipeline_barrier(stage, stage, flags, &[], buffers, images),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_pipeline_barrier_unchecked(stage, stage, flags, &[], buffers, images) },
+        |r| unsafe { r.pipeline_barrier_unchecked(stage, stage, flags, &[], buffers, images) },
     )
 }
 
@@ -2212,7 +2202,7 @@ fn image_memory_barrier(
 fn every_fixture_is_valid_as_it_stands() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let fixtures = fixtures();
     assert!(
         !fixtures.is_empty(),
@@ -2242,7 +2232,7 @@ fn every_recognised_rule_is_refused_and_the_layer_agrees() {
     let s = setup(true);
     let bare = tuff_setup::setup_bare(true);
     let full = tuff_setup::setup_full_features(true);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     // `setup` enables no Vulkan 1.0 feature, which the cases of rules that apply
     // when a feature is off rely on; `setup_bare` enables none at all.
     let cases = cases();
@@ -2345,7 +2335,7 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let refused = rec.cmd_pipeline_barrier(
+    let refused = rec.pipeline_barrier(
         vk::PipelineStageFlags::GEOMETRY_SHADER,
         vk::PipelineStageFlags::TRANSFER,
         vk::DependencyFlags::empty(),
@@ -2389,7 +2379,7 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new().command_buffers(&handles)],
             Some(&fence),
         )
@@ -2420,7 +2410,7 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
 fn a_feature_enabled_through_its_extension_struct_is_known() {
     let _serial = vulkan::serial();
     let s = setup_with_extension_feature_structs(true);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let out = image_memory_barrier(&s, &limits, &|v, _, _| {
         v.old_layout = vk::ImageLayout::READ_ONLY_OPTIMAL;
     });
@@ -2520,9 +2510,9 @@ fn viewport(
     change(&mut v, limits, &mut Objects::default());
     record(
         s,
-        |r| r.cmd_set_viewport(0, &[v]),
+        |r| r.set_viewport(0, &[v]),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_viewport_unchecked(0, &[v]) },
+        |r| unsafe { r.set_viewport_unchecked(0, &[v]) },
     )
 }
 
@@ -2614,9 +2604,9 @@ fn cmd_dispatch(
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(s, &target);
     let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        r.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+        r.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
-        r.cmd_bind_descriptor_sets(
+        r.bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
@@ -2630,13 +2620,13 @@ fn cmd_dispatch(
         s,
         |r| {
             bind(r);
-            r.cmd_dispatch(x, y, z)
+            r.dispatch(x, y, z)
         },
         |r| {
             bind(r);
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
-            drop(unsafe { r.cmd_dispatch_unchecked(x, y, z) });
+            drop(unsafe { r.dispatch_unchecked(x, y, z) });
         },
     )
 }
@@ -2654,9 +2644,9 @@ fn cmd_set_depth_bounds(
     let (min, max) = (a.min_depth_bounds, a.max_depth_bounds);
     record(
         s,
-        |r| r.cmd_set_depth_bounds(min, max),
+        |r| r.set_depth_bounds(min, max),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_depth_bounds_unchecked(min, max) },
+        |r| unsafe { r.set_depth_bounds_unchecked(min, max) },
     )
 }
 
@@ -2694,12 +2684,12 @@ fn cmd_draw_indirect_count(
     draw(
         s,
         |r| unsafe {
-            r.cmd_draw_indirect_count(&buffer, a.offset, &count, a.count_buffer_offset, 1, 16)
+            r.draw_indirect_count(&buffer, a.offset, &count, a.count_buffer_offset, 1, 16)
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| {
             drop(unsafe {
-                r.cmd_draw_indirect_count_unchecked(
+                r.draw_indirect_count_unchecked(
                     &buffer,
                     a.offset,
                     &count,
@@ -2731,10 +2721,10 @@ fn cmd_draw_indexed_indirect_count(
     draw(
         s,
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
+            r.bind_index_buffer(&indices, 0, index)
                 .expect("index buffer");
             unsafe {
-                r.cmd_draw_indexed_indirect_count(
+                r.draw_indexed_indirect_count(
                     &buffer,
                     a.offset,
                     &count,
@@ -2745,12 +2735,12 @@ fn cmd_draw_indexed_indirect_count(
             }
         },
         |r| {
-            r.cmd_bind_index_buffer(&indices, 0, index)
+            r.bind_index_buffer(&indices, 0, index)
                 .expect("index buffer");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             drop(unsafe {
-                r.cmd_draw_indexed_indirect_count_unchecked(
+                r.draw_indexed_indirect_count_unchecked(
                     &buffer,
                     a.offset,
                     &count,
@@ -2772,9 +2762,9 @@ fn cmd_set_line_width(
     change(&mut a, limits, &mut Objects::default());
     record(
         s,
-        |r| r.cmd_set_line_width(a.line_width),
+        |r| r.set_line_width(a.line_width),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_line_width_unchecked(a.line_width) },
+        |r| unsafe { r.set_line_width_unchecked(a.line_width) },
     )
 }
 
@@ -2796,9 +2786,9 @@ fn cmd_set_depth_bias(
     );
     record(
         s,
-        |r| r.cmd_set_depth_bias(c, clamp, slope),
+        |r| r.set_depth_bias(c, clamp, slope),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_depth_bias_unchecked(c, clamp, slope) },
+        |r| unsafe { r.set_depth_bias_unchecked(c, clamp, slope) },
     )
 }
 
@@ -2815,9 +2805,9 @@ fn cmd_pipeline_barrier2(
     let info = tuff::DependencyInfo::new();
     record(
         s,
-        |r| unsafe { r.cmd_pipeline_barrier2(&info) },
+        |r| unsafe { r.pipeline_barrier2(&info) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_pipeline_barrier2_unchecked(&info) },
+        |r| unsafe { r.pipeline_barrier2_unchecked(&info) },
     )
 }
 
@@ -2835,9 +2825,9 @@ fn cmd_set_event2(
     let info = tuff::DependencyInfo::new();
     record(
         s,
-        |r| unsafe { r.cmd_set_event2(&e, &info) },
+        |r| unsafe { r.set_event2(&e, &info) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_event2_unchecked(&e, &info) },
+        |r| unsafe { r.set_event2_unchecked(&e, &info) },
     )
 }
 
@@ -2855,9 +2845,9 @@ fn cmd_wait_events2(
     let infos = [tuff::DependencyInfo::new()];
     record(
         s,
-        |r| unsafe { r.cmd_wait_events2(&[&e], &infos) },
+        |r| unsafe { r.wait_events2(&[&e], &infos) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| drop(unsafe { r.cmd_wait_events2_unchecked(&[&e], &infos) }),
+        |r| drop(unsafe { r.wait_events2_unchecked(&[&e], &infos) }),
     )
 }
 
@@ -2874,13 +2864,13 @@ fn cmd_write_timestamp2(
     record(
         s,
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
-            unsafe { r.cmd_write_timestamp2(a.stage, &pool, 0) }
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.write_timestamp2(a.stage, &pool, 0) }
         },
         |r| {
-            unsafe { r.cmd_reset_query_pool(&pool, 0, 1) }.expect("reset");
+            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-            unsafe { r.cmd_write_timestamp2_unchecked(a.stage, &pool, 0) }
+            unsafe { r.write_timestamp2_unchecked(a.stage, &pool, 0) }
         },
     )
 }
@@ -2909,11 +2899,11 @@ fn clear_attachments(s: &Setup, attachment: vk::ClearAttachment, rect: vk::Clear
     draw(
         s,
         |r| {
-            unsafe { r.cmd_clear_attachments(&[attachment], &[rect]) };
+            unsafe { r.clear_attachments(&[attachment], &[rect]) };
             Ok(())
         },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_clear_attachments_unchecked(&[attachment], &[rect]) },
+        |r| unsafe { r.clear_attachments_unchecked(&[attachment], &[rect]) },
     )
 }
 
@@ -2957,10 +2947,10 @@ fn clear_depth(
     let ranges = [o.image_subresource_range];
     record(
         s,
-        |r| unsafe { r.cmd_clear_depth_stencil_image(&image, a.image_layout, &value, &ranges) },
+        |r| unsafe { r.clear_depth_stencil_image(&image, a.image_layout, &value, &ranges) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
-            r.cmd_clear_depth_stencil_image_unchecked(&image, a.image_layout, &value, &ranges)
+            r.clear_depth_stencil_image_unchecked(&image, a.image_layout, &value, &ranges)
         },
     )
 }
@@ -3040,8 +3030,8 @@ fn rendering(s: &Setup, edit: &dyn Fn(&mut vk::RenderingInfo<'_>)) -> Outcome {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let rec = unsafe { rec.cmd_begin_rendering(&info) };
-    let safe = rec.cmd_end_rendering().end();
+    let rec = unsafe { rec.begin_rendering(&info) };
+    let safe = rec.end_rendering().end();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -3054,7 +3044,7 @@ fn rendering(s: &Setup, edit: &dyn Fn(&mut vk::RenderingInfo<'_>)) -> Outcome {
         let inside = unsafe {
             rec.take()
                 .expect("recorder")
-                .cmd_begin_rendering_unchecked(&info)
+                .begin_rendering_unchecked(&info)
         };
         drop(inside);
     });

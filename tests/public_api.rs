@@ -184,8 +184,10 @@ fn every_method_and_struct_the_examples_use_shows_an_example() {
             for (at, _) in code.match_indices('(') {
                 let name = ident(&code[..at]);
                 let before = &code[..at - name.len()];
-                if before.ends_with('.') {
-                    called.insert(name);
+                if let Some(on) = before.strip_suffix('.') {
+                    // The variable it is called on: `rec` in `rec.draw(`, so that
+                    // `frame.submit(` is not taken for `Queue::submit`.
+                    called.insert((ident(on), name));
                 } else if name == "new" && before.ends_with("::") {
                     made.insert(ident(&before[..before.len() - 2]));
                 }
@@ -194,13 +196,46 @@ fn every_method_and_struct_the_examples_use_shows_an_example() {
     }
     // Command methods carry their Vulkan name as a doc alias; structs are
     // `pub struct`s of the generated struct modules.
+    // A call counts for a method when it is made on a variable whose name begins
+    // the snake-case name of the method's type (`rec` for `Recorder`, `physical`
+    // for `PhysicalDevice`).
     let mut missing = Vec::new();
     let (mut methods, mut structs) = (0, 0);
     for file in sources(&root.join("generated/src/generated")) {
         let text = std::fs::read_to_string(&file).unwrap();
         let lines: Vec<&str> = text.lines().collect();
+        let mut receiver = String::new();
         for (i, line) in lines.iter().enumerate() {
             let t = line.trim_start();
+            if t.starts_with("impl") && t.ends_with('{') {
+                // `impl<'c, S: Scope> Recorder<'c, S> {` -> `Recorder`.
+                let mut rest = t.trim_start_matches("impl");
+                if rest.starts_with('<') {
+                    let mut depth = 0;
+                    let end = rest
+                        .char_indices()
+                        .find(|&(_, c)| {
+                            depth += match c {
+                                '<' => 1,
+                                '>' => -1,
+                                _ => 0,
+                            };
+                            depth == 0
+                        })
+                        .map_or(rest.len(), |(i, _)| i + 1);
+                    rest = &rest[end..];
+                }
+                let ty = rest.trim_start().split(['<', ' ']).next().unwrap_or("");
+                receiver = ty
+                    .chars()
+                    .enumerate()
+                    .flat_map(|(i, c)| {
+                        let sep = (i > 0 && c.is_ascii_uppercase()).then_some('_');
+                        sep.into_iter()
+                            .chain(std::iter::once(c.to_ascii_lowercase()))
+                    })
+                    .collect();
+            }
             let fn_name = t
                 .strip_prefix("pub fn ")
                 .or_else(|| t.strip_prefix("pub unsafe fn "))
@@ -210,7 +245,10 @@ fn every_method_and_struct_the_examples_use_shows_an_example() {
                     && lines[i.saturating_sub(3)..i]
                         .iter()
                         .any(|l| l.contains("#[doc(alias = \"vk"));
-                if aliased && called.contains(name) {
+                let on_it = called.iter().any(|(on, n)| {
+                    n == name && !on.is_empty() && receiver.starts_with(on.as_str())
+                });
+                if aliased && on_it {
                     methods += 1;
                     if !doc_above(&lines, i).contains("# Example") {
                         missing.push(format!("{name} ({})", file.display()));

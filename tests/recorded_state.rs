@@ -109,7 +109,7 @@ fn queues_are_got_as_the_device_was_created_and_the_layer_agrees() {
     let s = setup(true);
     let families = s
         .physical
-        .get_physical_device_queue_family_properties()
+        .get_queue_family_properties()
         .expect("queue families")
         .len();
     let absent = u32::try_from(families).expect("few families");
@@ -119,7 +119,7 @@ fn queues_are_got_as_the_device_was_created_and_the_layer_agrees() {
         (s.family, 1, "VUID-vkGetDeviceQueue-queueIndex-00385"),
     ];
     for (family, index, expected) in cases {
-        assert_eq!(vuid(d.get_device_queue(family, index)), expected);
+        assert_eq!(vuid(d.get_queue(family, index)), expected);
     }
     let info = |family, flags, index| {
         tuff::DeviceQueueInfo2::new()
@@ -144,25 +144,24 @@ fn queues_are_got_as_the_device_was_created_and_the_layer_agrees() {
         ),
     ];
     for (info, expected) in &cases2 {
-        assert_eq!(vuid(d.get_device_queue2(info)), *expected);
+        assert_eq!(vuid(d.get_queue2(info)), *expected);
     }
     // The queue the device was created with is got both ways.
-    d.get_device_queue(s.family, 0).expect("queue");
-    d.get_device_queue2(&info(s.family, none, 0))
-        .expect("queue");
+    d.get_queue(s.family, 0).expect("queue");
+    d.get_queue2(&info(s.family, none, 0)).expect("queue");
     assert_silent(&s.messages);
 
     for (family, index, expected) in cases {
         layer_names(&s.messages, expected, || {
             // SAFETY: see the module docs; the skipped call leaves a null queue, which
             // is dropped unused.
-            drop(unsafe { d.get_device_queue_unchecked(family, index) });
+            drop(unsafe { d.get_queue_unchecked(family, index) });
         });
     }
     for (info, expected) in &cases2 {
         layer_names(&s.messages, expected, || {
             // SAFETY: as above.
-            drop(unsafe { d.get_device_queue2_unchecked(info) });
+            drop(unsafe { d.get_queue2_unchecked(info) });
         });
     }
 }
@@ -184,44 +183,41 @@ fn surface_queries_name_a_family_and_a_surface_and_the_layer_agrees() {
     .expect("surface");
     let p = &s.physical;
     let families = p
-        .get_physical_device_queue_family_properties()
+        .get_queue_family_properties()
         .expect("queue families")
         .len();
     let absent = u32::try_from(families).expect("few families");
     let past = "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269";
+    assert_eq!(vuid(p.get_surface_support_khr(absent, &surface)), past);
     assert_eq!(
-        vuid(p.get_physical_device_surface_support_khr(absent, &surface)),
-        past
-    );
-    assert_eq!(
-        vuid(p.get_physical_device_surface_formats_khr(None)),
+        vuid(p.get_surface_formats_khr(None)),
         "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523"
     );
     assert_eq!(
-        vuid(p.get_physical_device_surface_present_modes_khr(None)),
+        vuid(p.get_surface_present_modes_khr(None)),
         "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523"
     );
     // With the surface, each query answers.
     assert!(p
-        .get_physical_device_surface_support_khr(s.family, &surface)
+        .get_surface_support_khr(s.family, &surface)
         .expect("support"));
     assert!(!p
-        .get_physical_device_surface_formats_khr(Some(&surface))
+        .get_surface_formats_khr(Some(&surface))
         .expect("formats")
         .is_empty());
     assert!(!p
-        .get_physical_device_surface_present_modes_khr(Some(&surface))
+        .get_surface_present_modes_khr(Some(&surface))
         .expect("present modes")
         .is_empty());
     let caps = p
-        .get_physical_device_surface_capabilities_khr(&surface)
+        .get_surface_capabilities_khr(&surface)
         .expect("capabilities");
     assert!(caps.max_image_array_layers >= 1);
     assert_silent(&s.messages);
 
     layer_names(&s.messages, past, || {
         // SAFETY: see the module docs.
-        drop(unsafe { p.get_physical_device_surface_support_khr_unchecked(absent, &surface) });
+        drop(unsafe { p.get_surface_support_khr_unchecked(absent, &surface) });
     });
     drop(surface);
     drop(s);
@@ -239,12 +235,9 @@ fn an_index_buffer_is_bound_at_an_aligned_address_and_the_layer_agrees() {
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        assert_eq!(
-            vuid(rec.cmd_bind_index_buffer(&indices, offset, ty)),
-            expected
-        );
+        assert_eq!(vuid(rec.bind_index_buffer(&indices, offset, ty)), expected);
         // The recorder stays usable: an aligned offset is bound.
-        rec.cmd_bind_index_buffer(&indices, 4, ty)
+        rec.bind_index_buffer(&indices, 4, ty)
             .expect("aligned offset");
         rec.end().expect("end");
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -253,7 +246,7 @@ fn an_index_buffer_is_bound_at_an_aligned_address_and_the_layer_agrees() {
             .expect("begin");
         layer_names(&s.messages, expected, || {
             // SAFETY: see the module docs; the command buffer is never submitted.
-            drop(unsafe { rec.cmd_bind_index_buffer_unchecked(&indices, offset, ty) });
+            drop(unsafe { rec.bind_index_buffer_unchecked(&indices, offset, ty) });
         });
         rec.end().expect("end");
     }
@@ -372,7 +365,7 @@ fn handle_types_a_device_cannot_export_are_refused() {
 fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let (vertices, _memory) = pipelines::host_buffer(&s, 64, vk::BufferUsageFlags::VERTEX_BUFFER);
     // The last binding, and one past it.
     let last = limits.max_vertex_input_bindings - 1;
@@ -385,19 +378,16 @@ fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    assert_eq!(
-        vuid(rec.cmd_bind_vertex_buffers(last, &two, &[0, 0])),
-        first
-    );
+    assert_eq!(vuid(rec.bind_vertex_buffers(last, &two, &[0, 0])), first);
     // SAFETY: no pipeline is bound, so no binding's stride has a vertex attribute to
     // fit (the rule `bind_vertex_buffers2` leaves to its caller).
-    let refused = unsafe { rec.cmd_bind_vertex_buffers2(last, &two, &[0, 0], &[], &[]) };
+    let refused = unsafe { rec.bind_vertex_buffers2(last, &two, &[0, 0], &[], &[]) };
     assert_eq!(vuid(refused), first2);
     // SAFETY: as above.
-    let refused = unsafe { rec.cmd_bind_vertex_buffers2(0, &[&vertices], &[0], &[], &[stride]) };
+    let refused = unsafe { rec.bind_vertex_buffers2(0, &[&vertices], &[0], &[], &[stride]) };
     assert_eq!(vuid(refused), strides);
     // The last binding the device has is bound.
-    rec.cmd_bind_vertex_buffers(last, &[&vertices], &[0])
+    rec.bind_vertex_buffers(last, &[&vertices], &[0])
         .expect("the last binding");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -408,17 +398,15 @@ fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
         .expect("begin");
     layer_names(&s.messages, first, || {
         // SAFETY: see the module docs; the command buffer is never submitted.
-        drop(unsafe { rec.cmd_bind_vertex_buffers_unchecked(last, &two, &[0, 0]) });
+        drop(unsafe { rec.bind_vertex_buffers_unchecked(last, &two, &[0, 0]) });
     });
     layer_names(&s.messages, first2, || {
         // SAFETY: as above.
-        drop(unsafe { rec.cmd_bind_vertex_buffers2_unchecked(last, &two, &[0, 0], &[], &[]) });
+        drop(unsafe { rec.bind_vertex_buffers2_unchecked(last, &two, &[0, 0], &[], &[]) });
     });
     layer_names(&s.messages, strides, || {
         // SAFETY: as above.
-        drop(unsafe {
-            rec.cmd_bind_vertex_buffers2_unchecked(0, &[&vertices], &[0], &[], &[stride])
-        });
+        drop(unsafe { rec.bind_vertex_buffers2_unchecked(0, &[&vertices], &[0], &[], &[stride]) });
     });
     rec.end().expect("end");
 }
@@ -497,9 +485,7 @@ fn sparse_queries_name_a_sample_count_of_the_format() {
     let (format, ty, samples, usage, tiling) = query;
     let expected = "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094";
     assert_eq!(
-        vuid(p.get_physical_device_sparse_image_format_properties(
-            format, ty, samples, usage, tiling
-        )),
+        vuid(p.get_sparse_image_format_properties(format, ty, samples, usage, tiling)),
         expected
     );
     let info = tuff::PhysicalDeviceSparseImageFormatInfo2::new()
@@ -510,18 +496,12 @@ fn sparse_queries_name_a_sample_count_of_the_format() {
         .tiling(tiling);
     let expected2 = "VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095";
     assert_eq!(
-        vuid(p.get_physical_device_sparse_image_format_properties2(&info)),
+        vuid(p.get_sparse_image_format_properties2(&info)),
         expected2
     );
     // One sample is a count every format has.
-    p.get_physical_device_sparse_image_format_properties(
-        format,
-        ty,
-        vk::SampleCountFlags::TYPE_1,
-        usage,
-        tiling,
-    )
-    .expect("one sample");
+    p.get_sparse_image_format_properties(format, ty, vk::SampleCountFlags::TYPE_1, usage, tiling)
+        .expect("one sample");
     assert_silent(&s.messages);
 }
 
@@ -574,11 +554,11 @@ fn a_query_reset_stays_inside_its_pool_and_the_layer_agrees() {
             .expect("begin");
         // SAFETY: no query of the pool is active.
         assert_eq!(
-            vuid(unsafe { rec.cmd_reset_query_pool(&pool, first, count) }),
+            vuid(unsafe { rec.reset_query_pool(&pool, first, count) }),
             expected
         );
         // SAFETY: as above.
-        unsafe { rec.cmd_reset_query_pool(&pool, 0, 2) }.expect("the whole pool");
+        unsafe { rec.reset_query_pool(&pool, 0, 2) }.expect("the whole pool");
         rec.end().expect("end");
         let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         let mut rec = cb
@@ -586,7 +566,7 @@ fn a_query_reset_stays_inside_its_pool_and_the_layer_agrees() {
             .expect("begin");
         layer_names(&s.messages, expected, || {
             // SAFETY: see the module docs; the command buffer is never submitted.
-            let _ = unsafe { rec.cmd_reset_query_pool_unchecked(&pool, first, count) };
+            let _ = unsafe { rec.reset_query_pool_unchecked(&pool, first, count) };
         });
         rec.end().expect("end");
     }
@@ -675,14 +655,14 @@ fn in_render_pass(
             height: 4,
         },
     };
-    let mut rec = rec.cmd_begin_render_pass(
+    let mut rec = rec.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             .clear_values(&clear),
         vk::SubpassContents::INLINE,
     );
     inside(&mut rec);
-    rec.cmd_end_render_pass().end()
+    rec.end_render_pass().end()
 }
 
 /// A recorder inside a render pass instance of `render_pass` over its 4x4 area.
@@ -702,7 +682,7 @@ fn inside_area<'c>(
     (rp, fb): (&tuff::RenderPass, &tuff::Framebuffer),
 ) -> tuff::Recorder<'c, tuff::InRenderPass> {
     let clear = [vk::ClearValue::default()];
-    rec.cmd_begin_render_pass(
+    rec.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(rp, fb)
             .render_area(vk::Rect2D {
                 offset: vk::Offset2D::default(),
@@ -733,7 +713,7 @@ fn render_pass_instances_end_in_their_last_subpass_and_the_layer_agrees() {
     );
     // A next subpass after the last: refused and not recorded.
     let next = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
-        r.cmd_next_subpass(vk::SubpassContents::INLINE)
+        r.next_subpass(vk::SubpassContents::INLINE)
     };
     assert_eq!(vuid(in_render_pass(&s, one, |_| {}, next)), past);
     // Both subpasses visited: recorded.
@@ -747,13 +727,13 @@ fn render_pass_instances_end_in_their_last_subpass_and_the_layer_agrees() {
     let rec = begun(&mut cb, (&two, &two_fb));
     layer_names(&s.messages, last, || {
         // SAFETY: see the module docs.
-        drop(unsafe { rec.cmd_end_render_pass_unchecked() });
+        drop(unsafe { rec.end_render_pass_unchecked() });
     });
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = begun(&mut cb, one);
     layer_names(&s.messages, past, || {
         // SAFETY: see the module docs.
-        unsafe { rec.cmd_next_subpass_unchecked(vk::SubpassContents::INLINE) };
+        unsafe { rec.next_subpass_unchecked(vk::SubpassContents::INLINE) };
     });
     // The recorder follows the calls it was given, not what the layer skipped: it
     // is dropped unended.
@@ -781,16 +761,16 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     let none = vk::QueryControlFlags::empty();
     let reset = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         // SAFETY: no query of the pool is active.
-        unsafe { r.cmd_reset_query_pool(&occlusion, 0, 2) }.expect("reset");
+        unsafe { r.reset_query_pool(&occlusion, 0, 2) }.expect("reset");
     };
-    // SAFETY (each `cmd_begin_query` below): the pool was reset before, in the same
+    // SAFETY (each `begin_query` below): the pool was reset before, in the same
     // buffer, so its queries are unavailable.
     let begin = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         reset(r);
-        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
     };
     let end_inside = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
-        unsafe { r.cmd_end_query(&occlusion, 0) }.map(drop)
+        unsafe { r.end_query(&occlusion, 0) }.map(drop)
     };
     // Begun outside, ended inside.
     let outside_in = "VUID-vkCmdEndQuery-None-07008";
@@ -802,7 +782,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     // the end the driver sees.
     let left = "VUID-vkCmdEndRenderPass-None-07004";
     let refused = in_render_pass(&s, one, reset, |r| {
-        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
     });
     assert_eq!(vuid(refused), left);
     // Ended without being begun; two active queries of one type; a timestamp pool; a
@@ -813,28 +793,28 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         .expect("begin");
     reset(&mut rec);
     assert_eq!(
-        vuid(unsafe { rec.cmd_end_query(&occlusion, 0) }),
+        vuid(unsafe { rec.end_query(&occlusion, 0) }),
         "VUID-vkCmdEndQuery-None-01923"
     );
-    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
     assert_eq!(
-        vuid(unsafe { rec.cmd_begin_query(&occlusion, 1, none) }),
+        vuid(unsafe { rec.begin_query(&occlusion, 1, none) }),
         "VUID-vkCmdBeginQuery-queryPool-01922"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_begin_query(&timestamps, 0, none) }),
+        vuid(unsafe { rec.begin_query(&timestamps, 0, none) }),
         "VUID-vkCmdBeginQuery-queryType-02804"
     );
-    unsafe { rec.cmd_end_query(&occlusion, 0) }.expect("end query");
+    unsafe { rec.end_query(&occlusion, 0) }.expect("end query");
     assert_eq!(
-        vuid(unsafe { rec.cmd_begin_query(&occlusion, 2, none) }),
+        vuid(unsafe { rec.begin_query(&occlusion, 2, none) }),
         "VUID-vkCmdBeginQuery-query-00802"
     );
     rec.end().expect("end");
     // Begun and ended in the render pass's subpass: recorded.
     in_render_pass(&s, one, reset, |r| {
-        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
-        unsafe { r.cmd_end_query(&occlusion, 0) }.expect("end query");
+        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
+        unsafe { r.end_query(&occlusion, 0) }.expect("end query");
     })
     .expect("a query in a subpass");
     assert_silent(&s.messages);
@@ -847,21 +827,21 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     reset(&mut rec);
     layer_names(&s.messages, "VUID-vkCmdEndQuery-None-01923", || {
         // SAFETY: see the module docs; the command buffer is never submitted.
-        drop(unsafe { rec.cmd_end_query_unchecked(&occlusion, 0) });
+        drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
     });
-    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryPool-01922", || {
         // SAFETY: as above.
-        drop(unsafe { rec.cmd_begin_query_unchecked(&occlusion, 1, none) });
+        drop(unsafe { rec.begin_query_unchecked(&occlusion, 1, none) });
     });
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryType-02804", || {
         // SAFETY: as above.
-        drop(unsafe { rec.cmd_begin_query_unchecked(&timestamps, 0, none) });
+        drop(unsafe { rec.begin_query_unchecked(&timestamps, 0, none) });
     });
-    unsafe { rec.cmd_end_query(&occlusion, 0) }.expect("end query");
+    unsafe { rec.end_query(&occlusion, 0) }.expect("end query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-query-00802", || {
         // SAFETY: as above.
-        drop(unsafe { rec.cmd_begin_query_unchecked(&occlusion, 2, none) });
+        drop(unsafe { rec.begin_query_unchecked(&occlusion, 2, none) });
     });
     // The recorder counts the begun queries the layer skipped: dropped unended.
     drop(rec);
@@ -874,7 +854,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     reset(&mut rec);
-    unsafe { rec.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
     let raw = rec.raw();
     layer_names(
         &s.messages,
@@ -900,9 +880,9 @@ fn begun2<'c>(
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     // SAFETY: no query of the pool is active.
-    unsafe { rec.cmd_reset_query_pool(pool, 0, 1) }.expect("reset");
+    unsafe { rec.reset_query_pool(pool, 0, 1) }.expect("reset");
     let clear = [vk::ClearValue::default()];
-    rec.cmd_begin_render_pass2(
+    rec.begin_render_pass2(
         &tuff::RenderPassBeginInfo::new(rp, fb)
             .render_area(AREA)
             .clear_values(&clear),
@@ -921,7 +901,7 @@ fn rendered<'c>(
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     // SAFETY: no query of the pool is active.
-    unsafe { rec.cmd_reset_query_pool(pool, 0, 1) }.expect("reset");
+    unsafe { rec.reset_query_pool(pool, 0, 1) }.expect("reset");
     let color = [tuff::RenderingAttachmentInfo::new()
         .image_view(Some(view))
         .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
@@ -932,9 +912,9 @@ fn rendered<'c>(
         .layer_count(1)
         .color_attachments(&color);
     // SAFETY: the view is the target's, in the layout the rendering names.
-    let mut rec = unsafe { rec.cmd_begin_rendering(&rendering) };
+    let mut rec = unsafe { rec.begin_rendering(&rendering) };
     // SAFETY: the pool was reset before, in the same buffer.
-    unsafe { rec.cmd_begin_query(pool, 0, vk::QueryControlFlags::empty()) }.expect("begin query");
+    unsafe { rec.begin_query(pool, 0, vk::QueryControlFlags::empty()) }.expect("begin query");
     rec
 }
 
@@ -968,14 +948,14 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     let end_info = tuff::SubpassEndInfo::new();
     let query = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
         // SAFETY: the pool was reset before, in the same buffer.
-        unsafe { r.cmd_begin_query(&occlusion, 0, none) }.expect("begin query");
+        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
     };
 
     // Ended in the first of two subpasses.
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
     assert_eq!(
-        vuid(rec.cmd_end_render_pass2(&end_info).end()),
+        vuid(rec.end_render_pass2(&end_info).end()),
         "VUID-vkCmdEndRenderPass2-None-03103"
     );
     // A query left active at the instance's end.
@@ -983,16 +963,16 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     let mut rec = begun2(&mut cb, one, &occlusion);
     query(&mut rec);
     assert_eq!(
-        vuid(rec.cmd_end_render_pass2(&end_info).end()),
+        vuid(rec.end_render_pass2(&end_info).end()),
         "VUID-vkCmdEndRenderPass2-None-07005"
     );
     // A query ended in the subpass after the one it began in.
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
     query(&mut rec);
-    rec.cmd_next_subpass(vk::SubpassContents::INLINE);
+    rec.next_subpass(vk::SubpassContents::INLINE);
     assert_eq!(
-        vuid(unsafe { rec.cmd_end_query(&occlusion, 0) }),
+        vuid(unsafe { rec.end_query(&occlusion, 0) }),
         "VUID-vkCmdEndQuery-None-07007"
     );
     drop(rec);
@@ -1001,7 +981,7 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     assert_eq!(
         vuid(
             rendered(&mut cb, &target.view, &occlusion)
-                .cmd_end_rendering()
+                .end_rendering()
                 .end()
         ),
         "VUID-vkCmdEndRendering-None-06999"
@@ -1014,7 +994,7 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     let rec = begun2(&mut cb, (&two, &two_fb), &occlusion);
     layer_names(&s.messages, "VUID-vkCmdEndRenderPass2-None-03103", || {
         // SAFETY: see the module docs.
-        drop(unsafe { rec.cmd_end_render_pass2_unchecked(&end_info) });
+        drop(unsafe { rec.end_render_pass2_unchecked(&end_info) });
     });
     // (The 1.3.239 layer checks neither a query left active at the end of an
     // instance, as for `vkCmdEndRenderPass`, nor one ended in another subpass: the
@@ -1030,9 +1010,7 @@ fn a_subpass_without_attachments_keeps_its_first_sample_count() {
     let s = setup(true);
     let d = &s.device;
     assert_eq!(
-        s.physical
-            .get_physical_device_features()
-            .variable_multisample_rate,
+        s.physical.get_features().variable_multisample_rate,
         vk::FALSE,
         "the rule applies where the device cannot vary the sample count"
     );
@@ -1094,12 +1072,12 @@ fn a_subpass_without_attachments_keeps_its_first_sample_count() {
     let graphics = vk::PipelineBindPoint::GRAPHICS;
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = begun(&mut cb, (&render_pass, &framebuffer));
-    rec.cmd_bind_pipeline(graphics, &one)
+    rec.bind_pipeline(graphics, &one)
         .expect("the first pipeline");
-    rec.cmd_bind_pipeline(graphics, &one)
+    rec.bind_pipeline(graphics, &one)
         .expect("the same count again");
-    assert_eq!(vuid(rec.cmd_bind_pipeline(graphics, &four)), expected);
-    drop(rec.cmd_end_render_pass().end());
+    assert_eq!(vuid(rec.bind_pipeline(graphics, &four)), expected);
+    drop(rec.end_render_pass().end());
     assert_silent(&s.messages);
 }
 

@@ -140,3 +140,45 @@ fn coverage_table() {
         insta::assert_snapshot!("coverage-table", tables);
     });
 }
+
+/// Methods are named on their receiver by one rule (`names::methods`), and the
+/// rule's exceptions hold: a handle's name stays, and so does a name that another
+/// method of the same type has.
+#[test]
+fn methods_are_named_on_their_receiver() {
+    let methods = tuff_gen::names::methods(&pinned().model);
+    for (command, method) in [
+        ("vkQueueSubmit", "submit"),
+        ("vkQueueWaitIdle", "wait_idle"),
+        ("vkDeviceWaitIdle", "wait_idle"),
+        ("vkCmdDraw", "draw"),
+        ("vkCmdBeginRenderPass", "begin_render_pass"),
+        ("vkGetPhysicalDeviceProperties", "get_properties"),
+        ("vkResetCommandBuffer", "reset"),
+        ("vkGetDeviceQueue", "get_queue"),
+        ("vkQueuePresentKHR", "present_khr"),
+        // Unchanged: not the receiver's name, another handle's, a clash.
+        ("vkCreateBuffer", "create_buffer"),
+        ("vkWaitForFences", "wait_for_fences"),
+        (
+            "vkGetDeviceMemoryCommitment",
+            "get_device_memory_commitment",
+        ),
+        (
+            "vkGetDeviceBufferMemoryRequirements",
+            "get_device_buffer_memory_requirements",
+        ),
+        ("vkEnumeratePhysicalDevices", "enumerate_physical_devices"),
+    ] {
+        assert_eq!(methods[command], method, "{command}");
+    }
+    // No two commands of one receiver share a method.
+    let mut seen = std::collections::BTreeSet::new();
+    for (command, method) in &methods {
+        let receiver = tuff_gen::names::receiver_type(&pinned().model, command);
+        assert!(
+            seen.insert((receiver, method.as_str())),
+            "{receiver}::{method} twice"
+        );
+    }
+}

@@ -68,7 +68,7 @@ fn record_gated_fill(
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin");
     unsafe {
-        rec.cmd_wait_events(
+        rec.wait_events(
             &[gate],
             vk::PipelineStageFlags::HOST,
             vk::PipelineStageFlags::TRANSFER,
@@ -78,13 +78,13 @@ fn record_gated_fill(
         )
         .expect("recorded")
     };
-    unsafe { rec.cmd_fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7) }.expect("fill");
+    unsafe { rec.fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7) }.expect("fill");
     rec.end().expect("end");
 }
 
 fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff::Result<()> {
     let handles = tuff::HandleSlice::new(cbs);
-    s.queue.queue_submit(
+    s.queue.submit(
         &[tuff::SubmitInfo::new().command_buffers(&handles)],
         Some(fence),
     )
@@ -118,7 +118,7 @@ fn a_submission_without_a_fence_is_held_by_its_queue() {
         );
         let handles = tuff::HandleSlice::new(&[&cb]);
         s.queue
-            .queue_submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], None)
+            .submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], None)
             .expect("submit without a fence");
         // Pending: recording it again is refused.
         assert!(cb
@@ -135,7 +135,7 @@ fn a_submission_without_a_fence_is_held_by_its_queue() {
     s.device.set_event(&gate).expect("set event");
     wait(&s, &later);
     // And an idle wait shows the rest complete.
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     assert_silent(&s.messages);
 }
 
@@ -161,7 +161,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         let submits = [tuff::SubmitInfo2::new()
             .command_buffer_infos(&cb_infos)
             .signal_semaphore_infos(&signal_infos)];
-        unsafe { s.queue.queue_submit2(&submits, Some(&done)) }.expect("submit2");
+        unsafe { s.queue.submit2(&submits, Some(&done)) }.expect("submit2");
         // Everything the submission uses goes while it waits for the host.
         drop(cb);
         drop(pool);
@@ -284,7 +284,7 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
         let cbs = tuff::HandleSlice::new(&[&cb]);
         let signals = tuff::HandleSlice::new(&[&signalled]);
         s.queue
-            .queue_submit(
+            .submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)],
@@ -292,7 +292,7 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
             )
             .expect("first submit");
         s.queue
-            .queue_submit(&[], Some(&second))
+            .submit(&[], Some(&second))
             .expect("second submit, no command buffers");
     }
     // The semaphore is in use by the pending batch; the second fence has no command
@@ -318,38 +318,38 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00063"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.queue_submit2(&[], Some(&signalled)) }),
+        vuid(unsafe { s.queue.submit2(&[], Some(&signalled)) }),
         "VUID-vkQueueSubmit2-fence-04894"
     );
     assert_silent(&s.messages);
     // The same call without tuff's checks: the layer names the same rule.
     // SAFETY: an empty submission with a signalled fence breaks only the rule under
     // test, which the layer reports; the fence is waited for before it goes.
-    unsafe { s.queue.queue_submit_unchecked(&[], Some(&signalled)) }.expect("unchecked submit");
+    unsafe { s.queue.submit_unchecked(&[], Some(&signalled)) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00063");
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     let signalled = s
         .device
         .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
         .expect("fence");
     // SAFETY: as above.
-    unsafe { s.queue.queue_submit2_unchecked(&[], Some(&signalled)) }.expect("unchecked submit2");
+    unsafe { s.queue.submit2_unchecked(&[], Some(&signalled)) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04894");
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     let signalled = s
         .device
         .create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
         .expect("fence");
     assert_eq!(
-        vuid(unsafe { s.queue.queue_bind_sparse(&[], &signalled) }),
+        vuid(unsafe { s.queue.bind_sparse(&[], &signalled) }),
         "VUID-vkQueueBindSparse-fence-01113"
     );
     assert_silent(&s.messages);
     // SAFETY: as above; an empty bind binds nothing. Lavapipe has no sparse
     // binding and returns an error once the layer has seen the call.
-    let _ = unsafe { s.queue.queue_bind_sparse_unchecked(&[], &signalled) };
+    let _ = unsafe { s.queue.bind_sparse_unchecked(&[], &signalled) };
     assert_layer_reports(&s, "VUID-vkQueueBindSparse-fence-01113");
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     assert_silent(&s.messages);
 }
 
@@ -374,11 +374,11 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00064"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.queue_submit2(&[], Some(&done)) }),
+        vuid(unsafe { s.queue.submit2(&[], Some(&done)) }),
         "VUID-vkQueueSubmit2-fence-04895"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.queue_bind_sparse(&[], &done) }),
+        vuid(unsafe { s.queue.bind_sparse(&[], &done) }),
         "VUID-vkQueueBindSparse-fence-01114"
     );
     assert_eq!(
@@ -394,18 +394,18 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
     // program keeps the buffer and the command buffer until the queue is idle.
     // SAFETY: an empty submission signals the fence after the pending one; the
     // reset only breaks the rule under test.
-    unsafe { s.queue.queue_submit_unchecked(&[], Some(&done)) }.expect("unchecked submit");
+    unsafe { s.queue.submit_unchecked(&[], Some(&done)) }.expect("unchecked submit");
     assert_layer_reports(&s, "VUID-vkQueueSubmit-fence-00064");
     // SAFETY: as above.
-    unsafe { s.queue.queue_submit2_unchecked(&[], Some(&done)) }.expect("unchecked submit2");
+    unsafe { s.queue.submit2_unchecked(&[], Some(&done)) }.expect("unchecked submit2");
     assert_layer_reports(&s, "VUID-vkQueueSubmit2-fence-04895");
     // SAFETY: as above; an empty bind binds nothing (and lavapipe refuses it).
-    let _ = unsafe { s.queue.queue_bind_sparse_unchecked(&[], &done) };
+    let _ = unsafe { s.queue.bind_sparse_unchecked(&[], &done) };
     assert_layer_reports(&s, "VUID-vkQueueBindSparse-fence-01114");
     // SAFETY: as above.
     unsafe { s.device.reset_fences_unchecked(&[&done]) }.expect("unchecked reset");
     assert_layer_reports(&s, "VUID-vkResetFences-pFences-01123");
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     assert_silent(&s.messages);
 }
 
@@ -443,7 +443,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin secondary");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
     rec.end().expect("end secondary");
     assert_eq!(
         vuid(submit(&s, &[&secondary], &done)),
@@ -469,7 +469,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
                 .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
         )
         .expect("begin once");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
     rec.end().expect("end once");
     submit(&s, &[&once], &done).expect("first submission");
     wait(&s, &done);
@@ -490,7 +490,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
         // secondary's fill as a primary's; the program keeps everything until the
         // fence is waited for.
         unsafe {
-            s.queue.queue_submit_unchecked(
+            s.queue.submit_unchecked(
                 &[tuff::SubmitInfo::new().command_buffers(&cbs)],
                 Some(&done),
             )
@@ -514,7 +514,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     let inheritance = tuff::CommandBufferInheritanceInfo::new();
     let secondary_begin = tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
     let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 3) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 3) }.expect("fill");
     rec.end().expect("end secondary");
 
     let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -522,7 +522,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin primary");
     unsafe {
-        rec.cmd_wait_events(
+        rec.wait_events(
             &[&gate],
             vk::PipelineStageFlags::HOST,
             vk::PipelineStageFlags::TRANSFER,
@@ -532,7 +532,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         )
         .expect("recorded")
     };
-    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
 
@@ -546,7 +546,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
 
     // Recorded again once complete: the primary that executes it is now invalid.
     let mut rec = secondary.begin(&secondary_begin).expect("begin again");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 4) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 4) }.expect("fill");
     rec.end().expect("end again");
     assert_eq!(
         vuid(submit(&s, &[&primary], &done)),
@@ -564,11 +564,11 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 5) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 5) }.expect("fill");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     // Known complete without a look at the fence: the buffer may be recorded again
     // and the fence reset.
     s.device.reset_fences(&[&done]).expect("reset after idle");
@@ -577,7 +577,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
         .expect("begin after idle");
     rec.end().expect("end");
     submit(&s, &[&cb], &done).expect("submit again");
-    s.device.device_wait_idle().expect("device idle");
+    s.device.wait_idle().expect("device idle");
     s.device
         .reset_fences(&[&done])
         .expect("reset after device idle");
@@ -641,14 +641,13 @@ fn reset_of_a_buffer_of_a_pool_without_reset_is_refused_and_the_layer_agrees() {
         .pop()
         .expect("one");
     assert_eq!(
-        vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
+        vuid(cb.reset(vk::CommandBufferResetFlags::empty())),
         "VUID-vkResetCommandBuffer-commandBuffer-00046"
     );
     assert_silent(&s.messages);
     // SAFETY: none; the buffer is in the initial state, so the driver's reset is
     // harmless, and the layer reports the pool's missing flag.
-    unsafe { cb.reset_command_buffer_unchecked(vk::CommandBufferResetFlags::empty()) }
-        .expect("reset");
+    unsafe { cb.reset_unchecked(vk::CommandBufferResetFlags::empty()) }.expect("reset");
     assert_layer_reports(&s, "VUID-vkResetCommandBuffer-commandBuffer-00046");
 }
 
@@ -669,7 +668,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
     assert_eq!(
         vuid(s.device.reset_command_pool(&pool, none)),
         "VUID-vkEndCommandBuffer-commandBuffer-00059"
@@ -700,12 +699,12 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
         "VUID-vkResetCommandPool-commandPool-00040"
     );
     assert_eq!(
-        vuid(cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())),
+        vuid(cb.reset(vk::CommandBufferResetFlags::empty())),
         "VUID-vkResetCommandBuffer-commandBuffer-00045"
     );
     s.device.set_event(&gate).expect("set");
     wait(&s, &done);
-    cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
+    cb.reset(vk::CommandBufferResetFlags::empty())
         .expect("reset once complete");
     s.device
         .reset_command_pool(&pool, none)
@@ -802,9 +801,9 @@ fn recorder_states_follow_the_begin_info() {
             },
         })
         .clear_values(&clear);
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
-    unsafe { rec.cmd_execute_commands(&[&secondary]) }.expect("execute");
-    rec.cmd_end_render_pass().end().expect("end primary");
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
+    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    rec.end_render_pass().end().expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
     wait(&s, &done);
@@ -822,7 +821,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+        unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
         drop(rec);
     }
     assert_eq!(
@@ -832,7 +831,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after an abandoned recording");
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
+    unsafe { rec.fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
     rec.end().expect("end");
     submit(&s, &[&cb], &done).expect("submit");
     wait(&s, &done);
@@ -908,7 +907,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         unsafe {
-            rec.cmd_wait_events(
+            rec.wait_events(
                 &[&gate],
                 vk::PipelineStageFlags::HOST,
                 vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
@@ -918,8 +917,8 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             )
             .expect("recorded")
         };
-        let rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        rec.cmd_end_render_pass().end().expect("end");
+        let rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.end_render_pass().end().expect("end");
         submit(&s, &[&cb], &done).expect("submit");
         // Set from another thread after a while, so that a failed assertion below
         // does not leave the queue waiting for ever.
@@ -935,7 +934,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
     wait(&s, &done);
     setter.join().expect("setter");
     // The recording still holds them; a new recording lets them go.
-    cb.reset_command_buffer(vk::CommandBufferResetFlags::empty())
+    cb.reset(vk::CommandBufferResetFlags::empty())
         .expect("reset");
     assert_eq!(s.device.live_object_count(), live_with_view - 2);
     assert_silent(&s.messages);
@@ -1100,7 +1099,7 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
 fn two_wrappers_of_one_queue_never_submit_at_once() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let other = s.device.get_device_queue(s.family, 0).expect("queue");
+    let other = s.device.get_queue(s.family, 0).expect("queue");
     let (buffer, _memory) = transfer_buffer(&s);
     std::thread::scope(|scope| {
         for queue in [&s.queue, &other] {
@@ -1112,12 +1111,12 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                unsafe { rec.cmd_fill_buffer(buffer, 0, 256, 1) }.expect("fill");
+                unsafe { rec.fill_buffer(buffer, 0, 256, 1) }.expect("fill");
                 rec.end().expect("end");
                 let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
                     queue
-                        .queue_submit(
+                        .submit(
                             &[tuff::SubmitInfo::new().command_buffers(&cbs)],
                             Some(&done),
                         )
@@ -1156,7 +1155,7 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
                     let mut rec = cb
                         .begin(&tuff::CommandBufferBeginInfo::new())
                         .expect("begin");
-                    unsafe { rec.cmd_fill_buffer(buffer, 0, 256, i) }.expect("fill");
+                    unsafe { rec.fill_buffer(buffer, 0, 256, i) }.expect("fill");
                     rec.end().expect("end");
                 }
                 // Freed while the other thread may be recording from the same pool.
@@ -1301,14 +1300,14 @@ fn timeline_semaphores_are_used_only_with_their_values() {
 
     let done = fence(&s);
     let timelines = tuff::HandleSlice::new(&[&timeline]);
-    let no_values = s.queue.queue_submit(
+    let no_values = s.queue.submit(
         &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
         Some(&done),
     );
     assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
     // A count without values, and values of another count.
     let mut counted = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_value_count(1);
-    let r = s.queue.queue_submit(
+    let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
             .signal_semaphores(&timelines)
             .push_next(&mut counted)],
@@ -1316,7 +1315,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     );
     assert_eq!(vuid(r), "VUID-VkSubmitInfo-pNext-03241");
     let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
-    let r = s.queue.queue_submit(
+    let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
             .signal_semaphores(&timelines)
             .push_next(&mut two)],
@@ -1326,7 +1325,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     // Waits on a timeline semaphore with values of another count.
     let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
     let mut two_waits = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1, 2]);
-    let r = s.queue.queue_submit(
+    let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
             .wait_semaphores(&timelines, &stages)
             .expect("one stage per semaphore")
@@ -1338,7 +1337,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
 
     let mut one = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new()
                 .signal_semaphores(&timelines)
                 .push_next(&mut one)],
@@ -1385,7 +1384,7 @@ impl Submitter {
                     .map(|cb| tuff::CommandBufferSubmitInfo::new(cb))
                     .collect();
                 unsafe {
-                    s.queue.queue_submit2(
+                    s.queue.submit2(
                         &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
                         Some(fence),
                     )
@@ -1425,7 +1424,7 @@ fn record_execute(
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin primary");
-    unsafe { rec.cmd_execute_commands(&[secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&[secondary]) }.expect("execute");
     rec.end().expect("end primary");
 }
 
@@ -1448,7 +1447,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
         let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
         unsafe {
-            rec.cmd_wait_events(
+            rec.wait_events(
                 &[&gate],
                 vk::PipelineStageFlags::HOST,
                 vk::PipelineStageFlags::TRANSFER,
@@ -1458,7 +1457,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             )
             .expect("recorded")
         };
-        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+        unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
         rec.end().expect("end secondary");
         assert_eq!(
             vuid(submitter.submit(&s, &[&secondary], &done)),
@@ -1484,7 +1483,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin third");
         assert_eq!(
-            vuid(unsafe { rec.cmd_execute_commands(&[&secondary]) }),
+            vuid(unsafe { rec.execute_commands(&[&secondary]) }),
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
         );
         rec.end().expect("end third");
@@ -1557,7 +1556,7 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         let signals = tuff::HandleSlice::new(&[&timeline]);
         let mut values = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
         s.queue
-            .queue_submit(
+            .submit(
                 &[tuff::SubmitInfo::new()
                     .command_buffers(&cbs)
                     .signal_semaphores(&signals)
@@ -1687,12 +1686,12 @@ fn buffer_copies_stay_inside_their_buffers() {
         .expect("begin");
     for (expected, src, dst, regions) in &cases {
         assert_eq!(
-            vuid(unsafe { rec.cmd_copy_buffer(src, dst, regions) }),
+            vuid(unsafe { rec.copy_buffer(src, dst, regions) }),
             *expected,
             "copy {regions:?}"
         );
     }
-    unsafe { rec.cmd_copy_buffer(&big, &small, &region(64, 0, 16)) }
+    unsafe { rec.copy_buffer(&big, &small, &region(64, 0, 16)) }
         .expect("a copy inside both buffers");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -1710,7 +1709,7 @@ fn buffer_copies_stay_inside_their_buffers() {
     for (expected, src, dst, regions) in &cases {
         // SAFETY: the messenger makes the layer skip the call, which breaks only the
         // rule under test; the command buffer is never submitted.
-        unsafe { rec.cmd_copy_buffer_unchecked(src, dst, regions) }.expect("recorded");
+        unsafe { rec.copy_buffer_unchecked(src, dst, regions) }.expect("recorded");
         assert_layer_reports(&s, expected);
     }
     s.messages.abort_on_error(false);
@@ -1757,7 +1756,7 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     unsafe {
-        rec.cmd_copy_buffer(
+        rec.copy_buffer(
             &buffer,
             &target,
             &[vk::BufferCopy {
@@ -1801,28 +1800,27 @@ fn slices_sharing_a_count_have_its_length() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0])),
+        vuid(rec.bind_vertex_buffers(0, &[&a, &b], &[0])),
         "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[]) }),
+        vuid(unsafe { rec.bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[]) }),
         "VUID-vkCmdBindVertexBuffers2-pSizes-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16]) }),
+        vuid(unsafe { rec.bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16]) }),
         "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.cmd_wait_events2(&[&gate], &[]) }),
+        vuid(unsafe { rec.wait_events2(&[&gate], &[]) }),
         "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
     );
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.
-    rec.cmd_bind_vertex_buffers(0, &[&a, &b], &[0, 16])
+    rec.bind_vertex_buffers(0, &[&a, &b], &[0, 16])
         .expect("one offset per buffer");
-    unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[]) }
+    unsafe { rec.bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[]) }
         .expect("no sizes and no strides");
-    unsafe { rec.cmd_bind_vertex_buffers2(0, &[&a], &[0], &[128], &[]) }
-        .expect("a size per buffer");
+    unsafe { rec.bind_vertex_buffers2(0, &[&a], &[0], &[128], &[]) }.expect("a size per buffer");
     rec.end().expect("end");
     assert_silent(&s.messages);
 }
@@ -1857,9 +1855,9 @@ fn buffer_commands_stay_inside_their_buffers() {
                     if unchecked {
                         // SAFETY: the layer skips the call, which breaks only the rule
                         // under test; the command buffer is never submitted.
-                        unsafe { rec.cmd_fill_buffer_unchecked(&buf, offset, size, 0) }
+                        unsafe { rec.fill_buffer_unchecked(&buf, offset, size, 0) }
                     } else {
-                        unsafe { rec.cmd_fill_buffer(&buf, offset, size, 0) }
+                        unsafe { rec.fill_buffer(&buf, offset, size, 0) }
                     }
                 }),
             )
@@ -1875,9 +1873,9 @@ fn buffer_commands_stay_inside_their_buffers() {
             Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
                 if unchecked {
                     // SAFETY: as for the fills.
-                    unsafe { rec.cmd_update_buffer_unchecked(&buf, offset, data) }
+                    unsafe { rec.update_buffer_unchecked(&buf, offset, data) }
                 } else {
-                    unsafe { rec.cmd_update_buffer(&buf, offset, data) }
+                    unsafe { rec.update_buffer(&buf, offset, data) }
                 }
             }),
         )
@@ -1889,9 +1887,9 @@ fn buffer_commands_stay_inside_their_buffers() {
             Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
                 if unchecked {
                     // SAFETY: as for the fills.
-                    unsafe { rec.cmd_bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
+                    unsafe { rec.bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
                 } else {
-                    rec.cmd_bind_vertex_buffers(0, &[&buf], &[offset])
+                    rec.bind_vertex_buffers(0, &[&buf], &[offset])
                 }
             }),
         )
@@ -1903,11 +1901,9 @@ fn buffer_commands_stay_inside_their_buffers() {
             Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
                 if unchecked {
                     // SAFETY: as for the fills.
-                    unsafe {
-                        rec.cmd_bind_index_buffer_unchecked(&buf, offset, vk::IndexType::UINT32)
-                    }
+                    unsafe { rec.bind_index_buffer_unchecked(&buf, offset, vk::IndexType::UINT32) }
                 } else {
-                    rec.cmd_bind_index_buffer(&buf, offset, vk::IndexType::UINT32)
+                    rec.bind_index_buffer(&buf, offset, vk::IndexType::UINT32)
                 }
             }),
         )
@@ -1969,15 +1965,15 @@ fn buffer_commands_stay_inside_their_buffers() {
     // 65,540 bytes: more than one update may carry (and than the buffer holds).
     let (large, _m3) = host_buffer(&s, 1 << 17, vk::BufferUsageFlags::TRANSFER_DST);
     assert_eq!(
-        vuid(unsafe { rec.cmd_update_buffer(&large, 0, big) }),
+        vuid(unsafe { rec.update_buffer(&large, 0, big) }),
         "VUID-vkCmdUpdateBuffer-dataSize-00037"
     );
     // The recorder goes on with correct calls, which run.
-    unsafe { rec.cmd_fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
-    unsafe { rec.cmd_update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
-    rec.cmd_bind_vertex_buffers(0, &[&buffer], &[252])
+    unsafe { rec.fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
+    unsafe { rec.update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
+    rec.bind_vertex_buffers(0, &[&buffer], &[252])
         .expect("vertex");
-    rec.cmd_bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
+    rec.bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
         .expect("index");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -1996,7 +1992,7 @@ fn buffer_commands_stay_inside_their_buffers() {
         assert_layer_reports(&s, expected);
     }
     // SAFETY: as above.
-    unsafe { rec.cmd_update_buffer_unchecked(&large, 0, big) }.expect("recorded");
+    unsafe { rec.update_buffer_unchecked(&large, 0, big) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdUpdateBuffer-dataSize-00037");
     s.messages.abort_on_error(false);
     rec.end().expect("end");
@@ -2187,11 +2183,7 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     .expect("write");
     let vertex = vk::ShaderStageFlags::VERTEX;
     let both = vertex | vk::ShaderStageFlags::FRAGMENT;
-    let max = s
-        .physical
-        .get_physical_device_properties()
-        .limits
-        .max_push_constants_size;
+    let max = s.physical.get_properties().limits.max_push_constants_size;
     let pushes: [(&str, vk::ShaderStageFlags, u32, usize); 6] = [
         ("VUID-vkCmdPushConstants-offset-01795", both, 16, 8),
         ("VUID-vkCmdPushConstants-offset-01796", vertex, 0, 8),
@@ -2207,25 +2199,25 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .expect("begin");
     for (expected, stages, offset, len) in pushes {
         assert_eq!(
-            vuid(rec.cmd_push_constants(&layout, stages, offset, &bytes[..len])),
+            vuid(rec.push_constants(&layout, stages, offset, &bytes[..len])),
             expected
         );
     }
     let graphics = vk::PipelineBindPoint::GRAPHICS;
     assert_eq!(
-        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
+        vuid(rec.bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
         "VUID-vkCmdBindDescriptorSets-firstSet-00360"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
+        vuid(rec.bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
         "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359"
     );
     // The recorder goes on with correct calls.
-    rec.cmd_push_constants(&layout, both, 0, &bytes[..16])
+    rec.push_constants(&layout, both, 0, &bytes[..16])
         .expect("push");
-    rec.cmd_push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
+    rec.push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
         .expect("push");
-    rec.cmd_bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
+    rec.bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
         .expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2238,16 +2230,16 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     for (expected, stages, offset, len) in pushes {
         // SAFETY: the layer skips the call, which breaks only the rule under test; the
         // command buffer is never submitted.
-        unsafe { rec.cmd_push_constants_unchecked(&layout, stages, offset, &bytes[..len]) }
+        unsafe { rec.push_constants_unchecked(&layout, stages, offset, &bytes[..len]) }
             .expect("recorded");
         assert_layer_reports(&s, expected);
     }
     // SAFETY: as above.
-    unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, &layout, 1, &[&set], &[0]) }
+    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 1, &[&set], &[0]) }
         .expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-firstSet-00360");
     // SAFETY: as above; the layer reads no dynamic offset it was not given.
-    unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, &layout, 0, &[&set], &[]) }
+    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 0, &[&set], &[]) }
         .expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359");
     s.messages.abort_on_error(false);
@@ -2334,7 +2326,7 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
     write(&ranged, uniform, 64);
     write(&whole, uniform, vk::WHOLE_SIZE);
     write(&stored, storage, 64);
-    let limits = s.physical.get_physical_device_properties().limits;
+    let limits = s.physical.get_properties().limits;
     let (ua, sa) = (
         limits.min_uniform_buffer_offset_alignment as u32,
         limits.min_storage_buffer_offset_alignment as u32,
@@ -2385,14 +2377,14 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
         .expect("begin");
     for (expected, layout, set, offset) in cases {
         assert_eq!(
-            vuid(rec.cmd_bind_descriptor_sets(graphics, layout, 0, &[set], &[offset])),
+            vuid(rec.bind_descriptor_sets(graphics, layout, 0, &[set], &[offset])),
             expected
         );
     }
     // The recorder goes on with correct binds.
-    rec.cmd_bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&ranged], &[ua])
+    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&ranged], &[ua])
         .expect("bind");
-    rec.cmd_bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&whole], &[0])
+    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&whole], &[0])
         .expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2404,7 +2396,7 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
     for (expected, layout, set, offset) in cases {
         // SAFETY: the layer skips the call, which breaks only the rule under test; the
         // command buffer is never submitted.
-        unsafe { rec.cmd_bind_descriptor_sets_unchecked(graphics, layout, 0, &[set], &[offset]) }
+        unsafe { rec.bind_descriptor_sets_unchecked(graphics, layout, 0, &[set], &[offset]) }
             .expect("recorded");
         assert_layer_reports(&s, expected);
     }
@@ -2426,7 +2418,7 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
         let signals = tuff::HandleSlice::new(&[&signaled]);
         let first = fence(&s);
         s.queue
-            .queue_submit(
+            .submit(
                 &[tuff::SubmitInfo::new().signal_semaphores(&signals)],
                 Some(&first),
             )
@@ -2498,12 +2490,12 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
                 batch = batch.push_next(&mut group);
             }
             let batch = [batch];
-            assert_eq!(vuid(s.queue.queue_submit(&batch, Some(&done))), expected);
+            assert_eq!(vuid(s.queue.submit(&batch, Some(&done))), expected);
             s.messages.take();
             s.messages.abort_on_error(true);
             // SAFETY: the layer skips the submission, which breaks only the rule under
             // test.
-            let _ = unsafe { s.queue.queue_submit_unchecked(&batch, Some(&done)) };
+            let _ = unsafe { s.queue.submit_unchecked(&batch, Some(&done)) };
             s.messages.abort_on_error(false);
             if expected.ends_with("-00085") {
                 let said = s.messages.take();
@@ -2512,7 +2504,7 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
                 assert_layer_reports(&s, expected);
             }
         }
-        s.queue.queue_wait_idle().expect("idle");
+        s.queue.wait_idle().expect("idle");
     }
 }
 
@@ -2823,9 +2815,9 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
             if unchecked {
                 // SAFETY: the layer skips the call, which breaks only the rule under
                 // test; the command buffer is never submitted.
-                unsafe { rec.cmd_set_viewport_unchecked(first, &v) }
+                unsafe { rec.set_viewport_unchecked(first, &v) }
             } else {
-                rec.cmd_set_viewport(first, &v)
+                rec.set_viewport(first, &v)
             }
         })
     };
@@ -2833,9 +2825,9 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
         Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
             if unchecked {
                 // SAFETY: as above.
-                unsafe { rec.cmd_set_scissor_unchecked(first, &r) }
+                unsafe { rec.set_scissor_unchecked(first, &r) }
             } else {
-                rec.cmd_set_scissor(first, &r)
+                rec.set_scissor(first, &r)
             }
         })
     };
@@ -2844,9 +2836,9 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
             let v = vec![viewport; n];
             if unchecked {
                 // SAFETY: as above.
-                unsafe { rec.cmd_set_viewport_with_count_unchecked(&v) }
+                unsafe { rec.set_viewport_with_count_unchecked(&v) }
             } else {
-                rec.cmd_set_viewport_with_count(&v)
+                rec.set_viewport_with_count(&v)
             }
         })
     };
@@ -2887,8 +2879,8 @@ fn viewports_and_scissors_stay_inside_max_viewports() {
     for (expected, call) in &cases {
         assert_eq!(vuid(call(&mut rec, false)), *expected);
     }
-    rec.cmd_set_viewport(0, &[viewport]).expect("one viewport");
-    rec.cmd_set_scissor(0, &[rect(0, 0, 16, 16)])
+    rec.set_viewport(0, &[viewport]).expect("one viewport");
+    rec.set_scissor(0, &[rect(0, 0, 16, 16)])
         .expect("one scissor");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2915,11 +2907,7 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         ..Default::default()
     };
     let s = tuff_setup::setup_with_features(true, features);
-    let max = s
-        .physical
-        .get_physical_device_properties()
-        .limits
-        .max_viewports;
+    let max = s.physical.get_properties().limits.max_viewports;
     let viewport = vk::Viewport {
         width: 16.0,
         height: 16.0,
@@ -2939,24 +2927,24 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         .expect("begin");
     let over = max as usize + 1;
     assert_eq!(
-        vuid(rec.cmd_set_viewport(1, &vec![viewport; max as usize])),
+        vuid(rec.set_viewport(1, &vec![viewport; max as usize])),
         "VUID-vkCmdSetViewport-firstViewport-01223"
     );
     assert_eq!(
-        vuid(rec.cmd_set_scissor(1, &vec![scissor; max as usize])),
+        vuid(rec.set_scissor(1, &vec![scissor; max as usize])),
         "VUID-vkCmdSetScissor-firstScissor-00592"
     );
     assert_eq!(
-        vuid(rec.cmd_set_viewport_with_count(&vec![viewport; over])),
+        vuid(rec.set_viewport_with_count(&vec![viewport; over])),
         "VUID-vkCmdSetViewportWithCount-viewportCount-03394"
     );
     assert_eq!(
-        vuid(rec.cmd_set_scissor_with_count(&vec![scissor; over])),
+        vuid(rec.set_scissor_with_count(&vec![scissor; over])),
         "VUID-vkCmdSetScissorWithCount-scissorCount-03397"
     );
-    rec.cmd_set_viewport(0, &vec![viewport; max as usize])
+    rec.set_viewport(0, &vec![viewport; max as usize])
         .expect("every viewport");
-    rec.cmd_set_scissor(1, &vec![scissor; max as usize - 1])
+    rec.set_scissor(1, &vec![scissor; max as usize - 1])
         .expect("every scissor but the first");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2967,16 +2955,16 @@ fn viewports_past_max_viewports_are_refused_with_multi_viewport() {
         .expect("begin");
     // SAFETY: the layer skips each call, which breaks only the rule under test; the
     // command buffer is never submitted.
-    unsafe { rec.cmd_set_viewport_unchecked(1, &vec![viewport; max as usize]) }.expect("recorded");
+    unsafe { rec.set_viewport_unchecked(1, &vec![viewport; max as usize]) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdSetViewport-firstViewport-01223");
     // SAFETY: as above.
-    unsafe { rec.cmd_set_scissor_unchecked(1, &vec![scissor; max as usize]) }.expect("recorded");
+    unsafe { rec.set_scissor_unchecked(1, &vec![scissor; max as usize]) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdSetScissor-firstScissor-00592");
     // SAFETY: as above.
-    unsafe { rec.cmd_set_viewport_with_count_unchecked(&vec![viewport; over]) }.expect("recorded");
+    unsafe { rec.set_viewport_with_count_unchecked(&vec![viewport; over]) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdSetViewportWithCount-viewportCount-03394");
     // SAFETY: as above.
-    unsafe { rec.cmd_set_scissor_with_count_unchecked(&vec![scissor; over]) }.expect("recorded");
+    unsafe { rec.set_scissor_with_count_unchecked(&vec![scissor; over]) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdSetScissorWithCount-scissorCount-03397");
     s.messages.abort_on_error(false);
     rec.end().expect("end");
@@ -3231,7 +3219,7 @@ fn indices_and_chained_counts_match_what_they_index() {
     let batch = [tuff::SubmitInfo::new().push_next(&mut group)];
     let done = fence(&s);
     assert_eq!(
-        vuid(s.queue.queue_submit(&batch, Some(&done))),
+        vuid(s.queue.submit(&batch, Some(&done))),
         "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083"
     );
     let set_layout = d
@@ -3254,7 +3242,7 @@ fn indices_and_chained_counts_match_what_they_index() {
     assert_silent(&s.messages);
     s.messages.abort_on_error(true);
     // SAFETY: the layer skips the call, which breaks only the rule under test.
-    let r = unsafe { s.queue.queue_submit_unchecked(&batch, Some(&done)) };
+    let r = unsafe { s.queue.submit_unchecked(&batch, Some(&done)) };
     assert!(r.is_err(), "the layer skipped the call");
     assert_layer_reports(&s, "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083");
     // SAFETY: as above.
@@ -3283,26 +3271,20 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02700");
     assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
-        "VUID-vkCmdDispatch-None-02700"
-    );
-    assert_eq!(
-        vuid(rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute)),
+        vuid(rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.compute)),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00780"
     );
     assert_eq!(
-        vuid(rec.cmd_bind_pipeline(compute, &p.graphics)),
+        vuid(rec.bind_pipeline(compute, &p.graphics)),
         "VUID-vkCmdBindPipeline-pipelineBindPoint-00779"
     );
-    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
-    assert_eq!(
-        vuid(rec.cmd_dispatch(1, 1, 1)),
-        "VUID-vkCmdDispatch-None-02697"
-    );
-    rec.cmd_bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
+    rec.bind_pipeline(compute, &p.compute).expect("bind");
+    assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02697");
+    rec.bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
         .expect("sets");
-    rec.cmd_dispatch(1, 1, 1)
+    rec.dispatch(1, 1, 1)
         .expect("a dispatch with its pipeline and set");
     rec.end().expect("end");
     let done = fence(&s);
@@ -3325,20 +3307,20 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
         .expect("begin");
     // SAFETY: the layer skips each call, which breaks only the rule under test; the
     // command buffer is never submitted.
-    unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
+    unsafe { rec.dispatch_unchecked(1, 1, 1) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02700");
     // SAFETY: as above.
-    unsafe { rec.cmd_bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, &p.compute) }
+    unsafe { rec.bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, &p.compute) }
         .expect("recorded");
     // The layer labels these two rules by the pipeline's kind rather than the bind
     // point, so each call is reported under the other's VUID.
     assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00779");
     // SAFETY: as above.
-    unsafe { rec.cmd_bind_pipeline_unchecked(compute, &p.graphics) }.expect("recorded");
+    unsafe { rec.bind_pipeline_unchecked(compute, &p.graphics) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindPipeline-pipelineBindPoint-00780");
-    rec.cmd_bind_pipeline(compute, &p.compute).expect("bind");
+    rec.bind_pipeline(compute, &p.compute).expect("bind");
     // SAFETY: as above.
-    unsafe { rec.cmd_dispatch_unchecked(1, 1, 1) }.expect("recorded");
+    unsafe { rec.dispatch_unchecked(1, 1, 1) }.expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdDispatch-None-02697");
     s.messages.abort_on_error(false);
     rec.end().expect("end");
@@ -3375,29 +3357,15 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
     let draws: Vec<(&str, DrawCall<'_>)> = vec![
         (
             "VUID-vkCmdDraw-None-02700",
-            Box::new(|r, u| call!(r, u, cmd_draw, cmd_draw_unchecked(3, 1, 0, 0))),
+            Box::new(|r, u| call!(r, u, draw, draw_unchecked(3, 1, 0, 0))),
         ),
         (
             "VUID-vkCmdDrawIndexed-None-02700",
-            Box::new(|r, u| {
-                call!(
-                    r,
-                    u,
-                    cmd_draw_indexed,
-                    cmd_draw_indexed_unchecked(3, 1, 0, 0, 0)
-                )
-            }),
+            Box::new(|r, u| call!(r, u, draw_indexed, draw_indexed_unchecked(3, 1, 0, 0, 0))),
         ),
         (
             "VUID-vkCmdDrawIndirect-None-02700",
-            Box::new(move |r, u| {
-                call!(
-                    r,
-                    u,
-                    cmd_draw_indirect,
-                    cmd_draw_indirect_unchecked(a, 0, 1, 16)
-                )
-            }),
+            Box::new(move |r, u| call!(r, u, draw_indirect, draw_indirect_unchecked(a, 0, 1, 16))),
         ),
         (
             "VUID-vkCmdDrawIndexedIndirect-None-02700",
@@ -3405,8 +3373,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 call!(
                     r,
                     u,
-                    cmd_draw_indexed_indirect,
-                    cmd_draw_indexed_indirect_unchecked(a, 0, 1, 20)
+                    draw_indexed_indirect,
+                    draw_indexed_indirect_unchecked(a, 0, 1, 20)
                 )
             }),
         ),
@@ -3416,8 +3384,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 call!(
                     r,
                     u,
-                    cmd_draw_indirect_count,
-                    cmd_draw_indirect_count_unchecked(a, 0, a, 64, 1, 16)
+                    draw_indirect_count,
+                    draw_indirect_count_unchecked(a, 0, a, 64, 1, 16)
                 )
             }),
         ),
@@ -3427,8 +3395,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 call!(
                     r,
                     u,
-                    cmd_draw_indexed_indirect_count,
-                    cmd_draw_indexed_indirect_count_unchecked(a, 0, a, 64, 1, 20)
+                    draw_indexed_indirect_count,
+                    draw_indexed_indirect_count_unchecked(a, 0, a, 64, 1, 20)
                 )
             }),
         ),
@@ -3436,18 +3404,11 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
     let dispatches: Vec<(&str, DispatchCall<'_>)> = vec![
         (
             "Dispatch",
-            Box::new(|r, u| call!(r, u, cmd_dispatch, cmd_dispatch_unchecked(1, 1, 1))),
+            Box::new(|r, u| call!(r, u, dispatch, dispatch_unchecked(1, 1, 1))),
         ),
         (
             "DispatchIndirect",
-            Box::new(move |r, u| {
-                call!(
-                    r,
-                    u,
-                    cmd_dispatch_indirect,
-                    cmd_dispatch_indirect_unchecked(a, 0)
-                )
-            }),
+            Box::new(move |r, u| call!(r, u, dispatch_indirect, dispatch_indirect_unchecked(a, 0))),
         ),
         (
             "DispatchBase",
@@ -3455,8 +3416,8 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 call!(
                     r,
                     u,
-                    cmd_dispatch_base,
-                    cmd_dispatch_base_unchecked(0, 0, 0, 1, 1, 1)
+                    dispatch_base,
+                    dispatch_base_unchecked(0, 0, 0, 1, 1, 1)
                 )
             }),
         ),
@@ -3542,7 +3503,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_pipeline);
             }
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
+        rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &p.compute)
             .expect("bind");
         for (name, dispatch) in &dispatches {
             let no_set = format!("VUID-vkCmd{name}-None-02697");
@@ -3553,7 +3514,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(dispatch(&mut rec, false)), no_set);
             }
         }
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
         for (expected, draw) in &draws {
             if unchecked {
                 draw(&mut rec, true).expect("recorded");
@@ -3564,10 +3525,10 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         // With the graphics pipeline bound: indexed draws need an index buffer, and a
         // direct one reads only indices inside it.
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
-        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-        rec.cmd_set_scissor(0, &[scissor]).expect("scissor");
+        rec.set_viewport(0, &[viewport]).expect("viewport");
+        rec.set_scissor(0, &[scissor]).expect("scissor");
         pipelines::push_color(&mut rec, &p);
         let no_index: [(&str, &DrawCall<'_>); 3] = [
             ("VUID-vkCmdDrawIndexed-None-07312", &draws[1].1),
@@ -3582,20 +3543,20 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 assert_eq!(vuid(draw(&mut rec, false)), expected);
             }
         }
-        rec.cmd_bind_index_buffer(&args, 0, vk::IndexType::UINT32)
+        rec.bind_index_buffer(&args, 0, vk::IndexType::UINT32)
             .expect("index buffer");
         // 65 indices of 4 bytes from a buffer of 256.
         let past = "VUID-vkCmdDrawIndexed-robustBufferAccess2-07825";
         if unchecked {
             // SAFETY: as above.
-            unsafe { rec.cmd_draw_indexed_unchecked(65, 1, 0, 0, 0) }.expect("recorded");
+            unsafe { rec.draw_indexed_unchecked(65, 1, 0, 0, 0) }.expect("recorded");
             assert_layer_reports(&s, past);
         } else {
-            assert_eq!(vuid(rec.cmd_draw_indexed(65, 1, 0, 0, 0)), past);
+            assert_eq!(vuid(rec.draw_indexed(65, 1, 0, 0, 0)), past);
         }
         // A pipeline whose vertex shader reads set 0, with no set bound: every draw
         // is refused.
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &set_pipeline)
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &set_pipeline)
             .expect("bind");
         for (no_pipeline, draw) in &draws {
             let expected = no_pipeline.replace("02700", "02697");
@@ -3608,7 +3569,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         // A pipeline whose vertex shader reads binding 0, with no vertex buffer
         // bound: every draw is refused, and accepted once one is.
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline)
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &vertex_pipeline)
             .expect("bind");
         for (no_pipeline, draw) in &draws {
             let expected = no_pipeline.replace("02700", "04007");
@@ -3621,26 +3582,26 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         s.messages.abort_on_error(false);
         if !unchecked {
-            rec.cmd_bind_vertex_buffers(0, &[&vertices], &[0])
+            rec.bind_vertex_buffers(0, &[&vertices], &[0])
                 .expect("vertex buffer");
-            rec.cmd_draw(3, 1, 0, 0)
+            rec.draw(3, 1, 0, 0)
                 .expect("a draw with its vertex buffer bound");
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
         if !unchecked {
             let color = [0u8; 16];
-            rec.cmd_push_constants(
+            rec.push_constants(
                 &p.graphics_layout,
                 vk::ShaderStageFlags::FRAGMENT,
                 0,
                 &color,
             )
             .expect("push");
-            rec.cmd_draw_indexed(64, 1, 0, 0, 0)
+            rec.draw_indexed(64, 1, 0, 0, 0)
                 .expect("64 indices inside the buffer");
         }
-        rec.cmd_end_render_pass().end().expect("end");
+        rec.end_render_pass().end().expect("end");
         if !unchecked {
             assert_silent(&s.messages);
         }
@@ -3957,13 +3918,7 @@ fn an_image_past_its_format_limits_is_refused_and_the_layer_agrees() {
     let sampled = vk::ImageUsageFlags::SAMPLED;
     let limits = |ty, tiling| {
         s.physical
-            .get_physical_device_image_format_properties(
-                rgba,
-                ty,
-                tiling,
-                sampled,
-                vk::ImageCreateFlags::empty(),
-            )
+            .get_image_format_properties(rgba, ty, tiling, sampled, vk::ImageCreateFlags::empty())
             .expect("image format properties")
     };
     let optimal2d = limits(vk::ImageType::TYPE_2D, vk::ImageTiling::OPTIMAL);
@@ -4147,45 +4102,40 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                 // SAFETY: the layer skips each call it reports (its messenger says
                 // so); the command buffer is never submitted.
                 layer_names(&s, to_image, || {
-                    let _ = unsafe {
-                        rec.cmd_copy_buffer_to_image_unchecked(&buffer, &image, dst, &[*r])
-                    };
+                    let _ =
+                        unsafe { rec.copy_buffer_to_image_unchecked(&buffer, &image, dst, &[*r]) };
                 });
                 // SAFETY: as above.
                 layer_names(&s, to_buffer, || {
-                    let _ = unsafe {
-                        rec.cmd_copy_image_to_buffer_unchecked(&image, src, &buffer, &[*r])
-                    };
+                    let _ =
+                        unsafe { rec.copy_image_to_buffer_unchecked(&image, src, &buffer, &[*r]) };
                 });
                 // SAFETY: as above.
                 layer_names(&s, to_image2, || {
-                    let _ = unsafe { rec.cmd_copy_buffer_to_image2_unchecked(&into) };
+                    let _ = unsafe { rec.copy_buffer_to_image2_unchecked(&into) };
                 });
                 // SAFETY: as above.
                 layer_names(&s, to_buffer2, || {
-                    let _ = unsafe { rec.cmd_copy_image_to_buffer2_unchecked(&out) };
+                    let _ = unsafe { rec.copy_image_to_buffer2_unchecked(&out) };
                 });
                 rec.end().expect("end");
             } else {
                 // A refused copy is not recorded, and the recording goes on.
                 assert_eq!(
-                    vuid(unsafe { rec.cmd_copy_buffer_to_image(&buffer, &image, dst, &[*r]) }),
+                    vuid(unsafe { rec.copy_buffer_to_image(&buffer, &image, dst, &[*r]) }),
                     to_image
                 );
                 rec.end().expect("end");
                 let calls: [(&str, RecordCall<'_>); 3] = [
                     (
                         to_buffer,
-                        Box::new(|rec| rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[*r])),
+                        Box::new(|rec| rec.copy_image_to_buffer(&image, src, &buffer, &[*r])),
                     ),
                     (
                         to_image2,
-                        Box::new(|rec| unsafe { rec.cmd_copy_buffer_to_image2(&into) }),
+                        Box::new(|rec| unsafe { rec.copy_buffer_to_image2(&into) }),
                     ),
-                    (
-                        to_buffer2,
-                        Box::new(|rec| rec.cmd_copy_image_to_buffer2(&out)),
-                    ),
+                    (to_buffer2, Box::new(|rec| rec.copy_image_to_buffer2(&out))),
                 ];
                 for (expected, call) in calls {
                     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -4202,7 +4152,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_copy_image_to_buffer(&image, src, &buffer, &[fits])
+    rec.copy_image_to_buffer(&image, src, &buffer, &[fits])
         .expect("a region that fills the buffer exactly");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -4217,7 +4167,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
     let _serial = vulkan::serial();
     let s = setup(true);
     let d = &s.device;
-    let l = s.physical.get_physical_device_properties().limits;
+    let l = s.physical.get_properties().limits;
     let mut p12 = vk::PhysicalDeviceVulkan12Properties::default();
     let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p12);
     // SAFETY: a live physical device of a Vulkan 1.3 instance; the chain is local.
@@ -4425,7 +4375,7 @@ fn a_command_pool_the_device_cannot_use_is_refused_and_the_layer_agrees() {
     let s = setup(true);
     let families = s
         .physical
-        .get_physical_device_queue_family_properties()
+        .get_queue_family_properties()
         .expect("queue families")
         .len();
     let other = u32::try_from(families).expect("few families");

@@ -62,10 +62,10 @@ fn timeline_signals_rise() {
         .signal_semaphores(&signals)
         .push_next(&mut below)];
     // SAFETY: an empty batch; the call is refused.
-    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), rule);
+    assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), rule);
     layer_names(&s, rule, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
+        let _ = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
     });
     // Above it: submitted; a second submission below that pending signal is refused
     // too, though the semaphore's value is still 5 on the host.
@@ -75,7 +75,7 @@ fn timeline_signals_rise() {
         .push_next(&mut above)];
     // SAFETY: an empty batch that signals above every value given so far.
     s.queue
-        .queue_submit(&submit, Some(&fence))
+        .submit(&submit, Some(&fence))
         .expect("a signal above");
     let other = d
         .create_fence(&tuff::FenceCreateInfo::new())
@@ -84,7 +84,7 @@ fn timeline_signals_rise() {
     let submit = [tuff::SubmitInfo::new()
         .signal_semaphores(&signals)
         .push_next(&mut between)];
-    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&other))), rule);
+    assert_eq!(vuid(s.queue.submit(&submit, Some(&other))), rule);
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
         vk::Result::SUCCESS
@@ -106,10 +106,10 @@ fn protected_batches_need_protected_queues() {
     let mut protected = tuff::ProtectedSubmitInfo::new().protected_submit(true);
     let submit = [tuff::SubmitInfo::new().push_next(&mut protected)];
     // SAFETY: an empty batch; the call is refused.
-    assert_eq!(vuid(s.queue.queue_submit(&submit, Some(&fence))), rule);
+    assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), rule);
     layer_names(&s, rule, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&submit, Some(&fence)) };
+        let _ = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
     });
 }
 
@@ -142,8 +142,8 @@ fn render_pass_instances_are_not_suspended() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         // SAFETY: the begin is refused, and the recorder records nothing after it.
-        let rec = unsafe { rec.cmd_begin_rendering(&info) };
-        let rec = rec.cmd_end_rendering();
+        let rec = unsafe { rec.begin_rendering(&info) };
+        let rec = rec.end_rendering();
         match rec.end() {
             Err(tuff::Error::Misuse(_)) => {}
             other => panic!("expected the suspending or resuming begin refused, got {other:?}"),

@@ -161,7 +161,7 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     rec.end().expect("end");
     let handles = tuff::HandleSlice::new(&[&cbs[0]]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new().command_buffers(&handles)],
             Some(&fence),
         )
@@ -289,14 +289,12 @@ fn resources_dropped_while_their_submission_is_in_flight() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         for i in 0..64u64 {
-            unsafe { rec.cmd_fill_buffer(&buffer, i * 16384, 16384, round) }.expect("fill");
+            unsafe { rec.fill_buffer(&buffer, i * 16384, 16384, round) }.expect("fill");
         }
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
         let submits = [tuff::SubmitInfo::new().command_buffers(&cb_handles)];
-        s.queue
-            .queue_submit(&submits, Some(&fence))
-            .expect("submit");
+        s.queue.submit(&submits, Some(&fence)).expect("submit");
         // Everything the submission uses goes while it may still run; the fence
         // keeps the command buffer, and through it the buffer and memory, alive.
         let _ = submits;
@@ -318,7 +316,7 @@ fn a_submitted_buffer_is_written() {
     let s = setup(true);
     let (buffer, memory) = buffer_with_memory(&s, 256);
     submit_and_wait(&s, |rec| {
-        unsafe { rec.cmd_fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5) }.expect("fill")
+        unsafe { rec.fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5) }.expect("fill")
     });
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
     let bytes = access_memory(&s, &memory, 256, None);
@@ -382,7 +380,7 @@ fn present_one_frame(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TRANSFER,
         vk::PipelineStageFlags::TRANSFER,
         vk::DependencyFlags::empty(),
@@ -397,7 +395,7 @@ fn present_one_frame(
     )
     .expect("recorded");
     unsafe {
-        rec.cmd_clear_color_image(
+        rec.clear_color_image(
             image,
             vk::ImageLayout::TRANSFER_DST_OPTIMAL,
             &vk::ClearColorValue {
@@ -407,7 +405,7 @@ fn present_one_frame(
         )
         .expect("recorded")
     };
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TRANSFER,
         vk::PipelineStageFlags::BOTTOM_OF_PIPE,
         vk::DependencyFlags::empty(),
@@ -430,7 +428,7 @@ fn present_one_frame(
     let cbs = tuff::HandleSlice::new(&[&cb]);
     let stages = [vk::PipelineStageFlags::TRANSFER];
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new()
                 .wait_semaphores(&waits, &stages)
                 .expect("one stage per semaphore")
@@ -443,7 +441,7 @@ fn present_one_frame(
     let indices = [index];
     let r = s
         .queue
-        .queue_present_khr(
+        .present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
                 .swapchains(&swapchains, &indices)
@@ -455,7 +453,7 @@ fn present_one_frame(
         "{r:?}"
     );
     // Presentation has no fence here: the queue going idle covers it.
-    s.queue.queue_wait_idle().expect("wait idle");
+    s.queue.wait_idle().expect("wait idle");
     let mut out: Vec<Box<dyn Any>> = vec![
         Box::new(acquired),
         Box::new(rendered),
@@ -486,15 +484,15 @@ fn swapchain_info<'a>(
 ) -> tuff::SwapchainCreateInfoKHR<'a> {
     let caps = s
         .physical
-        .get_physical_device_surface_capabilities_khr(surface)
+        .get_surface_capabilities_khr(surface)
         .expect("surface capabilities");
     let formats = s
         .physical
-        .get_physical_device_surface_formats_khr(Some(surface))
+        .get_surface_formats_khr(Some(surface))
         .expect("surface formats");
     let modes = s
         .physical
-        .get_physical_device_surface_present_modes_khr(Some(surface))
+        .get_surface_present_modes_khr(Some(surface))
         .expect("present modes");
     assert!(
         modes.contains(&vk::PresentModeKHR::FIFO),
@@ -533,7 +531,7 @@ fn surfaces_and_swapchains_in_random_drop_orders() {
         let surface = s.instance.create_surface(window.clone()).expect("surface");
         let supported = s
             .physical
-            .get_physical_device_surface_support_khr(s.family, &surface)
+            .get_surface_support_khr(s.family, &surface)
             .expect("surface support");
         assert!(supported, "the graphics queue family presents to X11");
         let pool = s
@@ -613,7 +611,7 @@ fn surfaces_keep_their_windows() {
     assert_eq!(tuff::runtime::Vrc::strong_count(&window), 2);
     let supported = s
         .physical
-        .get_physical_device_surface_support_khr(s.family, &surface)
+        .get_surface_support_khr(s.family, &surface)
         .expect("surface support");
     assert!(supported);
     drop(surface);
@@ -650,11 +648,7 @@ fn a_raw_window_system_parameter_reaches_the_driver_unchanged() {
     // SAFETY: a live display connection and a visual of its default screen.
     let supported = unsafe {
         s.physical
-            .get_physical_device_xlib_presentation_support_khr(
-                s.family,
-                window.display.cast(),
-                visual,
-            )
+            .get_xlib_presentation_support_khr(s.family, window.display.cast(), visual)
     }
     .expect("the extension is enabled");
     let loader = ash::khr::xlib_surface::Instance::new(s.instance.entry().fns(), s.instance.fns());
@@ -674,13 +668,11 @@ fn a_raw_window_system_parameter_reaches_the_driver_unchanged() {
     let headless = setup(true);
     // SAFETY: as above; the call is refused before Vulkan sees it.
     let missing = unsafe {
-        headless
-            .physical
-            .get_physical_device_xlib_presentation_support_khr(
-                headless.family,
-                window.display.cast(),
-                visual,
-            )
+        headless.physical.get_xlib_presentation_support_khr(
+            headless.family,
+            window.display.cast(),
+            visual,
+        )
     };
     assert!(matches!(
         missing,
@@ -735,7 +727,7 @@ fn pipelines_draw_and_dispatch() {
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new().command_buffers(&handles)],
             Some(&fence),
         )
@@ -809,7 +801,7 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .expect("fence");
     let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new().command_buffers(&handles)],
             Some(&fence),
         )
@@ -855,7 +847,7 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
         // submission keeps it (the layer would report memory freed in use).
         submit_and_wait(&s, |rec| {
             unsafe {
-                rec.cmd_copy_buffer(
+                rec.copy_buffer(
                     &source,
                     &target,
                     &[vk::BufferCopy {
@@ -1005,7 +997,7 @@ fn missing_layers_extensions_and_features_are_named() {
     );
     // The first core feature this device lacks (lavapipe lacks several), asked for
     // on a device without the layer, which would rightly complain.
-    let have = s.physical.get_physical_device_features();
+    let have = s.physical.get_features();
     let probe = tuff::vk::PhysicalDeviceFeatures {
         sparse_binding: have.sparse_binding ^ vk::TRUE,
         ..Default::default()
@@ -1026,10 +1018,7 @@ fn missing_layers_extensions_and_features_are_named() {
         .enumerate_physical_devices()
         .expect("devices")
         .into_iter()
-        .find(|p| {
-            p.get_physical_device_properties().device_name
-                == s.physical.get_physical_device_properties().device_name
-        })
+        .find(|p| p.get_properties().device_name == s.physical.get_properties().device_name)
         .expect("the same device on the second instance");
     let e = physical
         .create_device(
@@ -1173,14 +1162,14 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let record = |frame: &mut tuff::Frame<'_>, n: u32| {
         let target = &targets[frame.index];
         let mut rec = frame.record().expect("record");
-        unsafe { rec.cmd_fill_buffer(target, 0, vk::WHOLE_SIZE, n) }.expect("fill");
+        unsafe { rec.fill_buffer(target, 0, vk::WHOLE_SIZE, n) }.expect("fill");
         let to_host = [tuff::BufferMemoryBarrier::new(target)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .size(vk::WHOLE_SIZE)];
-        rec.cmd_pipeline_barrier(
+        rec.pipeline_barrier(
             vk::PipelineStageFlags::TRANSFER,
             vk::PipelineStageFlags::HOST,
             vk::DependencyFlags::empty(),
@@ -1277,7 +1266,7 @@ fn shader_modules_come_from_spirv_bytes_in_either_byte_order() {
 fn physical_devices_name_themselves_and_find_queue_families() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let raw = s.physical.get_physical_device_properties();
+    let raw = s.physical.get_properties();
     let expected = raw
         .device_name_as_c_str()
         .expect("a NUL-terminated name")
@@ -1285,10 +1274,7 @@ fn physical_devices_name_themselves_and_find_queue_families() {
         .expect("UTF-8");
     assert_eq!(s.physical.name(), expected);
     assert!(!expected.is_empty());
-    let families = s
-        .physical
-        .get_physical_device_queue_family_properties()
-        .expect("families");
+    let families = s.physical.get_queue_family_properties().expect("families");
     for flags in [
         vk::QueueFlags::GRAPHICS,
         vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
@@ -1369,12 +1355,12 @@ fn acquire_and_present_take_binary_semaphores() {
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let binary = "VUID-vkQueuePresentKHR-pWaitSemaphores-03267";
-    assert_eq!(refused(s.queue.queue_present_khr(&present)), binary);
+    assert_eq!(refused(s.queue.present_khr(&present)), binary);
     layer_names(&s, binary, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+        let _ = unsafe { s.queue.present_khr_unchecked(&present) };
     });
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     drop(swapchain);
     drop(surface);
     assert_silent(&s.messages);
@@ -1422,14 +1408,14 @@ fn only_acquired_images_in_the_present_layout_are_presented() {
             .expect("one index per swapchain")
     };
     // Acquired, but still UNDEFINED: nothing moved it to PRESENT_SRC_KHR.
-    assert_eq!(refused(s.queue.queue_present_khr(&present(&indices))), rule);
+    assert_eq!(refused(s.queue.present_khr(&present(&indices))), rule);
     // Another image, never acquired.
-    assert_eq!(refused(s.queue.queue_present_khr(&present(&other))), rule);
+    assert_eq!(refused(s.queue.present_khr(&present(&other))), rule);
     layer_names(&s, rule, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present(&indices)) };
+        let _ = unsafe { s.queue.present_khr_unchecked(&present(&indices)) };
     });
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     drop(images);
     drop(swapchain);
     drop(surface);
@@ -1479,7 +1465,7 @@ fn acquire_for_present(
             base_array_layer: 0,
             layer_count: 1,
         });
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TOP_OF_PIPE,
         vk::PipelineStageFlags::BOTTOM_OF_PIPE,
         vk::DependencyFlags::empty(),
@@ -1494,7 +1480,7 @@ fn acquire_for_present(
         .expect("fence");
     let cbs = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .queue_submit(
+        .submit(
             &[tuff::SubmitInfo::new().command_buffers(&cbs)],
             Some(&done),
         )
@@ -1581,7 +1567,7 @@ fn device_group_presentations_are_checked_and_the_layer_agrees() {
             .expect("one index per swapchain")
             .push_next(&mut group);
         assert_eq!(
-            refused(s.queue.queue_present_khr(&present)),
+            refused(s.queue.present_khr(&present)),
             rule,
             "{masks:?} {mode:?}"
         );
@@ -1594,12 +1580,12 @@ fn device_group_presentations_are_checked_and_the_layer_agrees() {
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain")
         .push_next(&mut group);
-    let r = s.queue.queue_present_khr(&present).expect("present");
+    let r = s.queue.present_khr(&present).expect("present");
     assert!(
         r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
         "{r:?}"
     );
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     // The layer, for the unchecked presentation: the 1.3.239 layer checks none of
     // these rules on a device of one physical device, so it stays silent and the
     // presentation is made (these rules are proven by tuff's error alone). Each case
@@ -1618,7 +1604,7 @@ fn device_group_presentations_are_checked_and_the_layer_agrees() {
         s.messages.abort_on_error(true);
         // SAFETY: the layer skips the call if it reports it; if it is silent, the
         // driver of a group of one physical device presents the image.
-        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+        let _ = unsafe { s.queue.present_khr_unchecked(&present) };
         s.messages.abort_on_error(false);
         let messages = s.messages.take();
         // A layer that names the rule skips the call and leaves the image acquired,
@@ -1627,9 +1613,9 @@ fn device_group_presentations_are_checked_and_the_layer_agrees() {
             messages.is_empty(),
             "the layer now reports {rule} (or another rule): {messages:?}"
         );
-        s.queue.queue_wait_idle().expect("idle");
+        s.queue.wait_idle().expect("idle");
     }
-    s.queue.queue_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
     drop(images);
     drop(swapchain);
     drop(surface);
@@ -1715,9 +1701,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .wait_semaphores(&waits, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
-    s.queue
-        .queue_submit(&gated, Some(&done))
-        .expect("gated submit");
+    s.queue.submit(&gated, Some(&done)).expect("gated submit");
     // A second wait on it, with no signal between, is refused too.
     let unsignaled_wait = "VUID-vkQueueSubmit-pWaitSemaphores-03238";
     let one_wait = tuff::HandleSlice::new(&[&acquired]);
@@ -1727,12 +1711,12 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .expect("one stage per wait")];
     let other = fence(unsignaled);
     assert_eq!(
-        refused(s.queue.queue_submit(&second, Some(&other))),
+        refused(s.queue.submit(&second, Some(&other))),
         unsignaled_wait
     );
     layer_names(&s, unsignaled_wait, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_submit_unchecked(&second, Some(&other)) };
+        let _ = unsafe { s.queue.submit_unchecked(&second, Some(&other)) };
     });
     let pending = "VUID-vkAcquireNextImageKHR-semaphore-01779";
     assert_eq!(
@@ -1758,11 +1742,11 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     let twice = semaphore();
     let signals = tuff::HandleSlice::new(&[&twice]);
     let signal = [tuff::SubmitInfo::new().signal_semaphores(&signals)];
-    s.queue.queue_submit(&signal, Some(&other)).expect("signal");
+    s.queue.submit(&signal, Some(&other)).expect("signal");
     let signaled_again = "VUID-vkQueueSubmit-pSignalSemaphores-00067";
     let third = fence(unsignaled);
     assert_eq!(
-        refused(s.queue.queue_submit(&signal, Some(&third))),
+        refused(s.queue.submit(&signal, Some(&third))),
         signaled_again
     );
     // The 1.3.239 layer reports this rule under an unassigned name ("... was
@@ -1772,7 +1756,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         "UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress",
         || {
             // SAFETY: the layer reports the rule and skips the call.
-            let _ = unsafe { s.queue.queue_submit_unchecked(&signal, Some(&third)) };
+            let _ = unsafe { s.queue.submit_unchecked(&signal, Some(&third)) };
         },
     );
     // A presentation that waits on a semaphore nothing signals.
@@ -1785,10 +1769,10 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let present_rule = "VUID-vkQueuePresentKHR-pWaitSemaphores-03268";
-    assert_eq!(refused(s.queue.queue_present_khr(&present)), present_rule);
+    assert_eq!(refused(s.queue.present_khr(&present)), present_rule);
     layer_names(&s, present_rule, || {
         // SAFETY: the layer names the rule and skips the call.
-        let _ = unsafe { s.queue.queue_present_khr_unchecked(&present) };
+        let _ = unsafe { s.queue.present_khr_unchecked(&present) };
     });
     // A swapchain a later creation retired.
     let successor = d
@@ -1807,8 +1791,8 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
         // SAFETY: the layer names the rule and skips the call.
         let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, Some(&spare), None) };
     });
-    s.queue.queue_wait_idle().expect("idle");
-    d.device_wait_idle().expect("idle");
+    s.queue.wait_idle().expect("idle");
+    d.wait_idle().expect("idle");
     drop((successor, swapchain));
     drop(surface);
     assert_silent(&s.messages);
@@ -1832,7 +1816,7 @@ fn an_acquire_that_cannot_progress_may_not_wait_forever() {
         .len();
     let min = s
         .physical
-        .get_physical_device_surface_capabilities_khr(&surface)
+        .get_surface_capabilities_khr(&surface)
         .expect("capabilities")
         .min_image_count as usize;
     let mut fences = Vec::new();
@@ -1933,13 +1917,11 @@ fn swapchain_creation_is_checked_against_the_surface_and_the_layer_agrees() {
     let surface = xlib_surface(&s, &window);
     let p = &s.physical;
     let caps = p
-        .get_physical_device_surface_capabilities_khr(&surface)
+        .get_surface_capabilities_khr(&surface)
         .expect("capabilities");
-    let formats = p
-        .get_physical_device_surface_formats_khr(Some(&surface))
-        .expect("formats");
+    let formats = p.get_surface_formats_khr(Some(&surface)).expect("formats");
     let modes = p
-        .get_physical_device_surface_present_modes_khr(Some(&surface))
+        .get_surface_present_modes_khr(Some(&surface))
         .expect("present modes");
     let valid = swapchain_info(&s, &surface);
     let unoffered_format = [vk::Format::R16G16B16A16_SFLOAT, vk::Format::R8G8B8A8_SNORM]

@@ -100,7 +100,7 @@ impl Gpu {
         let physicals = instance.enumerate_physical_devices()?;
         // A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
         // TUFF_DEVICE picks by name instead (the scene tests pin lavapipe with it).
-        let rank = |p: &tuff::PhysicalDevice| match p.get_physical_device_properties().device_type {
+        let rank = |p: &tuff::PhysicalDevice| match p.get_properties().device_type {
             vk::PhysicalDeviceType::DISCRETE_GPU => 0,
             vk::PhysicalDeviceType::INTEGRATED_GPU => 1,
             _ => 2,
@@ -156,7 +156,7 @@ impl Gpu {
             })?;
         Ok(Gpu {
             allocator: device.gpu_allocator()?,
-            queue: device.get_device_queue(family, 0)?,
+            queue: device.get_queue(family, 0)?,
             family,
             device,
             physical,

@@ -45,7 +45,7 @@ pub fn render<S: Scene>(
         bail!("cannot render a {width}x{height} image: both sides must be at least 1");
     }
     let frames = frames.max(1);
-    let limits = gpu.physical.get_physical_device_properties().limits;
+    let limits = gpu.physical.get_properties().limits;
     let largest = limits
         .max_image_dimension2_d
         .min(limits.max_framebuffer_width)

@@ -213,14 +213,14 @@ pub fn record_frame<S: Scene>(
         },
     ];
     let area: vk::Rect2D = view.extent.into();
-    let mut rec = frame.record()?.cmd_begin_render_pass(
+    let mut rec = frame.record()?.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             // Without a depth attachment, only the color is cleared.
             .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
         vk::SubpassContents::INLINE,
     );
-    rec.cmd_set_viewport(
+    rec.set_viewport(
         0,
         &[vk::Viewport {
             x: 0.0,
@@ -231,9 +231,9 @@ pub fn record_frame<S: Scene>(
             max_depth: 1.0,
         }],
     )?;
-    rec.cmd_set_scissor(0, &[area])?;
+    rec.set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
-    let mut rec = rec.cmd_end_render_pass();
+    let mut rec = rec.end_render_pass();
     if let Some((image, buffer)) = readback {
         record_readback(&mut rec, image, buffer, view.extent)?;
     }
@@ -249,7 +249,7 @@ pub fn record_readback(
     buffer: &tuff::Buffer,
     extent: vk::Extent2D,
 ) -> tuff::Result<()> {
-    rec.cmd_copy_image_to_buffer(
+    rec.copy_image_to_buffer(
         image,
         vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
         buffer,
@@ -272,7 +272,7 @@ pub fn record_readback(
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .offset(0)
         .size(vk::WHOLE_SIZE)];
-    rec.cmd_pipeline_barrier(
+    rec.pipeline_barrier(
         vk::PipelineStageFlags::TRANSFER,
         vk::PipelineStageFlags::HOST,
         vk::DependencyFlags::empty(),

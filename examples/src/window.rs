@@ -150,15 +150,10 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
         // The surface keeps the window alive, and its swapchains keep the surface.
         let window = tuff::runtime::Vrc::new(window);
         let surface = gpu.instance.create_surface(window.clone())?;
-        if !gpu
-            .physical
-            .get_physical_device_surface_support_khr(gpu.family, &surface)?
-        {
+        if !gpu.physical.get_surface_support_khr(gpu.family, &surface)? {
             bail!("\"{}\" cannot present to this window", gpu.name);
         }
-        let formats = gpu
-            .physical
-            .get_physical_device_surface_formats_khr(Some(&surface))?;
+        let formats = gpu.physical.get_surface_formats_khr(Some(&surface))?;
         // Unorm, as headless, so a window shows the same colors as the PNG.
         let format = formats
             .iter()
@@ -262,9 +257,7 @@ impl<S: Scene> Live<S> {
             return Ok(Some(framebuffers.extent));
         }
         self.resized = false;
-        let caps = gpu
-            .physical
-            .get_physical_device_surface_capabilities_khr(&self.surface)?;
+        let caps = gpu.physical.get_surface_capabilities_khr(&self.surface)?;
         let size = self.window.inner_size();
         let Some(extent) = swapchain_extent(&caps, size.width, size.height) else {
             // Looked at again every frame until the window has an area.
@@ -278,7 +271,7 @@ impl<S: Scene> Live<S> {
         }
         // Every frame that used the old images, and every present waiting on their
         // semaphores, is done before they go.
-        gpu.device.device_wait_idle()?;
+        gpu.device.wait_idle()?;
         let count = image_count(&caps);
         let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)
             .min_image_count(count)
@@ -381,7 +374,7 @@ impl<S: Scene> Live<S> {
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
         let signals = tuff::HandleSlice::new(&[rendered]);
-        match gpu.queue.queue_present_khr(
+        match gpu.queue.present_khr(
             &tuff::PresentInfoKHR::new()
                 .wait_semaphores(&signals)
                 .swapchains(&swapchains, &indices)?,
@@ -479,7 +472,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
             return;
         };
         // Nothing may go while the GPU or the presentation engine still uses it.
-        if let Err(e) = self.gpu.device.device_wait_idle() {
+        if let Err(e) = self.gpu.device.wait_idle() {
             self.error.get_or_insert(e.into());
         }
         if !self.report {

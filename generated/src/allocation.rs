@@ -66,11 +66,7 @@ impl Device {
     /// # drop(allocator); }
     /// ```
     pub fn memory_owner(&self) -> Vrc<dyn DeviceOwner> {
-        let atom = self
-            .parent()
-            .get_physical_device_properties()
-            .limits
-            .non_coherent_atom_size;
+        let atom = self.parent().get_properties().limits.non_coherent_atom_size;
         Vrc::new(Owner {
             device: self.clone(),
             atom,

@@ -32,7 +32,7 @@ use smallvec::SmallVec;
 ///     let rec = frame.record()?;
 ///     // ... record the frame's commands ...
 ///     rec.end()?;
-///     // SAFETY: the recording keeps the rules `Queue::queue_submit` lists.
+///     // SAFETY: the recording keeps the rules `Queue::submit` lists.
 ///     unsafe { frame.submit(queue, &[], &[]) }?;
 /// }
 /// frames.wait_all()?;
@@ -203,7 +203,7 @@ impl Frame<'_> {
         ///
         /// # Safety
         ///
-        /// This method is `unsafe` exactly when [`Queue::queue_submit`] is (it is safe
+        /// This method is `unsafe` exactly when [`Queue::submit`] is (it is safe
         /// with this crate's emitted API; a crate generated from more of the registry
         /// may leave it rules); the caller then upholds the rules its `# Safety` section
         /// lists for a submission of this frame's command buffer with `waits` and
@@ -239,19 +239,19 @@ impl Frame<'_> {
             let device = self.commands.device();
             // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
             device.reset_fences(&[self.fence])?;
-            // `queue_submit` is safe in the pinned configuration and may be `unsafe` in
+            // `submit` is safe in the pinned configuration and may be `unsafe` in
             // wider ones.
             #[allow(unused_unsafe)]
-            // SAFETY: where `queue_submit` is `unsafe`, so is this method, and its caller
+            // SAFETY: where `submit` is `unsafe`, so is this method, and its caller
             // upholds the rules of this submission.
-            let submitted = unsafe { queue.queue_submit(&[info], Some(self.fence)) };
+            let submitted = unsafe { queue.submit(&[info], Some(self.fence)) };
             if let Err(e) = submitted {
                 // An empty batch signals the fence once the queue's earlier work is done,
                 // so the next wait for this frame does not hang on a failed submission.
                 #[allow(unused_unsafe)]
                 // SAFETY: an empty batch has no command buffer or semaphore for a rule to
                 // be about.
-                let _ = unsafe { queue.queue_submit(&[], Some(self.fence)) };
+                let _ = unsafe { queue.submit(&[], Some(self.fence)) };
                 return Err(e);
             }
             // The submission holds its semaphores; the frame needs a new recording.

@@ -751,7 +751,7 @@ fn present_masks(device: &Device) -> Result<[u32; vk::MAX_DEVICE_GROUP_SIZE]> {
     masks[0] = 1;
     if device.exts().version(1) {
         let mut caps = DeviceGroupPresentCapabilitiesKHR::new();
-        device.get_device_group_present_capabilities_khr(&mut caps)?;
+        device.get_group_present_capabilities_khr(&mut caps)?;
         masks = caps.present_mask;
     }
     device.live().set_present_masks(masks);
@@ -1397,7 +1397,7 @@ fn check_vertex_bindings<S: Scope>(
     let device = recorder.device();
     let limits = device
         .live()
-        .limits(|| device.parent().get_physical_device_properties().limits);
+        .limits(|| device.parent().get_properties().limits);
     {
         let max = limits.max_vertex_input_bindings;
         if u64::from(first_binding) + buffers.len() as u64 > u64::from(max) {
@@ -2119,7 +2119,7 @@ pub(crate) fn query_pool_created(
 pub(crate) fn limits(device: &Device) -> &vk::PhysicalDeviceLimits {
     device
         .live()
-        .limits(|| device.parent().get_physical_device_properties().limits)
+        .limits(|| device.parent().get_properties().limits)
 }
 
 /// The checks of `vkGetQueryPoolResults` that keep the driver inside `data` and the
@@ -2593,7 +2593,7 @@ pub(crate) fn create_instance_checks(create_info: &InstanceCreateInfo<'_>) -> Re
 }
 
 /// A queue is got as the device was created with it: from a family it has queues
-/// of, created without flags (those are got through `get_device_queue2`), at an
+/// of, created without flags (those are got through `get_queue2`), at an
 /// index below their count.
 pub(crate) fn get_device_queue_checks(device: &Device, family: u32, index: u32) -> Result<()> {
     let infos = device.live().queue_infos();
@@ -2608,7 +2608,7 @@ pub(crate) fn get_device_queue_checks(device: &Device, family: u32, index: u32) 
             "VUID-vkGetDeviceQueue-flags-01841",
             format!(
                 "the queues of family {family} were created with flags; get them with \
-                 `get_device_queue2`"
+                 `get_queue2`"
             ),
         );
     };
@@ -3092,7 +3092,7 @@ fn check_workgroup_subgroups(
 fn subgroup_size(device: &Device) -> u32 {
     let physical = device.parent();
     let instance = physical.parent();
-    let version = physical.get_physical_device_properties().api_version;
+    let version = physical.get_properties().api_version;
     if !instance.exts().version(1) || vk::api_version_minor(version) < 1 {
         return 0;
     }
@@ -4858,7 +4858,7 @@ pub(crate) fn cmd_push_constants_done<S: Scope>(
 fn format_features2(device: &Device, format: vk::Format) -> Result<[vk::FormatFeatureFlags2; 3]> {
     let physical = device.parent();
     let instance = physical.parent();
-    let version = physical.get_physical_device_properties().api_version;
+    let version = physical.get_properties().api_version;
     if instance.exts().version(1) && vk::api_version_minor(version) >= 3 {
         let mut p3 = vk::FormatProperties3::default();
         let mut p2 = vk::FormatProperties2::default().push_next(&mut p3);
@@ -6090,7 +6090,7 @@ fn check_memory_kind(
         )?;
     }
     let physical = device.parent();
-    let types = physical.get_physical_device_memory_properties();
+    let types = physical.get_memory_properties();
     let protected_type = types
         .memory_types_as_slice()
         .get(type_index as usize)
@@ -7004,7 +7004,7 @@ fn descriptor_limits(
 fn vulkan12_properties(device: &Device) -> Option<vk::PhysicalDeviceVulkan12Properties<'static>> {
     let physical = device.parent();
     let instance = physical.parent();
-    let version = physical.get_physical_device_properties().api_version;
+    let version = physical.get_properties().api_version;
     if !instance.exts().version(1) || vk::api_version_minor(version) < 2 {
         return None;
     }
@@ -7031,7 +7031,7 @@ pub(crate) fn create_pipeline_layout_checks(
     let raw = create_info.as_raw();
     let limits = *device
         .live()
-        .limits(|| device.parent().get_physical_device_properties().limits);
+        .limits(|| device.parent().get_properties().limits);
     if raw.set_layout_count > limits.max_bound_descriptor_sets {
         refuse(
             "VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286",
@@ -7167,7 +7167,7 @@ pub(crate) fn create_pipeline_layout_checks(
 fn vulkan13_properties(device: &Device) -> Option<vk::PhysicalDeviceVulkan13Properties<'static>> {
     let physical = device.parent();
     let instance = physical.parent();
-    let version = physical.get_physical_device_properties().api_version;
+    let version = physical.get_properties().api_version;
     if !instance.exts().version(1) || vk::api_version_minor(version) < 3 {
         return None;
     }
@@ -7834,7 +7834,7 @@ pub(crate) fn begin_rendering_checks<S: Scope>(
     let flags = vk::RenderingFlags::SUSPENDING | vk::RenderingFlags::RESUMING;
     if rendering_info.flags.intersects(flags) {
         return Err(Error::Misuse(
-            "the safe cmd_begin_rendering does not suspend or resume render pass instances (their submission rules are not followed); use cmd_begin_rendering_unchecked, and keep VUID-VkSubmitInfo-pCommandBuffers-06014 to 06016 and 06193",
+            "the safe begin_rendering does not suspend or resume render pass instances (their submission rules are not followed); use begin_rendering_unchecked, and keep VUID-VkSubmitInfo-pCommandBuffers-06014 to 06016 and 06193",
         ));
     }
     Ok(())

@@ -38,7 +38,7 @@
 //!         .queue_priorities(&[1.0])];
 //!     let device =
 //!         physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))?;
-//!     let queue = device.get_device_queue(family, 0)?;
+//!     let queue = device.get_queue(family, 0)?;
 //!
 //!     // A storage buffer the shader writes and the host reads back.
 //!     let allocator = device.gpu_allocator()?;
@@ -109,13 +109,13 @@
 //!         .pop()
 //!         .ok_or("no command buffer")?;
 //!     let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
-//!     rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
-//!     rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
-//!     rec.cmd_dispatch(1, 1, 1)?;
+//!     rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
+//!     rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+//!     rec.dispatch(1, 1, 1)?;
 //!     let to_host = tuff::MemoryBarrier::new()
 //!         .src_access_mask(vk::AccessFlags::SHADER_WRITE)
 //!         .dst_access_mask(vk::AccessFlags::HOST_READ);
-//!     rec.cmd_pipeline_barrier(
+//!     rec.pipeline_barrier(
 //!         vk::PipelineStageFlags::COMPUTE_SHADER,
 //!         vk::PipelineStageFlags::HOST,
 //!         vk::DependencyFlags::empty(),
@@ -129,7 +129,7 @@
 //!     // until it is seen signalled.
 //!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
 //!     let submitted = tuff::HandleSlice::new(&[&cb]);
-//!     queue.queue_submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], Some(&fence))?;
+//!     queue.submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], Some(&fence))?;
 //!     device.wait_for_fences(&[&fence], true, u64::MAX)?;
 //!     Ok(buffer.memory().read::<u32>(0, 64)?)
 //! }

@@ -106,15 +106,12 @@ impl DeviceMemory {
             None => {
                 let physical = device.parent();
                 let flags = physical
-                    .get_physical_device_memory_properties()
+                    .get_memory_properties()
                     .memory_types
                     .get(type_index as usize)
                     .map(|t| t.property_flags)
                     .unwrap_or_default();
-                let atom = physical
-                    .get_physical_device_properties()
-                    .limits
-                    .non_coherent_atom_size;
+                let atom = physical.get_properties().limits.non_coherent_atom_size;
                 device
                     .live()
                     .memory(self.raw(), |r| r.host = Some((flags, atom)));

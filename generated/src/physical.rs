@@ -18,7 +18,7 @@ impl PhysicalDevice {
     /// The device's name (`deviceName`), up to its terminating NUL; a name that has
     /// none, against the specification, is taken whole.
     pub fn name(&self) -> String {
-        let properties = self.get_physical_device_properties();
+        let properties = self.get_properties();
         match properties.device_name_as_c_str() {
             Ok(name) => name.to_string_lossy().into_owned(),
             Err(_) => {
@@ -31,7 +31,7 @@ impl PhysicalDevice {
     /// The index of the first queue family whose queues support all of `flags`, or
     /// `None` when no family does.
     pub fn queue_family_index(&self, flags: vk::QueueFlags) -> Result<Option<u32>> {
-        let families = self.get_physical_device_queue_family_properties()?;
+        let families = self.get_queue_family_properties()?;
         Ok(families
             .iter()
             .position(|f| f.queue_count > 0 && f.queue_flags.contains(flags))

@@ -67,7 +67,7 @@ pub(crate) fn device_error(
                 )
             }),
         vk::Result::ERROR_FEATURE_NOT_PRESENT => wanted_features(info).map(|wanted| {
-            let have = physical.get_physical_device_features();
+            let have = physical.get_features();
             let names = match (as_bools(&wanted), as_bools(&have)) {
                 (Some(wanted), Some(have)) => DEVICE_FEATURES
                     .iter()

@@ -33,21 +33,21 @@ pub trait OutsideRenderPass: Scope {}
 /// // Beginning a render pass moves the recorder into the other state, and ending
 /// // it moves it back: a draw outside one does not compile.
 /// let inside: tuff::Recorder<'_, tuff::InRenderPass> =
-///     rec.cmd_begin_render_pass(begin, tuff::vk::SubpassContents::INLINE);
-/// let rec = inside.cmd_end_render_pass();
+///     rec.begin_render_pass(begin, tuff::vk::SubpassContents::INLINE);
+/// let rec = inside.end_render_pass();
 /// rec.end()?;
 /// # Ok(()) }
 /// ```
 #[derive(Debug)]
 pub struct Outside;
-/// Recording inside a render pass begun with `cmd_begin_render_pass` (see
+/// Recording inside a render pass begun with `begin_render_pass` (see
 /// [`Outside`]'s example).
 #[derive(Debug)]
 pub struct InRenderPass;
-/// Recording inside dynamic rendering begun with `cmd_begin_rendering`.
+/// Recording inside dynamic rendering begun with `begin_rendering`.
 #[derive(Debug)]
 pub struct InRendering;
-/// Recording inside a video coding scope begun with `cmd_begin_video_coding_khr`:
+/// Recording inside a video coding scope begun with `begin_video_coding_khr`:
 /// video commands, and those Vulkan allows in both.
 #[derive(Debug)]
 pub struct InVideoCoding;
@@ -395,7 +395,7 @@ pub(crate) struct ActiveQuery {
 /// ```no_run
 /// # fn f(cb: &mut tuff::CommandBuffer) -> tuff::Result<()> {
 /// let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
-/// rec.cmd_set_line_width(1.0);
+/// rec.set_line_width(1.0);
 /// rec.end()?;
 /// # Ok(()) }
 /// ```

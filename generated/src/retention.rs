@@ -806,7 +806,7 @@ impl Live {
     }
 
     /// The host synchronization of a new wrapper of `raw`. A queue can get several
-    /// wrappers (`get_device_queue` twice) and Vulkan synchronizes the queue, not
+    /// wrappers (`get_queue` twice) and Vulkan synchronizes the queue, not
     /// the wrappers, so every wrapper of one queue shares one for the device's life
     /// (a device has few queues); any other object gets a new one.
     pub(crate) fn sync_for<H: vk::Handle>(&self, raw: H) -> HostSync {
@@ -1772,7 +1772,7 @@ impl Live {
         if let Some(p) = self.formats.lock().get(&format.as_raw()) {
             return Ok(*p);
         }
-        let p = physical.get_physical_device_format_properties(format)?;
+        let p = physical.get_format_properties(format)?;
         self.formats.lock().insert(format.as_raw(), p);
         Ok(p)
     }

@@ -67,7 +67,7 @@ impl Recorder<'_, Outside> {
         ///
         /// # Safety
         ///
-        /// This method is `unsafe` exactly when [`Recorder::cmd_pipeline_barrier`] is
+        /// This method is `unsafe` exactly when [`Recorder::pipeline_barrier`] is
         /// (it is safe with this crate's emitted API); the caller then upholds the
         /// rules its `# Safety` section lists for this one image barrier.
         pub fn transition_image(
@@ -94,10 +94,10 @@ impl Recorder<'_, Outside> {
                     layer_count: vk::REMAINING_ARRAY_LAYERS,
                 });
             #[allow(unused_unsafe)]
-            // SAFETY: where `cmd_pipeline_barrier` is `unsafe`, so is this method, and
+            // SAFETY: where `pipeline_barrier` is `unsafe`, so is this method, and
             // its caller upholds the rules of this barrier.
             unsafe {
-                self.cmd_pipeline_barrier(
+                self.pipeline_barrier(
                     src_stage,
                     dst_stage,
                     vk::DependencyFlags::empty(),
@@ -115,12 +115,12 @@ impl Queue {
     ///
     /// ```no_run
     /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-    /// let queue = device.get_device_queue(0, 0)?;
+    /// let queue = device.get_queue(0, 0)?;
     /// assert_eq!(queue.family_index(), 0);
     /// # Ok(()) }
     /// ```
     pub fn family_index(&self) -> u32 {
-        // Every queue wrapper comes from `get_device_queue` or `get_device_queue2`,
+        // Every queue wrapper comes from `get_queue` or `get_queue2`,
         // which record its family (`hooks::queue_got`).
         self.parent()
             .live()
@@ -150,7 +150,7 @@ impl Queue {
         ///
         /// # Safety
         ///
-        /// This method is `unsafe` exactly when [`Queue::queue_submit`] is (it is safe
+        /// This method is `unsafe` exactly when [`Queue::submit`] is (it is safe
         /// with this crate's emitted API; a crate generated from more of the registry
         /// may leave it rules); the caller then upholds the rules its `# Safety`
         /// section lists for a submission of the recorded command buffer.
@@ -190,9 +190,9 @@ impl Queue {
             let fence = unsafe { device.create_fence(&FenceCreateInfo::new()) }?;
             let submitted = HandleSlice::new(&[&commands]);
             #[allow(unused_unsafe)]
-            // SAFETY: where `queue_submit` is `unsafe`, so is this method, and its
+            // SAFETY: where `submit` is `unsafe`, so is this method, and its
             // caller upholds the rules of this submission.
-            unsafe { self.queue_submit(&[SubmitInfo::new().command_buffers(&submitted)], Some(&fence)) }?;
+            unsafe { self.submit(&[SubmitInfo::new().command_buffers(&submitted)], Some(&fence)) }?;
             match device.wait_for_fences(&[&fence], true, u64::MAX)? {
                 vk::Result::SUCCESS => Ok(out),
                 other => Err(Error::Vk(other)),
@@ -212,7 +212,7 @@ impl Queue {
         /// (`VUID-vkCmdCopyBufferToImage-pRegions-00171`) or the copy is otherwise
         /// refused, and with [`Error::Misuse`] for a depth aspect, whose data must be
         /// in \[0, 1\] (`VUID-vkCmdCopyBufferToImage-None-00214`), which depends on its
-        /// format: copy it with [`Recorder::cmd_copy_buffer_to_image`].
+        /// format: copy it with [`Recorder::copy_buffer_to_image`].
         ///
         /// ```no_run
         /// # fn f(queue: &tuff::Queue, image: &tuff::Image, a: &tuff::GpuAllocator) -> tuff::Result<()> {
@@ -230,8 +230,8 @@ impl Queue {
         ///
         /// # Safety
         ///
-        /// This method is `unsafe` exactly when one of [`Queue::queue_submit`],
-        /// [`Recorder::cmd_pipeline_barrier`] and [`Recorder::cmd_copy_buffer_to_image`]
+        /// This method is `unsafe` exactly when one of [`Queue::submit`],
+        /// [`Recorder::pipeline_barrier`] and [`Recorder::copy_buffer_to_image`]
         /// leaves its caller a rule other than the depth rule above (none does with this
         /// crate's emitted API); the caller then upholds the rules their `# Safety`
         /// sections list for the staging copy, the two image barriers around it and
@@ -248,7 +248,7 @@ impl Queue {
                 // VUID-vkCmdCopyBufferToImage-None-00214 asks depth data in [0, 1],
                 // which depends on the format; this helper leaves depth to the copy.
                 return Err(Error::Misuse(
-                    "upload_image copies color, stencil and plane aspects; copy depth data with cmd_copy_buffer_to_image",
+                    "upload_image copies color, stencil and plane aspects; copy depth data with Recorder::copy_buffer_to_image",
                 ));
             }
             let device = self.parent();
@@ -284,7 +284,7 @@ impl Queue {
                 // aspects, which this method refuses above.
                 unsafe {
                     rec.transition_image(image, aspect, vk::ImageLayout::UNDEFINED, dst)?;
-                    rec.cmd_copy_buffer_to_image(&staging, image, dst, &[region])?;
+                    rec.copy_buffer_to_image(&staging, image, dst, &[region])?;
                     rec.transition_image(image, aspect, dst, layout)
                 }
             };

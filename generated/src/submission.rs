@@ -1,6 +1,6 @@
 //! Queue submissions: what a submission uses is held until the submission is known
 //! to be complete, by any route (its fence seen signalled, a later fence of the same
-//! queue seen signalled, `queue_wait_idle`, `device_wait_idle`, or a timeline value
+//! queue seen signalled, `Queue::wait_idle`, `Device::wait_idle`, or a timeline value
 //! seen on the host that every one of its batches signals), and never released by a
 //! reset. Command buffers carry their lifecycle state here, so that a buffer is
 //! neither begun again nor submitted in a state Vulkan forbids.

@@ -86,7 +86,7 @@ pub enum Error {
 ///
 /// ```no_run
 /// fn idle(device: &tuff::Device) -> tuff::Result<()> {
-///     device.device_wait_idle()
+///     device.wait_idle()
 /// }
 /// ```
 pub type Result<T> = core::result::Result<T, Error>;

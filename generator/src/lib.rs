@@ -186,7 +186,7 @@ fn scene_calls(sources: &[(String, String)]) -> std::collections::BTreeSet<Strin
 /// and are skipped.
 fn scene_snippets(
     sources: &[(String, String)],
-) -> std::collections::BTreeMap<String, plan::Snippet> {
+) -> std::collections::BTreeMap<String, Vec<plan::Snippet>> {
     let mut out = std::collections::BTreeMap::new();
     for (shown, text) in sources {
         if text.contains("ash::") || text.contains("use ash") {
@@ -198,18 +198,20 @@ fn scene_snippets(
             for (at, _) in code.match_indices('(') {
                 let name = trailing_ident(&code[..at]);
                 let before = &code[..at - name.len()];
-                let key = if before.ends_with('.') {
-                    name
+                let (key, receiver) = if let Some(on) = before.strip_suffix('.') {
+                    (name, trailing_ident(on))
                 } else if name == "new" && before.ends_with("::") {
                     let ty = trailing_ident(&before[..before.len() - 2]);
                     if !ty.starts_with(|c: char| c.is_ascii_uppercase()) {
                         continue;
                     }
-                    ty
+                    (ty, "")
                 } else {
                     continue;
                 };
-                if key.is_empty() || out.contains_key(key) {
+                // One example per receiver spelling is enough to choose from.
+                let seen = |s: &plan::Snippet| s.receiver == receiver;
+                if key.is_empty() || out.get(key).is_some_and(|v: &Vec<_>| v.iter().any(seen)) {
                     continue;
                 }
                 if let Some(code) = statement(&lines, i) {
@@ -217,8 +219,9 @@ fn scene_snippets(
                         file: shown.clone(),
                         line: i + 1,
                         code,
+                        receiver: receiver.to_owned(),
                     };
-                    out.insert(key.to_owned(), snippet);
+                    out.entry(key.to_owned()).or_default().push(snippet);
                 }
             }
         }
@@ -512,17 +515,20 @@ mod tests {
         };
         let s = scene_snippets(&scene_sources(&dir.path().join("tuff-gen.toml"), &config));
         assert_eq!(
-            s["BufferCreateInfo"].code,
+            s["BufferCreateInfo"][0].code,
             "// Why it holds.\nlet info = tuff::BufferCreateInfo::new()\n    .size(64);"
         );
-        assert_eq!(s["BufferCreateInfo"].line, 3);
-        assert_eq!(s["BufferCreateInfo"].file, "src/a.rs");
+        assert_eq!(s["BufferCreateInfo"][0].line, 3);
+        assert_eq!(s["BufferCreateInfo"][0].file, "src/a.rs");
         assert_eq!(
-            s["create_buffer"].code,
+            s["create_buffer"][0].code,
             "let b = device\n    .create_buffer(&info)?;"
         );
         // A tail expression closed by the next line stands alone.
-        assert_eq!(s["cmd_draw"].code, "Ok(x.cmd_draw(i, 1, 0, 0))");
+        assert_eq!(s["cmd_draw"][0].code, "Ok(x.cmd_draw(i, 1, 0, 0))");
+        // What each call is made on, to tell methods of one name apart.
+        assert_eq!(s["cmd_draw"][0].receiver, "x");
+        assert_eq!(s["create_buffer"][0].receiver, "");
         assert!(!s.contains_key("destroy_buffer"));
     }
 }

@@ -6,10 +6,10 @@
 
 pub use crate::model::tables::{minimal_feature_sets, table, Table};
 use crate::model::{Condition, Model};
-use heck::ToSnakeCase;
+use heck::{ToSnakeCase, ToUpperCamelCase};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// An identifier token.
 pub fn ident(name: &str) -> Ident {
@@ -34,10 +34,91 @@ pub fn command_fn(name: &str) -> String {
     name.strip_prefix("vk").unwrap_or(name).to_snake_case()
 }
 
-/// The method of a command of the emitted API: `command_fn` of the name the emitted
-/// API knows it by ([`Model::spelling`]).
-pub fn method(model: &Model, command: &str) -> String {
-    command_fn(model.spelling(command))
+/// The method of every command of `model`, by command: `command_fn` of the name the
+/// emitted API knows it by ([`Model::spelling`]), less the words that repeat the
+/// receiver (see [`receiver_relative`]), unless that would give two commands of one
+/// receiver the same name, in which case the shortened one keeps its Vulkan name
+/// (`vkGetDeviceBufferMemoryRequirements` stays `get_device_buffer_memory_requirements`
+/// beside `vkGetBufferMemoryRequirements`'s `get_buffer_memory_requirements`).
+pub fn methods(model: &Model) -> BTreeMap<String, String> {
+    let receiver_of = |command: &str| receiver_type(model, command).to_owned();
+    let full: BTreeMap<&str, (String, String)> = model
+        .commands
+        .keys()
+        .map(|c| (c.as_str(), (receiver_of(c), command_fn(model.spelling(c)))))
+        .collect();
+    let taken: BTreeSet<(&str, &str)> = full
+        .values()
+        .map(|(r, m)| (r.as_str(), m.as_str()))
+        .collect();
+    let mut short: BTreeMap<&str, String> = BTreeMap::new();
+    for (command, (receiver, name)) in &full {
+        short.insert(command, receiver_relative(model, receiver, name));
+    }
+    let mut uses: BTreeMap<(&str, &str), usize> = BTreeMap::new();
+    for (command, (receiver, _)) in &full {
+        *uses
+            .entry((receiver.as_str(), short[command].as_str()))
+            .or_default() += 1;
+    }
+    full.iter()
+        .map(|(command, (receiver, name))| {
+            let s = &short[command];
+            let clashes = s != name
+                && (uses[&(receiver.as_str(), s.as_str())] > 1
+                    || taken.contains(&(receiver.as_str(), s.as_str())));
+            let chosen = if clashes { name.clone() } else { s.clone() };
+            (command.to_string(), chosen)
+        })
+        .collect()
+}
+
+/// The type whose method a command becomes: its dispatchable handle
+/// (`VkQueue`), `Recorder` for a command recorded into a command buffer, `Entry`
+/// for a global command.
+pub fn receiver_type<'a>(model: &'a Model, command: &str) -> &'a str {
+    match model.receiver(command) {
+        Some("VkCommandBuffer") if command.starts_with("vkCmd") => "Recorder",
+        Some(r) => r,
+        None => "Entry",
+    }
+}
+
+/// A method name without the words that repeat its receiver: `draw` on a
+/// recorder is `draw`, `submit` on a queue `submit`, `wait_idle` on a
+/// device `wait_idle`, `get_properties` on a physical device
+/// `get_properties`, `reset` on a command buffer `reset`. The words
+/// stay where they begin another handle's name (`get_device_memory_commitment`
+/// speaks of a `VkDeviceMemory`), and where nothing would be left.
+pub fn receiver_relative(model: &Model, receiver: &str, name: &str) -> String {
+    let words = if receiver == "Recorder" {
+        "cmd".to_owned()
+    } else {
+        type_name(receiver).to_snake_case()
+    };
+    let names_a_type = |rest: &str| {
+        let next = rest.split('_').next().unwrap_or("");
+        let candidate = format!("{}{}", type_name(receiver), next.to_upper_camel_case());
+        !next.is_empty()
+            && model.category(&format!("Vk{candidate}")) == Some(crate::model::Kind::Handle)
+    };
+    let stripped = if let Some(rest) = name.strip_prefix(&format!("{words}_")) {
+        (!names_a_type(rest)).then(|| rest.to_owned())
+    } else if let Some((verb, rest)) = name.split_once('_') {
+        if rest == words {
+            Some(verb.to_owned())
+        } else {
+            rest.strip_prefix(&format!("{words}_"))
+                .filter(|r| !names_a_type(r))
+                .map(|r| format!("{verb}_{r}"))
+        }
+    } else {
+        None
+    };
+    match stripped {
+        Some(s) if !s.is_empty() && syn::parse_str::<Ident>(&s).is_ok() => s,
+        _ => name.to_owned(),
+    }
 }
 
 /// A member or parameter name as ash spells it.

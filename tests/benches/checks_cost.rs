@@ -156,28 +156,28 @@ fn draws_tuff(b: &mut Bench, checked: bool) {
     let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(AREA)
         .clear_values(&clear);
-    let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
         .expect("bind");
-    rec.cmd_set_viewport(0, &[VIEWPORT]).expect("viewport");
-    rec.cmd_set_scissor(0, &[AREA]).expect("scissor");
+    rec.set_viewport(0, &[VIEWPORT]).expect("viewport");
+    rec.set_scissor(0, &[AREA]).expect("scissor");
     let stage = vk::ShaderStageFlags::FRAGMENT;
     for i in 0..DRAWS {
         if checked {
-            rec.cmd_push_constants(layout, stage, 0, black_box(&PUSH))
+            rec.push_constants(layout, stage, 0, black_box(&PUSH))
                 .expect("recorded");
-            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
+            rec.draw(36, 1, black_box(i), 0).expect("recorded");
         } else {
             // SAFETY: the same valid calls as the checked branch makes.
             unsafe {
-                rec.cmd_push_constants_unchecked(layout, stage, 0, black_box(&PUSH))
+                rec.push_constants_unchecked(layout, stage, 0, black_box(&PUSH))
                     .expect("recorded");
-                rec.cmd_draw_unchecked(36, 1, black_box(i), 0)
+                rec.draw_unchecked(36, 1, black_box(i), 0)
                     .expect("recorded");
             }
         }
     }
-    rec.cmd_end_render_pass().end().expect("end");
+    rec.end_render_pass().end().expect("end");
 }
 
 fn buffer_info() -> vk::BufferCreateInfo<'static> {
@@ -230,10 +230,10 @@ fn submits_tuff(b: &Bench, checked: bool) {
         let cbs = tuff::HandleSlice::new(&one);
         let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
         let r = if checked {
-            b.s.queue.queue_submit(&submit, Some(fence))
+            b.s.queue.submit(&submit, Some(fence))
         } else {
             // SAFETY: as in `submits_ash`.
-            unsafe { b.s.queue.queue_submit_unchecked(&submit, Some(fence)) }
+            unsafe { b.s.queue.submit_unchecked(&submit, Some(fence)) }
         };
         r.expect("submit");
     }

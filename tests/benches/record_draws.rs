@@ -106,17 +106,17 @@ fn main() {
         let begin = tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             .clear_values(&clear);
-        let mut rec = rec.cmd_begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
+        let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
             .expect("bind");
-        rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-        rec.cmd_set_scissor(0, &[area]).expect("scissor");
+        rec.set_viewport(0, &[viewport]).expect("viewport");
+        rec.set_scissor(0, &[area]).expect("scissor");
         for i in 0..DRAWS {
-            rec.cmd_push_constants(layout, vk::ShaderStageFlags::FRAGMENT, 0, black_box(&push))
+            rec.push_constants(layout, vk::ShaderStageFlags::FRAGMENT, 0, black_box(&push))
                 .expect("recorded");
-            rec.cmd_draw(36, 1, black_box(i), 0).expect("recorded");
+            rec.draw(36, 1, black_box(i), 0).expect("recorded");
         }
-        rec.cmd_end_render_pass().end().expect("end");
+        rec.end_render_pass().end().expect("end");
     };
 
     let mut ash_ns = Vec::new();

@@ -281,30 +281,30 @@ fn main() {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let mut rec = rec.cmd_begin_render_pass(
+    let mut rec = rec.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
             .render_area(area)
             .clear_values(&clear),
         vk::SubpassContents::INLINE,
     );
-    rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
+    rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
         .expect("bind");
-    rec.cmd_set_viewport(0, &[viewport]).expect("viewport");
-    rec.cmd_set_scissor(0, &[area]).expect("scissor");
+    rec.set_viewport(0, &[viewport]).expect("viewport");
+    rec.set_scissor(0, &[area]).expect("scissor");
     let color = [0u8; 16];
     let before = LIVE.load(Ordering::Relaxed);
     for _ in 0..COUNT {
-        rec.cmd_push_constants(
+        rec.push_constants(
             &p.graphics_layout,
             vk::ShaderStageFlags::FRAGMENT,
             0,
             &color,
         )
         .expect("push");
-        rec.cmd_draw(3, 1, 0, 0).expect("draw");
+        rec.draw(3, 1, 0, 0).expect("draw");
     }
     let per_draw = (LIVE.load(Ordering::Relaxed) - before) as f64 / COUNT as f64;
-    rec.cmd_end_render_pass().end().expect("end");
+    rec.end_render_pass().end().expect("end");
 
     println!("tuff's own heap per live object ({COUNT} of each kind; the driver's memory is not counted)\n");
     println!("| object | heap bytes per object | wrapper size (bytes) |");

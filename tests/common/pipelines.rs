@@ -350,15 +350,15 @@ impl Pipelines {
                 height: size,
             },
         };
-        let mut rec = rec.cmd_begin_render_pass(
+        let mut rec = rec.begin_render_pass(
             &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
                 .render_area(area)
                 .clear_values(&clear),
             vk::SubpassContents::INLINE,
         );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.graphics)
             .expect("recorded");
-        rec.cmd_set_viewport(
+        rec.set_viewport(
             0,
             &[vk::Viewport {
                 x: 0.0,
@@ -370,17 +370,17 @@ impl Pipelines {
             }],
         )
         .expect("recorded");
-        rec.cmd_set_scissor(0, &[area]).expect("recorded");
+        rec.set_scissor(0, &[area]).expect("recorded");
         let color: Vec<u8> = COLOR.iter().flat_map(|c| c.to_le_bytes()).collect();
-        rec.cmd_push_constants(
+        rec.push_constants(
             &self.graphics_layout,
             vk::ShaderStageFlags::FRAGMENT,
             0,
             &color,
         )
         .expect("recorded");
-        rec.cmd_draw(3, 1, 0, 0).expect("recorded");
-        let mut rec = rec.cmd_end_render_pass();
+        rec.draw(3, 1, 0, 0).expect("recorded");
+        let mut rec = rec.end_render_pass();
         if let Some(buffer) = readback {
             let to_transfer = [tuff::ImageMemoryBarrier::new(&target.image)
                 .src_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE)
@@ -396,7 +396,7 @@ impl Pipelines {
                     base_array_layer: 0,
                     layer_count: 1,
                 })];
-            rec.cmd_pipeline_barrier(
+            rec.pipeline_barrier(
                 vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
                 vk::PipelineStageFlags::TRANSFER,
                 vk::DependencyFlags::empty(),
@@ -405,7 +405,7 @@ impl Pipelines {
                 &to_transfer,
             )
             .expect("recorded");
-            rec.cmd_copy_image_to_buffer(
+            rec.copy_image_to_buffer(
                 &target.image,
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
                 buffer,
@@ -426,9 +426,9 @@ impl Pipelines {
             )
             .expect("recorded");
         }
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
+        rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &self.compute)
             .expect("recorded");
-        rec.cmd_bind_descriptor_sets(
+        rec.bind_descriptor_sets(
             vk::PipelineBindPoint::COMPUTE,
             &self.compute_layout,
             0,
@@ -436,7 +436,7 @@ impl Pipelines {
             &[],
         )
         .expect("recorded");
-        rec.cmd_dispatch(1, 1, 1).expect("recorded");
+        rec.dispatch(1, 1, 1).expect("recorded");
         rec
     }
 }
@@ -536,7 +536,7 @@ pub fn storage_image_of(
 /// Pushes the test fragment shader's color (16 bytes) with the test graphics layout,
 /// which draws with the test graphics pipeline need.
 pub fn push_color<S: tuff::State>(rec: &mut tuff::Recorder<'_, S>, p: &Pipelines) {
-    rec.cmd_push_constants(
+    rec.push_constants(
         &p.graphics_layout,
         vk::ShaderStageFlags::FRAGMENT,
         0,

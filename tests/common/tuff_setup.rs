@@ -159,12 +159,12 @@ fn setup_full(
         .expect("enumerate physical devices");
     let physical = physicals
         .iter()
-        .find(|p| p.get_physical_device_properties().device_type == vk::PhysicalDeviceType::CPU)
+        .find(|p| p.get_properties().device_type == vk::PhysicalDeviceType::CPU)
         .or(physicals.first())
         .expect("no Vulkan device found: install mesa-vulkan-drivers (lavapipe)")
         .clone();
     let families = physical
-        .get_physical_device_queue_family_properties()
+        .get_queue_family_properties()
         .expect("queue families");
     let family = families
         .iter()
@@ -251,8 +251,8 @@ fn setup_full(
             .push_next(&mut all11),
     };
     let device = physical.create_device(&info).expect("create device");
-    let queue = device.get_device_queue(family, 0).expect("queue");
-    let memory_types = physical.get_physical_device_memory_properties();
+    let queue = device.get_queue(family, 0).expect("queue");
+    let memory_types = physical.get_memory_properties();
     Setup {
         queue,
         physical,

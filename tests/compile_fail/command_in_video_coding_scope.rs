@@ -7,8 +7,8 @@ fn record(
     pipeline: &tuff::Pipeline,
     buffer: &tuff::Buffer,
 ) {
-    let _ = rec.cmd_bind_pipeline(tuff::vk::PipelineBindPoint::COMPUTE, pipeline);
-    let _ = rec.cmd_copy_buffer(buffer, buffer, &[]);
+    let _ = rec.bind_pipeline(tuff::vk::PipelineBindPoint::COMPUTE, pipeline);
+    let _ = rec.copy_buffer(buffer, buffer, &[]);
 }
 
 fn main() {}

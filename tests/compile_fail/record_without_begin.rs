@@ -1,7 +1,7 @@
 // Commands are recorded through the Recorder that `CommandBuffer::begin` returns; a
 // command buffer that has not begun has no recording methods.
 fn record(cb: &mut tuff::CommandBuffer) {
-    cb.cmd_set_line_width(1.0);
+    cb.set_line_width(1.0);
 }
 
 fn main() {}

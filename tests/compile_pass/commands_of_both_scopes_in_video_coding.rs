@@ -8,8 +8,8 @@ fn record(
 ) -> tuff::Result<()> {
     // SAFETY: never called; only its types are checked.
     unsafe {
-        rec.cmd_reset_event(event, tuff::vk::PipelineStageFlags::TRANSFER);
-        rec.cmd_pipeline_barrier2(dependency)
+        rec.reset_event(event, tuff::vk::PipelineStageFlags::TRANSFER);
+        rec.pipeline_barrier2(dependency)
     }
 }
 

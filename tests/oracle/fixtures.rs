@@ -112,13 +112,13 @@ fn submit2(
             .expect("fence")
     };
     let (a, b) = (fence(), fence());
-    let safe = unsafe { s.queue.queue_submit2(safe, Some(&a)) };
+    let safe = unsafe { s.queue.submit2(safe, Some(&a)) };
     // SAFETY: as in `buffer_create_info`; the queue is idle again before the
     // fences and semaphores are dropped.
     let layer = under_layer(s, || {
-        let _ = unsafe { s.queue.queue_submit2_unchecked(unchecked, Some(&b)) };
+        let _ = unsafe { s.queue.submit2_unchecked(unchecked, Some(&b)) };
     });
-    s.queue.queue_wait_idle().expect("wait idle");
+    s.queue.wait_idle().expect("wait idle");
     Outcome { safe, layer }
 }
 
@@ -174,9 +174,9 @@ pub fn cmd_set_device_mask(
     let mask = a.device_mask;
     record(
         s,
-        |r| unsafe { r.cmd_set_device_mask(mask) },
+        |r| unsafe { r.set_device_mask(mask) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.cmd_set_device_mask_unchecked(mask) },
+        |r| unsafe { r.set_device_mask_unchecked(mask) },
     )
 }
 
@@ -209,8 +209,8 @@ pub fn device_group_render_pass_begin_info(
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     let safe = rec
-        .cmd_begin_render_pass(&info, vk::SubpassContents::INLINE)
-        .cmd_end_render_pass()
+        .begin_render_pass(&info, vk::SubpassContents::INLINE)
+        .end_render_pass()
         .end();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = cb
@@ -222,7 +222,7 @@ pub fn device_group_render_pass_begin_info(
         drop(unsafe {
             rec.take()
                 .expect("recorder")
-                .cmd_begin_render_pass_unchecked(&info, vk::SubpassContents::INLINE)
+                .begin_render_pass_unchecked(&info, vk::SubpassContents::INLINE)
         });
     });
     Outcome { safe, layer }

@@ -82,7 +82,7 @@ fn add_on_gpu(args: &Args, log: &tuff::MessageLog) -> Result<(String, u32)> {
         .queue_priorities(&[1.0])];
     let device =
         physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))?;
-    let queue = device.get_device_queue(family, 0)?;
+    let queue = device.get_queue(family, 0)?;
     let allocator = device.gpu_allocator()?;
 
     // The inputs, written by the host; the output, read back by it.
@@ -169,19 +169,19 @@ fn add_on_gpu(args: &Args, log: &tuff::MessageLog) -> Result<(String, u32)> {
     // One dispatch of enough workgroups, then the shader's writes made visible to the
     // host; recorded, submitted and waited for in one call.
     queue.submit_and_wait(|rec| {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
-        rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
-        rec.cmd_push_constants(
+        rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
+        rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+        rec.push_constants(
             &layout,
             vk::ShaderStageFlags::COMPUTE,
             0,
             &args.count.to_ne_bytes(),
         )?;
-        rec.cmd_dispatch(args.count.div_ceil(GROUP), 1, 1)?;
+        rec.dispatch(args.count.div_ceil(GROUP), 1, 1)?;
         let to_host = tuff::MemoryBarrier::new()
             .src_access_mask(vk::AccessFlags::SHADER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ);
-        rec.cmd_pipeline_barrier(
+        rec.pipeline_barrier(
             vk::PipelineStageFlags::COMPUTE_SHADER,
             vk::PipelineStageFlags::HOST,
             vk::DependencyFlags::empty(),

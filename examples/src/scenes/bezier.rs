@@ -131,21 +131,21 @@ impl Scene for Bezier {
             view.time,
             view.extent,
         );
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_descriptor_sets(
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
+        rec.bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
             0,
             &[&self.set],
             &[],
         )?;
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
-        rec.cmd_push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
+        rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+        rec.push_constants(&self.layout, PARAM_STAGES, 0, bytemuck::bytes_of(&params))?;
         // One draw per patch: lavapipe (Mesa 22.3) drops primitives when a single
         // draw tessellates all 32 patches at level 48 or more (the lid, spout and
         // handle went missing; the speckle test caught it).
         for patch in 0..PATCHES.len() as u32 {
-            rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
+            rec.draw_indexed(16, 1, patch * 16, 0, 0)?;
         }
         Ok(())
     }

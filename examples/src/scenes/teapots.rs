@@ -149,25 +149,25 @@ impl Scene for Teapots {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_descriptor_sets(
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
+        rec.bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
             &self.pipeline_layout,
             0,
             &[&self.sets[view.slot]],
             &[],
         )?;
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
-        rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+        rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+        rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);
-            rec.cmd_push_constants(
+            rec.push_constants(
                 &self.pipeline_layout,
                 vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT,
                 0,
                 bytemuck::bytes_of(&block),
             )?;
-            rec.cmd_draw_indexed(self.index_count, 1, 0, 0, 0)?;
+            rec.draw_indexed(self.index_count, 1, 0, 0, 0)?;
         }
         Ok(())
     }

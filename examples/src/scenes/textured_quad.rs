@@ -134,14 +134,14 @@ impl Scene for TexturedQuad {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         _view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_descriptor_sets(
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
+        rec.bind_descriptor_sets(
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
             0,
             &[&self.set],
             &[],
         )?;
-        rec.cmd_draw(4, 1, 0, 0)
+        rec.draw(4, 1, 0, 0)
     }
 }

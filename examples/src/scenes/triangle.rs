@@ -74,9 +74,9 @@ impl Scene for Triangle {
         rec: &mut tuff::Recorder<'_, tuff::InRenderPass>,
         _view: &View,
     ) -> tuff::Result<()> {
-        rec.cmd_bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
-        rec.cmd_draw(3, 1, 0, 0)?;
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
+        rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+        rec.draw(3, 1, 0, 0)?;
         Ok(())
     }
 }

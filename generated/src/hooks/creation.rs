@@ -130,7 +130,7 @@ pub(crate) fn create_device_checks(
     device_extension_requirements(physical, create_info)?;
     device_feature_pairs(info.p_next)?;
     device_group_members(physical, info.p_next)?;
-    let families = physical.get_physical_device_queue_family_properties()?;
+    let families = physical.get_queue_family_properties()?;
     let protected_memory = enabled_features(create_info).v11.protected_memory == vk::TRUE;
     // SAFETY: the safe setter stores the queue create infos with their count.
     let queues = unsafe {
@@ -335,7 +335,7 @@ pub(crate) fn allocate_memory_checks(
     allocate_info: &MemoryAllocateInfo<'_>,
 ) -> Result<()> {
     let info = allocate_info.as_raw();
-    let memory = device.parent().get_physical_device_memory_properties();
+    let memory = device.parent().get_memory_properties();
     let index = info.memory_type_index;
     let Some(ty) = memory.memory_types_as_slice().get(index as usize) else {
         return refuse(
@@ -1310,9 +1310,7 @@ fn chroma_rules(
     let multi_planar =
         crate::formats::aspects(format).is_some_and(|a| a.contains(vk::ImageAspectFlags::PLANE_0));
     if multi_planar && info.flags.contains(vk::ImageCreateFlags::DISJOINT) {
-        let props = device
-            .parent()
-            .get_physical_device_format_properties(format)?;
+        let props = device.parent().get_format_properties(format)?;
         let features = if info.tiling == vk::ImageTiling::LINEAR {
             props.linear_tiling_features
         } else {

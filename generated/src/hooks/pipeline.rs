@@ -1561,6 +1561,6 @@ fn check_fixed_function(device: &Device, states: &States<'_>, at: &str) -> Resul
 fn features(device: &Device, format: vk::Format) -> Result<vk::FormatFeatureFlags> {
     device
         .parent()
-        .get_physical_device_format_properties(format)
+        .get_format_properties(format)
         .map(|p| p.linear_tiling_features | p.optimal_tiling_features)
 }

@@ -412,7 +412,7 @@ impl Pass {
         // What an image of the format can do with either tiling.
         let features = |format: vk::Format| {
             physical
-                .get_physical_device_format_properties(format)
+                .get_format_properties(format)
                 .map(|p| p.linear_tiling_features | p.optimal_tiling_features)
         };
         for (i, s) in self.subpasses.iter().enumerate() {

@@ -15,7 +15,7 @@ pub(crate) fn create_swapchain_checks(
     let families: Vec<u32> = device.live().queue_infos().iter().map(|q| q.0).collect();
     let mut supported = false;
     for family in families {
-        supported |= physical.get_physical_device_surface_support_khr(family, surface)?;
+        supported |= physical.get_surface_support_khr(family, surface)?;
     }
     if !supported {
         refuse(
@@ -23,7 +23,7 @@ pub(crate) fn create_swapchain_checks(
             "no queue family the device was created with presents to the surface".into(),
         )?;
     }
-    let caps = physical.get_physical_device_surface_capabilities_khr(surface)?;
+    let caps = physical.get_surface_capabilities_khr(surface)?;
     let count = info.min_image_count;
     if count < caps.min_image_count {
         refuse(
@@ -48,7 +48,7 @@ pub(crate) fn create_swapchain_checks(
     // modifiers) that these calls keep: a live surface, optimal tiling.
     #[allow(unused_unsafe)]
     // SAFETY: a live surface of the physical device's instance.
-    let formats = unsafe { physical.get_physical_device_surface_formats_khr(Some(surface)) }?;
+    let formats = unsafe { physical.get_surface_formats_khr(Some(surface)) }?;
     if !formats
         .iter()
         .any(|f| f.format == info.image_format && f.color_space == info.image_color_space)
@@ -88,7 +88,7 @@ pub(crate) fn create_swapchain_checks(
     }
     #[allow(unused_unsafe)]
     // SAFETY: as for the formats.
-    let modes = unsafe { physical.get_physical_device_surface_present_modes_khr(Some(surface)) }?;
+    let modes = unsafe { physical.get_surface_present_modes_khr(Some(surface)) }?;
     let mode = info.present_mode;
     if !modes.contains(&mode) {
         refuse(
@@ -161,7 +161,7 @@ pub(crate) fn create_swapchain_checks(
     #[allow(unused_unsafe)]
     // SAFETY: optimal tiling, and values the implicit checks found valid.
     let limits = unsafe {
-        physical.get_physical_device_image_format_properties(
+        physical.get_image_format_properties(
             info.image_format,
             vk::ImageType::TYPE_2D,
             vk::ImageTiling::OPTIMAL,

@@ -386,9 +386,7 @@ fn view_format_checks(
             format!("a sampled view of {format:?} needs a Y'CbCr conversion chained"),
         )?;
     }
-    let props = device
-        .parent()
-        .get_physical_device_format_properties(format)?;
+    let props = device.parent().get_format_properties(format)?;
     let features = if image.tiling == vk::ImageTiling::LINEAR {
         props.linear_tiling_features
     } else {

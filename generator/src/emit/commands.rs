@@ -193,7 +193,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
     let cfg = crate::names::cfg_of(model, model.condition(&plan.name));
-    let f = ident(&crate::names::method(model, &plan.name));
+    let f = ident(&cx.method(&plan.name));
     // Commands recorded into a command buffer go on the recorder; the others of a
     // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,
     // so that no recorder of it is alive.
@@ -894,7 +894,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     } else {
         quote!(-> #ret)
     };
-    let example = super::example_doc(cx, &f.to_string(), "Called");
+    let example = super::example_doc(
+        cx,
+        &f.to_string(),
+        Some(crate::names::receiver_type(model, &plan.name)),
+        "Called",
+    );
     let doc = format!(
         "`{}`{safety}{owned_doc}{example}{}",
         plan.name,

@@ -407,11 +407,10 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
     // Where the example programs make one: the maker's docs show the statement
     // (kept there, so that this file stays short).
     if let Some((receiver, maker)) = handle.created_by.iter().find_map(|c| {
-        let m = crate::names::method(model, c);
-        let receiver = model.commands.get(c)?.params.first()?.type_name.clone();
-        cx.examples
-            .contains_key(&m)
-            .then(|| (crate::names::type_name(&receiver), m))
+        let m = cx.method(c);
+        let receiver = crate::names::receiver_type(model, c);
+        cx.example(&m, Some(receiver))
+            .map(|_| (crate::names::type_name(receiver), m))
     }) {
         doc.push_str(&format!(
             "\n\n# Example\n\nMade by [`{receiver}::{maker}`], whose docs show a call from the example programs."

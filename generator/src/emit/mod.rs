@@ -85,12 +85,15 @@ pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
     s
 }
 
-/// Prose from the specification or a settlement, made safe for rustdoc: outside
-/// inline code, `[0,1]` would read as a link and `<formats>` as an HTML tag.
-/// A doc section showing where the example programs use `key` (a method or type
-/// name), or nothing when they do not.
-pub(crate) fn example_doc(cx: &crate::plan::Context, key: &str, what: &str) -> String {
-    match cx.examples.get(key) {
+/// A doc section showing where the example programs use `key` (a method of
+/// `receiver`, or a type when `receiver` is `None`), or nothing when they do not.
+pub(crate) fn example_doc(
+    cx: &crate::plan::Context,
+    key: &str,
+    receiver: Option<&str>,
+    what: &str,
+) -> String {
+    match cx.example(key, receiver) {
         Some(s) => format!(
             "\n\n# Example\n\n{what}, as `{}` (line {}) does; the example programs run in CI:\n\n```ignore\n{}\n```",
             s.file, s.line, s.code
@@ -99,6 +102,8 @@ pub(crate) fn example_doc(cx: &crate::plan::Context, key: &str, what: &str) -> S
     }
 }
 
+/// Prose from the specification or a settlement, made safe for rustdoc: outside
+/// inline code, `[0,1]` would read as a link and `<formats>` as an HTML tag.
 pub(crate) fn doc_escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     let mut in_code = false;

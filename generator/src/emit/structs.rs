@@ -273,7 +273,12 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     }
     let has_next = members.iter().any(|(_, s)| matches!(s, Member::PNext));
     let rules = doc_rules(plans, name);
-    let example = super::example_doc(cx, &crate::names::type_name(model.spelling(name)), "Made");
+    let example = super::example_doc(
+        cx,
+        &crate::names::type_name(model.spelling(name)),
+        None,
+        "Made",
+    );
     let doc = format!(
         "Safe counterpart of [`vk::{}`].{example}{rules}",
         crate::names::type_name(model.spelling(name))

@@ -540,6 +540,14 @@ impl Model {
         Ok(model)
     }
 
+    /// The dispatchable handle a command is called through (its first parameter's
+    /// type), or `None` for a global command such as `vkCreateInstance`.
+    pub fn receiver(&self, command: &str) -> Option<&str> {
+        let first = self.commands.get(command)?.params.first()?;
+        let def = self.types.get(&first.type_name)?;
+        (def.category == Some(Kind::Handle) && def.dispatchable).then_some(first.type_name.as_str())
+    }
+
     /// The category of a type, following no aliases (as the specification's
     /// toolchain does).
     pub fn category(&self, type_name: &str) -> Option<Kind> {

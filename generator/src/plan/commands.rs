@@ -212,14 +212,10 @@ pub fn recorded(plan: &Plan) -> bool {
 pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     let model = cx.model;
     let cmd = &model.commands[name];
-    let first = cmd.params.first().ok_or("no parameters")?;
-    let receiver = if model.category(&first.type_name) == Some(Kind::Handle)
-        && model.types[&first.type_name].dispatchable
-    {
-        first.type_name.clone()
-    } else {
-        "Entry".to_owned()
-    };
+    if cmd.params.is_empty() {
+        return Err("no parameters".into());
+    }
+    let receiver = model.receiver(name).unwrap_or("Entry").to_owned();
     if table(model, name).is_none() {
         return Err("no function table".into());
     }

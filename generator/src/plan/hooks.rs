@@ -201,7 +201,7 @@ const ACTIVE_QUERIES_ALONE: &str = "checks the queries the recorder has begun an
 const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
 const QUERY_POOL: &str =
     "checks the query against the pool's type and count, kept from its creation";
-const IN_RENDER_PASS: &str = "the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary";
+const IN_RENDER_PASS: &str = "the method exists only on a recorder inside a render pass begun with `begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary";
 const IN_RENDERING: &str = "the method exists only on a recorder inside dynamic rendering it began itself (its state type)";
 const RECORDING: &str =
     "`Recorder::end` exists only on a recorder, which only `CommandBuffer::begin` makes";
@@ -235,7 +235,7 @@ const PUSH: &str = "checks the range against the layout's push-constant ranges, 
 const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
-const NO_SUSPENSION: &str = "checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance";
+const NO_SUSPENSION: &str = "checked by the safe methods in every build: the safe `begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance";
 const IMAGE_INFO_WRAPPERS: &str = "a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form)";
 const TEXEL_VIEW_WRAPPERS: &str =
     "texel buffer views are taken as a slice of wrappers, which always hold valid handles";

@@ -15,6 +15,9 @@ pub struct MethodRow {
     pub command: String,
     /// The safe method's name.
     pub method: String,
+    /// The type it is a method of (`Queue`, `Recorder`), as method names are
+    /// unique only within one (`Queue::wait_idle`, `Device::wait_idle`).
+    pub receiver: String,
     /// The command and every struct a call can pass, in name order.
     pub items: Vec<String>,
 }
@@ -61,7 +64,8 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
             items.extend(seen);
             MethodRow {
                 command: plan.name.clone(),
-                method: crate::names::method(model, &plan.name),
+                method: cx.method(&plan.name),
+                receiver: crate::names::type_name(crate::names::receiver_type(model, &plan.name)),
                 items,
             }
         })

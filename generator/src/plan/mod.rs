@@ -21,6 +21,7 @@ pub mod types;
 
 use crate::model::Model;
 use crate::validity::Validity;
+use heck::ToSnakeCase;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// How emitted code settles one rule.
@@ -74,7 +75,9 @@ pub struct Context<'m> {
     pub reaching: BTreeSet<String>,
     /// Where the example programs call a method or make a struct, by method name
     /// (`create_buffer`) or type name (`BufferCreateInfo`): the docs show it.
-    pub examples: BTreeMap<String, Snippet>,
+    pub examples: BTreeMap<String, Vec<Snippet>>,
+    /// Each command's method name ([`crate::names::methods`]).
+    pub methods: BTreeMap<String, String>,
 }
 
 /// A statement of the example programs, for an item's docs.
@@ -86,9 +89,41 @@ pub struct Snippet {
     pub line: usize,
     /// The statement around it, dedented.
     pub code: String,
+    /// For a method call, the identifier the call is made on (`queue` in
+    /// `queue.submit(..)`); empty when the receiver is an expression or on an
+    /// earlier line.
+    pub receiver: String,
 }
 
 impl<'m> Context<'m> {
+    /// Where the example programs call a method of the `receiver` type
+    /// (`VkQueue`, or `Recorder` for a recorded command) or, with no receiver, make
+    /// a struct. Method names are not unique (`Frame::submit` is not
+    /// `Queue::submit`), so a call counts when it is made on a variable whose name
+    /// begins the receiver's (`queue`, `rec` for a recorder, `physical` for a
+    /// physical device), or, for a name no other receiver's method has, on an
+    /// expression.
+    pub fn example(&self, key: &str, receiver: Option<&str>) -> Option<&Snippet> {
+        let all = self.examples.get(key)?;
+        let Some(receiver) = receiver else {
+            return all.first();
+        };
+        let words = crate::names::type_name(receiver).to_snake_case();
+        let unique = self.methods.values().filter(|m| *m == key).count() == 1;
+        all.iter()
+            .find(|s| !s.receiver.is_empty() && words.starts_with(s.receiver.as_str()))
+            .or_else(|| all.iter().find(|s| s.receiver.is_empty() && unique))
+    }
+
+    /// The method a command becomes, named relative to its receiver
+    /// ([`crate::names::methods`]).
+    pub fn method(&self, command: &str) -> String {
+        self.methods
+            .get(command)
+            .cloned()
+            .unwrap_or_else(|| crate::names::command_fn(self.model.spelling(command)))
+    }
+
     /// The facts of `model` and `validity`.
     pub fn new(model: &'m Model, validity: &'m Validity) -> Context<'m> {
         let mut cx = Context {
@@ -97,6 +132,7 @@ impl<'m> Context<'m> {
             facts: types::TypeFacts::new(model),
             reaching: BTreeSet::new(),
             examples: BTreeMap::new(),
+            methods: crate::names::methods(model),
         };
         cx.reaching = reach::reaching(&cx);
         cx

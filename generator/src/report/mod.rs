@@ -119,7 +119,7 @@ pub struct Report<'a> {
 /// struct a call can pass.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct MethodTally {
-    /// The safe method.
+    /// The safe method, with its type (`Queue::submit`).
     pub method: String,
     /// Whether the scenes call it.
     pub scenes: bool,
@@ -199,7 +199,7 @@ impl Report<'_> {
                 }
                 let owned = safety.get(&row.command).map_or(0, |m| m.owned.len());
                 MethodTally {
-                    method: row.method.clone(),
+                    method: format!("{}::{}", row.receiver, row.method),
                     scenes: scene_calls.contains(&row.method),
                     counts,
                     safe: safety.get(&row.command).is_none_or(|m| m.safe()),

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "amd_buffer_marker")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_write_buffer_marker_amd`], run before the call.
-    pub(crate) fn validate_cmd_write_buffer_marker_amd(
+    ///The dynamic checks of [`Self::write_buffer_marker_amd`], run before the call.
+    pub(crate) fn validate_write_buffer_marker_amd(
         &self,
         pipeline_stage: vk::PipelineStageFlags,
         dst_buffer: &Buffer,

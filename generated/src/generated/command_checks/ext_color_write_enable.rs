@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_color_write_enable")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_color_write_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_color_write_enable_ext(
+    ///The dynamic checks of [`Self::set_color_write_enable_ext`], run before the call.
+    pub(crate) fn validate_set_color_write_enable_ext(
         &self,
         color_write_enables: &[vk::Bool32],
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_conditional_rendering")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_begin_conditional_rendering_ext`], run before the call.
-    pub(crate) fn validate_cmd_begin_conditional_rendering_ext<'a>(
+    ///The dynamic checks of [`Self::begin_conditional_rendering_ext`], run before the call.
+    pub(crate) fn validate_begin_conditional_rendering_ext<'a>(
         &self,
         conditional_rendering_begin: &ConditionalRenderingBeginInfoEXT<'a>,
     ) -> Result<()> {
@@ -28,8 +28,8 @@ impl<'c, S: State> Recorder<'c, S> {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_conditional_rendering_ext`], run before the call.
-    pub(crate) fn validate_cmd_end_conditional_rendering_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::end_conditional_rendering_ext`], run before the call.
+    pub(crate) fn validate_end_conditional_rendering_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_debug_marker")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_debug_marker_begin_ext`], run before the call.
-    pub(crate) fn validate_cmd_debug_marker_begin_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::debug_marker_begin_ext`], run before the call.
+    pub(crate) fn validate_debug_marker_begin_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -20,8 +20,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_debug_marker_end_ext`], run before the call.
-    pub(crate) fn validate_cmd_debug_marker_end_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::debug_marker_end_ext`], run before the call.
+    pub(crate) fn validate_debug_marker_end_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -36,8 +36,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_debug_marker_insert_ext`], run before the call.
-    pub(crate) fn validate_cmd_debug_marker_insert_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::debug_marker_insert_ext`], run before the call.
+    pub(crate) fn validate_debug_marker_insert_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_debug_utils")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_begin_debug_utils_label_ext`], run before the call.
-    pub(crate) fn validate_cmd_begin_debug_utils_label_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::begin_debug_utils_label_ext`], run before the call.
+    pub(crate) fn validate_begin_debug_utils_label_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -20,8 +20,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_debug_utils_label_ext`], run before the call.
-    pub(crate) fn validate_cmd_end_debug_utils_label_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::end_debug_utils_label_ext`], run before the call.
+    pub(crate) fn validate_end_debug_utils_label_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -36,8 +36,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_insert_debug_utils_label_ext`], run before the call.
-    pub(crate) fn validate_cmd_insert_debug_utils_label_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::insert_debug_utils_label_ext`], run before the call.
+    pub(crate) fn validate_insert_debug_utils_label_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

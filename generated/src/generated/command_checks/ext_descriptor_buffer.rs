@@ -5,8 +5,8 @@
 use super::*;
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_bind_descriptor_buffer_embedded_samplers_ext`], run before the call.
-    pub(crate) fn validate_cmd_bind_descriptor_buffer_embedded_samplers_ext(
+    ///The dynamic checks of [`Self::bind_descriptor_buffer_embedded_samplers_ext`], run before the call.
+    pub(crate) fn validate_bind_descriptor_buffer_embedded_samplers_ext(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -40,8 +40,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_descriptor_buffers_ext`], run before the call.
-    pub(crate) fn validate_cmd_bind_descriptor_buffers_ext<'a>(
+    ///The dynamic checks of [`Self::bind_descriptor_buffers_ext`], run before the call.
+    pub(crate) fn validate_bind_descriptor_buffers_ext<'a>(
         &self,
         binding_infos: &[DescriptorBufferBindingInfoEXT<'a>],
     ) -> Result<()> {
@@ -71,8 +71,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_descriptor_buffer_offsets_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_descriptor_buffer_offsets_ext(
+    ///The dynamic checks of [`Self::set_descriptor_buffer_offsets_ext`], run before the call.
+    pub(crate) fn validate_set_descriptor_buffer_offsets_ext(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_discard_rectangles")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_discard_rectangle_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_discard_rectangle_ext(
+    ///The dynamic checks of [`Self::set_discard_rectangle_ext`], run before the call.
+    pub(crate) fn validate_set_discard_rectangle_ext(
         &self,
         discard_rectangles: &[vk::Rect2D],
     ) -> Result<()> {

@@ -35,8 +35,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::register_device_event_ext`], run before the call.
-    pub(crate) fn validate_register_device_event_ext<'a>(
+    ///The dynamic checks of [`Self::register_event_ext`], run before the call.
+    pub(crate) fn validate_register_event_ext<'a>(
         &self,
         device_event_info: &DeviceEventInfoEXT<'a>,
     ) -> Result<()> {

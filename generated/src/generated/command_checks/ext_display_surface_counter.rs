@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_display_surface_counter")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_surface_capabilities2_ext`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_capabilities2_ext(
+    ///The dynamic checks of [`Self::get_surface_capabilities2_ext`], run before the call.
+    pub(crate) fn validate_get_surface_capabilities2_ext(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {

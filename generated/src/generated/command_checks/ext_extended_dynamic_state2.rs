@@ -4,11 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_extended_dynamic_state2")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_logic_op_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_logic_op_ext(
-        &self,
-        logic_op: vk::LogicOp,
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_logic_op_ext`], run before the call.
+    pub(crate) fn validate_set_logic_op_ext(&self, logic_op: vk::LogicOp) -> Result<()> {
         let s = &self.device().scope();
         crate::checks::enum_logic_op(
             logic_op,
@@ -29,8 +26,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_patch_control_points_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_patch_control_points_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_patch_control_points_ext`], run before the call.
+    pub(crate) fn validate_set_patch_control_points_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_extended_dynamic_state3")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_alpha_to_coverage_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_alpha_to_coverage_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_alpha_to_coverage_enable_ext`], run before the call.
+    pub(crate) fn validate_set_alpha_to_coverage_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -20,8 +20,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_alpha_to_one_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_alpha_to_one_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_alpha_to_one_enable_ext`], run before the call.
+    pub(crate) fn validate_set_alpha_to_one_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -36,8 +36,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_color_blend_advanced_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_color_blend_advanced_ext(
+    ///The dynamic checks of [`Self::set_color_blend_advanced_ext`], run before the call.
+    pub(crate) fn validate_set_color_blend_advanced_ext(
         &self,
         color_blend_advanced: &[vk::ColorBlendAdvancedEXT],
     ) -> Result<()> {
@@ -67,8 +67,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_color_blend_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_color_blend_enable_ext(
+    ///The dynamic checks of [`Self::set_color_blend_enable_ext`], run before the call.
+    pub(crate) fn validate_set_color_blend_enable_ext(
         &self,
         color_blend_enables: &[vk::Bool32],
     ) -> Result<()> {
@@ -94,8 +94,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_color_blend_equation_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_color_blend_equation_ext(
+    ///The dynamic checks of [`Self::set_color_blend_equation_ext`], run before the call.
+    pub(crate) fn validate_set_color_blend_equation_ext(
         &self,
         color_blend_equations: &[vk::ColorBlendEquationEXT],
     ) -> Result<()> {
@@ -125,8 +125,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_color_write_mask_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_color_write_mask_ext(
+    ///The dynamic checks of [`Self::set_color_write_mask_ext`], run before the call.
+    pub(crate) fn validate_set_color_write_mask_ext(
         &self,
         color_write_masks: &[vk::ColorComponentFlags],
     ) -> Result<()> {
@@ -160,8 +160,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_conservative_rasterization_mode_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_conservative_rasterization_mode_ext(
+    ///The dynamic checks of [`Self::set_conservative_rasterization_mode_ext`], run before the call.
+    pub(crate) fn validate_set_conservative_rasterization_mode_ext(
         &self,
         conservative_rasterization_mode: vk::ConservativeRasterizationModeEXT,
     ) -> Result<()> {
@@ -185,8 +185,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_modulation_mode_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_modulation_mode_nv(
+    ///The dynamic checks of [`Self::set_coverage_modulation_mode_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_modulation_mode_nv(
         &self,
         coverage_modulation_mode: vk::CoverageModulationModeNV,
     ) -> Result<()> {
@@ -210,10 +210,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_modulation_table_enable_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_modulation_table_enable_nv(
-        &self,
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_coverage_modulation_table_enable_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_modulation_table_enable_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -228,8 +226,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_modulation_table_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_modulation_table_nv(
+    ///The dynamic checks of [`Self::set_coverage_modulation_table_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_modulation_table_nv(
         &self,
         coverage_modulation_table: &[f32],
     ) -> Result<()> {
@@ -255,8 +253,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_reduction_mode_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_reduction_mode_nv(
+    ///The dynamic checks of [`Self::set_coverage_reduction_mode_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_reduction_mode_nv(
         &self,
         coverage_reduction_mode: vk::CoverageReductionModeNV,
     ) -> Result<()> {
@@ -280,8 +278,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_to_color_enable_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_to_color_enable_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_coverage_to_color_enable_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_to_color_enable_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -296,8 +294,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coverage_to_color_location_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coverage_to_color_location_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_coverage_to_color_location_nv`], run before the call.
+    pub(crate) fn validate_set_coverage_to_color_location_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -312,8 +310,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_clamp_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_clamp_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_clamp_enable_ext`], run before the call.
+    pub(crate) fn validate_set_depth_clamp_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -328,8 +326,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_clip_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_clip_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_clip_enable_ext`], run before the call.
+    pub(crate) fn validate_set_depth_clip_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -344,10 +342,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_clip_negative_one_to_one_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_clip_negative_one_to_one_ext(
-        &self,
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_clip_negative_one_to_one_ext`], run before the call.
+    pub(crate) fn validate_set_depth_clip_negative_one_to_one_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -362,8 +358,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_extra_primitive_overestimation_size_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_extra_primitive_overestimation_size_ext(
+    ///The dynamic checks of [`Self::set_extra_primitive_overestimation_size_ext`], run before the call.
+    pub(crate) fn validate_set_extra_primitive_overestimation_size_ext(
         &self,
     ) -> Result<()> {
         if !crate::validation::supports(
@@ -380,8 +376,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_line_rasterization_mode_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_line_rasterization_mode_ext(
+    ///The dynamic checks of [`Self::set_line_rasterization_mode_ext`], run before the call.
+    pub(crate) fn validate_set_line_rasterization_mode_ext(
         &self,
         line_rasterization_mode: vk::LineRasterizationModeEXT,
     ) -> Result<()> {
@@ -405,8 +401,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_line_stipple_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_line_stipple_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_line_stipple_enable_ext`], run before the call.
+    pub(crate) fn validate_set_line_stipple_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -421,8 +417,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_logic_op_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_logic_op_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_logic_op_enable_ext`], run before the call.
+    pub(crate) fn validate_set_logic_op_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -437,8 +433,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_polygon_mode_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_polygon_mode_ext(
+    ///The dynamic checks of [`Self::set_polygon_mode_ext`], run before the call.
+    pub(crate) fn validate_set_polygon_mode_ext(
         &self,
         polygon_mode: vk::PolygonMode,
     ) -> Result<()> {
@@ -462,8 +458,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_provoking_vertex_mode_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_provoking_vertex_mode_ext(
+    ///The dynamic checks of [`Self::set_provoking_vertex_mode_ext`], run before the call.
+    pub(crate) fn validate_set_provoking_vertex_mode_ext(
         &self,
         provoking_vertex_mode: vk::ProvokingVertexModeEXT,
     ) -> Result<()> {
@@ -487,8 +483,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_rasterization_samples_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_rasterization_samples_ext(
+    ///The dynamic checks of [`Self::set_rasterization_samples_ext`], run before the call.
+    pub(crate) fn validate_set_rasterization_samples_ext(
         &self,
         rasterization_samples: vk::SampleCountFlags,
     ) -> Result<()> {
@@ -512,8 +508,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_rasterization_stream_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_rasterization_stream_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_rasterization_stream_ext`], run before the call.
+    pub(crate) fn validate_set_rasterization_stream_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -528,8 +524,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_representative_fragment_test_enable_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_representative_fragment_test_enable_nv(
+    ///The dynamic checks of [`Self::set_representative_fragment_test_enable_nv`], run before the call.
+    pub(crate) fn validate_set_representative_fragment_test_enable_nv(
         &self,
     ) -> Result<()> {
         if !crate::validation::supports(
@@ -546,8 +542,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_sample_locations_enable_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_sample_locations_enable_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_sample_locations_enable_ext`], run before the call.
+    pub(crate) fn validate_set_sample_locations_enable_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -562,8 +558,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_sample_mask_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_sample_mask_ext(
+    ///The dynamic checks of [`Self::set_sample_mask_ext`], run before the call.
+    pub(crate) fn validate_set_sample_mask_ext(
         &self,
         samples: vk::SampleCountFlags,
     ) -> Result<()> {
@@ -587,8 +583,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_shading_rate_image_enable_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_shading_rate_image_enable_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_shading_rate_image_enable_nv`], run before the call.
+    pub(crate) fn validate_set_shading_rate_image_enable_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -603,8 +599,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_tessellation_domain_origin_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_tessellation_domain_origin_ext(
+    ///The dynamic checks of [`Self::set_tessellation_domain_origin_ext`], run before the call.
+    pub(crate) fn validate_set_tessellation_domain_origin_ext(
         &self,
         domain_origin: vk::TessellationDomainOrigin,
     ) -> Result<()> {
@@ -628,8 +624,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_viewport_swizzle_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_swizzle_nv(
+    ///The dynamic checks of [`Self::set_viewport_swizzle_nv`], run before the call.
+    pub(crate) fn validate_set_viewport_swizzle_nv(
         &self,
         viewport_swizzles: &[vk::ViewportSwizzleNV],
     ) -> Result<()> {
@@ -659,8 +655,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_viewport_w_scaling_enable_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_w_scaling_enable_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_viewport_w_scaling_enable_nv`], run before the call.
+    pub(crate) fn validate_set_viewport_w_scaling_enable_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

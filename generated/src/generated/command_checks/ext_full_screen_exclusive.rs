@@ -20,8 +20,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_device_group_surface_present_modes2_ext`], run before the call.
-    pub(crate) fn validate_get_device_group_surface_present_modes2_ext<'a>(
+    ///The dynamic checks of [`Self::get_group_surface_present_modes2_ext`], run before the call.
+    pub(crate) fn validate_get_group_surface_present_modes2_ext<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<()> {
@@ -48,8 +48,8 @@ impl Device {
 }
 #[cfg(feature = "ext_full_screen_exclusive")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_surface_present_modes2_ext`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_present_modes2_ext<'a>(
+    ///The dynamic checks of [`Self::get_surface_present_modes2_ext`], run before the call.
+    pub(crate) fn validate_get_surface_present_modes2_ext<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<()> {

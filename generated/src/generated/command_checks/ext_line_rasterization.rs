@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_line_rasterization")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_line_stipple_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_line_stipple_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_line_stipple_ext`], run before the call.
+    pub(crate) fn validate_set_line_stipple_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

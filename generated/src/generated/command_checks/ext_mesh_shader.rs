@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_mesh_shader")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw_mesh_tasks_ext`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -20,8 +20,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_indirect_count_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_indirect_count_ext(
+    ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_count_ext`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_indirect_count_ext(
         &self,
         buffer: &Buffer,
         count_buffer: &Buffer,
@@ -59,8 +59,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_indirect_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_indirect_ext(
+    ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_ext`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_indirect_ext(
         &self,
         buffer: &Buffer,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_multi_draw")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_multi_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_multi_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw_multi_ext`], run before the call.
+    pub(crate) fn validate_draw_multi_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -20,8 +20,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_multi_indexed_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_multi_indexed_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw_multi_indexed_ext`], run before the call.
+    pub(crate) fn validate_draw_multi_indexed_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

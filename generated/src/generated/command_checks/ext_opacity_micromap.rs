@@ -175,8 +175,8 @@ impl Device {
 }
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_build_micromaps_ext`], run before the call.
-    pub(crate) fn validate_cmd_build_micromaps_ext<'a>(
+    ///The dynamic checks of [`Self::build_micromaps_ext`], run before the call.
+    pub(crate) fn validate_build_micromaps_ext<'a>(
         &self,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
@@ -206,8 +206,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_memory_to_micromap_ext`], run before the call.
-    pub(crate) fn validate_cmd_copy_memory_to_micromap_ext<'a>(
+    ///The dynamic checks of [`Self::copy_memory_to_micromap_ext`], run before the call.
+    pub(crate) fn validate_copy_memory_to_micromap_ext<'a>(
         &self,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
@@ -227,8 +227,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_memory_to_micromap_info_ext(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_micromap_ext`], run before the call.
-    pub(crate) fn validate_cmd_copy_micromap_ext<'a>(
+    ///The dynamic checks of [`Self::copy_micromap_ext`], run before the call.
+    pub(crate) fn validate_copy_micromap_ext<'a>(
         &self,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
@@ -248,8 +248,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_micromap_info_ext(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_micromap_to_memory_ext`], run before the call.
-    pub(crate) fn validate_cmd_copy_micromap_to_memory_ext<'a>(
+    ///The dynamic checks of [`Self::copy_micromap_to_memory_ext`], run before the call.
+    pub(crate) fn validate_copy_micromap_to_memory_ext<'a>(
         &self,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
@@ -269,8 +269,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_micromap_to_memory_info_ext(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_write_micromaps_properties_ext`], run before the call.
-    pub(crate) fn validate_cmd_write_micromaps_properties_ext(
+    ///The dynamic checks of [`Self::write_micromaps_properties_ext`], run before the call.
+    pub(crate) fn validate_write_micromaps_properties_ext(
         &self,
         micromaps: &[&MicromapEXT],
         query_type: vk::QueryType,

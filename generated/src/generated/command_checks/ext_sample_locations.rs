@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_sample_locations")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_sample_locations_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_sample_locations_ext(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_sample_locations_ext`], run before the call.
+    pub(crate) fn validate_set_sample_locations_ext(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -23,8 +23,8 @@ impl<'c, S: State> Recorder<'c, S> {
 }
 #[cfg(feature = "ext_sample_locations")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_multisample_properties_ext`], run before the call.
-    pub(crate) fn validate_get_physical_device_multisample_properties_ext(
+    ///The dynamic checks of [`Self::get_multisample_properties_ext`], run before the call.
+    pub(crate) fn validate_get_multisample_properties_ext(
         &self,
         samples: vk::SampleCountFlags,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_transform_feedback")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_begin_query_indexed_ext`], run before the call.
-    pub(crate) fn validate_cmd_begin_query_indexed_ext(
+    ///The dynamic checks of [`Self::begin_query_indexed_ext`], run before the call.
+    pub(crate) fn validate_begin_query_indexed_ext(
         &self,
         query_pool: &QueryPool,
         flags: vk::QueryControlFlags,
@@ -39,8 +39,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_transform_feedback_buffers_ext`], run before the call.
-    pub(crate) fn validate_cmd_bind_transform_feedback_buffers_ext(
+    ///The dynamic checks of [`Self::bind_transform_feedback_buffers_ext`], run before the call.
+    pub(crate) fn validate_bind_transform_feedback_buffers_ext(
         &self,
         buffers: &[&Buffer],
     ) -> Result<()> {
@@ -78,8 +78,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_query_indexed_ext`], run before the call.
-    pub(crate) fn validate_cmd_end_query_indexed_ext(
+    ///The dynamic checks of [`Self::end_query_indexed_ext`], run before the call.
+    pub(crate) fn validate_end_query_indexed_ext(
         &self,
         query_pool: &QueryPool,
     ) -> Result<()> {
@@ -110,8 +110,8 @@ impl<'c, S: State> Recorder<'c, S> {
 }
 #[cfg(feature = "ext_transform_feedback")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_begin_transform_feedback_ext`], run before the call.
-    pub(crate) fn validate_cmd_begin_transform_feedback_ext(
+    ///The dynamic checks of [`Self::begin_transform_feedback_ext`], run before the call.
+    pub(crate) fn validate_begin_transform_feedback_ext(
         &self,
         counter_buffers: &[&Buffer],
     ) -> Result<()> {
@@ -141,8 +141,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_indirect_byte_count_ext`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect_byte_count_ext(
+    ///The dynamic checks of [`Self::draw_indirect_byte_count_ext`], run before the call.
+    pub(crate) fn validate_draw_indirect_byte_count_ext(
         &self,
         counter_buffer: &Buffer,
     ) -> Result<()> {
@@ -170,8 +170,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_transform_feedback_ext`], run before the call.
-    pub(crate) fn validate_cmd_end_transform_feedback_ext(
+    ///The dynamic checks of [`Self::end_transform_feedback_ext`], run before the call.
+    pub(crate) fn validate_end_transform_feedback_ext(
         &self,
         counter_buffers: &[&Buffer],
     ) -> Result<()> {

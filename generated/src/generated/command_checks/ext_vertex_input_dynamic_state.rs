@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "ext_vertex_input_dynamic_state")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_vertex_input_ext`], run before the call.
-    pub(crate) fn validate_cmd_set_vertex_input_ext<'a>(
+    ///The dynamic checks of [`Self::set_vertex_input_ext`], run before the call.
+    pub(crate) fn validate_set_vertex_input_ext<'a>(
         &self,
         vertex_binding_descriptions: &[VertexInputBindingDescription2EXT<'a>],
         vertex_attribute_descriptions: &[VertexInputAttributeDescription2EXT<'a>],

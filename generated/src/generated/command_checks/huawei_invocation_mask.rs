@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "huawei_invocation_mask")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_bind_invocation_mask_huawei`], run before the call.
-    pub(crate) fn validate_cmd_bind_invocation_mask_huawei(
+    ///The dynamic checks of [`Self::bind_invocation_mask_huawei`], run before the call.
+    pub(crate) fn validate_bind_invocation_mask_huawei(
         &self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "huawei_subpass_shading")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_subpass_shading_huawei`], run before the call.
-    pub(crate) fn validate_cmd_subpass_shading_huawei(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::subpass_shading_huawei`], run before the call.
+    pub(crate) fn validate_subpass_shading_huawei(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -23,8 +23,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 }
 #[cfg(feature = "huawei_subpass_shading")]
 impl Device {
-    ///The dynamic checks of [`Self::get_device_subpass_shading_max_workgroup_size_huawei`], run before the call.
-    pub(crate) fn validate_get_device_subpass_shading_max_workgroup_size_huawei(
+    ///The dynamic checks of [`Self::get_subpass_shading_max_workgroup_size_huawei`], run before the call.
+    pub(crate) fn validate_get_subpass_shading_max_workgroup_size_huawei(
         &self,
         renderpass: &RenderPass,
     ) -> Result<()> {

@@ -50,8 +50,8 @@ impl Device {
 }
 #[cfg(feature = "intel_performance_query")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_performance_marker_intel`], run before the call.
-    pub(crate) fn validate_cmd_set_performance_marker_intel(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_performance_marker_intel`], run before the call.
+    pub(crate) fn validate_set_performance_marker_intel(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
@@ -66,8 +66,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_performance_override_intel`], run before the call.
-    pub(crate) fn validate_cmd_set_performance_override_intel<'a>(
+    ///The dynamic checks of [`Self::set_performance_override_intel`], run before the call.
+    pub(crate) fn validate_set_performance_override_intel<'a>(
         &self,
         override_info: &PerformanceOverrideInfoINTEL<'a>,
     ) -> Result<()> {
@@ -87,8 +87,8 @@ impl<'c, S: State> Recorder<'c, S> {
         crate::checks::check_performance_override_info_intel(override_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_performance_stream_marker_intel`], run before the call.
-    pub(crate) fn validate_cmd_set_performance_stream_marker_intel(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_performance_stream_marker_intel`], run before the call.
+    pub(crate) fn validate_set_performance_stream_marker_intel(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
@@ -106,8 +106,8 @@ impl<'c, S: State> Recorder<'c, S> {
 }
 #[cfg(feature = "intel_performance_query")]
 impl Queue {
-    ///The dynamic checks of [`Self::queue_set_performance_configuration_intel`], run before the call.
-    pub(crate) fn validate_queue_set_performance_configuration_intel(
+    ///The dynamic checks of [`Self::set_performance_configuration_intel`], run before the call.
+    pub(crate) fn validate_set_performance_configuration_intel(
         &self,
         configuration: &PerformanceConfigurationINTEL,
     ) -> Result<()> {

@@ -165,8 +165,8 @@ impl Device {
 }
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_build_acceleration_structures_indirect_khr`], run before the call.
-    pub(crate) fn validate_cmd_build_acceleration_structures_indirect_khr<'a>(
+    ///The dynamic checks of [`Self::build_acceleration_structures_indirect_khr`], run before the call.
+    pub(crate) fn validate_build_acceleration_structures_indirect_khr<'a>(
         &self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
     ) -> Result<()> {
@@ -196,8 +196,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_build_acceleration_structures_khr`], run before the call.
-    pub(crate) fn validate_cmd_build_acceleration_structures_khr<'a>(
+    ///The dynamic checks of [`Self::build_acceleration_structures_khr`], run before the call.
+    pub(crate) fn validate_build_acceleration_structures_khr<'a>(
         &self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
     ) -> Result<()> {
@@ -227,8 +227,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_acceleration_structure_khr`], run before the call.
-    pub(crate) fn validate_cmd_copy_acceleration_structure_khr<'a>(
+    ///The dynamic checks of [`Self::copy_acceleration_structure_khr`], run before the call.
+    pub(crate) fn validate_copy_acceleration_structure_khr<'a>(
         &self,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
@@ -248,8 +248,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_acceleration_structure_to_memory_khr`], run before the call.
-    pub(crate) fn validate_cmd_copy_acceleration_structure_to_memory_khr<'a>(
+    ///The dynamic checks of [`Self::copy_acceleration_structure_to_memory_khr`], run before the call.
+    pub(crate) fn validate_copy_acceleration_structure_to_memory_khr<'a>(
         &self,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
@@ -269,8 +269,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_memory_to_acceleration_structure_khr`], run before the call.
-    pub(crate) fn validate_cmd_copy_memory_to_acceleration_structure_khr<'a>(
+    ///The dynamic checks of [`Self::copy_memory_to_acceleration_structure_khr`], run before the call.
+    pub(crate) fn validate_copy_memory_to_acceleration_structure_khr<'a>(
         &self,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
@@ -290,8 +290,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_write_acceleration_structures_properties_khr`], run before the call.
-    pub(crate) fn validate_cmd_write_acceleration_structures_properties_khr(
+    ///The dynamic checks of [`Self::write_acceleration_structures_properties_khr`], run before the call.
+    pub(crate) fn validate_write_acceleration_structures_properties_khr(
         &self,
         acceleration_structures: &[&AccelerationStructureKHR],
         query_type: vk::QueryType,

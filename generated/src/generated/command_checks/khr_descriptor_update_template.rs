@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_push_descriptor")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_push_descriptor_set_with_template_khr`], run before the call.
-    pub(crate) fn validate_cmd_push_descriptor_set_with_template_khr(
+    ///The dynamic checks of [`Self::push_descriptor_set_with_template_khr`], run before the call.
+    pub(crate) fn validate_push_descriptor_set_with_template_khr(
         &self,
         descriptor_update_template: &DescriptorUpdateTemplate,
         layout: &PipelineLayout,

@@ -22,8 +22,8 @@ impl Device {
     )
 )]
 impl Device {
-    ///The dynamic checks of [`Self::get_device_group_surface_present_modes_khr`], run before the call.
-    pub(crate) fn validate_get_device_group_surface_present_modes_khr(
+    ///The dynamic checks of [`Self::get_group_surface_present_modes_khr`], run before the call.
+    pub(crate) fn validate_get_group_surface_present_modes_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {
@@ -47,8 +47,8 @@ impl Device {
     )
 )]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_present_rectangles_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_present_rectangles_khr(
+    ///The dynamic checks of [`Self::get_present_rectangles_khr`], run before the call.
+    pub(crate) fn validate_get_present_rectangles_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_fragment_shading_rate")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_fragment_shading_rate_khr`], run before the call.
-    pub(crate) fn validate_cmd_set_fragment_shading_rate_khr(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_fragment_shading_rate_khr`], run before the call.
+    pub(crate) fn validate_set_fragment_shading_rate_khr(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

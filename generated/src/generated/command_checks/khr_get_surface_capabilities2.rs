@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_get_surface_capabilities2")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_surface_capabilities2_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_capabilities2_khr<'a>(
+    ///The dynamic checks of [`Self::get_surface_capabilities2_khr`], run before the call.
+    pub(crate) fn validate_get_surface_capabilities2_khr<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
         surface_capabilities: &mut SurfaceCapabilities2KHR<'a>,
@@ -15,8 +15,8 @@ impl PhysicalDevice {
         crate::checks::check_surface_capabilities2_khr(surface_capabilities, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_surface_formats2_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_formats2_khr<'a>(
+    ///The dynamic checks of [`Self::get_surface_formats2_khr`], run before the call.
+    pub(crate) fn validate_get_surface_formats2_khr<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<()> {

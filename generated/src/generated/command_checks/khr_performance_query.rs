@@ -16,10 +16,8 @@ impl Device {
 }
 #[cfg(feature = "khr_performance_query")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_queue_family_performance_query_passes_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_queue_family_performance_query_passes_khr<
-        'a,
-    >(
+    ///The dynamic checks of [`Self::get_queue_family_performance_query_passes_khr`], run before the call.
+    pub(crate) fn validate_get_queue_family_performance_query_passes_khr<'a>(
         &self,
         performance_query_create_info: &QueryPoolPerformanceCreateInfoKHR<'a>,
     ) -> Result<()> {

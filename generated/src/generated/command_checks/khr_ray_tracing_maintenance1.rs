@@ -7,8 +7,8 @@ use super::*;
     all(feature = "khr_ray_tracing_maintenance1", feature = "khr_ray_tracing_pipeline")
 )]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_trace_rays_indirect2_khr`], run before the call.
-    pub(crate) fn validate_cmd_trace_rays_indirect2_khr(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::trace_rays_indirect2_khr`], run before the call.
+    pub(crate) fn validate_trace_rays_indirect2_khr(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,

@@ -5,10 +5,8 @@
 use super::*;
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_set_ray_tracing_pipeline_stack_size_khr`], run before the call.
-    pub(crate) fn validate_cmd_set_ray_tracing_pipeline_stack_size_khr(
-        &self,
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_ray_tracing_pipeline_stack_size_khr`], run before the call.
+    pub(crate) fn validate_set_ray_tracing_pipeline_stack_size_khr(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -23,8 +21,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_trace_rays_indirect_khr`], run before the call.
-    pub(crate) fn validate_cmd_trace_rays_indirect_khr(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::trace_rays_indirect_khr`], run before the call.
+    pub(crate) fn validate_trace_rays_indirect_khr(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -39,8 +37,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_trace_rays_khr`], run before the call.
-    pub(crate) fn validate_cmd_trace_rays_khr(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::trace_rays_khr`], run before the call.
+    pub(crate) fn validate_trace_rays_khr(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_surface")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_surface_capabilities_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_capabilities_khr(
+    ///The dynamic checks of [`Self::get_surface_capabilities_khr`], run before the call.
+    pub(crate) fn validate_get_surface_capabilities_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {
@@ -21,8 +21,8 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_surface_formats_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_formats_khr(
+    ///The dynamic checks of [`Self::get_surface_formats_khr`], run before the call.
+    pub(crate) fn validate_get_surface_formats_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<()> {
@@ -40,8 +40,8 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_surface_present_modes_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_present_modes_khr(
+    ///The dynamic checks of [`Self::get_surface_present_modes_khr`], run before the call.
+    pub(crate) fn validate_get_surface_present_modes_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<()> {
@@ -59,8 +59,8 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_surface_support_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_surface_support_khr(
+    ///The dynamic checks of [`Self::get_surface_support_khr`], run before the call.
+    pub(crate) fn validate_get_surface_support_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {

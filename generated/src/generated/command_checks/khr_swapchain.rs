@@ -70,8 +70,8 @@ impl Device {
 }
 #[cfg(feature = "khr_swapchain")]
 impl Queue {
-    ///The dynamic checks of [`Self::queue_present_khr`], run before the call.
-    pub(crate) fn validate_queue_present_khr<'a>(
+    ///The dynamic checks of [`Self::present_khr`], run before the call.
+    pub(crate) fn validate_present_khr<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<()> {

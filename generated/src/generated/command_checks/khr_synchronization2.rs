@@ -5,8 +5,8 @@
 use super::*;
 #[cfg(all(feature = "amd_buffer_marker", feature = "khr_synchronization2"))]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_write_buffer_marker2_amd`], run before the call.
-    pub(crate) fn validate_cmd_write_buffer_marker2_amd(
+    ///The dynamic checks of [`Self::write_buffer_marker2_amd`], run before the call.
+    pub(crate) fn validate_write_buffer_marker2_amd(
         &self,
         stage: vk::PipelineStageFlags2,
         dst_buffer: &Buffer,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_video_decode_queue")]
 impl<'c> Recorder<'c, InVideoCoding> {
-    ///The dynamic checks of [`Self::cmd_decode_video_khr`], run before the call.
-    pub(crate) fn validate_cmd_decode_video_khr<'a>(
+    ///The dynamic checks of [`Self::decode_video_khr`], run before the call.
+    pub(crate) fn validate_decode_video_khr<'a>(
         &self,
         decode_info: &VideoDecodeInfoKHR<'a>,
     ) -> Result<()> {

@@ -75,8 +75,8 @@ impl Device {
 }
 #[cfg(feature = "khr_video_queue")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_video_coding_khr`], run before the call.
-    pub(crate) fn validate_cmd_begin_video_coding_khr<'a>(
+    ///The dynamic checks of [`Self::begin_video_coding_khr`], run before the call.
+    pub(crate) fn validate_begin_video_coding_khr<'a>(
         &self,
         begin_info: &VideoBeginCodingInfoKHR<'a>,
     ) -> Result<()> {
@@ -107,8 +107,8 @@ impl<'c> Recorder<'c, Outside> {
 }
 #[cfg(feature = "khr_video_queue")]
 impl<'c> Recorder<'c, InVideoCoding> {
-    ///The dynamic checks of [`Self::cmd_control_video_coding_khr`], run before the call.
-    pub(crate) fn validate_cmd_control_video_coding_khr<'a>(
+    ///The dynamic checks of [`Self::control_video_coding_khr`], run before the call.
+    pub(crate) fn validate_control_video_coding_khr<'a>(
         &self,
         coding_control_info: &VideoCodingControlInfoKHR<'a>,
     ) -> Result<()> {
@@ -136,8 +136,8 @@ impl<'c> Recorder<'c, InVideoCoding> {
         crate::checks::check_video_coding_control_info_khr(coding_control_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_video_coding_khr`], run before the call.
-    pub(crate) fn validate_cmd_end_video_coding_khr<'a>(
+    ///The dynamic checks of [`Self::end_video_coding_khr`], run before the call.
+    pub(crate) fn validate_end_video_coding_khr<'a>(
         &self,
         end_coding_info: &VideoEndCodingInfoKHR<'a>,
     ) -> Result<()> {
@@ -168,8 +168,8 @@ impl<'c> Recorder<'c, InVideoCoding> {
 }
 #[cfg(feature = "khr_video_queue")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_video_capabilities_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_video_capabilities_khr<'a>(
+    ///The dynamic checks of [`Self::get_video_capabilities_khr`], run before the call.
+    pub(crate) fn validate_get_video_capabilities_khr<'a>(
         &self,
         video_profile: &VideoProfileInfoKHR<'a>,
         capabilities: &mut VideoCapabilitiesKHR<'a>,
@@ -179,8 +179,8 @@ impl PhysicalDevice {
         crate::checks::check_video_capabilities_khr(capabilities, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_video_format_properties_khr`], run before the call.
-    pub(crate) fn validate_get_physical_device_video_format_properties_khr<'a>(
+    ///The dynamic checks of [`Self::get_video_format_properties_khr`], run before the call.
+    pub(crate) fn validate_get_video_format_properties_khr<'a>(
         &self,
         video_format_info: &PhysicalDeviceVideoFormatInfoKHR<'a>,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_clip_space_w_scaling")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_viewport_w_scaling_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_w_scaling_nv(
+    ///The dynamic checks of [`Self::set_viewport_w_scaling_nv`], run before the call.
+    pub(crate) fn validate_set_viewport_w_scaling_nv(
         &self,
         viewport_w_scalings: &[vk::ViewportWScalingNV],
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_copy_memory_indirect")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_copy_memory_indirect_nv`], run before the call.
-    pub(crate) fn validate_cmd_copy_memory_indirect_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::copy_memory_indirect_nv`], run before the call.
+    pub(crate) fn validate_copy_memory_indirect_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -20,8 +20,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_memory_to_image_indirect_nv`], run before the call.
-    pub(crate) fn validate_cmd_copy_memory_to_image_indirect_nv(
+    ///The dynamic checks of [`Self::copy_memory_to_image_indirect_nv`], run before the call.
+    pub(crate) fn validate_copy_memory_to_image_indirect_nv(
         &self,
         dst_image: &Image,
         dst_image_layout: vk::ImageLayout,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_device_diagnostic_checkpoints")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_checkpoint_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_checkpoint_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_checkpoint_nv`], run before the call.
+    pub(crate) fn validate_set_checkpoint_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_bind_pipeline_shader_group_nv`], run before the call.
-    pub(crate) fn validate_cmd_bind_pipeline_shader_group_nv(
+    ///The dynamic checks of [`Self::bind_pipeline_shader_group_nv`], run before the call.
+    pub(crate) fn validate_bind_pipeline_shader_group_nv(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -42,8 +42,8 @@ impl<'c, S: State> Recorder<'c, S> {
 }
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_execute_generated_commands_nv`], run before the call.
-    pub(crate) fn validate_cmd_execute_generated_commands_nv<'a>(
+    ///The dynamic checks of [`Self::execute_generated_commands_nv`], run before the call.
+    pub(crate) fn validate_execute_generated_commands_nv<'a>(
         &self,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
@@ -66,8 +66,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
 }
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_preprocess_generated_commands_nv`], run before the call.
-    pub(crate) fn validate_cmd_preprocess_generated_commands_nv<'a>(
+    ///The dynamic checks of [`Self::preprocess_generated_commands_nv`], run before the call.
+    pub(crate) fn validate_preprocess_generated_commands_nv<'a>(
         &self,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_external_memory_capabilities")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_external_image_format_properties_nv`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_image_format_properties_nv(
+    ///The dynamic checks of [`Self::get_external_image_format_properties_nv`], run before the call.
+    pub(crate) fn validate_get_external_image_format_properties_nv(
         &self,
         format: vk::Format,
         ty: vk::ImageType,

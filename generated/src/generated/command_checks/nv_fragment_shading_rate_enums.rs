@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_fragment_shading_rate_enums")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_fragment_shading_rate_enum_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_fragment_shading_rate_enum_nv(
+    ///The dynamic checks of [`Self::set_fragment_shading_rate_enum_nv`], run before the call.
+    pub(crate) fn validate_set_fragment_shading_rate_enum_nv(
         &self,
         shading_rate: vk::FragmentShadingRateNV,
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_memory_decompression")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_decompress_memory_indirect_count_nv`], run before the call.
-    pub(crate) fn validate_cmd_decompress_memory_indirect_count_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::decompress_memory_indirect_count_nv`], run before the call.
+    pub(crate) fn validate_decompress_memory_indirect_count_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -20,8 +20,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_decompress_memory_nv`], run before the call.
-    pub(crate) fn validate_cmd_decompress_memory_nv(
+    ///The dynamic checks of [`Self::decompress_memory_nv`], run before the call.
+    pub(crate) fn validate_decompress_memory_nv(
         &self,
         decompress_memory_regions: &[vk::DecompressMemoryRegionNV],
     ) -> Result<()> {

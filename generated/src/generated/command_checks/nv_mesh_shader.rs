@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_mesh_shader")]
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_indirect_count_nv`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_indirect_count_nv(
+    ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_count_nv`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_indirect_count_nv(
         &self,
         buffer: &Buffer,
         count_buffer: &Buffer,
@@ -43,8 +43,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_indirect_nv`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_indirect_nv(
+    ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_nv`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_indirect_nv(
         &self,
         buffer: &Buffer,
     ) -> Result<()> {
@@ -72,8 +72,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_mesh_tasks_nv`], run before the call.
-    pub(crate) fn validate_cmd_draw_mesh_tasks_nv(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw_mesh_tasks_nv`], run before the call.
+    pub(crate) fn validate_draw_mesh_tasks_nv(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,

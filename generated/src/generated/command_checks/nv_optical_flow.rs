@@ -55,8 +55,8 @@ impl Device {
 }
 #[cfg(feature = "nv_optical_flow")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_optical_flow_execute_nv`], run before the call.
-    pub(crate) fn validate_cmd_optical_flow_execute_nv<'a>(
+    ///The dynamic checks of [`Self::optical_flow_execute_nv`], run before the call.
+    pub(crate) fn validate_optical_flow_execute_nv<'a>(
         &self,
         session: &OpticalFlowSessionNV,
         execute_info: &OpticalFlowExecuteInfoNV<'a>,
@@ -89,8 +89,8 @@ impl<'c> Recorder<'c, Outside> {
 }
 #[cfg(feature = "nv_optical_flow")]
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_optical_flow_image_formats_nv`], run before the call.
-    pub(crate) fn validate_get_physical_device_optical_flow_image_formats_nv<'a>(
+    ///The dynamic checks of [`Self::get_optical_flow_image_formats_nv`], run before the call.
+    pub(crate) fn validate_get_optical_flow_image_formats_nv<'a>(
         &self,
         optical_flow_image_format_info: &OpticalFlowImageFormatInfoNV<'a>,
     ) -> Result<()> {

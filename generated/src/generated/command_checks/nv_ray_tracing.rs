@@ -118,8 +118,8 @@ impl Device {
 }
 #[cfg(feature = "nv_ray_tracing")]
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_build_acceleration_structure_nv`], run before the call.
-    pub(crate) fn validate_cmd_build_acceleration_structure_nv<'a>(
+    ///The dynamic checks of [`Self::build_acceleration_structure_nv`], run before the call.
+    pub(crate) fn validate_build_acceleration_structure_nv<'a>(
         &self,
         info: &AccelerationStructureInfoNV<'a>,
         instance_data: Option<&Buffer>,
@@ -183,8 +183,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_acceleration_structure_info_nv(info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_acceleration_structure_nv`], run before the call.
-    pub(crate) fn validate_cmd_copy_acceleration_structure_nv(
+    ///The dynamic checks of [`Self::copy_acceleration_structure_nv`], run before the call.
+    pub(crate) fn validate_copy_acceleration_structure_nv(
         &self,
         dst: &AccelerationStructureNV,
         src: &AccelerationStructureNV,
@@ -228,8 +228,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_trace_rays_nv`], run before the call.
-    pub(crate) fn validate_cmd_trace_rays_nv(
+    ///The dynamic checks of [`Self::trace_rays_nv`], run before the call.
+    pub(crate) fn validate_trace_rays_nv(
         &self,
         raygen_shader_binding_table_buffer: &Buffer,
         miss_shader_binding_table_buffer: Option<&Buffer>,
@@ -296,8 +296,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_write_acceleration_structures_properties_nv`], run before the call.
-    pub(crate) fn validate_cmd_write_acceleration_structures_properties_nv(
+    ///The dynamic checks of [`Self::write_acceleration_structures_properties_nv`], run before the call.
+    pub(crate) fn validate_write_acceleration_structures_properties_nv(
         &self,
         acceleration_structures: &[&AccelerationStructureNV],
         query_type: vk::QueryType,

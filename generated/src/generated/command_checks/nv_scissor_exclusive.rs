@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_scissor_exclusive")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_exclusive_scissor_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_exclusive_scissor_nv(
+    ///The dynamic checks of [`Self::set_exclusive_scissor_nv`], run before the call.
+    pub(crate) fn validate_set_exclusive_scissor_nv(
         &self,
         exclusive_scissors: &[vk::Rect2D],
     ) -> Result<()> {

@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nv_shading_rate_image")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_bind_shading_rate_image_nv`], run before the call.
-    pub(crate) fn validate_cmd_bind_shading_rate_image_nv(
+    ///The dynamic checks of [`Self::bind_shading_rate_image_nv`], run before the call.
+    pub(crate) fn validate_bind_shading_rate_image_nv(
         &self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,
@@ -41,8 +41,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_coarse_sample_order_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_coarse_sample_order_nv<'a>(
+    ///The dynamic checks of [`Self::set_coarse_sample_order_nv`], run before the call.
+    pub(crate) fn validate_set_coarse_sample_order_nv<'a>(
         &self,
         sample_order_type: vk::CoarseSampleOrderTypeNV,
         custom_sample_orders: &[CoarseSampleOrderCustomNV<'a>],
@@ -70,8 +70,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_viewport_shading_rate_palette_nv`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_shading_rate_palette_nv<'a>(
+    ///The dynamic checks of [`Self::set_viewport_shading_rate_palette_nv`], run before the call.
+    pub(crate) fn validate_set_viewport_shading_rate_palette_nv<'a>(
         &self,
         shading_rate_palettes: &[ShadingRatePaletteNV<'a>],
     ) -> Result<()> {

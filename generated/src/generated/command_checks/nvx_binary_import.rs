@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "nvx_binary_import")]
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_cu_launch_kernel_nvx`], run before the call.
-    pub(crate) fn validate_cmd_cu_launch_kernel_nvx(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::cu_launch_kernel_nvx`], run before the call.
+    pub(crate) fn validate_cu_launch_kernel_nvx(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

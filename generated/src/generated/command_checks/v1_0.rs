@@ -690,8 +690,8 @@ impl PhysicalDevice {
         crate::checks::check_device_create_info(create_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_format_properties(
+    ///The dynamic checks of [`Self::get_format_properties`], run before the call.
+    pub(crate) fn validate_get_format_properties(
         &self,
         format: vk::Format,
     ) -> Result<()> {
@@ -703,8 +703,8 @@ impl PhysicalDevice {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_image_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_image_format_properties(
+    ///The dynamic checks of [`Self::get_image_format_properties`], run before the call.
+    pub(crate) fn validate_get_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -748,8 +748,8 @@ impl PhysicalDevice {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_sparse_image_format_properties(
+    ///The dynamic checks of [`Self::get_sparse_image_format_properties`], run before the call.
+    pub(crate) fn validate_get_sparse_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -806,8 +806,8 @@ impl Entry {
     }
 }
 impl Queue {
-    ///The dynamic checks of [`Self::queue_bind_sparse`], run before the call.
-    pub(crate) fn validate_queue_bind_sparse<'a>(
+    ///The dynamic checks of [`Self::bind_sparse`], run before the call.
+    pub(crate) fn validate_bind_sparse<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
@@ -838,8 +838,8 @@ impl Queue {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::queue_submit`], run before the call.
-    pub(crate) fn validate_queue_submit<'a>(
+    ///The dynamic checks of [`Self::submit`], run before the call.
+    pub(crate) fn validate_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: Option<&Fence>,
@@ -863,8 +863,8 @@ impl Queue {
     }
 }
 impl CommandBuffer {
-    ///The dynamic checks of [`Self::reset_command_buffer`], run before the call.
-    pub(crate) fn validate_reset_command_buffer(
+    ///The dynamic checks of [`Self::reset`], run before the call.
+    pub(crate) fn validate_reset(
         &self,
         flags: vk::CommandBufferResetFlags,
     ) -> Result<()> {

@@ -3,8 +3,8 @@
 //!The dynamic checks of the commands of Vulkan 1.0, recorded into command buffers.
 use super::*;
 impl<'c, S: Scope> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_begin_query`], run before the call.
-    pub(crate) fn validate_cmd_begin_query(
+    ///The dynamic checks of [`Self::begin_query`], run before the call.
+    pub(crate) fn validate_begin_query(
         &self,
         query_pool: &QueryPool,
         flags: vk::QueryControlFlags,
@@ -38,8 +38,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_end_query`], run before the call.
-    pub(crate) fn validate_cmd_end_query(&self, query_pool: &QueryPool) -> Result<()> {
+    ///The dynamic checks of [`Self::end_query`], run before the call.
+    pub(crate) fn validate_end_query(&self, query_pool: &QueryPool) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -64,8 +64,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_pipeline_barrier`], run before the call.
-    pub(crate) fn validate_cmd_pipeline_barrier<'a>(
+    ///The dynamic checks of [`Self::pipeline_barrier`], run before the call.
+    pub(crate) fn validate_pipeline_barrier<'a>(
         &self,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
@@ -161,8 +161,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_wait_events`], run before the call.
-    pub(crate) fn validate_cmd_wait_events<'a>(
+    ///The dynamic checks of [`Self::wait_events`], run before the call.
+    pub(crate) fn validate_wait_events<'a>(
         &self,
         events: &[&Event],
         src_stage_mask: vk::PipelineStageFlags,
@@ -272,8 +272,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_write_timestamp`], run before the call.
-    pub(crate) fn validate_cmd_write_timestamp(
+    ///The dynamic checks of [`Self::write_timestamp`], run before the call.
+    pub(crate) fn validate_write_timestamp(
         &self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
@@ -350,8 +350,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
     }
 }
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_render_pass`], run before the call.
-    pub(crate) fn validate_cmd_begin_render_pass<'a>(
+    ///The dynamic checks of [`Self::begin_render_pass`], run before the call.
+    pub(crate) fn validate_begin_render_pass<'a>(
         &self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
@@ -385,8 +385,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_blit_image`], run before the call.
-    pub(crate) fn validate_cmd_blit_image(
+    ///The dynamic checks of [`Self::blit_image`], run before the call.
+    pub(crate) fn validate_blit_image(
         &self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -862,8 +862,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_clear_color_image`], run before the call.
-    pub(crate) fn validate_cmd_clear_color_image(
+    ///The dynamic checks of [`Self::clear_color_image`], run before the call.
+    pub(crate) fn validate_clear_color_image(
         &self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -983,8 +983,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_clear_depth_stencil_image`], run before the call.
-    pub(crate) fn validate_cmd_clear_depth_stencil_image(
+    ///The dynamic checks of [`Self::clear_depth_stencil_image`], run before the call.
+    pub(crate) fn validate_clear_depth_stencil_image(
         &self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -1084,8 +1084,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_buffer`], run before the call.
-    pub(crate) fn validate_cmd_copy_buffer(
+    ///The dynamic checks of [`Self::copy_buffer`], run before the call.
+    pub(crate) fn validate_copy_buffer(
         &self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -1132,8 +1132,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_buffer_to_image`], run before the call.
-    pub(crate) fn validate_cmd_copy_buffer_to_image(
+    ///The dynamic checks of [`Self::copy_buffer_to_image`], run before the call.
+    pub(crate) fn validate_copy_buffer_to_image(
         &self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -1365,8 +1365,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_image`], run before the call.
-    pub(crate) fn validate_cmd_copy_image(
+    ///The dynamic checks of [`Self::copy_image`], run before the call.
+    pub(crate) fn validate_copy_image(
         &self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1890,8 +1890,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_image_to_buffer`], run before the call.
-    pub(crate) fn validate_cmd_copy_image_to_buffer(
+    ///The dynamic checks of [`Self::copy_image_to_buffer`], run before the call.
+    pub(crate) fn validate_copy_image_to_buffer(
         &self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2123,8 +2123,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_query_pool_results`], run before the call.
-    pub(crate) fn validate_cmd_copy_query_pool_results(
+    ///The dynamic checks of [`Self::copy_query_pool_results`], run before the call.
+    pub(crate) fn validate_copy_query_pool_results(
         &self,
         query_pool: &QueryPool,
         dst_buffer: &Buffer,
@@ -2230,8 +2230,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_dispatch`], run before the call.
-    pub(crate) fn validate_cmd_dispatch(
+    ///The dynamic checks of [`Self::dispatch`], run before the call.
+    pub(crate) fn validate_dispatch(
         &self,
         group_count_x: u32,
         group_count_y: u32,
@@ -2300,8 +2300,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_dispatch_indirect`], run before the call.
-    pub(crate) fn validate_cmd_dispatch_indirect(
+    ///The dynamic checks of [`Self::dispatch_indirect`], run before the call.
+    pub(crate) fn validate_dispatch_indirect(
         &self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -2364,8 +2364,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_fill_buffer`], run before the call.
-    pub(crate) fn validate_cmd_fill_buffer(&self, dst_buffer: &Buffer) -> Result<()> {
+    ///The dynamic checks of [`Self::fill_buffer`], run before the call.
+    pub(crate) fn validate_fill_buffer(&self, dst_buffer: &Buffer) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -2390,8 +2390,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_reset_query_pool`], run before the call.
-    pub(crate) fn validate_cmd_reset_query_pool(
+    ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
+    pub(crate) fn validate_reset_query_pool(
         &self,
         query_pool: &QueryPool,
     ) -> Result<()> {
@@ -2419,8 +2419,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_resolve_image`], run before the call.
-    pub(crate) fn validate_cmd_resolve_image(
+    ///The dynamic checks of [`Self::resolve_image`], run before the call.
+    pub(crate) fn validate_resolve_image(
         &self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -2862,8 +2862,8 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_update_buffer`], run before the call.
-    pub(crate) fn validate_cmd_update_buffer(
+    ///The dynamic checks of [`Self::update_buffer`], run before the call.
+    pub(crate) fn validate_update_buffer(
         &self,
         dst_buffer: &Buffer,
         data: &[u8],
@@ -2902,8 +2902,8 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_bind_descriptor_sets`], run before the call.
-    pub(crate) fn validate_cmd_bind_descriptor_sets(
+    ///The dynamic checks of [`Self::bind_descriptor_sets`], run before the call.
+    pub(crate) fn validate_bind_descriptor_sets(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -2957,8 +2957,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_index_buffer`], run before the call.
-    pub(crate) fn validate_cmd_bind_index_buffer(
+    ///The dynamic checks of [`Self::bind_index_buffer`], run before the call.
+    pub(crate) fn validate_bind_index_buffer(
         &self,
         buffer: &Buffer,
         index_type: vk::IndexType,
@@ -2992,8 +2992,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_pipeline`], run before the call.
-    pub(crate) fn validate_cmd_bind_pipeline(
+    ///The dynamic checks of [`Self::bind_pipeline`], run before the call.
+    pub(crate) fn validate_bind_pipeline(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -3027,8 +3027,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_bind_vertex_buffers`], run before the call.
-    pub(crate) fn validate_cmd_bind_vertex_buffers(
+    ///The dynamic checks of [`Self::bind_vertex_buffers`], run before the call.
+    pub(crate) fn validate_bind_vertex_buffers(
         &self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -3083,8 +3083,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_execute_commands`], run before the call.
-    pub(crate) fn validate_cmd_execute_commands(
+    ///The dynamic checks of [`Self::execute_commands`], run before the call.
+    pub(crate) fn validate_execute_commands(
         &self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
@@ -3130,8 +3130,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_push_constants`], run before the call.
-    pub(crate) fn validate_cmd_push_constants(
+    ///The dynamic checks of [`Self::push_constants`], run before the call.
+    pub(crate) fn validate_push_constants(
         &self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
@@ -3179,8 +3179,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_blend_constants`], run before the call.
-    pub(crate) fn validate_cmd_set_blend_constants(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_blend_constants`], run before the call.
+    pub(crate) fn validate_set_blend_constants(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -3195,11 +3195,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_bias`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias(
-        &self,
-        depth_bias_clamp: f32,
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_bias`], run before the call.
+    pub(crate) fn validate_set_depth_bias(&self, depth_bias_clamp: f32) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -3228,8 +3225,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_bounds`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds(
+    ///The dynamic checks of [`Self::set_depth_bounds`], run before the call.
+    pub(crate) fn validate_set_depth_bounds(
         &self,
         min_depth_bounds: f32,
         max_depth_bounds: f32,
@@ -3277,8 +3274,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_line_width`], run before the call.
-    pub(crate) fn validate_cmd_set_line_width(&self, line_width: f32) -> Result<()> {
+    ///The dynamic checks of [`Self::set_line_width`], run before the call.
+    pub(crate) fn validate_set_line_width(&self, line_width: f32) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
@@ -3307,11 +3304,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_scissor`], run before the call.
-    pub(crate) fn validate_cmd_set_scissor(
-        &self,
-        scissors: &[vk::Rect2D],
-    ) -> Result<()> {
+    ///The dynamic checks of [`Self::set_scissor`], run before the call.
+    pub(crate) fn validate_set_scissor(&self, scissors: &[vk::Rect2D]) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -3334,8 +3328,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_stencil_compare_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_compare_mask(
+    ///The dynamic checks of [`Self::set_stencil_compare_mask`], run before the call.
+    pub(crate) fn validate_set_stencil_compare_mask(
         &self,
         face_mask: vk::StencilFaceFlags,
     ) -> Result<()> {
@@ -3367,8 +3361,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_stencil_reference`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_reference(
+    ///The dynamic checks of [`Self::set_stencil_reference`], run before the call.
+    pub(crate) fn validate_set_stencil_reference(
         &self,
         face_mask: vk::StencilFaceFlags,
     ) -> Result<()> {
@@ -3400,8 +3394,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_stencil_write_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_write_mask(
+    ///The dynamic checks of [`Self::set_stencil_write_mask`], run before the call.
+    pub(crate) fn validate_set_stencil_write_mask(
         &self,
         face_mask: vk::StencilFaceFlags,
     ) -> Result<()> {
@@ -3433,8 +3427,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_viewport`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport(
+    ///The dynamic checks of [`Self::set_viewport`], run before the call.
+    pub(crate) fn validate_set_viewport(
         &self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
@@ -3466,8 +3460,8 @@ impl<'c, S: State> Recorder<'c, S> {
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_clear_attachments`], run before the call.
-    pub(crate) fn validate_cmd_clear_attachments(
+    ///The dynamic checks of [`Self::clear_attachments`], run before the call.
+    pub(crate) fn validate_clear_attachments(
         &self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
@@ -3519,8 +3513,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw`], run before the call.
-    pub(crate) fn validate_cmd_draw(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw`], run before the call.
+    pub(crate) fn validate_draw(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -3535,8 +3529,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_indexed`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::draw_indexed`], run before the call.
+    pub(crate) fn validate_draw_indexed(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -3551,8 +3545,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed_indirect(
+    ///The dynamic checks of [`Self::draw_indexed_indirect`], run before the call.
+    pub(crate) fn validate_draw_indexed_indirect(
         &self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -3641,8 +3635,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_indirect`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect(
+    ///The dynamic checks of [`Self::draw_indirect`], run before the call.
+    pub(crate) fn validate_draw_indirect(
         &self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -3733,8 +3727,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
     }
 }
 impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_end_render_pass`], run before the call.
-    pub(crate) fn validate_cmd_end_render_pass(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::end_render_pass`], run before the call.
+    pub(crate) fn validate_end_render_pass(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -3757,8 +3751,8 @@ impl<'c> Recorder<'c, InRenderPass> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_next_subpass`], run before the call.
-    pub(crate) fn validate_cmd_next_subpass(
+    ///The dynamic checks of [`Self::next_subpass`], run before the call.
+    pub(crate) fn validate_next_subpass(
         &self,
         contents: vk::SubpassContents,
     ) -> Result<()> {
@@ -3792,8 +3786,8 @@ impl<'c> Recorder<'c, InRenderPass> {
     }
 }
 impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_reset_event`], run before the call.
-    pub(crate) fn validate_cmd_reset_event(
+    ///The dynamic checks of [`Self::reset_event`], run before the call.
+    pub(crate) fn validate_reset_event(
         &self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
@@ -3860,8 +3854,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_event`], run before the call.
-    pub(crate) fn validate_cmd_set_event(
+    ///The dynamic checks of [`Self::set_event`], run before the call.
+    pub(crate) fn validate_set_event(
         &self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,

@@ -91,8 +91,8 @@ impl Device {
         crate::checks::check_descriptor_set_layout_support(support, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_device_queue2`], run before the call.
-    pub(crate) fn validate_get_device_queue2<'a>(
+    ///The dynamic checks of [`Self::get_queue2`], run before the call.
+    pub(crate) fn validate_get_queue2<'a>(
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Result<()> {
@@ -154,8 +154,8 @@ impl Device {
     }
 }
 impl PhysicalDevice {
-    ///The dynamic checks of [`Self::get_physical_device_external_buffer_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_buffer_properties<'a>(
+    ///The dynamic checks of [`Self::get_external_buffer_properties`], run before the call.
+    pub(crate) fn validate_get_external_buffer_properties<'a>(
         &self,
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
     ) -> Result<()> {
@@ -166,8 +166,8 @@ impl PhysicalDevice {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_external_fence_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_fence_properties<'a>(
+    ///The dynamic checks of [`Self::get_external_fence_properties`], run before the call.
+    pub(crate) fn validate_get_external_fence_properties<'a>(
         &self,
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
     ) -> Result<()> {
@@ -178,8 +178,8 @@ impl PhysicalDevice {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_external_semaphore_properties`], run before the call.
-    pub(crate) fn validate_get_physical_device_external_semaphore_properties<'a>(
+    ///The dynamic checks of [`Self::get_external_semaphore_properties`], run before the call.
+    pub(crate) fn validate_get_external_semaphore_properties<'a>(
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
     ) -> Result<()> {
@@ -190,8 +190,8 @@ impl PhysicalDevice {
         )?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_format_properties2<'a>(
+    ///The dynamic checks of [`Self::get_format_properties2`], run before the call.
+    pub(crate) fn validate_get_format_properties2<'a>(
         &self,
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
@@ -205,8 +205,8 @@ impl PhysicalDevice {
         crate::checks::check_format_properties2(format_properties, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_image_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_image_format_properties2<'a>(
+    ///The dynamic checks of [`Self::get_image_format_properties2`], run before the call.
+    pub(crate) fn validate_get_image_format_properties2<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
@@ -216,8 +216,8 @@ impl PhysicalDevice {
         crate::checks::check_image_format_properties2(image_format_properties, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_memory_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_memory_properties2<'a>(
+    ///The dynamic checks of [`Self::get_memory_properties2`], run before the call.
+    pub(crate) fn validate_get_memory_properties2<'a>(
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) -> Result<()> {
@@ -225,8 +225,8 @@ impl PhysicalDevice {
         crate::checks::check_physical_device_memory_properties2(memory_properties, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_properties2<'a>(
+    ///The dynamic checks of [`Self::get_properties2`], run before the call.
+    pub(crate) fn validate_get_properties2<'a>(
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) -> Result<()> {
@@ -234,8 +234,8 @@ impl PhysicalDevice {
         crate::checks::check_physical_device_properties2(properties, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_physical_device_sparse_image_format_properties2`], run before the call.
-    pub(crate) fn validate_get_physical_device_sparse_image_format_properties2<'a>(
+    ///The dynamic checks of [`Self::get_sparse_image_format_properties2`], run before the call.
+    pub(crate) fn validate_get_sparse_image_format_properties2<'a>(
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<()> {

@@ -3,8 +3,8 @@
 //!The dynamic checks of the commands of Vulkan 1.1, recorded into command buffers.
 use super::*;
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_dispatch_base`], run before the call.
-    pub(crate) fn validate_cmd_dispatch_base(
+    ///The dynamic checks of [`Self::dispatch_base`], run before the call.
+    pub(crate) fn validate_dispatch_base(
         &self,
         base_group_x: u32,
         base_group_y: u32,
@@ -84,8 +84,8 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: Scope> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_set_device_mask`], run before the call.
-    pub(crate) fn validate_cmd_set_device_mask(&self, device_mask: u32) -> Result<()> {
+    ///The dynamic checks of [`Self::set_device_mask`], run before the call.
+    pub(crate) fn validate_set_device_mask(&self, device_mask: u32) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),

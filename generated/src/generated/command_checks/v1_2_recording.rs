@@ -3,8 +3,8 @@
 //!The dynamic checks of the commands of Vulkan 1.2, recorded into command buffers.
 use super::*;
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_render_pass2`], run before the call.
-    pub(crate) fn validate_cmd_begin_render_pass2<'a>(
+    ///The dynamic checks of [`Self::begin_render_pass2`], run before the call.
+    pub(crate) fn validate_begin_render_pass2<'a>(
         &self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
@@ -36,8 +36,8 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_draw_indexed_indirect_count`], run before the call.
-    pub(crate) fn validate_cmd_draw_indexed_indirect_count(
+    ///The dynamic checks of [`Self::draw_indexed_indirect_count`], run before the call.
+    pub(crate) fn validate_draw_indexed_indirect_count(
         &self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -164,8 +164,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_draw_indirect_count`], run before the call.
-    pub(crate) fn validate_cmd_draw_indirect_count(
+    ///The dynamic checks of [`Self::draw_indirect_count`], run before the call.
+    pub(crate) fn validate_draw_indirect_count(
         &self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -294,8 +294,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
     }
 }
 impl<'c> Recorder<'c, InRenderPass> {
-    ///The dynamic checks of [`Self::cmd_end_render_pass2`], run before the call.
-    pub(crate) fn validate_cmd_end_render_pass2<'a>(
+    ///The dynamic checks of [`Self::end_render_pass2`], run before the call.
+    pub(crate) fn validate_end_render_pass2<'a>(
         &self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Result<()> {
@@ -323,8 +323,8 @@ impl<'c> Recorder<'c, InRenderPass> {
         crate::checks::check_subpass_end_info(subpass_end_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_next_subpass2`], run before the call.
-    pub(crate) fn validate_cmd_next_subpass2<'a>(
+    ///The dynamic checks of [`Self::next_subpass2`], run before the call.
+    pub(crate) fn validate_next_subpass2<'a>(
         &self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,

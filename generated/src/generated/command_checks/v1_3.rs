@@ -101,8 +101,8 @@ impl Device {
     }
 }
 impl Queue {
-    ///The dynamic checks of [`Self::queue_submit2`], run before the call.
-    pub(crate) fn validate_queue_submit2<'a>(
+    ///The dynamic checks of [`Self::submit2`], run before the call.
+    pub(crate) fn validate_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,

@@ -3,8 +3,8 @@
 //!The dynamic checks of the commands of Vulkan 1.3, recorded into command buffers.
 use super::*;
 impl<'c> Recorder<'c, Outside> {
-    ///The dynamic checks of [`Self::cmd_begin_rendering`], run before the call.
-    pub(crate) fn validate_cmd_begin_rendering<'a>(
+    ///The dynamic checks of [`Self::begin_rendering`], run before the call.
+    pub(crate) fn validate_begin_rendering<'a>(
         &self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Result<()> {
@@ -36,8 +36,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_rendering_info(rendering_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_blit_image2`], run before the call.
-    pub(crate) fn validate_cmd_blit_image2<'a>(
+    ///The dynamic checks of [`Self::blit_image2`], run before the call.
+    pub(crate) fn validate_blit_image2<'a>(
         &self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
@@ -57,8 +57,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_blit_image_info2(blit_image_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_buffer2`], run before the call.
-    pub(crate) fn validate_cmd_copy_buffer2<'a>(
+    ///The dynamic checks of [`Self::copy_buffer2`], run before the call.
+    pub(crate) fn validate_copy_buffer2<'a>(
         &self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) -> Result<()> {
@@ -78,8 +78,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_buffer_to_image2`], run before the call.
-    pub(crate) fn validate_cmd_copy_buffer_to_image2<'a>(
+    ///The dynamic checks of [`Self::copy_buffer_to_image2`], run before the call.
+    pub(crate) fn validate_copy_buffer_to_image2<'a>(
         &self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
@@ -99,8 +99,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_buffer_to_image_info2(copy_buffer_to_image_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_image2`], run before the call.
-    pub(crate) fn validate_cmd_copy_image2<'a>(
+    ///The dynamic checks of [`Self::copy_image2`], run before the call.
+    pub(crate) fn validate_copy_image2<'a>(
         &self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
@@ -120,8 +120,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_info2(copy_image_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_copy_image_to_buffer2`], run before the call.
-    pub(crate) fn validate_cmd_copy_image_to_buffer2<'a>(
+    ///The dynamic checks of [`Self::copy_image_to_buffer2`], run before the call.
+    pub(crate) fn validate_copy_image_to_buffer2<'a>(
         &self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
@@ -141,8 +141,8 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_to_buffer_info2(copy_image_to_buffer_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_resolve_image2`], run before the call.
-    pub(crate) fn validate_cmd_resolve_image2<'a>(
+    ///The dynamic checks of [`Self::resolve_image2`], run before the call.
+    pub(crate) fn validate_resolve_image2<'a>(
         &self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
@@ -164,8 +164,8 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_bind_vertex_buffers2`], run before the call.
-    pub(crate) fn validate_cmd_bind_vertex_buffers2(
+    ///The dynamic checks of [`Self::bind_vertex_buffers2`], run before the call.
+    pub(crate) fn validate_bind_vertex_buffers2(
         &self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -223,8 +223,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_cull_mode`], run before the call.
-    pub(crate) fn validate_cmd_set_cull_mode(
+    ///The dynamic checks of [`Self::set_cull_mode`], run before the call.
+    pub(crate) fn validate_set_cull_mode(
         &self,
         cull_mode: vk::CullModeFlags,
     ) -> Result<()> {
@@ -248,8 +248,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_bias_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bias_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_bias_enable`], run before the call.
+    pub(crate) fn validate_set_depth_bias_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -264,8 +264,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_bounds_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_bounds_test_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_bounds_test_enable`], run before the call.
+    pub(crate) fn validate_set_depth_bounds_test_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -280,8 +280,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_compare_op`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_compare_op(
+    ///The dynamic checks of [`Self::set_depth_compare_op`], run before the call.
+    pub(crate) fn validate_set_depth_compare_op(
         &self,
         depth_compare_op: vk::CompareOp,
     ) -> Result<()> {
@@ -305,8 +305,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_test_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_test_enable`], run before the call.
+    pub(crate) fn validate_set_depth_test_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -321,8 +321,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_depth_write_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_depth_write_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_depth_write_enable`], run before the call.
+    pub(crate) fn validate_set_depth_write_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -337,8 +337,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_front_face`], run before the call.
-    pub(crate) fn validate_cmd_set_front_face(
+    ///The dynamic checks of [`Self::set_front_face`], run before the call.
+    pub(crate) fn validate_set_front_face(
         &self,
         front_face: vk::FrontFace,
     ) -> Result<()> {
@@ -362,8 +362,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_primitive_restart_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_primitive_restart_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_primitive_restart_enable`], run before the call.
+    pub(crate) fn validate_set_primitive_restart_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -378,8 +378,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_primitive_topology`], run before the call.
-    pub(crate) fn validate_cmd_set_primitive_topology(
+    ///The dynamic checks of [`Self::set_primitive_topology`], run before the call.
+    pub(crate) fn validate_set_primitive_topology(
         &self,
         primitive_topology: vk::PrimitiveTopology,
     ) -> Result<()> {
@@ -403,8 +403,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_rasterizer_discard_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_rasterizer_discard_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_rasterizer_discard_enable`], run before the call.
+    pub(crate) fn validate_set_rasterizer_discard_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -419,8 +419,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_scissor_with_count`], run before the call.
-    pub(crate) fn validate_cmd_set_scissor_with_count(
+    ///The dynamic checks of [`Self::set_scissor_with_count`], run before the call.
+    pub(crate) fn validate_set_scissor_with_count(
         &self,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
@@ -446,8 +446,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_stencil_op`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_op(
+    ///The dynamic checks of [`Self::set_stencil_op`], run before the call.
+    pub(crate) fn validate_set_stencil_op(
         &self,
         face_mask: vk::StencilFaceFlags,
         fail_op: vk::StencilOp,
@@ -503,8 +503,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_stencil_test_enable`], run before the call.
-    pub(crate) fn validate_cmd_set_stencil_test_enable(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::set_stencil_test_enable`], run before the call.
+    pub(crate) fn validate_set_stencil_test_enable(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -519,8 +519,8 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_viewport_with_count`], run before the call.
-    pub(crate) fn validate_cmd_set_viewport_with_count(
+    ///The dynamic checks of [`Self::set_viewport_with_count`], run before the call.
+    pub(crate) fn validate_set_viewport_with_count(
         &self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
@@ -552,8 +552,8 @@ impl<'c, S: State> Recorder<'c, S> {
     }
 }
 impl<'c> Recorder<'c, InRendering> {
-    ///The dynamic checks of [`Self::cmd_end_rendering`], run before the call.
-    pub(crate) fn validate_cmd_end_rendering(&self) -> Result<()> {
+    ///The dynamic checks of [`Self::end_rendering`], run before the call.
+    pub(crate) fn validate_end_rendering(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -570,8 +570,8 @@ impl<'c> Recorder<'c, InRendering> {
     }
 }
 impl<'c, S: Scope> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_pipeline_barrier2`], run before the call.
-    pub(crate) fn validate_cmd_pipeline_barrier2<'a>(
+    ///The dynamic checks of [`Self::pipeline_barrier2`], run before the call.
+    pub(crate) fn validate_pipeline_barrier2<'a>(
         &self,
         dependency_info: &DependencyInfo<'a>,
     ) -> Result<()> {
@@ -603,8 +603,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_wait_events2`], run before the call.
-    pub(crate) fn validate_cmd_wait_events2<'a>(
+    ///The dynamic checks of [`Self::wait_events2`], run before the call.
+    pub(crate) fn validate_wait_events2<'a>(
         &self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
@@ -658,8 +658,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_write_timestamp2`], run before the call.
-    pub(crate) fn validate_cmd_write_timestamp2(
+    ///The dynamic checks of [`Self::write_timestamp2`], run before the call.
+    pub(crate) fn validate_write_timestamp2(
         &self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
@@ -737,8 +737,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
     }
 }
 impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
-    ///The dynamic checks of [`Self::cmd_reset_event2`], run before the call.
-    pub(crate) fn validate_cmd_reset_event2(
+    ///The dynamic checks of [`Self::reset_event2`], run before the call.
+    pub(crate) fn validate_reset_event2(
         &self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
@@ -830,8 +830,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::cmd_set_event2`], run before the call.
-    pub(crate) fn validate_cmd_set_event2<'a>(
+    ///The dynamic checks of [`Self::set_event2`], run before the call.
+    pub(crate) fn validate_set_event2<'a>(
         &self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,

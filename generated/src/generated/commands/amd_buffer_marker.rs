@@ -31,7 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 - 11: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdWriteBufferMarkerAMD")]
     #[inline]
-    pub unsafe fn cmd_write_buffer_marker_amd(
+    pub unsafe fn write_buffer_marker_amd(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         dst_buffer: &Buffer,
@@ -40,7 +40,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_write_buffer_marker_amd(
+                .validate_write_buffer_marker_amd(
                     pipeline_stage,
                     dst_buffer,
                     dst_offset,
@@ -50,7 +50,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_write_buffer_marker_amd_unchecked(
+            self.write_buffer_marker_amd_unchecked(
                 pipeline_stage,
                 dst_buffer,
                 dst_offset,
@@ -62,9 +62,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_buffer_marker_amd`] checks at run time: `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter`, `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarkerAMD-commonparent`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800`, `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801`, `VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_buffer_marker_amd`] checks at run time: `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter`, `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarkerAMD-commonparent`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800`, `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801`, `VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_buffer_marker_amd_unchecked(
+    pub unsafe fn write_buffer_marker_amd_unchecked(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         dst_buffer: &Buffer,

@@ -89,9 +89,7 @@ The rules are on [`vkGetPhysicalDeviceCalibrateableTimeDomainsEXT`'s reference p
 - `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomains-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceCalibrateableTimeDomainsEXT")]
     #[inline]
-    pub fn get_physical_device_calibrateable_time_domains_ext(
-        &self,
-    ) -> Result<Vec<vk::TimeDomainEXT>> {
+    pub fn get_calibrateable_time_domains_ext(&self) -> Result<Vec<vk::TimeDomainEXT>> {
         let fp = self
             .parent()
             .ext()

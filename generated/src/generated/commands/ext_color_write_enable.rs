@@ -20,25 +20,25 @@ The rules are on [`vkCmdSetColorWriteEnableEXT`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetColorWriteEnableEXT")]
     #[inline]
-    pub fn cmd_set_color_write_enable_ext(
+    pub fn set_color_write_enable_ext(
         &mut self,
         color_write_enables: &[vk::Bool32],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_color_write_enable_ext(color_write_enables);
+            let r = self.validate_set_color_write_enable_ext(color_write_enables);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_color_write_enable_ext_unchecked(color_write_enables) }
+        unsafe { self.set_color_write_enable_ext_unchecked(color_write_enables) }
     }
     /**`vkCmdSetColorWriteEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_color_write_enable_ext`] checks at run time: `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_color_write_enable_ext`] checks at run time: `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_color_write_enable_ext_unchecked(
+    pub unsafe fn set_color_write_enable_ext_unchecked(
         &mut self,
         color_write_enables: &[vk::Bool32],
     ) -> Result<()> {

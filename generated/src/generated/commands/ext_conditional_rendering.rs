@@ -19,32 +19,28 @@ The rules are on [`vkCmdBeginConditionalRenderingEXT`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBeginConditionalRenderingEXT")]
     #[inline]
-    pub fn cmd_begin_conditional_rendering_ext<'a>(
+    pub fn begin_conditional_rendering_ext<'a>(
         &mut self,
         conditional_rendering_begin: &ConditionalRenderingBeginInfoEXT<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_begin_conditional_rendering_ext(
-                    conditional_rendering_begin,
-                );
+                .validate_begin_conditional_rendering_ext(conditional_rendering_begin);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_begin_conditional_rendering_ext_unchecked(
-                conditional_rendering_begin,
-            )
+            self.begin_conditional_rendering_ext_unchecked(conditional_rendering_begin)
         }
     }
     /**`vkCmdBeginConditionalRenderingEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_conditional_rendering_ext`] checks at run time: `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_conditional_rendering_ext`] checks at run time: `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_conditional_rendering_ext_unchecked<'a>(
+    pub unsafe fn begin_conditional_rendering_ext_unchecked<'a>(
         &mut self,
         conditional_rendering_begin: &ConditionalRenderingBeginInfoEXT<'a>,
     ) -> Result<()> {
@@ -100,22 +96,22 @@ The rules are on [`vkCmdEndConditionalRenderingEXT`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndConditionalRenderingEXT")]
     #[inline]
-    pub fn cmd_end_conditional_rendering_ext(&mut self) -> Result<()> {
+    pub fn end_conditional_rendering_ext(&mut self) -> Result<()> {
         {
-            let r = self.validate_cmd_end_conditional_rendering_ext();
+            let r = self.validate_end_conditional_rendering_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_conditional_rendering_ext_unchecked() }
+        unsafe { self.end_conditional_rendering_ext_unchecked() }
     }
     /**`vkCmdEndConditionalRenderingEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_conditional_rendering_ext`] checks at run time: `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_conditional_rendering_ext`] checks at run time: `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_conditional_rendering_ext_unchecked(&mut self) -> Result<()> {
+    pub unsafe fn end_conditional_rendering_ext_unchecked(&mut self) -> Result<()> {
         let fp = self
             .device()
             .ext()

@@ -17,25 +17,25 @@ The rules are on [`vkCmdDebugMarkerBeginEXT`'s reference page](https://registry.
 - `VUID-vkCmdDebugMarkerBeginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdDebugMarkerBeginEXT")]
     #[inline]
-    pub fn cmd_debug_marker_begin_ext<'a>(
+    pub fn debug_marker_begin_ext<'a>(
         &mut self,
         marker_info: &DebugMarkerMarkerInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_debug_marker_begin_ext();
+            let r = self.validate_debug_marker_begin_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_debug_marker_begin_ext_unchecked(marker_info) }
+        unsafe { self.debug_marker_begin_ext_unchecked(marker_info) }
     }
     /**`vkCmdDebugMarkerBeginEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_debug_marker_begin_ext`] checks at run time: `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::debug_marker_begin_ext`] checks at run time: `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_debug_marker_begin_ext_unchecked<'a>(
+    pub unsafe fn debug_marker_begin_ext_unchecked<'a>(
         &mut self,
         marker_info: &DebugMarkerMarkerInfoEXT<'a>,
     ) -> Result<()> {
@@ -79,22 +79,22 @@ The rules are on [`vkCmdDebugMarkerEndEXT`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDebugMarkerEndEXT")]
     #[inline]
-    pub unsafe fn cmd_debug_marker_end_ext(&mut self) -> Result<()> {
+    pub unsafe fn debug_marker_end_ext(&mut self) -> Result<()> {
         {
-            let r = self.validate_cmd_debug_marker_end_ext();
+            let r = self.validate_debug_marker_end_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_debug_marker_end_ext_unchecked() }
+        unsafe { self.debug_marker_end_ext_unchecked() }
     }
     /**`vkCmdDebugMarkerEndEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_debug_marker_end_ext`] checks at run time: `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::debug_marker_end_ext`] checks at run time: `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_debug_marker_end_ext_unchecked(&mut self) -> Result<()> {
+    pub unsafe fn debug_marker_end_ext_unchecked(&mut self) -> Result<()> {
         let fp = self
             .device()
             .ext()
@@ -122,25 +122,25 @@ The rules are on [`vkCmdDebugMarkerInsertEXT`'s reference page](https://registry
 - `VUID-vkCmdDebugMarkerInsertEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdDebugMarkerInsertEXT")]
     #[inline]
-    pub fn cmd_debug_marker_insert_ext<'a>(
+    pub fn debug_marker_insert_ext<'a>(
         &mut self,
         marker_info: &DebugMarkerMarkerInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_debug_marker_insert_ext();
+            let r = self.validate_debug_marker_insert_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_debug_marker_insert_ext_unchecked(marker_info) }
+        unsafe { self.debug_marker_insert_ext_unchecked(marker_info) }
     }
     /**`vkCmdDebugMarkerInsertEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_debug_marker_insert_ext`] checks at run time: `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::debug_marker_insert_ext`] checks at run time: `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_debug_marker_insert_ext_unchecked<'a>(
+    pub unsafe fn debug_marker_insert_ext_unchecked<'a>(
         &mut self,
         marker_info: &DebugMarkerMarkerInfoEXT<'a>,
     ) -> Result<()> {

@@ -17,25 +17,25 @@ The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://regis
 - `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdBeginDebugUtilsLabelEXT")]
     #[inline]
-    pub fn cmd_begin_debug_utils_label_ext<'a>(
+    pub fn begin_debug_utils_label_ext<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_begin_debug_utils_label_ext();
+            let r = self.validate_begin_debug_utils_label_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_begin_debug_utils_label_ext_unchecked(label_info) }
+        unsafe { self.begin_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdBeginDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_debug_utils_label_ext`] checks at run time: `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_debug_utils_label_ext`] checks at run time: `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_debug_utils_label_ext_unchecked<'a>(
+    pub unsafe fn begin_debug_utils_label_ext_unchecked<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
@@ -76,22 +76,22 @@ The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndDebugUtilsLabelEXT")]
     #[inline]
-    pub unsafe fn cmd_end_debug_utils_label_ext(&mut self) -> Result<()> {
+    pub unsafe fn end_debug_utils_label_ext(&mut self) -> Result<()> {
         {
-            let r = self.validate_cmd_end_debug_utils_label_ext();
+            let r = self.validate_end_debug_utils_label_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_debug_utils_label_ext_unchecked() }
+        unsafe { self.end_debug_utils_label_ext_unchecked() }
     }
     /**`vkCmdEndDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_debug_utils_label_ext`] checks at run time: `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
+    pub unsafe fn end_debug_utils_label_ext_unchecked(&mut self) -> Result<()> {
         let fp = self
             .device()
             .ext()
@@ -119,25 +119,25 @@ The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://regi
 - `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdInsertDebugUtilsLabelEXT")]
     #[inline]
-    pub fn cmd_insert_debug_utils_label_ext<'a>(
+    pub fn insert_debug_utils_label_ext<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_insert_debug_utils_label_ext();
+            let r = self.validate_insert_debug_utils_label_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_insert_debug_utils_label_ext_unchecked(label_info) }
+        unsafe { self.insert_debug_utils_label_ext_unchecked(label_info) }
     }
     /**`vkCmdInsertDebugUtilsLabelEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::insert_debug_utils_label_ext`] checks at run time: `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_insert_debug_utils_label_ext_unchecked<'a>(
+    pub unsafe fn insert_debug_utils_label_ext_unchecked<'a>(
         &mut self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
@@ -317,7 +317,7 @@ The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://reg
 - `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkQueueBeginDebugUtilsLabelEXT")]
     #[inline]
-    pub fn queue_begin_debug_utils_label_ext<'a>(
+    pub fn begin_debug_utils_label_ext<'a>(
         &self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {
@@ -353,7 +353,7 @@ The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkQueueEndDebugUtilsLabelEXT")]
     #[inline]
-    pub unsafe fn queue_end_debug_utils_label_ext(&self) -> Result<()> {
+    pub unsafe fn end_debug_utils_label_ext(&self) -> Result<()> {
         let fp = self
             .parent()
             .ext()
@@ -377,7 +377,7 @@ The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://re
 - `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkQueueInsertDebugUtilsLabelEXT")]
     #[inline]
-    pub fn queue_insert_debug_utils_label_ext<'a>(
+    pub fn insert_debug_utils_label_ext<'a>(
         &self,
         label_info: &DebugUtilsLabelEXT<'a>,
     ) -> Result<()> {

@@ -22,7 +22,7 @@ The rules are on [`vkCmdBindDescriptorBufferEmbeddedSamplersEXT`'s reference pag
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindDescriptorBufferEmbeddedSamplersEXT")]
     #[inline]
-    pub fn cmd_bind_descriptor_buffer_embedded_samplers_ext(
+    pub fn bind_descriptor_buffer_embedded_samplers_ext(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -30,7 +30,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_bind_descriptor_buffer_embedded_samplers_ext(
+                .validate_bind_descriptor_buffer_embedded_samplers_ext(
                     pipeline_bind_point,
                     layout,
                 );
@@ -39,7 +39,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_bind_descriptor_buffer_embedded_samplers_ext_unchecked(
+            self.bind_descriptor_buffer_embedded_samplers_ext_unchecked(
                 pipeline_bind_point,
                 layout,
                 set,
@@ -50,9 +50,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_descriptor_buffer_embedded_samplers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_descriptor_buffer_embedded_samplers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_descriptor_buffer_embedded_samplers_ext_unchecked(
+    pub unsafe fn bind_descriptor_buffer_embedded_samplers_ext_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -89,25 +89,25 @@ The rules are on [`vkCmdBindDescriptorBuffersEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindDescriptorBuffersEXT")]
     #[inline]
-    pub fn cmd_bind_descriptor_buffers_ext<'a>(
+    pub fn bind_descriptor_buffers_ext<'a>(
         &mut self,
         binding_infos: &[DescriptorBufferBindingInfoEXT<'a>],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_bind_descriptor_buffers_ext(binding_infos);
+            let r = self.validate_bind_descriptor_buffers_ext(binding_infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_bind_descriptor_buffers_ext_unchecked(binding_infos) }
+        unsafe { self.bind_descriptor_buffers_ext_unchecked(binding_infos) }
     }
     /**`vkCmdBindDescriptorBuffersEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_descriptor_buffers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_descriptor_buffers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_descriptor_buffers_ext_unchecked<'a>(
+    pub unsafe fn bind_descriptor_buffers_ext_unchecked<'a>(
         &mut self,
         binding_infos: &[DescriptorBufferBindingInfoEXT<'a>],
     ) -> Result<()> {
@@ -165,7 +165,7 @@ The rules are on [`vkCmdSetDescriptorBufferOffsetsEXT`'s reference page](https:/
 Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDescriptorBufferOffsetsEXT")]
     #[inline]
-    pub fn cmd_set_descriptor_buffer_offsets_ext(
+    pub fn set_descriptor_buffer_offsets_ext(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -184,7 +184,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         }
         {
             let r = self
-                .validate_cmd_set_descriptor_buffer_offsets_ext(
+                .validate_set_descriptor_buffer_offsets_ext(
                     pipeline_bind_point,
                     layout,
                     buffer_indices,
@@ -194,7 +194,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_descriptor_buffer_offsets_ext_unchecked(
+            self.set_descriptor_buffer_offsets_ext_unchecked(
                 pipeline_bind_point,
                 layout,
                 first_set,
@@ -207,9 +207,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_descriptor_buffer_offsets_ext`] checks at run time: `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_descriptor_buffer_offsets_ext`] checks at run time: `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_descriptor_buffer_offsets_ext_unchecked(
+    pub unsafe fn set_descriptor_buffer_offsets_ext_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,

@@ -20,19 +20,19 @@ The rules are on [`vkCmdSetDiscardRectangleEXT`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDiscardRectangleEXT")]
     #[inline]
-    pub fn cmd_set_discard_rectangle_ext(
+    pub fn set_discard_rectangle_ext(
         &mut self,
         first_discard_rectangle: u32,
         discard_rectangles: &[vk::Rect2D],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_discard_rectangle_ext(discard_rectangles);
+            let r = self.validate_set_discard_rectangle_ext(discard_rectangles);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_discard_rectangle_ext_unchecked(
+            self.set_discard_rectangle_ext_unchecked(
                 first_discard_rectangle,
                 discard_rectangles,
             )
@@ -42,9 +42,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_discard_rectangle_ext`] checks at run time: `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_discard_rectangle_ext`] checks at run time: `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_discard_rectangle_ext_unchecked(
+    pub unsafe fn set_discard_rectangle_ext_unchecked(
         &mut self,
         first_discard_rectangle: u32,
         discard_rectangles: &[vk::Rect2D],

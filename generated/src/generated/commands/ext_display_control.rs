@@ -125,25 +125,25 @@ The rules are on [`vkRegisterDeviceEventEXT`'s reference page](https://registry.
 - `VUID-vkRegisterDeviceEventEXT-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[doc(alias = "vkRegisterDeviceEventEXT")]
     #[inline]
-    pub fn register_device_event_ext<'a>(
+    pub fn register_event_ext<'a>(
         &self,
         device_event_info: &DeviceEventInfoEXT<'a>,
     ) -> Result<Fence> {
         {
-            let r = self.validate_register_device_event_ext(device_event_info);
+            let r = self.validate_register_event_ext(device_event_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.register_device_event_ext_unchecked(device_event_info) }
+        unsafe { self.register_event_ext_unchecked(device_event_info) }
     }
     /**`vkRegisterDeviceEventEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::register_device_event_ext`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::register_event_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn register_device_event_ext_unchecked<'a>(
+    pub unsafe fn register_event_ext_unchecked<'a>(
         &self,
         device_event_info: &DeviceEventInfoEXT<'a>,
     ) -> Result<Fence> {

@@ -26,31 +26,28 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2EXT`'s reference page]
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2EXT")]
     #[inline]
-    pub unsafe fn get_physical_device_surface_capabilities2_ext<'a>(
+    pub unsafe fn get_surface_capabilities2_ext<'a>(
         &self,
         surface: &SurfaceKHR,
         surface_capabilities: &mut SurfaceCapabilities2EXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_get_physical_device_surface_capabilities2_ext(surface);
+            let r = self.validate_get_surface_capabilities2_ext(surface);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_surface_capabilities2_ext_unchecked(
-                surface,
-                surface_capabilities,
-            )
+            self.get_surface_capabilities2_ext_unchecked(surface, surface_capabilities)
         }
     }
     /**`vkGetPhysicalDeviceSurfaceCapabilities2EXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_capabilities2_ext`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_surface_capabilities2_ext`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_capabilities2_ext_unchecked<'a>(
+    pub unsafe fn get_surface_capabilities2_ext_unchecked<'a>(
         &self,
         surface: &SurfaceKHR,
         surface_capabilities: &mut SurfaceCapabilities2EXT<'a>,

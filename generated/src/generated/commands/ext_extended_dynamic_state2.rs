@@ -19,22 +19,22 @@ The rules are on [`vkCmdSetLogicOpEXT`'s reference page](https://registry.khrono
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetLogicOpEXT")]
     #[inline]
-    pub fn cmd_set_logic_op_ext(&mut self, logic_op: vk::LogicOp) -> Result<()> {
+    pub fn set_logic_op_ext(&mut self, logic_op: vk::LogicOp) -> Result<()> {
         {
-            let r = self.validate_cmd_set_logic_op_ext(logic_op);
+            let r = self.validate_set_logic_op_ext(logic_op);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_logic_op_ext_unchecked(logic_op) }
+        unsafe { self.set_logic_op_ext_unchecked(logic_op) }
     }
     /**`vkCmdSetLogicOpEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_logic_op_ext`] checks at run time: `VUID-vkCmdSetLogicOpEXT-logicOp-parameter`, `VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_logic_op_ext`] checks at run time: `VUID-vkCmdSetLogicOpEXT-logicOp-parameter`, `VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_logic_op_ext_unchecked(
+    pub unsafe fn set_logic_op_ext_unchecked(
         &mut self,
         logic_op: vk::LogicOp,
     ) -> Result<()> {
@@ -66,25 +66,25 @@ The rules are on [`vkCmdSetPatchControlPointsEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetPatchControlPointsEXT")]
     #[inline]
-    pub fn cmd_set_patch_control_points_ext(
+    pub fn set_patch_control_points_ext(
         &mut self,
         patch_control_points: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_patch_control_points_ext();
+            let r = self.validate_set_patch_control_points_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_patch_control_points_ext_unchecked(patch_control_points) }
+        unsafe { self.set_patch_control_points_ext_unchecked(patch_control_points) }
     }
     /**`vkCmdSetPatchControlPointsEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_patch_control_points_ext`] checks at run time: `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_patch_control_points_ext`] checks at run time: `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_patch_control_points_ext_unchecked(
+    pub unsafe fn set_patch_control_points_ext_unchecked(
         &mut self,
         patch_control_points: u32,
     ) -> Result<()> {

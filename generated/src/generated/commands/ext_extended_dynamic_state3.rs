@@ -18,27 +18,27 @@ The rules are on [`vkCmdSetAlphaToCoverageEnableEXT`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetAlphaToCoverageEnableEXT")]
     #[inline]
-    pub fn cmd_set_alpha_to_coverage_enable_ext(
+    pub fn set_alpha_to_coverage_enable_ext(
         &mut self,
         alpha_to_coverage_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_alpha_to_coverage_enable_ext();
+            let r = self.validate_set_alpha_to_coverage_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_alpha_to_coverage_enable_ext_unchecked(alpha_to_coverage_enable)
+            self.set_alpha_to_coverage_enable_ext_unchecked(alpha_to_coverage_enable)
         }
     }
     /**`vkCmdSetAlphaToCoverageEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_alpha_to_coverage_enable_ext`] checks at run time: `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_alpha_to_coverage_enable_ext`] checks at run time: `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_alpha_to_coverage_enable_ext_unchecked(
+    pub unsafe fn set_alpha_to_coverage_enable_ext_unchecked(
         &mut self,
         alpha_to_coverage_enable: bool,
     ) -> Result<()> {
@@ -71,25 +71,25 @@ The rules are on [`vkCmdSetAlphaToOneEnableEXT`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetAlphaToOneEnableEXT")]
     #[inline]
-    pub fn cmd_set_alpha_to_one_enable_ext(
+    pub fn set_alpha_to_one_enable_ext(
         &mut self,
         alpha_to_one_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_alpha_to_one_enable_ext();
+            let r = self.validate_set_alpha_to_one_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_alpha_to_one_enable_ext_unchecked(alpha_to_one_enable) }
+        unsafe { self.set_alpha_to_one_enable_ext_unchecked(alpha_to_one_enable) }
     }
     /**`vkCmdSetAlphaToOneEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_alpha_to_one_enable_ext`] checks at run time: `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_alpha_to_one_enable_ext`] checks at run time: `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_alpha_to_one_enable_ext_unchecked(
+    pub unsafe fn set_alpha_to_one_enable_ext_unchecked(
         &mut self,
         alpha_to_one_enable: bool,
     ) -> Result<()> {
@@ -124,19 +124,19 @@ The rules are on [`vkCmdSetColorBlendAdvancedEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetColorBlendAdvancedEXT")]
     #[inline]
-    pub fn cmd_set_color_blend_advanced_ext(
+    pub fn set_color_blend_advanced_ext(
         &mut self,
         first_attachment: u32,
         color_blend_advanced: &[vk::ColorBlendAdvancedEXT],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_color_blend_advanced_ext(color_blend_advanced);
+            let r = self.validate_set_color_blend_advanced_ext(color_blend_advanced);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_color_blend_advanced_ext_unchecked(
+            self.set_color_blend_advanced_ext_unchecked(
                 first_attachment,
                 color_blend_advanced,
             )
@@ -146,9 +146,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_color_blend_advanced_ext`] checks at run time: `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_color_blend_advanced_ext`] checks at run time: `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_color_blend_advanced_ext_unchecked(
+    pub unsafe fn set_color_blend_advanced_ext_unchecked(
         &mut self,
         first_attachment: u32,
         color_blend_advanced: &[vk::ColorBlendAdvancedEXT],
@@ -190,19 +190,19 @@ The rules are on [`vkCmdSetColorBlendEnableEXT`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetColorBlendEnableEXT")]
     #[inline]
-    pub fn cmd_set_color_blend_enable_ext(
+    pub fn set_color_blend_enable_ext(
         &mut self,
         first_attachment: u32,
         color_blend_enables: &[vk::Bool32],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_color_blend_enable_ext(color_blend_enables);
+            let r = self.validate_set_color_blend_enable_ext(color_blend_enables);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_color_blend_enable_ext_unchecked(
+            self.set_color_blend_enable_ext_unchecked(
                 first_attachment,
                 color_blend_enables,
             )
@@ -212,9 +212,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_color_blend_enable_ext`] checks at run time: `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_color_blend_enable_ext`] checks at run time: `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_color_blend_enable_ext_unchecked(
+    pub unsafe fn set_color_blend_enable_ext_unchecked(
         &mut self,
         first_attachment: u32,
         color_blend_enables: &[vk::Bool32],
@@ -256,20 +256,19 @@ The rules are on [`vkCmdSetColorBlendEquationEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetColorBlendEquationEXT")]
     #[inline]
-    pub fn cmd_set_color_blend_equation_ext(
+    pub fn set_color_blend_equation_ext(
         &mut self,
         first_attachment: u32,
         color_blend_equations: &[vk::ColorBlendEquationEXT],
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_set_color_blend_equation_ext(color_blend_equations);
+            let r = self.validate_set_color_blend_equation_ext(color_blend_equations);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_color_blend_equation_ext_unchecked(
+            self.set_color_blend_equation_ext_unchecked(
                 first_attachment,
                 color_blend_equations,
             )
@@ -279,9 +278,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_color_blend_equation_ext`] checks at run time: `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_color_blend_equation_ext`] checks at run time: `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_color_blend_equation_ext_unchecked(
+    pub unsafe fn set_color_blend_equation_ext_unchecked(
         &mut self,
         first_attachment: u32,
         color_blend_equations: &[vk::ColorBlendEquationEXT],
@@ -323,31 +322,28 @@ The rules are on [`vkCmdSetColorWriteMaskEXT`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetColorWriteMaskEXT")]
     #[inline]
-    pub fn cmd_set_color_write_mask_ext(
+    pub fn set_color_write_mask_ext(
         &mut self,
         first_attachment: u32,
         color_write_masks: &[vk::ColorComponentFlags],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_color_write_mask_ext(color_write_masks);
+            let r = self.validate_set_color_write_mask_ext(color_write_masks);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_color_write_mask_ext_unchecked(
-                first_attachment,
-                color_write_masks,
-            )
+            self.set_color_write_mask_ext_unchecked(first_attachment, color_write_masks)
         }
     }
     /**`vkCmdSetColorWriteMaskEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_color_write_mask_ext`] checks at run time: `VUID-vkCmdSetColorWriteMaskEXT-pColorWriteMasks-parameter`, `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_color_write_mask_ext`] checks at run time: `VUID-vkCmdSetColorWriteMaskEXT-pColorWriteMasks-parameter`, `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_color_write_mask_ext_unchecked(
+    pub unsafe fn set_color_write_mask_ext_unchecked(
         &mut self,
         first_attachment: u32,
         color_write_masks: &[vk::ColorComponentFlags],
@@ -388,13 +384,13 @@ The rules are on [`vkCmdSetConservativeRasterizationModeEXT`'s reference page](h
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetConservativeRasterizationModeEXT")]
     #[inline]
-    pub fn cmd_set_conservative_rasterization_mode_ext(
+    pub fn set_conservative_rasterization_mode_ext(
         &mut self,
         conservative_rasterization_mode: vk::ConservativeRasterizationModeEXT,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_conservative_rasterization_mode_ext(
+                .validate_set_conservative_rasterization_mode_ext(
                     conservative_rasterization_mode,
                 );
             r?;
@@ -402,7 +398,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_conservative_rasterization_mode_ext_unchecked(
+            self.set_conservative_rasterization_mode_ext_unchecked(
                 conservative_rasterization_mode,
             )
         }
@@ -411,9 +407,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_conservative_rasterization_mode_ext`] checks at run time: `VUID-vkCmdSetConservativeRasterizationModeEXT-conservativeRasterizationMode-parameter`, `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_conservative_rasterization_mode_ext`] checks at run time: `VUID-vkCmdSetConservativeRasterizationModeEXT-conservativeRasterizationMode-parameter`, `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_conservative_rasterization_mode_ext_unchecked(
+    pub unsafe fn set_conservative_rasterization_mode_ext_unchecked(
         &mut self,
         conservative_rasterization_mode: vk::ConservativeRasterizationModeEXT,
     ) -> Result<()> {
@@ -446,28 +442,28 @@ The rules are on [`vkCmdSetCoverageModulationModeNV`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageModulationModeNV")]
     #[inline]
-    pub fn cmd_set_coverage_modulation_mode_nv(
+    pub fn set_coverage_modulation_mode_nv(
         &mut self,
         coverage_modulation_mode: vk::CoverageModulationModeNV,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_coverage_modulation_mode_nv(coverage_modulation_mode);
+                .validate_set_coverage_modulation_mode_nv(coverage_modulation_mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coverage_modulation_mode_nv_unchecked(coverage_modulation_mode)
+            self.set_coverage_modulation_mode_nv_unchecked(coverage_modulation_mode)
         }
     }
     /**`vkCmdSetCoverageModulationModeNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_modulation_mode_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationModeNV-coverageModulationMode-parameter`, `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_modulation_mode_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationModeNV-coverageModulationMode-parameter`, `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_modulation_mode_nv_unchecked(
+    pub unsafe fn set_coverage_modulation_mode_nv_unchecked(
         &mut self,
         coverage_modulation_mode: vk::CoverageModulationModeNV,
     ) -> Result<()> {
@@ -499,18 +495,18 @@ The rules are on [`vkCmdSetCoverageModulationTableEnableNV`'s reference page](ht
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageModulationTableEnableNV")]
     #[inline]
-    pub fn cmd_set_coverage_modulation_table_enable_nv(
+    pub fn set_coverage_modulation_table_enable_nv(
         &mut self,
         coverage_modulation_table_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_coverage_modulation_table_enable_nv();
+            let r = self.validate_set_coverage_modulation_table_enable_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coverage_modulation_table_enable_nv_unchecked(
+            self.set_coverage_modulation_table_enable_nv_unchecked(
                 coverage_modulation_table_enable,
             )
         }
@@ -519,9 +515,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_modulation_table_enable_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_modulation_table_enable_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_modulation_table_enable_nv_unchecked(
+    pub unsafe fn set_coverage_modulation_table_enable_nv_unchecked(
         &mut self,
         coverage_modulation_table_enable: bool,
     ) -> Result<()> {
@@ -558,32 +554,28 @@ The rules are on [`vkCmdSetCoverageModulationTableNV`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageModulationTableNV")]
     #[inline]
-    pub fn cmd_set_coverage_modulation_table_nv(
+    pub fn set_coverage_modulation_table_nv(
         &mut self,
         coverage_modulation_table: &[f32],
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_coverage_modulation_table_nv(
-                    coverage_modulation_table,
-                );
+                .validate_set_coverage_modulation_table_nv(coverage_modulation_table);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coverage_modulation_table_nv_unchecked(
-                coverage_modulation_table,
-            )
+            self.set_coverage_modulation_table_nv_unchecked(coverage_modulation_table)
         }
     }
     /**`vkCmdSetCoverageModulationTableNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_modulation_table_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool`, `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_modulation_table_nv`] checks at run time: `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool`, `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_modulation_table_nv_unchecked(
+    pub unsafe fn set_coverage_modulation_table_nv_unchecked(
         &mut self,
         coverage_modulation_table: &[f32],
     ) -> Result<()> {
@@ -622,28 +614,26 @@ The rules are on [`vkCmdSetCoverageReductionModeNV`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageReductionModeNV")]
     #[inline]
-    pub fn cmd_set_coverage_reduction_mode_nv(
+    pub fn set_coverage_reduction_mode_nv(
         &mut self,
         coverage_reduction_mode: vk::CoverageReductionModeNV,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_coverage_reduction_mode_nv(coverage_reduction_mode);
+                .validate_set_coverage_reduction_mode_nv(coverage_reduction_mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_coverage_reduction_mode_nv_unchecked(coverage_reduction_mode)
-        }
+        unsafe { self.set_coverage_reduction_mode_nv_unchecked(coverage_reduction_mode) }
     }
     /**`vkCmdSetCoverageReductionModeNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_reduction_mode_nv`] checks at run time: `VUID-vkCmdSetCoverageReductionModeNV-coverageReductionMode-parameter`, `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_reduction_mode_nv`] checks at run time: `VUID-vkCmdSetCoverageReductionModeNV-coverageReductionMode-parameter`, `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_reduction_mode_nv_unchecked(
+    pub unsafe fn set_coverage_reduction_mode_nv_unchecked(
         &mut self,
         coverage_reduction_mode: vk::CoverageReductionModeNV,
     ) -> Result<()> {
@@ -675,27 +665,27 @@ The rules are on [`vkCmdSetCoverageToColorEnableNV`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageToColorEnableNV")]
     #[inline]
-    pub fn cmd_set_coverage_to_color_enable_nv(
+    pub fn set_coverage_to_color_enable_nv(
         &mut self,
         coverage_to_color_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_coverage_to_color_enable_nv();
+            let r = self.validate_set_coverage_to_color_enable_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coverage_to_color_enable_nv_unchecked(coverage_to_color_enable)
+            self.set_coverage_to_color_enable_nv_unchecked(coverage_to_color_enable)
         }
     }
     /**`vkCmdSetCoverageToColorEnableNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_to_color_enable_nv`] checks at run time: `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_to_color_enable_nv`] checks at run time: `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_to_color_enable_nv_unchecked(
+    pub unsafe fn set_coverage_to_color_enable_nv_unchecked(
         &mut self,
         coverage_to_color_enable: bool,
     ) -> Result<()> {
@@ -728,29 +718,27 @@ The rules are on [`vkCmdSetCoverageToColorLocationNV`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoverageToColorLocationNV")]
     #[inline]
-    pub fn cmd_set_coverage_to_color_location_nv(
+    pub fn set_coverage_to_color_location_nv(
         &mut self,
         coverage_to_color_location: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_coverage_to_color_location_nv();
+            let r = self.validate_set_coverage_to_color_location_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coverage_to_color_location_nv_unchecked(
-                coverage_to_color_location,
-            )
+            self.set_coverage_to_color_location_nv_unchecked(coverage_to_color_location)
         }
     }
     /**`vkCmdSetCoverageToColorLocationNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coverage_to_color_location_nv`] checks at run time: `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coverage_to_color_location_nv`] checks at run time: `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coverage_to_color_location_nv_unchecked(
+    pub unsafe fn set_coverage_to_color_location_nv_unchecked(
         &mut self,
         coverage_to_color_location: u32,
     ) -> Result<()> {
@@ -782,25 +770,25 @@ The rules are on [`vkCmdSetDepthClampEnableEXT`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthClampEnableEXT")]
     #[inline]
-    pub fn cmd_set_depth_clamp_enable_ext(
+    pub fn set_depth_clamp_enable_ext(
         &mut self,
         depth_clamp_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_depth_clamp_enable_ext();
+            let r = self.validate_set_depth_clamp_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_clamp_enable_ext_unchecked(depth_clamp_enable) }
+        unsafe { self.set_depth_clamp_enable_ext_unchecked(depth_clamp_enable) }
     }
     /**`vkCmdSetDepthClampEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_clamp_enable_ext`] checks at run time: `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_clamp_enable_ext`] checks at run time: `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_clamp_enable_ext_unchecked(
+    pub unsafe fn set_depth_clamp_enable_ext_unchecked(
         &mut self,
         depth_clamp_enable: bool,
     ) -> Result<()> {
@@ -833,25 +821,22 @@ The rules are on [`vkCmdSetDepthClipEnableEXT`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthClipEnableEXT")]
     #[inline]
-    pub fn cmd_set_depth_clip_enable_ext(
-        &mut self,
-        depth_clip_enable: bool,
-    ) -> Result<()> {
+    pub fn set_depth_clip_enable_ext(&mut self, depth_clip_enable: bool) -> Result<()> {
         {
-            let r = self.validate_cmd_set_depth_clip_enable_ext();
+            let r = self.validate_set_depth_clip_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_clip_enable_ext_unchecked(depth_clip_enable) }
+        unsafe { self.set_depth_clip_enable_ext_unchecked(depth_clip_enable) }
     }
     /**`vkCmdSetDepthClipEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_clip_enable_ext`] checks at run time: `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_clip_enable_ext`] checks at run time: `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_clip_enable_ext_unchecked(
+    pub unsafe fn set_depth_clip_enable_ext_unchecked(
         &mut self,
         depth_clip_enable: bool,
     ) -> Result<()> {
@@ -884,29 +869,27 @@ The rules are on [`vkCmdSetDepthClipNegativeOneToOneEXT`'s reference page](https
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthClipNegativeOneToOneEXT")]
     #[inline]
-    pub fn cmd_set_depth_clip_negative_one_to_one_ext(
+    pub fn set_depth_clip_negative_one_to_one_ext(
         &mut self,
         negative_one_to_one: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_depth_clip_negative_one_to_one_ext();
+            let r = self.validate_set_depth_clip_negative_one_to_one_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_depth_clip_negative_one_to_one_ext_unchecked(
-                negative_one_to_one,
-            )
+            self.set_depth_clip_negative_one_to_one_ext_unchecked(negative_one_to_one)
         }
     }
     /**`vkCmdSetDepthClipNegativeOneToOneEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_clip_negative_one_to_one_ext`] checks at run time: `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_clip_negative_one_to_one_ext`] checks at run time: `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_clip_negative_one_to_one_ext_unchecked(
+    pub unsafe fn set_depth_clip_negative_one_to_one_ext_unchecked(
         &mut self,
         negative_one_to_one: bool,
     ) -> Result<()> {
@@ -939,18 +922,18 @@ The rules are on [`vkCmdSetExtraPrimitiveOverestimationSizeEXT`'s reference page
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetExtraPrimitiveOverestimationSizeEXT")]
     #[inline]
-    pub fn cmd_set_extra_primitive_overestimation_size_ext(
+    pub fn set_extra_primitive_overestimation_size_ext(
         &mut self,
         extra_primitive_overestimation_size: f32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_extra_primitive_overestimation_size_ext();
+            let r = self.validate_set_extra_primitive_overestimation_size_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_extra_primitive_overestimation_size_ext_unchecked(
+            self.set_extra_primitive_overestimation_size_ext_unchecked(
                 extra_primitive_overestimation_size,
             )
         }
@@ -959,9 +942,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_extra_primitive_overestimation_size_ext`] checks at run time: `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_extra_primitive_overestimation_size_ext`] checks at run time: `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_extra_primitive_overestimation_size_ext_unchecked(
+    pub unsafe fn set_extra_primitive_overestimation_size_ext_unchecked(
         &mut self,
         extra_primitive_overestimation_size: f32,
     ) -> Result<()> {
@@ -994,28 +977,28 @@ The rules are on [`vkCmdSetLineRasterizationModeEXT`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetLineRasterizationModeEXT")]
     #[inline]
-    pub fn cmd_set_line_rasterization_mode_ext(
+    pub fn set_line_rasterization_mode_ext(
         &mut self,
         line_rasterization_mode: vk::LineRasterizationModeEXT,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_line_rasterization_mode_ext(line_rasterization_mode);
+                .validate_set_line_rasterization_mode_ext(line_rasterization_mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_line_rasterization_mode_ext_unchecked(line_rasterization_mode)
+            self.set_line_rasterization_mode_ext_unchecked(line_rasterization_mode)
         }
     }
     /**`vkCmdSetLineRasterizationModeEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_line_rasterization_mode_ext`] checks at run time: `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-parameter`, `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_line_rasterization_mode_ext`] checks at run time: `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-parameter`, `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_line_rasterization_mode_ext_unchecked(
+    pub unsafe fn set_line_rasterization_mode_ext_unchecked(
         &mut self,
         line_rasterization_mode: vk::LineRasterizationModeEXT,
     ) -> Result<()> {
@@ -1047,25 +1030,25 @@ The rules are on [`vkCmdSetLineStippleEnableEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetLineStippleEnableEXT")]
     #[inline]
-    pub fn cmd_set_line_stipple_enable_ext(
+    pub fn set_line_stipple_enable_ext(
         &mut self,
         stippled_line_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_line_stipple_enable_ext();
+            let r = self.validate_set_line_stipple_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_line_stipple_enable_ext_unchecked(stippled_line_enable) }
+        unsafe { self.set_line_stipple_enable_ext_unchecked(stippled_line_enable) }
     }
     /**`vkCmdSetLineStippleEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_line_stipple_enable_ext`] checks at run time: `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_line_stipple_enable_ext`] checks at run time: `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_line_stipple_enable_ext_unchecked(
+    pub unsafe fn set_line_stipple_enable_ext_unchecked(
         &mut self,
         stippled_line_enable: bool,
     ) -> Result<()> {
@@ -1098,22 +1081,22 @@ The rules are on [`vkCmdSetLogicOpEnableEXT`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetLogicOpEnableEXT")]
     #[inline]
-    pub fn cmd_set_logic_op_enable_ext(&mut self, logic_op_enable: bool) -> Result<()> {
+    pub fn set_logic_op_enable_ext(&mut self, logic_op_enable: bool) -> Result<()> {
         {
-            let r = self.validate_cmd_set_logic_op_enable_ext();
+            let r = self.validate_set_logic_op_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_logic_op_enable_ext_unchecked(logic_op_enable) }
+        unsafe { self.set_logic_op_enable_ext_unchecked(logic_op_enable) }
     }
     /**`vkCmdSetLogicOpEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_logic_op_enable_ext`] checks at run time: `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_logic_op_enable_ext`] checks at run time: `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_logic_op_enable_ext_unchecked(
+    pub unsafe fn set_logic_op_enable_ext_unchecked(
         &mut self,
         logic_op_enable: bool,
     ) -> Result<()> {
@@ -1147,25 +1130,22 @@ The rules are on [`vkCmdSetPolygonModeEXT`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetPolygonModeEXT")]
     #[inline]
-    pub fn cmd_set_polygon_mode_ext(
-        &mut self,
-        polygon_mode: vk::PolygonMode,
-    ) -> Result<()> {
+    pub fn set_polygon_mode_ext(&mut self, polygon_mode: vk::PolygonMode) -> Result<()> {
         {
-            let r = self.validate_cmd_set_polygon_mode_ext(polygon_mode);
+            let r = self.validate_set_polygon_mode_ext(polygon_mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_polygon_mode_ext_unchecked(polygon_mode) }
+        unsafe { self.set_polygon_mode_ext_unchecked(polygon_mode) }
     }
     /**`vkCmdSetPolygonModeEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_polygon_mode_ext`] checks at run time: `VUID-vkCmdSetPolygonModeEXT-polygonMode-parameter`, `VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_polygon_mode_ext`] checks at run time: `VUID-vkCmdSetPolygonModeEXT-polygonMode-parameter`, `VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_polygon_mode_ext_unchecked(
+    pub unsafe fn set_polygon_mode_ext_unchecked(
         &mut self,
         polygon_mode: vk::PolygonMode,
     ) -> Result<()> {
@@ -1198,28 +1178,25 @@ The rules are on [`vkCmdSetProvokingVertexModeEXT`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetProvokingVertexModeEXT")]
     #[inline]
-    pub fn cmd_set_provoking_vertex_mode_ext(
+    pub fn set_provoking_vertex_mode_ext(
         &mut self,
         provoking_vertex_mode: vk::ProvokingVertexModeEXT,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_set_provoking_vertex_mode_ext(provoking_vertex_mode);
+            let r = self.validate_set_provoking_vertex_mode_ext(provoking_vertex_mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_provoking_vertex_mode_ext_unchecked(provoking_vertex_mode)
-        }
+        unsafe { self.set_provoking_vertex_mode_ext_unchecked(provoking_vertex_mode) }
     }
     /**`vkCmdSetProvokingVertexModeEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_provoking_vertex_mode_ext`] checks at run time: `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-parameter`, `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_provoking_vertex_mode_ext`] checks at run time: `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-parameter`, `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_provoking_vertex_mode_ext_unchecked(
+    pub unsafe fn set_provoking_vertex_mode_ext_unchecked(
         &mut self,
         provoking_vertex_mode: vk::ProvokingVertexModeEXT,
     ) -> Result<()> {
@@ -1252,28 +1229,25 @@ The rules are on [`vkCmdSetRasterizationSamplesEXT`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetRasterizationSamplesEXT")]
     #[inline]
-    pub fn cmd_set_rasterization_samples_ext(
+    pub fn set_rasterization_samples_ext(
         &mut self,
         rasterization_samples: vk::SampleCountFlags,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_set_rasterization_samples_ext(rasterization_samples);
+            let r = self.validate_set_rasterization_samples_ext(rasterization_samples);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_rasterization_samples_ext_unchecked(rasterization_samples)
-        }
+        unsafe { self.set_rasterization_samples_ext_unchecked(rasterization_samples) }
     }
     /**`vkCmdSetRasterizationSamplesEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_rasterization_samples_ext`] checks at run time: `VUID-vkCmdSetRasterizationSamplesEXT-rasterizationSamples-parameter`, `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_rasterization_samples_ext`] checks at run time: `VUID-vkCmdSetRasterizationSamplesEXT-rasterizationSamples-parameter`, `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_rasterization_samples_ext_unchecked(
+    pub unsafe fn set_rasterization_samples_ext_unchecked(
         &mut self,
         rasterization_samples: vk::SampleCountFlags,
     ) -> Result<()> {
@@ -1305,25 +1279,25 @@ The rules are on [`vkCmdSetRasterizationStreamEXT`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetRasterizationStreamEXT")]
     #[inline]
-    pub fn cmd_set_rasterization_stream_ext(
+    pub fn set_rasterization_stream_ext(
         &mut self,
         rasterization_stream: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_rasterization_stream_ext();
+            let r = self.validate_set_rasterization_stream_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_rasterization_stream_ext_unchecked(rasterization_stream) }
+        unsafe { self.set_rasterization_stream_ext_unchecked(rasterization_stream) }
     }
     /**`vkCmdSetRasterizationStreamEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_rasterization_stream_ext`] checks at run time: `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_rasterization_stream_ext`] checks at run time: `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_rasterization_stream_ext_unchecked(
+    pub unsafe fn set_rasterization_stream_ext_unchecked(
         &mut self,
         rasterization_stream: u32,
     ) -> Result<()> {
@@ -1355,18 +1329,18 @@ The rules are on [`vkCmdSetRepresentativeFragmentTestEnableNV`'s reference page]
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetRepresentativeFragmentTestEnableNV")]
     #[inline]
-    pub fn cmd_set_representative_fragment_test_enable_nv(
+    pub fn set_representative_fragment_test_enable_nv(
         &mut self,
         representative_fragment_test_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_representative_fragment_test_enable_nv();
+            let r = self.validate_set_representative_fragment_test_enable_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_representative_fragment_test_enable_nv_unchecked(
+            self.set_representative_fragment_test_enable_nv_unchecked(
                 representative_fragment_test_enable,
             )
         }
@@ -1375,9 +1349,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_representative_fragment_test_enable_nv`] checks at run time: `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_representative_fragment_test_enable_nv`] checks at run time: `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_representative_fragment_test_enable_nv_unchecked(
+    pub unsafe fn set_representative_fragment_test_enable_nv_unchecked(
         &mut self,
         representative_fragment_test_enable: bool,
     ) -> Result<()> {
@@ -1412,27 +1386,27 @@ The rules are on [`vkCmdSetSampleLocationsEnableEXT`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetSampleLocationsEnableEXT")]
     #[inline]
-    pub fn cmd_set_sample_locations_enable_ext(
+    pub fn set_sample_locations_enable_ext(
         &mut self,
         sample_locations_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_sample_locations_enable_ext();
+            let r = self.validate_set_sample_locations_enable_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_sample_locations_enable_ext_unchecked(sample_locations_enable)
+            self.set_sample_locations_enable_ext_unchecked(sample_locations_enable)
         }
     }
     /**`vkCmdSetSampleLocationsEnableEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_sample_locations_enable_ext`] checks at run time: `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_sample_locations_enable_ext`] checks at run time: `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_sample_locations_enable_ext_unchecked(
+    pub unsafe fn set_sample_locations_enable_ext_unchecked(
         &mut self,
         sample_locations_enable: bool,
     ) -> Result<()> {
@@ -1473,26 +1447,26 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
     #[doc(alias = "vkCmdSetSampleMaskEXT")]
     #[inline]
-    pub unsafe fn cmd_set_sample_mask_ext(
+    pub unsafe fn set_sample_mask_ext(
         &mut self,
         samples: vk::SampleCountFlags,
         sample_mask: *const vk::SampleMask,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_sample_mask_ext(samples);
+            let r = self.validate_set_sample_mask_ext(samples);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_sample_mask_ext_unchecked(samples, sample_mask) }
+        unsafe { self.set_sample_mask_ext_unchecked(samples, sample_mask) }
     }
     /**`vkCmdSetSampleMaskEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_sample_mask_ext`] checks at run time: `VUID-vkCmdSetSampleMaskEXT-samples-parameter`, `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool`, and those of the structs it takes. `sample_mask` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdSetSampleMaskEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_sample_mask_ext`] checks at run time: `VUID-vkCmdSetSampleMaskEXT-samples-parameter`, `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool`, and those of the structs it takes. `sample_mask` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdSetSampleMaskEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_sample_mask_ext_unchecked(
+    pub unsafe fn set_sample_mask_ext_unchecked(
         &mut self,
         samples: vk::SampleCountFlags,
         sample_mask: *const vk::SampleMask,
@@ -1525,29 +1499,27 @@ The rules are on [`vkCmdSetShadingRateImageEnableNV`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetShadingRateImageEnableNV")]
     #[inline]
-    pub fn cmd_set_shading_rate_image_enable_nv(
+    pub fn set_shading_rate_image_enable_nv(
         &mut self,
         shading_rate_image_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_shading_rate_image_enable_nv();
+            let r = self.validate_set_shading_rate_image_enable_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_shading_rate_image_enable_nv_unchecked(
-                shading_rate_image_enable,
-            )
+            self.set_shading_rate_image_enable_nv_unchecked(shading_rate_image_enable)
         }
     }
     /**`vkCmdSetShadingRateImageEnableNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_shading_rate_image_enable_nv`] checks at run time: `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_shading_rate_image_enable_nv`] checks at run time: `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_shading_rate_image_enable_nv_unchecked(
+    pub unsafe fn set_shading_rate_image_enable_nv_unchecked(
         &mut self,
         shading_rate_image_enable: bool,
     ) -> Result<()> {
@@ -1581,25 +1553,25 @@ The rules are on [`vkCmdSetTessellationDomainOriginEXT`'s reference page](https:
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetTessellationDomainOriginEXT")]
     #[inline]
-    pub fn cmd_set_tessellation_domain_origin_ext(
+    pub fn set_tessellation_domain_origin_ext(
         &mut self,
         domain_origin: vk::TessellationDomainOrigin,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_tessellation_domain_origin_ext(domain_origin);
+            let r = self.validate_set_tessellation_domain_origin_ext(domain_origin);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_tessellation_domain_origin_ext_unchecked(domain_origin) }
+        unsafe { self.set_tessellation_domain_origin_ext_unchecked(domain_origin) }
     }
     /**`vkCmdSetTessellationDomainOriginEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_tessellation_domain_origin_ext`] checks at run time: `VUID-vkCmdSetTessellationDomainOriginEXT-domainOrigin-parameter`, `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_tessellation_domain_origin_ext`] checks at run time: `VUID-vkCmdSetTessellationDomainOriginEXT-domainOrigin-parameter`, `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_tessellation_domain_origin_ext_unchecked(
+    pub unsafe fn set_tessellation_domain_origin_ext_unchecked(
         &mut self,
         domain_origin: vk::TessellationDomainOrigin,
     ) -> Result<()> {
@@ -1633,28 +1605,28 @@ The rules are on [`vkCmdSetViewportSwizzleNV`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewportSwizzleNV")]
     #[inline]
-    pub fn cmd_set_viewport_swizzle_nv(
+    pub fn set_viewport_swizzle_nv(
         &mut self,
         first_viewport: u32,
         viewport_swizzles: &[vk::ViewportSwizzleNV],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_viewport_swizzle_nv(viewport_swizzles);
+            let r = self.validate_set_viewport_swizzle_nv(viewport_swizzles);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_viewport_swizzle_nv_unchecked(first_viewport, viewport_swizzles)
+            self.set_viewport_swizzle_nv_unchecked(first_viewport, viewport_swizzles)
         }
     }
     /**`vkCmdSetViewportSwizzleNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_swizzle_nv`] checks at run time: `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport_swizzle_nv`] checks at run time: `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_swizzle_nv_unchecked(
+    pub unsafe fn set_viewport_swizzle_nv_unchecked(
         &mut self,
         first_viewport: u32,
         viewport_swizzles: &[vk::ViewportSwizzleNV],
@@ -1694,29 +1666,27 @@ The rules are on [`vkCmdSetViewportWScalingEnableNV`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewportWScalingEnableNV")]
     #[inline]
-    pub fn cmd_set_viewport_w_scaling_enable_nv(
+    pub fn set_viewport_w_scaling_enable_nv(
         &mut self,
         viewport_w_scaling_enable: bool,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_viewport_w_scaling_enable_nv();
+            let r = self.validate_set_viewport_w_scaling_enable_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_viewport_w_scaling_enable_nv_unchecked(
-                viewport_w_scaling_enable,
-            )
+            self.set_viewport_w_scaling_enable_nv_unchecked(viewport_w_scaling_enable)
         }
     }
     /**`vkCmdSetViewportWScalingEnableNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_w_scaling_enable_nv`] checks at run time: `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport_w_scaling_enable_nv`] checks at run time: `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_w_scaling_enable_nv_unchecked(
+    pub unsafe fn set_viewport_w_scaling_enable_nv_unchecked(
         &mut self,
         viewport_w_scaling_enable: bool,
     ) -> Result<()> {

@@ -65,28 +65,25 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModes2EXT`'s reference page](ht
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetDeviceGroupSurfacePresentModes2EXT")]
     #[inline]
-    pub fn get_device_group_surface_present_modes2_ext<'a>(
+    pub fn get_group_surface_present_modes2_ext<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
         {
-            let r = self
-                .validate_get_device_group_surface_present_modes2_ext(surface_info);
+            let r = self.validate_get_group_surface_present_modes2_ext(surface_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_device_group_surface_present_modes2_ext_unchecked(surface_info)
-        }
+        unsafe { self.get_group_surface_present_modes2_ext_unchecked(surface_info) }
     }
     /**`vkGetDeviceGroupSurfacePresentModes2EXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_group_surface_present_modes2_ext`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_group_surface_present_modes2_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_device_group_surface_present_modes2_ext_unchecked<'a>(
+    pub unsafe fn get_group_surface_present_modes2_ext_unchecked<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -175,28 +172,25 @@ The rules are on [`vkGetPhysicalDeviceSurfacePresentModes2EXT`'s reference page]
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModes2EXT")]
     #[inline]
-    pub fn get_physical_device_surface_present_modes2_ext<'a>(
+    pub fn get_surface_present_modes2_ext<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
         {
-            let r = self
-                .validate_get_physical_device_surface_present_modes2_ext(surface_info);
+            let r = self.validate_get_surface_present_modes2_ext(surface_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_surface_present_modes2_ext_unchecked(surface_info)
-        }
+        unsafe { self.get_surface_present_modes2_ext_unchecked(surface_info) }
     }
     /**`vkGetPhysicalDeviceSurfacePresentModes2EXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_present_modes2_ext`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_surface_present_modes2_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_present_modes2_ext_unchecked<'a>(
+    pub unsafe fn get_surface_present_modes2_ext_unchecked<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<Vec<vk::PresentModeKHR>> {

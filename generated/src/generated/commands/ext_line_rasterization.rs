@@ -18,19 +18,19 @@ The rules are on [`vkCmdSetLineStippleEXT`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetLineStippleEXT")]
     #[inline]
-    pub fn cmd_set_line_stipple_ext(
+    pub fn set_line_stipple_ext(
         &mut self,
         line_stipple_factor: u32,
         line_stipple_pattern: u16,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_line_stipple_ext();
+            let r = self.validate_set_line_stipple_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_line_stipple_ext_unchecked(
+            self.set_line_stipple_ext_unchecked(
                 line_stipple_factor,
                 line_stipple_pattern,
             )
@@ -40,9 +40,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_line_stipple_ext`] checks at run time: `VUID-vkCmdSetLineStippleEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_line_stipple_ext`] checks at run time: `VUID-vkCmdSetLineStippleEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_line_stipple_ext_unchecked(
+    pub unsafe fn set_line_stipple_ext_unchecked(
         &mut self,
         line_stipple_factor: u32,
         line_stipple_pattern: u16,

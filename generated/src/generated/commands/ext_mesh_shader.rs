@@ -19,20 +19,20 @@ The rules are on [`vkCmdDrawMeshTasksEXT`'s reference page](https://registry.khr
 Left to the caller (listed one by one in the crate's `validation.json`): 190 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksEXT")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_ext(
+    pub fn draw_mesh_tasks_ext(
         &mut self,
         group_count_x: u32,
         group_count_y: u32,
         group_count_z: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_mesh_tasks_ext();
+            let r = self.validate_draw_mesh_tasks_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_mesh_tasks_ext_unchecked(
+            self.draw_mesh_tasks_ext_unchecked(
                 group_count_x,
                 group_count_y,
                 group_count_z,
@@ -43,9 +43,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 190 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_ext_unchecked(
+    pub unsafe fn draw_mesh_tasks_ext_unchecked(
         &mut self,
         group_count_x: u32,
         group_count_y: u32,
@@ -83,7 +83,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountEXT`'s reference page](https:/
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksIndirectCountEXT")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_indirect_count_ext(
+    pub fn draw_mesh_tasks_indirect_count_ext(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -94,13 +94,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_draw_mesh_tasks_indirect_count_ext(buffer, count_buffer);
+                .validate_draw_mesh_tasks_indirect_count_ext(buffer, count_buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_mesh_tasks_indirect_count_ext_unchecked(
+            self.draw_mesh_tasks_indirect_count_ext_unchecked(
                 buffer,
                 offset,
                 count_buffer,
@@ -114,9 +114,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_indirect_count_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_indirect_count_ext_unchecked(
+    pub unsafe fn draw_mesh_tasks_indirect_count_ext_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -168,7 +168,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksIndirectEXT")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_indirect_ext(
+    pub fn draw_mesh_tasks_indirect_ext(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -176,13 +176,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191 (ex
         stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_mesh_tasks_indirect_ext(buffer);
+            let r = self.validate_draw_mesh_tasks_indirect_ext(buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_mesh_tasks_indirect_ext_unchecked(
+            self.draw_mesh_tasks_indirect_ext_unchecked(
                 buffer,
                 offset,
                 draw_count,
@@ -194,9 +194,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_indirect_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_indirect_ext_unchecked(
+    pub unsafe fn draw_mesh_tasks_indirect_ext_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,

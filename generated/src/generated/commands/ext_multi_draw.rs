@@ -92,7 +92,7 @@ The rules are on [`vkCmdDrawMultiEXT`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMultiEXT")]
     #[inline]
-    pub unsafe fn cmd_draw_multi_ext(
+    pub unsafe fn draw_multi_ext(
         &mut self,
         vertex_info: &[vk::MultiDrawInfoEXT],
         instance_count: u32,
@@ -100,13 +100,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
         stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_multi_ext();
+            let r = self.validate_draw_multi_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_multi_ext_unchecked(
+            self.draw_multi_ext_unchecked(
                 vertex_info,
                 instance_count,
                 first_instance,
@@ -118,9 +118,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_multi_ext`] checks at run time: `VUID-vkCmdDrawMultiEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_multi_ext`] checks at run time: `VUID-vkCmdDrawMultiEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_multi_ext_unchecked(
+    pub unsafe fn draw_multi_ext_unchecked(
         &mut self,
         vertex_info: &[vk::MultiDrawInfoEXT],
         instance_count: u32,
@@ -246,7 +246,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
     #[doc(alias = "vkCmdDrawMultiIndexedEXT")]
     #[inline]
-    pub unsafe fn cmd_draw_multi_indexed_ext(
+    pub unsafe fn draw_multi_indexed_ext(
         &mut self,
         index_info: &[vk::MultiDrawIndexedInfoEXT],
         instance_count: u32,
@@ -255,13 +255,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
         vertex_offset: *const i32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_multi_indexed_ext();
+            let r = self.validate_draw_multi_indexed_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_multi_indexed_ext_unchecked(
+            self.draw_multi_indexed_ext_unchecked(
                 index_info,
                 instance_count,
                 first_instance,
@@ -274,9 +274,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 199.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_multi_indexed_ext`] checks at run time: `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. `vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_multi_indexed_ext`] checks at run time: `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. `vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_multi_indexed_ext_unchecked(
+    pub unsafe fn draw_multi_indexed_ext_unchecked(
         &mut self,
         index_info: &[vk::MultiDrawIndexedInfoEXT],
         instance_count: u32,

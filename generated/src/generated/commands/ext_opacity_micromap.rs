@@ -414,7 +414,7 @@ The rules are on [`vkGetDeviceMicromapCompatibilityEXT`'s reference page](https:
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetDeviceMicromapCompatibilityEXT")]
     #[inline]
-    pub unsafe fn get_device_micromap_compatibility_ext<'a>(
+    pub unsafe fn get_micromap_compatibility_ext<'a>(
         &self,
         version_info: &MicromapVersionInfoEXT<'a>,
     ) -> Result<vk::AccelerationStructureCompatibilityKHR> {
@@ -658,25 +658,25 @@ The rules are on [`vkCmdBuildMicromapsEXT`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBuildMicromapsEXT")]
     #[inline]
-    pub unsafe fn cmd_build_micromaps_ext<'a>(
+    pub unsafe fn build_micromaps_ext<'a>(
         &mut self,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_build_micromaps_ext(infos);
+            let r = self.validate_build_micromaps_ext(infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_build_micromaps_ext_unchecked(infos) }
+        unsafe { self.build_micromaps_ext_unchecked(infos) }
     }
     /**`vkCmdBuildMicromapsEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_build_micromaps_ext`] checks at run time: `VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool`, `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run time: `VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool`, `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_build_micromaps_ext_unchecked<'a>(
+    pub unsafe fn build_micromaps_ext_unchecked<'a>(
         &mut self,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
@@ -740,25 +740,25 @@ The rules are on [`vkCmdCopyMemoryToMicromapEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyMemoryToMicromapEXT")]
     #[inline]
-    pub unsafe fn cmd_copy_memory_to_micromap_ext<'a>(
+    pub unsafe fn copy_memory_to_micromap_ext<'a>(
         &mut self,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_memory_to_micromap_ext(info);
+            let r = self.validate_copy_memory_to_micromap_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_memory_to_micromap_ext_unchecked(info) }
+        unsafe { self.copy_memory_to_micromap_ext_unchecked(info) }
     }
     /**`vkCmdCopyMemoryToMicromapEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_memory_to_micromap_ext`] checks at run time: `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks at run time: `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_memory_to_micromap_ext_unchecked<'a>(
+    pub unsafe fn copy_memory_to_micromap_ext_unchecked<'a>(
         &mut self,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
@@ -826,25 +826,25 @@ The rules are on [`vkCmdCopyMicromapEXT`'s reference page](https://registry.khro
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyMicromapEXT")]
     #[inline]
-    pub unsafe fn cmd_copy_micromap_ext<'a>(
+    pub unsafe fn copy_micromap_ext<'a>(
         &mut self,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_micromap_ext(info);
+            let r = self.validate_copy_micromap_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_micromap_ext_unchecked(info) }
+        unsafe { self.copy_micromap_ext_unchecked(info) }
     }
     /**`vkCmdCopyMicromapEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_micromap_ext`] checks at run time: `VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time: `VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_micromap_ext_unchecked<'a>(
+    pub unsafe fn copy_micromap_ext_unchecked<'a>(
         &mut self,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
@@ -905,25 +905,25 @@ The rules are on [`vkCmdCopyMicromapToMemoryEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyMicromapToMemoryEXT")]
     #[inline]
-    pub unsafe fn cmd_copy_micromap_to_memory_ext<'a>(
+    pub unsafe fn copy_micromap_to_memory_ext<'a>(
         &mut self,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_micromap_to_memory_ext(info);
+            let r = self.validate_copy_micromap_to_memory_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_micromap_to_memory_ext_unchecked(info) }
+        unsafe { self.copy_micromap_to_memory_ext_unchecked(info) }
     }
     /**`vkCmdCopyMicromapToMemoryEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_micromap_to_memory_ext`] checks at run time: `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks at run time: `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_micromap_to_memory_ext_unchecked<'a>(
+    pub unsafe fn copy_micromap_to_memory_ext_unchecked<'a>(
         &mut self,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
@@ -998,7 +998,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
 - 6: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdWriteMicromapsPropertiesEXT")]
     #[inline]
-    pub unsafe fn cmd_write_micromaps_properties_ext(
+    pub unsafe fn write_micromaps_properties_ext(
         &mut self,
         micromaps: &[&MicromapEXT],
         query_type: vk::QueryType,
@@ -1007,7 +1007,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_write_micromaps_properties_ext(
+                .validate_write_micromaps_properties_ext(
                     micromaps,
                     query_type,
                     query_pool,
@@ -1017,7 +1017,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_write_micromaps_properties_ext_unchecked(
+            self.write_micromaps_properties_ext_unchecked(
                 micromaps,
                 query_type,
                 query_pool,
@@ -1029,9 +1029,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_micromaps_properties_ext`] checks at run time: `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`, `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`, `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_micromaps_properties_ext_unchecked(
+    pub unsafe fn write_micromaps_properties_ext_unchecked(
         &mut self,
         micromaps: &[&MicromapEXT],
         query_type: vk::QueryType,

@@ -19,25 +19,25 @@ The rules are on [`vkCmdSetSampleLocationsEXT`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetSampleLocationsEXT")]
     #[inline]
-    pub fn cmd_set_sample_locations_ext<'a>(
+    pub fn set_sample_locations_ext<'a>(
         &mut self,
         sample_locations_info: &SampleLocationsInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_sample_locations_ext();
+            let r = self.validate_set_sample_locations_ext();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_sample_locations_ext_unchecked(sample_locations_info) }
+        unsafe { self.set_sample_locations_ext_unchecked(sample_locations_info) }
     }
     /**`vkCmdSetSampleLocationsEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_sample_locations_ext`] checks at run time: `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_sample_locations_ext`] checks at run time: `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_sample_locations_ext_unchecked<'a>(
+    pub unsafe fn set_sample_locations_ext_unchecked<'a>(
         &mut self,
         sample_locations_info: &SampleLocationsInfoEXT<'a>,
     ) -> Result<()> {
@@ -75,20 +75,19 @@ The rules are on [`vkGetPhysicalDeviceMultisamplePropertiesEXT`'s reference page
 - `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-pMultisampleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceMultisamplePropertiesEXT")]
     #[inline]
-    pub fn get_physical_device_multisample_properties_ext<'a>(
+    pub fn get_multisample_properties_ext<'a>(
         &self,
         samples: vk::SampleCountFlags,
         multisample_properties: &mut MultisamplePropertiesEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_get_physical_device_multisample_properties_ext(samples);
+            let r = self.validate_get_multisample_properties_ext(samples);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_multisample_properties_ext_unchecked(
+            self.get_multisample_properties_ext_unchecked(
                 samples,
                 multisample_properties,
             )
@@ -98,9 +97,9 @@ The rules are on [`vkGetPhysicalDeviceMultisamplePropertiesEXT`'s reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_multisample_properties_ext`] checks at run time: `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-samples-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_multisample_properties_ext`] checks at run time: `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-samples-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_multisample_properties_ext_unchecked<'a>(
+    pub unsafe fn get_multisample_properties_ext_unchecked<'a>(
         &self,
         samples: vk::SampleCountFlags,
         multisample_properties: &mut MultisamplePropertiesEXT<'a>,

@@ -21,7 +21,7 @@ The rules are on [`vkCmdBeginQueryIndexedEXT`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBeginQueryIndexedEXT")]
     #[inline]
-    pub fn cmd_begin_query_indexed_ext(
+    pub fn begin_query_indexed_ext(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -29,22 +29,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 37 (exp
         index: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_begin_query_indexed_ext(query_pool, flags);
+            let r = self.validate_begin_query_indexed_ext(query_pool, flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_begin_query_indexed_ext_unchecked(query_pool, query, flags, index)
+            self.begin_query_indexed_ext_unchecked(query_pool, query, flags, index)
         }
     }
     /**`vkCmdBeginQueryIndexedEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_query_indexed_ext`] checks at run time: `VUID-vkCmdBeginQueryIndexedEXT-flags-parameter`, `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query_indexed_ext`] checks at run time: `VUID-vkCmdBeginQueryIndexedEXT-flags-parameter`, `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_query_indexed_ext_unchecked(
+    pub unsafe fn begin_query_indexed_ext_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -84,7 +84,7 @@ The rules are on [`vkCmdBindTransformFeedbackBuffersEXT`'s reference page](https
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindTransformFeedbackBuffersEXT")]
     #[inline]
-    pub fn cmd_bind_transform_feedback_buffers_ext(
+    pub fn bind_transform_feedback_buffers_ext(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -110,13 +110,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
             });
         }
         {
-            let r = self.validate_cmd_bind_transform_feedback_buffers_ext(buffers);
+            let r = self.validate_bind_transform_feedback_buffers_ext(buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_bind_transform_feedback_buffers_ext_unchecked(
+            self.bind_transform_feedback_buffers_ext_unchecked(
                 first_binding,
                 buffers,
                 offsets,
@@ -128,9 +128,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_transform_feedback_buffers_ext`] checks at run time: `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pSizes-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_transform_feedback_buffers_ext`] checks at run time: `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pSizes-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_transform_feedback_buffers_ext_unchecked(
+    pub unsafe fn bind_transform_feedback_buffers_ext_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -187,27 +187,27 @@ The rules are on [`vkCmdEndQueryIndexedEXT`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndQueryIndexedEXT")]
     #[inline]
-    pub fn cmd_end_query_indexed_ext(
+    pub fn end_query_indexed_ext(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
         index: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_end_query_indexed_ext(query_pool);
+            let r = self.validate_end_query_indexed_ext(query_pool);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_query_indexed_ext_unchecked(query_pool, query, index) }
+        unsafe { self.end_query_indexed_ext_unchecked(query_pool, query, index) }
     }
     /**`vkCmdEndQueryIndexedEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_query_indexed_ext`] checks at run time: `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_query_indexed_ext`] checks at run time: `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_query_indexed_ext_unchecked(
+    pub unsafe fn end_query_indexed_ext_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -248,7 +248,7 @@ The rules are on [`vkCmdBeginTransformFeedbackEXT`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBeginTransformFeedbackEXT")]
     #[inline]
-    pub fn cmd_begin_transform_feedback_ext(
+    pub fn begin_transform_feedback_ext(
         &mut self,
         first_counter_buffer: u32,
         counter_buffers: &[&Buffer],
@@ -266,13 +266,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
             });
         }
         {
-            let r = self.validate_cmd_begin_transform_feedback_ext(counter_buffers);
+            let r = self.validate_begin_transform_feedback_ext(counter_buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_begin_transform_feedback_ext_unchecked(
+            self.begin_transform_feedback_ext_unchecked(
                 first_counter_buffer,
                 counter_buffers,
                 counter_buffer_offsets,
@@ -283,9 +283,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_transform_feedback_ext`] checks at run time: `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`, `VUID-vkCmdBeginTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_transform_feedback_ext`] checks at run time: `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`, `VUID-vkCmdBeginTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_transform_feedback_ext_unchecked(
+    pub unsafe fn begin_transform_feedback_ext_unchecked(
         &mut self,
         first_counter_buffer: u32,
         counter_buffers: &[&Buffer],
@@ -341,7 +341,7 @@ The rules are on [`vkCmdDrawIndirectByteCountEXT`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawIndirectByteCountEXT")]
     #[inline]
-    pub fn cmd_draw_indirect_byte_count_ext(
+    pub fn draw_indirect_byte_count_ext(
         &mut self,
         instance_count: u32,
         first_instance: u32,
@@ -351,13 +351,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
         vertex_stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_indirect_byte_count_ext(counter_buffer);
+            let r = self.validate_draw_indirect_byte_count_ext(counter_buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_indirect_byte_count_ext_unchecked(
+            self.draw_indirect_byte_count_ext_unchecked(
                 instance_count,
                 first_instance,
                 counter_buffer,
@@ -371,9 +371,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_byte_count_ext`] checks at run time: `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indirect_byte_count_ext`] checks at run time: `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indirect_byte_count_ext_unchecked(
+    pub unsafe fn draw_indirect_byte_count_ext_unchecked(
         &mut self,
         instance_count: u32,
         first_instance: u32,
@@ -424,7 +424,7 @@ The rules are on [`vkCmdEndTransformFeedbackEXT`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndTransformFeedbackEXT")]
     #[inline]
-    pub fn cmd_end_transform_feedback_ext(
+    pub fn end_transform_feedback_ext(
         &mut self,
         first_counter_buffer: u32,
         counter_buffers: &[&Buffer],
@@ -442,13 +442,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
             });
         }
         {
-            let r = self.validate_cmd_end_transform_feedback_ext(counter_buffers);
+            let r = self.validate_end_transform_feedback_ext(counter_buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_end_transform_feedback_ext_unchecked(
+            self.end_transform_feedback_ext_unchecked(
                 first_counter_buffer,
                 counter_buffers,
                 counter_buffer_offsets,
@@ -459,9 +459,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_transform_feedback_ext`] checks at run time: `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndTransformFeedbackEXT-commonparent`, `VUID-vkCmdEndTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_transform_feedback_ext`] checks at run time: `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndTransformFeedbackEXT-commonparent`, `VUID-vkCmdEndTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_transform_feedback_ext_unchecked(
+    pub unsafe fn end_transform_feedback_ext_unchecked(
         &mut self,
         first_counter_buffer: u32,
         counter_buffers: &[&Buffer],

@@ -20,14 +20,14 @@ The rules are on [`vkCmdSetVertexInputEXT`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetVertexInputEXT")]
     #[inline]
-    pub fn cmd_set_vertex_input_ext<'a>(
+    pub fn set_vertex_input_ext<'a>(
         &mut self,
         vertex_binding_descriptions: &[VertexInputBindingDescription2EXT<'a>],
         vertex_attribute_descriptions: &[VertexInputAttributeDescription2EXT<'a>],
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_vertex_input_ext(
+                .validate_set_vertex_input_ext(
                     vertex_binding_descriptions,
                     vertex_attribute_descriptions,
                 );
@@ -36,7 +36,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_vertex_input_ext_unchecked(
+            self.set_vertex_input_ext_unchecked(
                 vertex_binding_descriptions,
                 vertex_attribute_descriptions,
             )
@@ -46,9 +46,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_vertex_input_ext`] checks at run time: `VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_vertex_input_ext`] checks at run time: `VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_vertex_input_ext_unchecked<'a>(
+    pub unsafe fn set_vertex_input_ext_unchecked<'a>(
         &mut self,
         vertex_binding_descriptions: &[VertexInputBindingDescription2EXT<'a>],
         vertex_attribute_descriptions: &[VertexInputAttributeDescription2EXT<'a>],

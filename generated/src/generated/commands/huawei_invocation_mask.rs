@@ -22,29 +22,26 @@ The rules are on [`vkCmdBindInvocationMaskHUAWEI`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindInvocationMaskHUAWEI")]
     #[inline]
-    pub fn cmd_bind_invocation_mask_huawei(
+    pub fn bind_invocation_mask_huawei(
         &mut self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_bind_invocation_mask_huawei(image_view, image_layout);
+            let r = self.validate_bind_invocation_mask_huawei(image_view, image_layout);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_bind_invocation_mask_huawei_unchecked(image_view, image_layout)
-        }
+        unsafe { self.bind_invocation_mask_huawei_unchecked(image_view, image_layout) }
     }
     /**`vkCmdBindInvocationMaskHUAWEI` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_invocation_mask_huawei`] checks at run time: `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter`, `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`, `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_invocation_mask_huawei`] checks at run time: `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter`, `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`, `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_invocation_mask_huawei_unchecked(
+    pub unsafe fn bind_invocation_mask_huawei_unchecked(
         &mut self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,

@@ -19,22 +19,22 @@ The rules are on [`vkCmdSubpassShadingHUAWEI`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSubpassShadingHUAWEI")]
     #[inline]
-    pub fn cmd_subpass_shading_huawei(&mut self) -> Result<()> {
+    pub fn subpass_shading_huawei(&mut self) -> Result<()> {
         {
-            let r = self.validate_cmd_subpass_shading_huawei();
+            let r = self.validate_subpass_shading_huawei();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_subpass_shading_huawei_unchecked() }
+        unsafe { self.subpass_shading_huawei_unchecked() }
     }
     /**`vkCmdSubpassShadingHUAWEI` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_subpass_shading_huawei`] checks at run time: `VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::subpass_shading_huawei`] checks at run time: `VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_subpass_shading_huawei_unchecked(&mut self) -> Result<()> {
+    pub unsafe fn subpass_shading_huawei_unchecked(&mut self) -> Result<()> {
         let fp = self
             .device()
             .ext()
@@ -64,32 +64,28 @@ The rules are on [`vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI`'s reference 
 - `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[doc(alias = "vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI")]
     #[inline]
-    pub fn get_device_subpass_shading_max_workgroup_size_huawei(
+    pub fn get_subpass_shading_max_workgroup_size_huawei(
         &self,
         renderpass: &RenderPass,
     ) -> Result<vk::Extent2D> {
         {
             let r = self
-                .validate_get_device_subpass_shading_max_workgroup_size_huawei(
-                    renderpass,
-                );
+                .validate_get_subpass_shading_max_workgroup_size_huawei(renderpass);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_device_subpass_shading_max_workgroup_size_huawei_unchecked(
-                renderpass,
-            )
+            self.get_subpass_shading_max_workgroup_size_huawei_unchecked(renderpass)
         }
     }
     /**`vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_subpass_shading_max_workgroup_size_huawei`] checks at run time: `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_subpass_shading_max_workgroup_size_huawei`] checks at run time: `VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_device_subpass_shading_max_workgroup_size_huawei_unchecked(
+    pub unsafe fn get_subpass_shading_max_workgroup_size_huawei_unchecked(
         &self,
         renderpass: &RenderPass,
     ) -> Result<vk::Extent2D> {

@@ -259,25 +259,25 @@ The rules are on [`vkCmdSetPerformanceMarkerINTEL`'s reference page](https://reg
 - `VUID-vkCmdSetPerformanceMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetPerformanceMarkerINTEL")]
     #[inline]
-    pub fn cmd_set_performance_marker_intel<'a>(
+    pub fn set_performance_marker_intel<'a>(
         &mut self,
         marker_info: &PerformanceMarkerInfoINTEL<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_performance_marker_intel();
+            let r = self.validate_set_performance_marker_intel();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_performance_marker_intel_unchecked(marker_info) }
+        unsafe { self.set_performance_marker_intel_unchecked(marker_info) }
     }
     /**`vkCmdSetPerformanceMarkerINTEL` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_performance_marker_intel`] checks at run time: `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_performance_marker_intel`] checks at run time: `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_performance_marker_intel_unchecked<'a>(
+    pub unsafe fn set_performance_marker_intel_unchecked<'a>(
         &mut self,
         marker_info: &PerformanceMarkerInfoINTEL<'a>,
     ) -> Result<()> {
@@ -322,25 +322,25 @@ The rules are on [`vkCmdSetPerformanceOverrideINTEL`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetPerformanceOverrideINTEL")]
     #[inline]
-    pub unsafe fn cmd_set_performance_override_intel<'a>(
+    pub unsafe fn set_performance_override_intel<'a>(
         &mut self,
         override_info: &PerformanceOverrideInfoINTEL<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_performance_override_intel(override_info);
+            let r = self.validate_set_performance_override_intel(override_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_performance_override_intel_unchecked(override_info) }
+        unsafe { self.set_performance_override_intel_unchecked(override_info) }
     }
     /**`vkCmdSetPerformanceOverrideINTEL` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_performance_override_intel`] checks at run time: `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_performance_override_intel`] checks at run time: `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_performance_override_intel_unchecked<'a>(
+    pub unsafe fn set_performance_override_intel_unchecked<'a>(
         &mut self,
         override_info: &PerformanceOverrideInfoINTEL<'a>,
     ) -> Result<()> {
@@ -383,25 +383,25 @@ The rules are on [`vkCmdSetPerformanceStreamMarkerINTEL`'s reference page](https
 - `VUID-vkCmdSetPerformanceStreamMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetPerformanceStreamMarkerINTEL")]
     #[inline]
-    pub unsafe fn cmd_set_performance_stream_marker_intel<'a>(
+    pub unsafe fn set_performance_stream_marker_intel<'a>(
         &mut self,
         marker_info: &PerformanceStreamMarkerInfoINTEL<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_performance_stream_marker_intel();
+            let r = self.validate_set_performance_stream_marker_intel();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_performance_stream_marker_intel_unchecked(marker_info) }
+        unsafe { self.set_performance_stream_marker_intel_unchecked(marker_info) }
     }
     /**`vkCmdSetPerformanceStreamMarkerINTEL` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_performance_stream_marker_intel`] checks at run time: `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_performance_stream_marker_intel`] checks at run time: `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_performance_stream_marker_intel_unchecked<'a>(
+    pub unsafe fn set_performance_stream_marker_intel_unchecked<'a>(
         &mut self,
         marker_info: &PerformanceStreamMarkerInfoINTEL<'a>,
     ) -> Result<()> {
@@ -439,28 +439,25 @@ The rules are on [`vkQueueSetPerformanceConfigurationINTEL`'s reference page](ht
 - `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[doc(alias = "vkQueueSetPerformanceConfigurationINTEL")]
     #[inline]
-    pub fn queue_set_performance_configuration_intel(
+    pub fn set_performance_configuration_intel(
         &self,
         configuration: &PerformanceConfigurationINTEL,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_queue_set_performance_configuration_intel(configuration);
+            let r = self.validate_set_performance_configuration_intel(configuration);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.queue_set_performance_configuration_intel_unchecked(configuration)
-        }
+        unsafe { self.set_performance_configuration_intel_unchecked(configuration) }
     }
     /**`vkQueueSetPerformanceConfigurationINTEL` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_set_performance_configuration_intel`] checks at run time: `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_performance_configuration_intel`] checks at run time: `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn queue_set_performance_configuration_intel_unchecked(
+    pub unsafe fn set_performance_configuration_intel_unchecked(
         &self,
         configuration: &PerformanceConfigurationINTEL,
     ) -> Result<()> {

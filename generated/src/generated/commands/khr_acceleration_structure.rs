@@ -478,7 +478,7 @@ The rules are on [`vkGetDeviceAccelerationStructureCompatibilityKHR`'s reference
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetDeviceAccelerationStructureCompatibilityKHR")]
     #[inline]
-    pub fn get_device_acceleration_structure_compatibility_khr<'a>(
+    pub fn get_acceleration_structure_compatibility_khr<'a>(
         &self,
         version_info: &AccelerationStructureVersionInfoKHR<'a>,
     ) -> Result<vk::AccelerationStructureCompatibilityKHR> {
@@ -614,7 +614,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 72.
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresIndirectKHR")]
     #[inline]
-    pub unsafe fn cmd_build_acceleration_structures_indirect_khr<'a>(
+    pub unsafe fn build_acceleration_structures_indirect_khr<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         indirect_device_addresses: &[vk::DeviceAddress],
@@ -640,13 +640,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 72.
             });
         }
         {
-            let r = self.validate_cmd_build_acceleration_structures_indirect_khr(infos);
+            let r = self.validate_build_acceleration_structures_indirect_khr(infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_build_acceleration_structures_indirect_khr_unchecked(
+            self.build_acceleration_structures_indirect_khr_unchecked(
                 infos,
                 indirect_device_addresses,
                 indirect_strides,
@@ -658,9 +658,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 72.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_build_acceleration_structures_indirect_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`, and those of the structs it takes. `max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_indirect_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`, and those of the structs it takes. `max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_build_acceleration_structures_indirect_khr_unchecked<'a>(
+    pub unsafe fn build_acceleration_structures_indirect_khr_unchecked<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         indirect_device_addresses: &[vk::DeviceAddress],
@@ -732,31 +732,28 @@ Left to the caller (listed one by one in the crate's `validation.json`): 64.
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresKHR")]
     #[inline]
-    pub unsafe fn cmd_build_acceleration_structures_khr<'a>(
+    pub unsafe fn build_acceleration_structures_khr<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_build_acceleration_structures_khr(infos);
+            let r = self.validate_build_acceleration_structures_khr(infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_build_acceleration_structures_khr_unchecked(
-                infos,
-                build_range_infos,
-            )
+            self.build_acceleration_structures_khr_unchecked(infos, build_range_infos)
         }
     }
     /**`vkCmdBuildAccelerationStructuresKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_build_acceleration_structures_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_build_acceleration_structures_khr_unchecked<'a>(
+    pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
@@ -816,25 +813,25 @@ The rules are on [`vkCmdCopyAccelerationStructureKHR`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyAccelerationStructureKHR")]
     #[inline]
-    pub fn cmd_copy_acceleration_structure_khr<'a>(
+    pub fn copy_acceleration_structure_khr<'a>(
         &mut self,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_acceleration_structure_khr(info);
+            let r = self.validate_copy_acceleration_structure_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_acceleration_structure_khr_unchecked(info) }
+        unsafe { self.copy_acceleration_structure_khr_unchecked(info) }
     }
     /**`vkCmdCopyAccelerationStructureKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_acceleration_structure_khr`] checks at run time: `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] checks at run time: `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_acceleration_structure_khr_unchecked<'a>(
+    pub unsafe fn copy_acceleration_structure_khr_unchecked<'a>(
         &mut self,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
@@ -891,25 +888,25 @@ The rules are on [`vkCmdCopyAccelerationStructureToMemoryKHR`'s reference page](
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyAccelerationStructureToMemoryKHR")]
     #[inline]
-    pub fn cmd_copy_acceleration_structure_to_memory_khr<'a>(
+    pub fn copy_acceleration_structure_to_memory_khr<'a>(
         &mut self,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_acceleration_structure_to_memory_khr(info);
+            let r = self.validate_copy_acceleration_structure_to_memory_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_acceleration_structure_to_memory_khr_unchecked(info) }
+        unsafe { self.copy_acceleration_structure_to_memory_khr_unchecked(info) }
     }
     /**`vkCmdCopyAccelerationStructureToMemoryKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_acceleration_structure_to_memory_khr`] checks at run time: `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_khr`] checks at run time: `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_acceleration_structure_to_memory_khr_unchecked<'a>(
+    pub unsafe fn copy_acceleration_structure_to_memory_khr_unchecked<'a>(
         &mut self,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
@@ -967,25 +964,25 @@ The rules are on [`vkCmdCopyMemoryToAccelerationStructureKHR`'s reference page](
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyMemoryToAccelerationStructureKHR")]
     #[inline]
-    pub fn cmd_copy_memory_to_acceleration_structure_khr<'a>(
+    pub fn copy_memory_to_acceleration_structure_khr<'a>(
         &mut self,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_memory_to_acceleration_structure_khr(info);
+            let r = self.validate_copy_memory_to_acceleration_structure_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_memory_to_acceleration_structure_khr_unchecked(info) }
+        unsafe { self.copy_memory_to_acceleration_structure_khr_unchecked(info) }
     }
     /**`vkCmdCopyMemoryToAccelerationStructureKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_memory_to_acceleration_structure_khr`] checks at run time: `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_khr`] checks at run time: `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_memory_to_acceleration_structure_khr_unchecked<'a>(
+    pub unsafe fn copy_memory_to_acceleration_structure_khr_unchecked<'a>(
         &mut self,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
@@ -1047,7 +1044,7 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesKHR`'s reference pa
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
-    pub fn cmd_write_acceleration_structures_properties_khr(
+    pub fn write_acceleration_structures_properties_khr(
         &mut self,
         acceleration_structures: &[&AccelerationStructureKHR],
         query_type: vk::QueryType,
@@ -1056,7 +1053,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_write_acceleration_structures_properties_khr(
+                .validate_write_acceleration_structures_properties_khr(
                     acceleration_structures,
                     query_type,
                     query_pool,
@@ -1066,7 +1063,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_write_acceleration_structures_properties_khr_unchecked(
+            self.write_acceleration_structures_properties_khr_unchecked(
                 acceleration_structures,
                 query_type,
                 query_pool,
@@ -1078,9 +1075,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_acceleration_structures_properties_khr_unchecked(
+    pub unsafe fn write_acceleration_structures_properties_khr_unchecked(
         &mut self,
         acceleration_structures: &[&AccelerationStructureKHR],
         query_type: vk::QueryType,

@@ -25,7 +25,7 @@ The rules are on [`vkCmdPushDescriptorSetWithTemplateKHR`'s reference page](http
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdPushDescriptorSetWithTemplateKHR")]
     #[inline]
-    pub unsafe fn cmd_push_descriptor_set_with_template_khr(
+    pub unsafe fn push_descriptor_set_with_template_khr(
         &mut self,
         descriptor_update_template: &DescriptorUpdateTemplate,
         layout: &PipelineLayout,
@@ -34,7 +34,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_push_descriptor_set_with_template_khr(
+                .validate_push_descriptor_set_with_template_khr(
                     descriptor_update_template,
                     layout,
                 );
@@ -43,7 +43,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_push_descriptor_set_with_template_khr_unchecked(
+            self.push_descriptor_set_with_template_khr_unchecked(
                 descriptor_update_template,
                 layout,
                 set,
@@ -55,9 +55,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_descriptor_set_with_template_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdPushDescriptorSetWithTemplateKHR` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_descriptor_set_with_template_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdPushDescriptorSetWithTemplateKHR` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_push_descriptor_set_with_template_khr_unchecked(
+    pub unsafe fn push_descriptor_set_with_template_khr_unchecked(
         &mut self,
         descriptor_update_template: &DescriptorUpdateTemplate,
         layout: &PipelineLayout,

@@ -88,7 +88,7 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
 - `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetDeviceGroupPresentCapabilitiesKHR")]
     #[inline]
-    pub fn get_device_group_present_capabilities_khr<'a>(
+    pub fn get_group_present_capabilities_khr<'a>(
         &self,
         device_group_present_capabilities: &mut DeviceGroupPresentCapabilitiesKHR<'a>,
     ) -> Result<()> {
@@ -125,7 +125,7 @@ The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](htt
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[doc(alias = "vkGetDeviceGroupSurfacePresentModesKHR")]
     #[inline]
-    pub fn get_device_group_surface_present_modes_khr(
+    pub fn get_group_surface_present_modes_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -136,7 +136,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
             tuff_runtime::lock_all(syncs)
         };
         {
-            let r = self.validate_get_device_group_surface_present_modes_khr(surface);
+            let r = self.validate_get_group_surface_present_modes_khr(surface);
             r?;
         }
         crate::hooks::device_surface_supported(
@@ -146,15 +146,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_device_group_surface_present_modes_khr_unchecked(surface) }
+        unsafe { self.get_group_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetDeviceGroupSurfacePresentModesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_group_surface_present_modes_khr`] checks at run time: `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`, `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_device_group_surface_present_modes_khr_unchecked(
+    pub unsafe fn get_group_surface_present_modes_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::DeviceGroupPresentModeFlagsKHR> {
@@ -202,7 +202,7 @@ The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](ht
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[doc(alias = "vkGetPhysicalDevicePresentRectanglesKHR")]
     #[inline]
-    pub fn get_physical_device_present_rectangles_khr(
+    pub fn get_present_rectangles_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {
@@ -213,7 +213,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
             tuff_runtime::lock_all(syncs)
         };
         {
-            let r = self.validate_get_physical_device_present_rectangles_khr(surface);
+            let r = self.validate_get_present_rectangles_khr(surface);
             r?;
         }
         crate::hooks::surface_supported(
@@ -224,15 +224,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_present_rectangles_khr_unchecked(surface) }
+        unsafe { self.get_present_rectangles_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDevicePresentRectanglesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_present_rectangles_khr`] checks at run time: `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211`, `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_present_rectangles_khr_unchecked(
+    pub unsafe fn get_present_rectangles_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<Vec<vk::Rect2D>> {

@@ -223,7 +223,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlanePropertiesKHR`'s reference pag
 - `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPlanePropertiesKHR")]
     #[inline]
-    pub fn get_physical_device_display_plane_properties_khr(
+    pub fn get_display_plane_properties_khr(
         &self,
     ) -> Result<Vec<vk::DisplayPlanePropertiesKHR>> {
         let fp = self
@@ -253,7 +253,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPropertiesKHR`'s reference page](ht
 - `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPropertiesKHR")]
     #[inline]
-    pub fn get_physical_device_display_properties_khr(
+    pub fn get_display_properties_khr(
         &self,
     ) -> Result<Vec<vk::DisplayPropertiesKHR<'static>>> {
         let fp = self

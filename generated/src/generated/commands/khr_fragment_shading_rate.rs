@@ -20,28 +20,28 @@ The rules are on [`vkCmdSetFragmentShadingRateKHR`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetFragmentShadingRateKHR")]
     #[inline]
-    pub fn cmd_set_fragment_shading_rate_khr(
+    pub fn set_fragment_shading_rate_khr(
         &mut self,
         fragment_size: &vk::Extent2D,
         combiner_ops: &[vk::FragmentShadingRateCombinerOpKHR; 2usize],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_fragment_shading_rate_khr();
+            let r = self.validate_set_fragment_shading_rate_khr();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_fragment_shading_rate_khr_unchecked(fragment_size, combiner_ops)
+            self.set_fragment_shading_rate_khr_unchecked(fragment_size, combiner_ops)
         }
     }
     /**`vkCmdSetFragmentShadingRateKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_fragment_shading_rate_khr`] checks at run time: `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_fragment_shading_rate_khr`] checks at run time: `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_fragment_shading_rate_khr_unchecked(
+    pub unsafe fn set_fragment_shading_rate_khr_unchecked(
         &mut self,
         fragment_size: &vk::Extent2D,
         combiner_ops: &[vk::FragmentShadingRateCombinerOpKHR; 2usize],
@@ -80,7 +80,7 @@ The rules are on [`vkGetPhysicalDeviceFragmentShadingRatesKHR`'s reference page]
 - `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRates-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceFragmentShadingRatesKHR")]
     #[inline]
-    pub fn get_physical_device_fragment_shading_rates_khr(
+    pub fn get_fragment_shading_rates_khr(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceFragmentShadingRateKHR<'static>>> {
         let fp = self

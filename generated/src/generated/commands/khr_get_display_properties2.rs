@@ -93,7 +93,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlaneProperties2KHR`'s reference pa
 - `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPlaneProperties2KHR")]
     #[inline]
-    pub fn get_physical_device_display_plane_properties2_khr(
+    pub fn get_display_plane_properties2_khr(
         &self,
     ) -> Result<Vec<vk::DisplayPlaneProperties2KHR<'static>>> {
         let fp = self
@@ -123,7 +123,7 @@ The rules are on [`vkGetPhysicalDeviceDisplayProperties2KHR`'s reference page](h
 - `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayProperties2KHR")]
     #[inline]
-    pub fn get_physical_device_display_properties2_khr(
+    pub fn get_display_properties2_khr(
         &self,
     ) -> Result<Vec<vk::DisplayProperties2KHR<'static>>> {
         let fp = self

@@ -17,14 +17,14 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2KHR`'s reference page]
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2KHR")]
     #[inline]
-    pub fn get_physical_device_surface_capabilities2_khr<'a>(
+    pub fn get_surface_capabilities2_khr<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
         surface_capabilities: &mut SurfaceCapabilities2KHR<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_get_physical_device_surface_capabilities2_khr(
+                .validate_get_surface_capabilities2_khr(
                     surface_info,
                     surface_capabilities,
                 );
@@ -33,7 +33,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_surface_capabilities2_khr_unchecked(
+            self.get_surface_capabilities2_khr_unchecked(
                 surface_info,
                 surface_capabilities,
             )
@@ -43,9 +43,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_capabilities2_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_surface_capabilities2_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_capabilities2_khr_unchecked<'a>(
+    pub unsafe fn get_surface_capabilities2_khr_unchecked<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
         surface_capabilities: &mut SurfaceCapabilities2KHR<'a>,
@@ -84,25 +84,25 @@ The rules are on [`vkGetPhysicalDeviceSurfaceFormats2KHR`'s reference page](http
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceFormats2KHR")]
     #[inline]
-    pub fn get_physical_device_surface_formats2_khr<'a>(
+    pub fn get_surface_formats2_khr<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<Vec<vk::SurfaceFormat2KHR<'static>>> {
         {
-            let r = self.validate_get_physical_device_surface_formats2_khr(surface_info);
+            let r = self.validate_get_surface_formats2_khr(surface_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_surface_formats2_khr_unchecked(surface_info) }
+        unsafe { self.get_surface_formats2_khr_unchecked(surface_info) }
     }
     /**`vkGetPhysicalDeviceSurfaceFormats2KHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_formats2_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_surface_formats2_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_formats2_khr_unchecked<'a>(
+    pub unsafe fn get_surface_formats2_khr_unchecked<'a>(
         &self,
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<Vec<vk::SurfaceFormat2KHR<'static>>> {

@@ -89,13 +89,13 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`'s re
 - `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pNumPasses-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR")]
     #[inline]
-    pub fn get_physical_device_queue_family_performance_query_passes_khr<'a>(
+    pub fn get_queue_family_performance_query_passes_khr<'a>(
         &self,
         performance_query_create_info: &QueryPoolPerformanceCreateInfoKHR<'a>,
     ) -> Result<u32> {
         {
             let r = self
-                .validate_get_physical_device_queue_family_performance_query_passes_khr(
+                .validate_get_queue_family_performance_query_passes_khr(
                     performance_query_create_info,
                 );
             r?;
@@ -103,7 +103,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`'s re
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_queue_family_performance_query_passes_khr_unchecked(
+            self.get_queue_family_performance_query_passes_khr_unchecked(
                 performance_query_create_info,
             )
         }
@@ -112,11 +112,9 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`'s re
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_queue_family_performance_query_passes_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_queue_family_performance_query_passes_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_queue_family_performance_query_passes_khr_unchecked<
-        'a,
-    >(
+    pub unsafe fn get_queue_family_performance_query_passes_khr_unchecked<'a>(
         &self,
         performance_query_create_info: &QueryPoolPerformanceCreateInfoKHR<'a>,
     ) -> Result<u32> {

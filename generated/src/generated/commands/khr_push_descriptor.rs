@@ -23,7 +23,7 @@ The rules are on [`vkCmdPushDescriptorSetKHR`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdPushDescriptorSetKHR")]
     #[inline]
-    pub fn cmd_push_descriptor_set_khr<'a>(
+    pub fn push_descriptor_set_khr<'a>(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -32,7 +32,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_push_descriptor_set_khr(
+                .validate_push_descriptor_set_khr(
                     pipeline_bind_point,
                     layout,
                     descriptor_writes,
@@ -42,7 +42,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_push_descriptor_set_khr_unchecked(
+            self.push_descriptor_set_khr_unchecked(
                 pipeline_bind_point,
                 layout,
                 set,
@@ -54,9 +54,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_descriptor_set_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter`, `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`, `VUID-vkCmdPushDescriptorSetKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_descriptor_set_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter`, `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`, `VUID-vkCmdPushDescriptorSetKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_push_descriptor_set_khr_unchecked<'a>(
+    pub unsafe fn push_descriptor_set_khr_unchecked<'a>(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,

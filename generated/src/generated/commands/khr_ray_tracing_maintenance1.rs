@@ -22,25 +22,25 @@ The rules are on [`vkCmdTraceRaysIndirect2KHR`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 64 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdTraceRaysIndirect2KHR")]
     #[inline]
-    pub fn cmd_trace_rays_indirect2_khr(
+    pub fn trace_rays_indirect2_khr(
         &mut self,
         indirect_device_address: vk::DeviceAddress,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_trace_rays_indirect2_khr();
+            let r = self.validate_trace_rays_indirect2_khr();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_trace_rays_indirect2_khr_unchecked(indirect_device_address) }
+        unsafe { self.trace_rays_indirect2_khr_unchecked(indirect_device_address) }
     }
     /**`vkCmdTraceRaysIndirect2KHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_trace_rays_indirect2_khr`] checks at run time: `VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trace_rays_indirect2_khr`] checks at run time: `VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_trace_rays_indirect2_khr_unchecked(
+    pub unsafe fn trace_rays_indirect2_khr_unchecked(
         &mut self,
         indirect_device_address: vk::DeviceAddress,
     ) -> Result<()> {

@@ -20,29 +20,27 @@ The rules are on [`vkCmdSetRayTracingPipelineStackSizeKHR`'s reference page](htt
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetRayTracingPipelineStackSizeKHR")]
     #[inline]
-    pub fn cmd_set_ray_tracing_pipeline_stack_size_khr(
+    pub fn set_ray_tracing_pipeline_stack_size_khr(
         &mut self,
         pipeline_stack_size: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_ray_tracing_pipeline_stack_size_khr();
+            let r = self.validate_set_ray_tracing_pipeline_stack_size_khr();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_ray_tracing_pipeline_stack_size_khr_unchecked(
-                pipeline_stack_size,
-            )
+            self.set_ray_tracing_pipeline_stack_size_khr_unchecked(pipeline_stack_size)
         }
     }
     /**`vkCmdSetRayTracingPipelineStackSizeKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_ray_tracing_pipeline_stack_size_khr`] checks at run time: `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_ray_tracing_pipeline_stack_size_khr`] checks at run time: `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_ray_tracing_pipeline_stack_size_khr_unchecked(
+    pub unsafe fn set_ray_tracing_pipeline_stack_size_khr_unchecked(
         &mut self,
         pipeline_stack_size: u32,
     ) -> Result<()> {
@@ -79,7 +77,7 @@ The rules are on [`vkCmdTraceRaysIndirectKHR`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 91 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdTraceRaysIndirectKHR")]
     #[inline]
-    pub fn cmd_trace_rays_indirect_khr(
+    pub fn trace_rays_indirect_khr(
         &mut self,
         raygen_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
         miss_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
@@ -88,13 +86,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 91 (exp
         indirect_device_address: vk::DeviceAddress,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_trace_rays_indirect_khr();
+            let r = self.validate_trace_rays_indirect_khr();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_trace_rays_indirect_khr_unchecked(
+            self.trace_rays_indirect_khr_unchecked(
                 raygen_shader_binding_table,
                 miss_shader_binding_table,
                 hit_shader_binding_table,
@@ -107,9 +105,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 91 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_trace_rays_indirect_khr`] checks at run time: `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trace_rays_indirect_khr`] checks at run time: `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_trace_rays_indirect_khr_unchecked(
+    pub unsafe fn trace_rays_indirect_khr_unchecked(
         &mut self,
         raygen_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
         miss_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
@@ -163,7 +161,7 @@ The rules are on [`vkCmdTraceRaysKHR`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 89 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdTraceRaysKHR")]
     #[inline]
-    pub fn cmd_trace_rays_khr(
+    pub fn trace_rays_khr(
         &mut self,
         raygen_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
         miss_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
@@ -174,13 +172,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 89 (exp
         depth: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_trace_rays_khr();
+            let r = self.validate_trace_rays_khr();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_trace_rays_khr_unchecked(
+            self.trace_rays_khr_unchecked(
                 raygen_shader_binding_table,
                 miss_shader_binding_table,
                 hit_shader_binding_table,
@@ -195,9 +193,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 89 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_trace_rays_khr`] checks at run time: `VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trace_rays_khr`] checks at run time: `VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_trace_rays_khr_unchecked(
+    pub unsafe fn trace_rays_khr_unchecked(
         &mut self,
         raygen_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,
         miss_shader_binding_table: &vk::StridedDeviceAddressRegionKHR,

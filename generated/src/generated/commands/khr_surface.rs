@@ -8,12 +8,10 @@ impl PhysicalDevice {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 267) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 260) does; the example programs run in CI:
 
 ```ignore
-let caps = gpu
-    .physical
-    .get_physical_device_surface_capabilities_khr(&self.surface)?;
+let caps = gpu.physical.get_surface_capabilities_khr(&self.surface)?;
 ```
 
 # Valid usage
@@ -29,12 +27,12 @@ The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilitiesKHR")]
     #[inline]
-    pub fn get_physical_device_surface_capabilities_khr(
+    pub fn get_surface_capabilities_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
         {
-            let r = self.validate_get_physical_device_surface_capabilities_khr(surface);
+            let r = self.validate_get_surface_capabilities_khr(surface);
             r?;
         }
         crate::hooks::surface_supported(
@@ -45,15 +43,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_surface_capabilities_khr_unchecked(surface) }
+        unsafe { self.get_surface_capabilities_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceCapabilitiesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_surface_capabilities_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_capabilities_khr_unchecked(
+    pub unsafe fn get_surface_capabilities_khr_unchecked(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<vk::SurfaceCapabilitiesKHR> {
@@ -76,12 +74,10 @@ The caller upholds the rules that [`Self::get_physical_device_surface_capabiliti
 
 # Example
 
-Called, as `examples/src/window.rs` (line 161) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 156) does; the example programs run in CI:
 
 ```ignore
-let formats = gpu
-    .physical
-    .get_physical_device_surface_formats_khr(Some(&surface))?;
+let formats = gpu.physical.get_surface_formats_khr(Some(&surface))?;
 ```
 
 # Valid usage
@@ -101,12 +97,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 - 2: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceFormatsKHR")]
     #[inline]
-    pub fn get_physical_device_surface_formats_khr(
+    pub fn get_surface_formats_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
         {
-            let r = self.validate_get_physical_device_surface_formats_khr(surface);
+            let r = self.validate_get_surface_formats_khr(surface);
             r?;
         }
         crate::hooks::surface_supported(
@@ -117,15 +113,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_surface_formats_khr_unchecked(surface) }
+        unsafe { self.get_surface_formats_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceFormatsKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_surface_formats_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_formats_khr_unchecked(
+    pub unsafe fn get_surface_formats_khr_unchecked(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::SurfaceFormatKHR>> {
@@ -169,12 +165,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 - 2: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModesKHR")]
     #[inline]
-    pub fn get_physical_device_surface_present_modes_khr(
+    pub fn get_surface_present_modes_khr(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
         {
-            let r = self.validate_get_physical_device_surface_present_modes_khr(surface);
+            let r = self.validate_get_surface_present_modes_khr(surface);
             r?;
         }
         crate::hooks::surface_supported(
@@ -185,15 +181,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_surface_present_modes_khr_unchecked(surface) }
+        unsafe { self.get_surface_present_modes_khr_unchecked(surface) }
     }
     /**`vkGetPhysicalDeviceSurfacePresentModesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_surface_present_modes_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211`, `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_present_modes_khr_unchecked(
+    pub unsafe fn get_surface_present_modes_khr_unchecked(
         &self,
         surface: Option<&SurfaceKHR>,
     ) -> Result<Vec<vk::PresentModeKHR>> {
@@ -222,13 +218,10 @@ The caller upholds the rules that [`Self::get_physical_device_surface_present_mo
 
 # Example
 
-Called, as `examples/src/window.rs` (line 155) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 153) does; the example programs run in CI:
 
 ```ignore
-if !gpu
-    .physical
-    .get_physical_device_surface_support_khr(gpu.family, &surface)?
-{
+if !gpu.physical.get_surface_support_khr(gpu.family, &surface)? {
     // ...
 }
 ```
@@ -244,7 +237,7 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
 - `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceSupportKHR")]
     #[inline]
-    pub fn get_physical_device_surface_support_khr(
+    pub fn get_surface_support_khr(
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,
@@ -255,25 +248,20 @@ The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https
             "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
         )?;
         {
-            let r = self.validate_get_physical_device_surface_support_khr(surface);
+            let r = self.validate_get_surface_support_khr(surface);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_surface_support_khr_unchecked(
-                queue_family_index,
-                surface,
-            )
-        }
+        unsafe { self.get_surface_support_khr_unchecked(queue_family_index, surface) }
     }
     /**`vkGetPhysicalDeviceSurfaceSupportKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_surface_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`, `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_surface_support_khr_unchecked(
+    pub unsafe fn get_surface_support_khr_unchecked(
         &self,
         queue_family_index: u32,
         surface: &SurfaceKHR,

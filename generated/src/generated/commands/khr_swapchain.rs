@@ -8,7 +8,7 @@ impl Device {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 346) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 339) does; the example programs run in CI:
 
 ```ignore
 let index =
@@ -137,7 +137,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
 
 # Example
 
-Called, as `examples/src/window.rs` (line 301) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 294) does; the example programs run in CI:
 
 ```ignore
 None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
@@ -239,7 +239,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
 
 # Example
 
-Called, as `examples/src/window.rs` (line 304) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 297) does; the example programs run in CI:
 
 ```ignore
 self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
@@ -317,10 +317,10 @@ impl Queue {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 384) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 377) does; the example programs run in CI:
 
 ```ignore
-match gpu.queue.queue_present_khr(
+match gpu.queue.present_khr(
     &tuff::PresentInfoKHR::new()
         .wait_semaphores(&signals)
         .swapchains(&swapchains, &indices)?,
@@ -346,7 +346,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 - 1: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkQueuePresentKHR")]
     #[inline]
-    pub fn queue_present_khr<'a>(
+    pub fn present_khr<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<vk::Result> {
@@ -391,21 +391,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
         };
         crate::hooks::queue_present_khr_checks(self, present_info)?;
         {
-            let r = self.validate_queue_present_khr(present_info);
+            let r = self.validate_present_khr(present_info);
             r?;
         }
         let _held = crate::hooks::queue_present_khr_gate(self, present_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.queue_present_khr_unchecked(present_info) }
+        unsafe { self.present_khr_unchecked(present_info) }
     }
     /**`vkQueuePresentKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`, `VUID-VkPresentInfoKHR-pImageIndices-01296`, `VUID-vkQueuePresentKHR-pSwapchains-01292`, `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01300`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01301`, `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`, `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01295`, `VUID-vkQueuePresentKHR-pWaitSemaphores-01294`, `VUID-VkPresentInfoKHR-pImageIndices-01296`, `VUID-vkQueuePresentKHR-pSwapchains-01292`, `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01300`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01301`, `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`, `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn queue_present_khr_unchecked<'a>(
+    pub unsafe fn present_khr_unchecked<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
     ) -> Result<vk::Result> {

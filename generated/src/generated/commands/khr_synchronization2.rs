@@ -33,7 +33,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19.
 - 13: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdWriteBufferMarker2AMD")]
     #[inline]
-    pub unsafe fn cmd_write_buffer_marker2_amd(
+    pub unsafe fn write_buffer_marker2_amd(
         &mut self,
         stage: vk::PipelineStageFlags2,
         dst_buffer: &Buffer,
@@ -42,13 +42,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19.
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_write_buffer_marker2_amd(stage, dst_buffer, dst_offset);
+                .validate_write_buffer_marker2_amd(stage, dst_buffer, dst_offset);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_write_buffer_marker2_amd_unchecked(
+            self.write_buffer_marker2_amd_unchecked(
                 stage,
                 dst_buffer,
                 dst_offset,
@@ -60,9 +60,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 19.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_buffer_marker2_amd`] checks at run time: `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter`, `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarker2AMD-commonparent`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03929`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03930`, `VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898`, `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_buffer_marker2_amd`] checks at run time: `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter`, `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarker2AMD-commonparent`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03929`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03930`, `VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898`, `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_buffer_marker2_amd_unchecked(
+    pub unsafe fn write_buffer_marker2_amd_unchecked(
         &mut self,
         stage: vk::PipelineStageFlags2,
         dst_buffer: &Buffer,
@@ -108,7 +108,7 @@ The rules are on [`vkGetQueueCheckpointData2NV`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetQueueCheckpointData2NV")]
     #[inline]
-    pub unsafe fn get_queue_checkpoint_data2_nv(
+    pub unsafe fn get_checkpoint_data2_nv(
         &self,
     ) -> Result<Vec<vk::CheckpointData2NV<'static>>> {
         let fp = self

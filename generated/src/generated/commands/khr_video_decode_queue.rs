@@ -21,25 +21,25 @@ The rules are on [`vkCmdDecodeVideoKHR`'s reference page](https://registry.khron
 Left to the caller (listed one by one in the crate's `validation.json`): 53 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDecodeVideoKHR")]
     #[inline]
-    pub fn cmd_decode_video_khr<'a>(
+    pub fn decode_video_khr<'a>(
         &mut self,
         decode_info: &VideoDecodeInfoKHR<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_decode_video_khr(decode_info);
+            let r = self.validate_decode_video_khr(decode_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_decode_video_khr_unchecked(decode_info) }
+        unsafe { self.decode_video_khr_unchecked(decode_info) }
     }
     /**`vkCmdDecodeVideoKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_decode_video_khr`] checks at run time: `VUID-vkCmdDecodeVideoKHR-commandBuffer-cmdpool`, `VUID-vkCmdDecodeVideoKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::decode_video_khr`] checks at run time: `VUID-vkCmdDecodeVideoKHR-commandBuffer-cmdpool`, `VUID-vkCmdDecodeVideoKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_decode_video_khr_unchecked<'a>(
+    pub unsafe fn decode_video_khr_unchecked<'a>(
         &mut self,
         decode_info: &VideoDecodeInfoKHR<'a>,
     ) -> Result<()> {

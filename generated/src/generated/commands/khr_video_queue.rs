@@ -348,12 +348,12 @@ The rules are on [`vkCmdBeginVideoCodingKHR`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBeginVideoCodingKHR")]
     #[inline]
-    pub fn cmd_begin_video_coding_khr<'a>(
+    pub fn begin_video_coding_khr<'a>(
         mut self,
         begin_info: &VideoBeginCodingInfoKHR<'a>,
     ) -> Recorder<'c, InVideoCoding> {
         {
-            let r = self.validate_cmd_begin_video_coding_khr(begin_info);
+            let r = self.validate_begin_video_coding_khr(begin_info);
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -362,15 +362,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_begin_video_coding_khr_unchecked(begin_info) }
+        unsafe { self.begin_video_coding_khr_unchecked(begin_info) }
     }
     /**`vkCmdBeginVideoCodingKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_video_coding_khr`] checks at run time: `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_video_coding_khr`] checks at run time: `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_video_coding_khr_unchecked<'a>(
+    pub unsafe fn begin_video_coding_khr_unchecked<'a>(
         mut self,
         begin_info: &VideoBeginCodingInfoKHR<'a>,
     ) -> Recorder<'c, InVideoCoding> {
@@ -424,25 +424,25 @@ The rules are on [`vkCmdControlVideoCodingKHR`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdControlVideoCodingKHR")]
     #[inline]
-    pub fn cmd_control_video_coding_khr<'a>(
+    pub fn control_video_coding_khr<'a>(
         &mut self,
         coding_control_info: &VideoCodingControlInfoKHR<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_control_video_coding_khr(coding_control_info);
+            let r = self.validate_control_video_coding_khr(coding_control_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_control_video_coding_khr_unchecked(coding_control_info) }
+        unsafe { self.control_video_coding_khr_unchecked(coding_control_info) }
     }
     /**`vkCmdControlVideoCodingKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_control_video_coding_khr`] checks at run time: `VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdControlVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::control_video_coding_khr`] checks at run time: `VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdControlVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_control_video_coding_khr_unchecked<'a>(
+    pub unsafe fn control_video_coding_khr_unchecked<'a>(
         &mut self,
         coding_control_info: &VideoCodingControlInfoKHR<'a>,
     ) -> Result<()> {
@@ -483,12 +483,12 @@ The rules are on [`vkCmdEndVideoCodingKHR`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndVideoCodingKHR")]
     #[inline]
-    pub fn cmd_end_video_coding_khr<'a>(
+    pub fn end_video_coding_khr<'a>(
         mut self,
         end_coding_info: &VideoEndCodingInfoKHR<'a>,
     ) -> Recorder<'c, Outside> {
         {
-            let r = self.validate_cmd_end_video_coding_khr(end_coding_info);
+            let r = self.validate_end_video_coding_khr(end_coding_info);
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -496,15 +496,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_video_coding_khr_unchecked(end_coding_info) }
+        unsafe { self.end_video_coding_khr_unchecked(end_coding_info) }
     }
     /**`vkCmdEndVideoCodingKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_video_coding_khr`] checks at run time: `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdEndVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_video_coding_khr`] checks at run time: `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool`, `VUID-vkCmdEndVideoCodingKHR-bufferlevel`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_video_coding_khr_unchecked<'a>(
+    pub unsafe fn end_video_coding_khr_unchecked<'a>(
         mut self,
         end_coding_info: &VideoEndCodingInfoKHR<'a>,
     ) -> Recorder<'c, Outside> {
@@ -538,35 +538,27 @@ The rules are on [`vkGetPhysicalDeviceVideoCapabilitiesKHR`'s reference page](ht
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceVideoCapabilitiesKHR")]
     #[inline]
-    pub fn get_physical_device_video_capabilities_khr<'a>(
+    pub fn get_video_capabilities_khr<'a>(
         &self,
         video_profile: &VideoProfileInfoKHR<'a>,
         capabilities: &mut VideoCapabilitiesKHR<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_get_physical_device_video_capabilities_khr(
-                    video_profile,
-                    capabilities,
-                );
+                .validate_get_video_capabilities_khr(video_profile, capabilities);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_video_capabilities_khr_unchecked(
-                video_profile,
-                capabilities,
-            )
-        }
+        unsafe { self.get_video_capabilities_khr_unchecked(video_profile, capabilities) }
     }
     /**`vkGetPhysicalDeviceVideoCapabilitiesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_video_capabilities_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_video_capabilities_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_video_capabilities_khr_unchecked<'a>(
+    pub unsafe fn get_video_capabilities_khr_unchecked<'a>(
         &self,
         video_profile: &VideoProfileInfoKHR<'a>,
         capabilities: &mut VideoCapabilitiesKHR<'a>,
@@ -605,32 +597,25 @@ The rules are on [`vkGetPhysicalDeviceVideoFormatPropertiesKHR`'s reference page
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceVideoFormatPropertiesKHR")]
     #[inline]
-    pub fn get_physical_device_video_format_properties_khr<'a>(
+    pub fn get_video_format_properties_khr<'a>(
         &self,
         video_format_info: &PhysicalDeviceVideoFormatInfoKHR<'a>,
     ) -> Result<Vec<vk::VideoFormatPropertiesKHR<'static>>> {
         {
-            let r = self
-                .validate_get_physical_device_video_format_properties_khr(
-                    video_format_info,
-                );
+            let r = self.validate_get_video_format_properties_khr(video_format_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_video_format_properties_khr_unchecked(
-                video_format_info,
-            )
-        }
+        unsafe { self.get_video_format_properties_khr_unchecked(video_format_info) }
     }
     /**`vkGetPhysicalDeviceVideoFormatPropertiesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_video_format_properties_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_video_format_properties_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_video_format_properties_khr_unchecked<'a>(
+    pub unsafe fn get_video_format_properties_khr_unchecked<'a>(
         &self,
         video_format_info: &PhysicalDeviceVideoFormatInfoKHR<'a>,
     ) -> Result<Vec<vk::VideoFormatPropertiesKHR<'static>>> {

@@ -73,7 +73,7 @@ The rules are on [`vkGetPhysicalDeviceWin32PresentationSupportKHR`'s reference p
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests run on Linux).*/
     #[doc(alias = "vkGetPhysicalDeviceWin32PresentationSupportKHR")]
     #[inline]
-    pub fn get_physical_device_win32_presentation_support_khr(
+    pub fn get_win32_presentation_support_khr(
         &self,
         queue_family_index: u32,
     ) -> Result<bool> {
@@ -84,19 +84,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (chec
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_win32_presentation_support_khr_unchecked(
-                queue_family_index,
-            )
-        }
+        unsafe { self.get_win32_presentation_support_khr_unchecked(queue_family_index) }
     }
     /**`vkGetPhysicalDeviceWin32PresentationSupportKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_win32_presentation_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_win32_presentation_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_win32_presentation_support_khr_unchecked(
+    pub unsafe fn get_win32_presentation_support_khr_unchecked(
         &self,
         queue_family_index: u32,
     ) -> Result<bool> {

@@ -92,7 +92,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 - 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
     #[doc(alias = "vkGetPhysicalDeviceXlibPresentationSupportKHR")]
     #[inline]
-    pub unsafe fn get_physical_device_xlib_presentation_support_khr(
+    pub unsafe fn get_xlib_presentation_support_khr(
         &self,
         queue_family_index: u32,
         dpy: *mut vk::Display,

@@ -20,31 +20,28 @@ The rules are on [`vkCmdSetViewportWScalingNV`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewportWScalingNV")]
     #[inline]
-    pub fn cmd_set_viewport_w_scaling_nv(
+    pub fn set_viewport_w_scaling_nv(
         &mut self,
         first_viewport: u32,
         viewport_w_scalings: &[vk::ViewportWScalingNV],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_viewport_w_scaling_nv(viewport_w_scalings);
+            let r = self.validate_set_viewport_w_scaling_nv(viewport_w_scalings);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_viewport_w_scaling_nv_unchecked(
-                first_viewport,
-                viewport_w_scalings,
-            )
+            self.set_viewport_w_scaling_nv_unchecked(first_viewport, viewport_w_scalings)
         }
     }
     /**`vkCmdSetViewportWScalingNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_w_scaling_nv`] checks at run time: `VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport_w_scaling_nv`] checks at run time: `VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_w_scaling_nv_unchecked(
+    pub unsafe fn set_viewport_w_scaling_nv_unchecked(
         &mut self,
         first_viewport: u32,
         viewport_w_scalings: &[vk::ViewportWScalingNV],

@@ -25,7 +25,7 @@ The rules are on [`vkGetPhysicalDeviceCooperativeMatrixPropertiesNV`'s reference
 - `VUID-vkGetPhysicalDeviceCooperativeMatrixPropertiesNV-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceCooperativeMatrixPropertiesNV")]
     #[inline]
-    pub unsafe fn get_physical_device_cooperative_matrix_properties_nv(
+    pub unsafe fn get_cooperative_matrix_properties_nv(
         &self,
     ) -> Result<Vec<vk::CooperativeMatrixPropertiesNV<'static>>> {
         let fp = self

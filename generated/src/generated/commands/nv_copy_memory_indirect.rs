@@ -28,20 +28,20 @@ The rules are on [`vkCmdCopyMemoryIndirectNV`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyMemoryIndirectNV")]
     #[inline]
-    pub unsafe fn cmd_copy_memory_indirect_nv(
+    pub unsafe fn copy_memory_indirect_nv(
         &mut self,
         copy_buffer_address: vk::DeviceAddress,
         copy_count: u32,
         stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_memory_indirect_nv();
+            let r = self.validate_copy_memory_indirect_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_memory_indirect_nv_unchecked(
+            self.copy_memory_indirect_nv_unchecked(
                 copy_buffer_address,
                 copy_count,
                 stride,
@@ -52,9 +52,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_memory_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_memory_indirect_nv_unchecked(
+    pub unsafe fn copy_memory_indirect_nv_unchecked(
         &mut self,
         copy_buffer_address: vk::DeviceAddress,
         copy_count: u32,
@@ -115,7 +115,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 - 15: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdCopyMemoryToImageIndirectNV")]
     #[inline]
-    pub unsafe fn cmd_copy_memory_to_image_indirect_nv(
+    pub unsafe fn copy_memory_to_image_indirect_nv(
         &mut self,
         copy_buffer_address: vk::DeviceAddress,
         stride: u32,
@@ -125,7 +125,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_copy_memory_to_image_indirect_nv(
+                .validate_copy_memory_to_image_indirect_nv(
                     dst_image,
                     dst_image_layout,
                     image_subresources,
@@ -135,7 +135,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_memory_to_image_indirect_nv_unchecked(
+            self.copy_memory_to_image_indirect_nv_unchecked(
                 copy_buffer_address,
                 stride,
                 dst_image,
@@ -148,9 +148,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_memory_to_image_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_image_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_memory_to_image_indirect_nv_unchecked(
+    pub unsafe fn copy_memory_to_image_indirect_nv_unchecked(
         &mut self,
         copy_buffer_address: vk::DeviceAddress,
         stride: u32,

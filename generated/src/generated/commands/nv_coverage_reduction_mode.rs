@@ -15,7 +15,7 @@ The rules are on [`vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinatio
 - `VUID-vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV-pCombinations-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceSupportedFramebufferMixedSamplesCombinationsNV")]
     #[inline]
-    pub fn get_physical_device_supported_framebuffer_mixed_samples_combinations_nv(
+    pub fn get_supported_framebuffer_mixed_samples_combinations_nv(
         &self,
     ) -> Result<Vec<vk::FramebufferMixedSamplesCombinationNV<'static>>> {
         let fp = self

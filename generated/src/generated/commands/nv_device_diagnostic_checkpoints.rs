@@ -20,25 +20,25 @@ The rules are on [`vkCmdSetCheckpointNV`'s reference page](https://registry.khro
 - `VUID-vkCmdSetCheckpointNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetCheckpointNV")]
     #[inline]
-    pub unsafe fn cmd_set_checkpoint_nv(
+    pub unsafe fn set_checkpoint_nv(
         &mut self,
         checkpoint_marker: *const core::ffi::c_void,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_checkpoint_nv();
+            let r = self.validate_set_checkpoint_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_checkpoint_nv_unchecked(checkpoint_marker) }
+        unsafe { self.set_checkpoint_nv_unchecked(checkpoint_marker) }
     }
     /**`vkCmdSetCheckpointNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_checkpoint_nv`] checks at run time: `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool`, and those of the structs it takes. `checkpoint_marker` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdSetCheckpointNV` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_checkpoint_nv`] checks at run time: `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool`, and those of the structs it takes. `checkpoint_marker` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdSetCheckpointNV` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_checkpoint_nv_unchecked(
+    pub unsafe fn set_checkpoint_nv_unchecked(
         &mut self,
         checkpoint_marker: *const core::ffi::c_void,
     ) -> Result<()> {
@@ -78,7 +78,7 @@ The rules are on [`vkGetQueueCheckpointDataNV`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetQueueCheckpointDataNV")]
     #[inline]
-    pub unsafe fn get_queue_checkpoint_data_nv(
+    pub unsafe fn get_checkpoint_data_nv(
         &self,
     ) -> Result<Vec<vk::CheckpointDataNV<'static>>> {
         let fp = self

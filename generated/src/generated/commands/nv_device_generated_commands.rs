@@ -21,7 +21,7 @@ The rules are on [`vkCmdBindPipelineShaderGroupNV`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindPipelineShaderGroupNV")]
     #[inline]
-    pub fn cmd_bind_pipeline_shader_group_nv(
+    pub fn bind_pipeline_shader_group_nv(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -29,16 +29,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_bind_pipeline_shader_group_nv(
-                    pipeline_bind_point,
-                    pipeline,
-                );
+                .validate_bind_pipeline_shader_group_nv(pipeline_bind_point, pipeline);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_bind_pipeline_shader_group_nv_unchecked(
+            self.bind_pipeline_shader_group_nv_unchecked(
                 pipeline_bind_point,
                 pipeline,
                 group_index,
@@ -49,9 +46,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_pipeline_shader_group_nv`] checks at run time: `VUID-vkCmdBindPipelineShaderGroupNV-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool`, `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_pipeline_shader_group_nv`] checks at run time: `VUID-vkCmdBindPipelineShaderGroupNV-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool`, `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_pipeline_shader_group_nv_unchecked(
+    pub unsafe fn bind_pipeline_shader_group_nv_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -91,20 +88,19 @@ The rules are on [`vkCmdExecuteGeneratedCommandsNV`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 194 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdExecuteGeneratedCommandsNV")]
     #[inline]
-    pub fn cmd_execute_generated_commands_nv<'a>(
+    pub fn execute_generated_commands_nv<'a>(
         &mut self,
         is_preprocessed: bool,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_execute_generated_commands_nv(generated_commands_info);
+            let r = self.validate_execute_generated_commands_nv(generated_commands_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_execute_generated_commands_nv_unchecked(
+            self.execute_generated_commands_nv_unchecked(
                 is_preprocessed,
                 generated_commands_info,
             )
@@ -114,9 +110,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 194 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_execute_generated_commands_nv`] checks at run time: `VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::execute_generated_commands_nv`] checks at run time: `VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_execute_generated_commands_nv_unchecked<'a>(
+    pub unsafe fn execute_generated_commands_nv_unchecked<'a>(
         &mut self,
         is_preprocessed: bool,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
@@ -180,28 +176,28 @@ The rules are on [`vkCmdPreprocessGeneratedCommandsNV`'s reference page](https:/
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdPreprocessGeneratedCommandsNV")]
     #[inline]
-    pub fn cmd_preprocess_generated_commands_nv<'a>(
+    pub fn preprocess_generated_commands_nv<'a>(
         &mut self,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_preprocess_generated_commands_nv(generated_commands_info);
+                .validate_preprocess_generated_commands_nv(generated_commands_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_preprocess_generated_commands_nv_unchecked(generated_commands_info)
+            self.preprocess_generated_commands_nv_unchecked(generated_commands_info)
         }
     }
     /**`vkCmdPreprocessGeneratedCommandsNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_preprocess_generated_commands_nv`] checks at run time: `VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::preprocess_generated_commands_nv`] checks at run time: `VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_preprocess_generated_commands_nv_unchecked<'a>(
+    pub unsafe fn preprocess_generated_commands_nv_unchecked<'a>(
         &mut self,
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {

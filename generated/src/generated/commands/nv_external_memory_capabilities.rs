@@ -23,7 +23,7 @@ The rules are on [`vkGetPhysicalDeviceExternalImageFormatPropertiesNV`'s referen
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceExternalImageFormatPropertiesNV")]
     #[inline]
-    pub fn get_physical_device_external_image_format_properties_nv(
+    pub fn get_external_image_format_properties_nv(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -34,7 +34,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<vk::ExternalImageFormatPropertiesNV> {
         {
             let r = self
-                .validate_get_physical_device_external_image_format_properties_nv(
+                .validate_get_external_image_format_properties_nv(
                     format,
                     ty,
                     tiling,
@@ -47,7 +47,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_external_image_format_properties_nv_unchecked(
+            self.get_external_image_format_properties_nv_unchecked(
                 format,
                 ty,
                 tiling,
@@ -61,9 +61,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_external_image_format_properties_nv`] checks at run time: `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-format-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-type-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-tiling-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-flags-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-externalHandleType-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_external_image_format_properties_nv`] checks at run time: `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-format-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-type-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-tiling-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-flags-parameter`, `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-externalHandleType-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_external_image_format_properties_nv_unchecked(
+    pub unsafe fn get_external_image_format_properties_nv_unchecked(
         &self,
         format: vk::Format,
         ty: vk::ImageType,

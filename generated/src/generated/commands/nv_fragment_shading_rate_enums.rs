@@ -20,31 +20,28 @@ The rules are on [`vkCmdSetFragmentShadingRateEnumNV`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetFragmentShadingRateEnumNV")]
     #[inline]
-    pub fn cmd_set_fragment_shading_rate_enum_nv(
+    pub fn set_fragment_shading_rate_enum_nv(
         &mut self,
         shading_rate: vk::FragmentShadingRateNV,
         combiner_ops: &[vk::FragmentShadingRateCombinerOpKHR; 2usize],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_fragment_shading_rate_enum_nv(shading_rate);
+            let r = self.validate_set_fragment_shading_rate_enum_nv(shading_rate);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_fragment_shading_rate_enum_nv_unchecked(
-                shading_rate,
-                combiner_ops,
-            )
+            self.set_fragment_shading_rate_enum_nv_unchecked(shading_rate, combiner_ops)
         }
     }
     /**`vkCmdSetFragmentShadingRateEnumNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_fragment_shading_rate_enum_nv`] checks at run time: `VUID-vkCmdSetFragmentShadingRateEnumNV-shadingRate-parameter`, `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_fragment_shading_rate_enum_nv`] checks at run time: `VUID-vkCmdSetFragmentShadingRateEnumNV-shadingRate-parameter`, `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_fragment_shading_rate_enum_nv_unchecked(
+    pub unsafe fn set_fragment_shading_rate_enum_nv_unchecked(
         &mut self,
         shading_rate: vk::FragmentShadingRateNV,
         combiner_ops: &[vk::FragmentShadingRateCombinerOpKHR; 2usize],

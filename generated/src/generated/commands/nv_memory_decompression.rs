@@ -35,20 +35,20 @@ The rules are on [`vkCmdDecompressMemoryIndirectCountNV`'s reference page](https
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDecompressMemoryIndirectCountNV")]
     #[inline]
-    pub unsafe fn cmd_decompress_memory_indirect_count_nv(
+    pub unsafe fn decompress_memory_indirect_count_nv(
         &mut self,
         indirect_commands_address: vk::DeviceAddress,
         indirect_commands_count_address: vk::DeviceAddress,
         stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_decompress_memory_indirect_count_nv();
+            let r = self.validate_decompress_memory_indirect_count_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_decompress_memory_indirect_count_nv_unchecked(
+            self.decompress_memory_indirect_count_nv_unchecked(
                 indirect_commands_address,
                 indirect_commands_count_address,
                 stride,
@@ -59,9 +59,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_decompress_memory_indirect_count_nv`] checks at run time: `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::decompress_memory_indirect_count_nv`] checks at run time: `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_decompress_memory_indirect_count_nv_unchecked(
+    pub unsafe fn decompress_memory_indirect_count_nv_unchecked(
         &mut self,
         indirect_commands_address: vk::DeviceAddress,
         indirect_commands_count_address: vk::DeviceAddress,
@@ -118,25 +118,25 @@ The rules are on [`vkCmdDecompressMemoryNV`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDecompressMemoryNV")]
     #[inline]
-    pub unsafe fn cmd_decompress_memory_nv(
+    pub unsafe fn decompress_memory_nv(
         &mut self,
         decompress_memory_regions: &[vk::DecompressMemoryRegionNV],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_decompress_memory_nv(decompress_memory_regions);
+            let r = self.validate_decompress_memory_nv(decompress_memory_regions);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_decompress_memory_nv_unchecked(decompress_memory_regions) }
+        unsafe { self.decompress_memory_nv_unchecked(decompress_memory_regions) }
     }
     /**`vkCmdDecompressMemoryNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_decompress_memory_nv`] checks at run time: `VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool`, `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::decompress_memory_nv`] checks at run time: `VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool`, `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_decompress_memory_nv_unchecked(
+    pub unsafe fn decompress_memory_nv_unchecked(
         &mut self,
         decompress_memory_regions: &[vk::DecompressMemoryRegionNV],
     ) -> Result<()> {

@@ -22,7 +22,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectCountNV`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 196 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksIndirectCountNV")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_indirect_count_nv(
+    pub fn draw_mesh_tasks_indirect_count_nv(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -33,13 +33,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_draw_mesh_tasks_indirect_count_nv(buffer, count_buffer);
+                .validate_draw_mesh_tasks_indirect_count_nv(buffer, count_buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_mesh_tasks_indirect_count_nv_unchecked(
+            self.draw_mesh_tasks_indirect_count_nv_unchecked(
                 buffer,
                 offset,
                 count_buffer,
@@ -53,9 +53,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 196 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_indirect_count_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_indirect_count_nv_unchecked(
+    pub unsafe fn draw_mesh_tasks_indirect_count_nv_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -107,7 +107,7 @@ The rules are on [`vkCmdDrawMeshTasksIndirectNV`'s reference page](https://regis
 Left to the caller (listed one by one in the crate's `validation.json`): 191 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksIndirectNV")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_indirect_nv(
+    pub fn draw_mesh_tasks_indirect_nv(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -115,13 +115,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191 (ex
         stride: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_mesh_tasks_indirect_nv(buffer);
+            let r = self.validate_draw_mesh_tasks_indirect_nv(buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_mesh_tasks_indirect_nv_unchecked(
+            self.draw_mesh_tasks_indirect_nv_unchecked(
                 buffer,
                 offset,
                 draw_count,
@@ -133,9 +133,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 191 (ex
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_indirect_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_indirect_nv_unchecked(
+    pub unsafe fn draw_mesh_tasks_indirect_nv_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -172,26 +172,26 @@ The rules are on [`vkCmdDrawMeshTasksNV`'s reference page](https://registry.khro
 Left to the caller (listed one by one in the crate's `validation.json`): 183 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdDrawMeshTasksNV")]
     #[inline]
-    pub fn cmd_draw_mesh_tasks_nv(
+    pub fn draw_mesh_tasks_nv(
         &mut self,
         task_count: u32,
         first_task: u32,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_draw_mesh_tasks_nv();
+            let r = self.validate_draw_mesh_tasks_nv();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_draw_mesh_tasks_nv_unchecked(task_count, first_task) }
+        unsafe { self.draw_mesh_tasks_nv_unchecked(task_count, first_task) }
     }
     /**`vkCmdDrawMeshTasksNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_mesh_tasks_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_mesh_tasks_nv_unchecked(
+    pub unsafe fn draw_mesh_tasks_nv_unchecked(
         &mut self,
         task_count: u32,
         first_task: u32,

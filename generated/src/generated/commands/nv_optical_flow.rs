@@ -179,26 +179,26 @@ The rules are on [`vkCmdOpticalFlowExecuteNV`'s reference page](https://registry
 - `VUID-vkCmdOpticalFlowExecuteNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[doc(alias = "vkCmdOpticalFlowExecuteNV")]
     #[inline]
-    pub unsafe fn cmd_optical_flow_execute_nv<'a>(
+    pub unsafe fn optical_flow_execute_nv<'a>(
         &mut self,
         session: &OpticalFlowSessionNV,
         execute_info: &OpticalFlowExecuteInfoNV<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_optical_flow_execute_nv(session, execute_info);
+            let r = self.validate_optical_flow_execute_nv(session, execute_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_optical_flow_execute_nv_unchecked(session, execute_info) }
+        unsafe { self.optical_flow_execute_nv_unchecked(session, execute_info) }
     }
     /**`vkCmdOpticalFlowExecuteNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_optical_flow_execute_nv`] checks at run time: `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`, `VUID-vkCmdOpticalFlowExecuteNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::optical_flow_execute_nv`] checks at run time: `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`, `VUID-vkCmdOpticalFlowExecuteNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_optical_flow_execute_nv_unchecked<'a>(
+    pub unsafe fn optical_flow_execute_nv_unchecked<'a>(
         &mut self,
         session: &OpticalFlowSessionNV,
         execute_info: &OpticalFlowExecuteInfoNV<'a>,
@@ -239,13 +239,13 @@ The rules are on [`vkGetPhysicalDeviceOpticalFlowImageFormatsNV`'s reference pag
 - `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceOpticalFlowImageFormatsNV")]
     #[inline]
-    pub fn get_physical_device_optical_flow_image_formats_nv<'a>(
+    pub fn get_optical_flow_image_formats_nv<'a>(
         &self,
         optical_flow_image_format_info: &OpticalFlowImageFormatInfoNV<'a>,
     ) -> Result<Vec<vk::OpticalFlowImageFormatPropertiesNV<'static>>> {
         {
             let r = self
-                .validate_get_physical_device_optical_flow_image_formats_nv(
+                .validate_get_optical_flow_image_formats_nv(
                     optical_flow_image_format_info,
                 );
             r?;
@@ -253,7 +253,7 @@ The rules are on [`vkGetPhysicalDeviceOpticalFlowImageFormatsNV`'s reference pag
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_optical_flow_image_formats_nv_unchecked(
+            self.get_optical_flow_image_formats_nv_unchecked(
                 optical_flow_image_format_info,
             )
         }
@@ -262,9 +262,9 @@ The rules are on [`vkGetPhysicalDeviceOpticalFlowImageFormatsNV`'s reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_optical_flow_image_formats_nv`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_optical_flow_image_formats_nv`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_optical_flow_image_formats_nv_unchecked<'a>(
+    pub unsafe fn get_optical_flow_image_formats_nv_unchecked<'a>(
         &self,
         optical_flow_image_format_info: &OpticalFlowImageFormatInfoNV<'a>,
     ) -> Result<Vec<vk::OpticalFlowImageFormatPropertiesNV<'static>>> {

@@ -415,7 +415,7 @@ The rules are on [`vkCmdBuildAccelerationStructureNV`'s reference page](https://
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBuildAccelerationStructureNV")]
     #[inline]
-    pub fn cmd_build_acceleration_structure_nv<'a>(
+    pub fn build_acceleration_structure_nv<'a>(
         &mut self,
         info: &AccelerationStructureInfoNV<'a>,
         instance_data: Option<&Buffer>,
@@ -428,7 +428,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_build_acceleration_structure_nv(
+                .validate_build_acceleration_structure_nv(
                     info,
                     instance_data,
                     dst,
@@ -440,7 +440,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_build_acceleration_structure_nv_unchecked(
+            self.build_acceleration_structure_nv_unchecked(
                 info,
                 instance_data,
                 instance_offset,
@@ -456,9 +456,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_build_acceleration_structure_nv`] checks at run time: `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structure_nv`] checks at run time: `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_build_acceleration_structure_nv_unchecked<'a>(
+    pub unsafe fn build_acceleration_structure_nv_unchecked<'a>(
         &mut self,
         info: &AccelerationStructureInfoNV<'a>,
         instance_data: Option<&Buffer>,
@@ -541,27 +541,27 @@ The rules are on [`vkCmdCopyAccelerationStructureNV`'s reference page](https://r
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyAccelerationStructureNV")]
     #[inline]
-    pub fn cmd_copy_acceleration_structure_nv(
+    pub fn copy_acceleration_structure_nv(
         &mut self,
         dst: &AccelerationStructureNV,
         src: &AccelerationStructureNV,
         mode: vk::CopyAccelerationStructureModeKHR,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_copy_acceleration_structure_nv(dst, src, mode);
+            let r = self.validate_copy_acceleration_structure_nv(dst, src, mode);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_acceleration_structure_nv_unchecked(dst, src, mode) }
+        unsafe { self.copy_acceleration_structure_nv_unchecked(dst, src, mode) }
     }
     /**`vkCmdCopyAccelerationStructureNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_acceleration_structure_nv`] checks at run time: `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter`, `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_nv`] checks at run time: `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter`, `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_acceleration_structure_nv_unchecked(
+    pub unsafe fn copy_acceleration_structure_nv_unchecked(
         &mut self,
         dst: &AccelerationStructureNV,
         src: &AccelerationStructureNV,
@@ -603,7 +603,7 @@ The rules are on [`vkCmdTraceRaysNV`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdTraceRaysNV")]
     #[inline]
-    pub fn cmd_trace_rays_nv(
+    pub fn trace_rays_nv(
         &mut self,
         raygen_shader_binding_table_buffer: &Buffer,
         raygen_shader_binding_offset: vk::DeviceSize,
@@ -622,7 +622,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 79 (exp
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_trace_rays_nv(
+                .validate_trace_rays_nv(
                     raygen_shader_binding_table_buffer,
                     miss_shader_binding_table_buffer,
                     hit_shader_binding_table_buffer,
@@ -633,7 +633,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 79 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_trace_rays_nv_unchecked(
+            self.trace_rays_nv_unchecked(
                 raygen_shader_binding_table_buffer,
                 raygen_shader_binding_offset,
                 miss_shader_binding_table_buffer,
@@ -655,9 +655,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 79 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_trace_rays_nv`] checks at run time: `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`, `VUID-vkCmdTraceRaysNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trace_rays_nv`] checks at run time: `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`, `VUID-vkCmdTraceRaysNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_trace_rays_nv_unchecked(
+    pub unsafe fn trace_rays_nv_unchecked(
         &mut self,
         raygen_shader_binding_table_buffer: &Buffer,
         raygen_shader_binding_offset: vk::DeviceSize,
@@ -742,7 +742,7 @@ The rules are on [`vkCmdWriteAccelerationStructuresPropertiesNV`'s reference pag
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesNV")]
     #[inline]
-    pub fn cmd_write_acceleration_structures_properties_nv(
+    pub fn write_acceleration_structures_properties_nv(
         &mut self,
         acceleration_structures: &[&AccelerationStructureNV],
         query_type: vk::QueryType,
@@ -751,7 +751,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_write_acceleration_structures_properties_nv(
+                .validate_write_acceleration_structures_properties_nv(
                     acceleration_structures,
                     query_type,
                     query_pool,
@@ -761,7 +761,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_write_acceleration_structures_properties_nv_unchecked(
+            self.write_acceleration_structures_properties_nv_unchecked(
                 acceleration_structures,
                 query_type,
                 query_pool,
@@ -773,9 +773,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_acceleration_structures_properties_nv`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_nv`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_acceleration_structures_properties_nv_unchecked(
+    pub unsafe fn write_acceleration_structures_properties_nv_unchecked(
         &mut self,
         acceleration_structures: &[&AccelerationStructureNV],
         query_type: vk::QueryType,

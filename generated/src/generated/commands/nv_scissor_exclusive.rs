@@ -20,19 +20,19 @@ The rules are on [`vkCmdSetExclusiveScissorNV`'s reference page](https://registr
 Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetExclusiveScissorNV")]
     #[inline]
-    pub fn cmd_set_exclusive_scissor_nv(
+    pub fn set_exclusive_scissor_nv(
         &mut self,
         first_exclusive_scissor: u32,
         exclusive_scissors: &[vk::Rect2D],
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_set_exclusive_scissor_nv(exclusive_scissors);
+            let r = self.validate_set_exclusive_scissor_nv(exclusive_scissors);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_exclusive_scissor_nv_unchecked(
+            self.set_exclusive_scissor_nv_unchecked(
                 first_exclusive_scissor,
                 exclusive_scissors,
             )
@@ -42,9 +42,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_exclusive_scissor_nv`] checks at run time: `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool`, `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_exclusive_scissor_nv`] checks at run time: `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool`, `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_exclusive_scissor_nv_unchecked(
+    pub unsafe fn set_exclusive_scissor_nv_unchecked(
         &mut self,
         first_exclusive_scissor: u32,
         exclusive_scissors: &[vk::Rect2D],

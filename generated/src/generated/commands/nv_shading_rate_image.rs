@@ -21,29 +21,26 @@ The rules are on [`vkCmdBindShadingRateImageNV`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindShadingRateImageNV")]
     #[inline]
-    pub fn cmd_bind_shading_rate_image_nv(
+    pub fn bind_shading_rate_image_nv(
         &mut self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_cmd_bind_shading_rate_image_nv(image_view, image_layout);
+            let r = self.validate_bind_shading_rate_image_nv(image_view, image_layout);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_bind_shading_rate_image_nv_unchecked(image_view, image_layout)
-        }
+        unsafe { self.bind_shading_rate_image_nv_unchecked(image_view, image_layout) }
     }
     /**`vkCmdBindShadingRateImageNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_shading_rate_image_nv`] checks at run time: `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`, `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`, `VUID-vkCmdBindShadingRateImageNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_shading_rate_image_nv`] checks at run time: `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`, `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`, `VUID-vkCmdBindShadingRateImageNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_shading_rate_image_nv_unchecked(
+    pub unsafe fn bind_shading_rate_image_nv_unchecked(
         &mut self,
         image_view: Option<&ImageView>,
         image_layout: vk::ImageLayout,
@@ -87,14 +84,14 @@ The rules are on [`vkCmdSetCoarseSampleOrderNV`'s reference page](https://regist
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCoarseSampleOrderNV")]
     #[inline]
-    pub fn cmd_set_coarse_sample_order_nv<'a>(
+    pub fn set_coarse_sample_order_nv<'a>(
         &mut self,
         sample_order_type: vk::CoarseSampleOrderTypeNV,
         custom_sample_orders: &[CoarseSampleOrderCustomNV<'a>],
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_coarse_sample_order_nv(
+                .validate_set_coarse_sample_order_nv(
                     sample_order_type,
                     custom_sample_orders,
                 );
@@ -103,7 +100,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_coarse_sample_order_nv_unchecked(
+            self.set_coarse_sample_order_nv_unchecked(
                 sample_order_type,
                 custom_sample_orders,
             )
@@ -113,9 +110,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_coarse_sample_order_nv`] checks at run time: `VUID-vkCmdSetCoarseSampleOrderNV-sampleOrderType-parameter`, `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_coarse_sample_order_nv`] checks at run time: `VUID-vkCmdSetCoarseSampleOrderNV-sampleOrderType-parameter`, `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_coarse_sample_order_nv_unchecked<'a>(
+    pub unsafe fn set_coarse_sample_order_nv_unchecked<'a>(
         &mut self,
         sample_order_type: vk::CoarseSampleOrderTypeNV,
         custom_sample_orders: &[CoarseSampleOrderCustomNV<'a>],
@@ -157,22 +154,20 @@ The rules are on [`vkCmdSetViewportShadingRatePaletteNV`'s reference page](https
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewportShadingRatePaletteNV")]
     #[inline]
-    pub fn cmd_set_viewport_shading_rate_palette_nv<'a>(
+    pub fn set_viewport_shading_rate_palette_nv<'a>(
         &mut self,
         first_viewport: u32,
         shading_rate_palettes: &[ShadingRatePaletteNV<'a>],
     ) -> Result<()> {
         {
             let r = self
-                .validate_cmd_set_viewport_shading_rate_palette_nv(
-                    shading_rate_palettes,
-                );
+                .validate_set_viewport_shading_rate_palette_nv(shading_rate_palettes);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_viewport_shading_rate_palette_nv_unchecked(
+            self.set_viewport_shading_rate_palette_nv_unchecked(
                 first_viewport,
                 shading_rate_palettes,
             )
@@ -182,9 +177,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_shading_rate_palette_nv`] checks at run time: `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport_shading_rate_palette_nv`] checks at run time: `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_shading_rate_palette_nv_unchecked<'a>(
+    pub unsafe fn set_viewport_shading_rate_palette_nv_unchecked<'a>(
         &mut self,
         first_viewport: u32,
         shading_rate_palettes: &[ShadingRatePaletteNV<'a>],

@@ -17,25 +17,25 @@ The rules are on [`vkCmdCuLaunchKernelNVX`'s reference page](https://registry.kh
 - `VUID-vkCmdCuLaunchKernelNVX-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdCuLaunchKernelNVX")]
     #[inline]
-    pub fn cmd_cu_launch_kernel_nvx<'a>(
+    pub fn cu_launch_kernel_nvx<'a>(
         &mut self,
         launch_info: &CuLaunchInfoNVX<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cmd_cu_launch_kernel_nvx();
+            let r = self.validate_cu_launch_kernel_nvx();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_cu_launch_kernel_nvx_unchecked(launch_info) }
+        unsafe { self.cu_launch_kernel_nvx_unchecked(launch_info) }
     }
     /**`vkCmdCuLaunchKernelNVX` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_cu_launch_kernel_nvx`] checks at run time: `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::cu_launch_kernel_nvx`] checks at run time: `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_cu_launch_kernel_nvx_unchecked<'a>(
+    pub unsafe fn cu_launch_kernel_nvx_unchecked<'a>(
         &mut self,
         launch_info: &CuLaunchInfoNVX<'a>,
     ) -> Result<()> {

@@ -80,16 +80,13 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
 
 # Example
 
-Called, as `examples/src/scenes/bezier.rs` (line 85) does; the example programs run in CI:
+Called, as `examples/src/scenes/teapots.rs` (line 96) does; the example programs run in CI:
 
 ```ignore
-let set = d
-    .allocate_descriptor_sets(
-        &pool,
-        &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
-    )?
-    .pop()
-    .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
+let sets = d.allocate_descriptor_sets(
+    &pool,
+    &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+)?;
 ```
 
 # Valid usage
@@ -1732,7 +1729,7 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
 
 # Example
 
-Called, as `examples/src/window.rs` (line 186) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 181) does; the example programs run in CI:
 
 ```ignore
 gpu.device
@@ -1898,12 +1895,12 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
 
 # Example
 
-Called, as `examples/src/window.rs` (line 281) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 274) does; the example programs run in CI:
 
 ```ignore
 // Every frame that used the old images, and every present waiting on their
 // semaphores, is done before they go.
-gpu.device.device_wait_idle()?;
+gpu.device.wait_idle()?;
 ```
 
 # Valid usage
@@ -1913,7 +1910,7 @@ The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.
 - `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
     #[doc(alias = "vkDeviceWaitIdle")]
     #[inline]
-    pub fn device_wait_idle(&self) -> Result<()> {
+    pub fn wait_idle(&self) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2072,7 +2069,7 @@ The caller upholds the rules that [`Self::get_device_memory_commitment`] checks 
 Called, as `examples/src/bin/compute.rs` (line 85) does; the example programs run in CI:
 
 ```ignore
-let queue = device.get_device_queue(family, 0)?;
+let queue = device.get_queue(family, 0)?;
 ```
 
 # Valid usage
@@ -2086,23 +2083,19 @@ The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.
 - `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[doc(alias = "vkGetDeviceQueue")]
     #[inline]
-    pub fn get_device_queue(
-        &self,
-        queue_family_index: u32,
-        queue_index: u32,
-    ) -> Result<Queue> {
+    pub fn get_queue(&self, queue_family_index: u32, queue_index: u32) -> Result<Queue> {
         crate::hooks::get_device_queue_checks(self, queue_family_index, queue_index)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        Ok(unsafe { self.get_device_queue_unchecked(queue_family_index, queue_index) })
+        Ok(unsafe { self.get_queue_unchecked(queue_family_index, queue_index) })
     }
     /**`vkGetDeviceQueue` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_queue`] checks at run time: `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`, `VUID-vkGetDeviceQueue-queueIndex-00385`, `VUID-vkGetDeviceQueue-flags-01841`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_queue`] checks at run time: `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`, `VUID-vkGetDeviceQueue-queueIndex-00385`, `VUID-vkGetDeviceQueue-flags-01841`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_device_queue_unchecked(
+    pub unsafe fn get_queue_unchecked(
         &self,
         queue_family_index: u32,
         queue_index: u32,

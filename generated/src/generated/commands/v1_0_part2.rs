@@ -128,7 +128,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://regist
 - `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceFeatures")]
     #[inline]
-    pub fn get_physical_device_features(&self) -> vk::PhysicalDeviceFeatures {
+    pub fn get_features(&self) -> vk::PhysicalDeviceFeatures {
         let fp = self.parent().fns().fp_v1_0().get_physical_device_features;
         let mut out: vk::PhysicalDeviceFeatures = Default::default();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -146,25 +146,25 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https:
 - `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceFormatProperties")]
     #[inline]
-    pub fn get_physical_device_format_properties(
+    pub fn get_format_properties(
         &self,
         format: vk::Format,
     ) -> Result<vk::FormatProperties> {
         {
-            let r = self.validate_get_physical_device_format_properties(format);
+            let r = self.validate_get_format_properties(format);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        Ok(unsafe { self.get_physical_device_format_properties_unchecked(format) })
+        Ok(unsafe { self.get_format_properties_unchecked(format) })
     }
     /**`vkGetPhysicalDeviceFormatProperties` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_format_properties_unchecked(
+    pub unsafe fn get_format_properties_unchecked(
         &self,
         format: vk::Format,
     ) -> vk::FormatProperties {
@@ -192,7 +192,7 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](h
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties")]
     #[inline]
-    pub fn get_physical_device_image_format_properties(
+    pub fn get_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -202,34 +202,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) -> Result<vk::ImageFormatProperties> {
         {
             let r = self
-                .validate_get_physical_device_image_format_properties(
-                    format,
-                    ty,
-                    tiling,
-                    usage,
-                    flags,
-                );
+                .validate_get_image_format_properties(format, ty, tiling, usage, flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_image_format_properties_unchecked(
-                format,
-                ty,
-                tiling,
-                usage,
-                flags,
-            )
+            self.get_image_format_properties_unchecked(format, ty, tiling, usage, flags)
         }
     }
     /**`vkGetPhysicalDeviceImageFormatProperties` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_image_format_properties_unchecked(
+    pub unsafe fn get_image_format_properties_unchecked(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -260,9 +248,7 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https:
 - `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceMemoryProperties")]
     #[inline]
-    pub fn get_physical_device_memory_properties(
-        &self,
-    ) -> vk::PhysicalDeviceMemoryProperties {
+    pub fn get_memory_properties(&self) -> vk::PhysicalDeviceMemoryProperties {
         let fp = self.parent().fns().fp_v1_0().get_physical_device_memory_properties;
         let mut out: vk::PhysicalDeviceMemoryProperties = Default::default();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -278,7 +264,7 @@ Called, as `examples/src/gpu.rs` (line 103) does; the example programs run in CI
 ```ignore
 // A discrete GPU first, then integrated, then anything (lavapipe is a CPU);
 // TUFF_DEVICE picks by name instead (the scene tests pin lavapipe with it).
-let rank = |p: &tuff::PhysicalDevice| match p.get_physical_device_properties().device_type {
+let rank = |p: &tuff::PhysicalDevice| match p.get_properties().device_type {
     // ...
 }
 ```
@@ -291,7 +277,7 @@ The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://regi
 - `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceProperties")]
     #[inline]
-    pub fn get_physical_device_properties(&self) -> vk::PhysicalDeviceProperties {
+    pub fn get_properties(&self) -> vk::PhysicalDeviceProperties {
         let fp = self.parent().fns().fp_v1_0().get_physical_device_properties;
         let mut out: vk::PhysicalDeviceProperties = Default::default();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -309,9 +295,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties")]
     #[inline]
-    pub fn get_physical_device_queue_family_properties(
-        &self,
-    ) -> Result<Vec<vk::QueueFamilyProperties>> {
+    pub fn get_queue_family_properties(&self) -> Result<Vec<vk::QueueFamilyProperties>> {
         let fp = self
             .parent()
             .fns()
@@ -347,7 +331,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties")]
     #[inline]
-    pub fn get_physical_device_sparse_image_format_properties(
+    pub fn get_sparse_image_format_properties(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -357,7 +341,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
     ) -> Result<Vec<vk::SparseImageFormatProperties>> {
         {
             let r = self
-                .validate_get_physical_device_sparse_image_format_properties(
+                .validate_get_sparse_image_format_properties(
                     format,
                     ty,
                     samples,
@@ -374,7 +358,7 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_sparse_image_format_properties_unchecked(
+            self.get_sparse_image_format_properties_unchecked(
                 format,
                 ty,
                 samples,
@@ -387,9 +371,9 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_sparse_image_format_properties`] checks at run time: `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`, `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties_unchecked(
+    pub unsafe fn get_sparse_image_format_properties_unchecked(
         &self,
         format: vk::Format,
         ty: vk::ImageType,
@@ -429,10 +413,20 @@ impl Entry {
 
 # Example
 
-Called, as `examples/src/bin/compute.rs` (line 65) does; the example programs run in CI:
+Called, as `examples/src/gpu.rs` (line 86) does; the example programs run in CI:
 
 ```ignore
-let instance = tuff::Entry::load()?.create_instance(&info)?;
+let instance = entry.create_instance(&info).with_context(|| {
+    let hint = if validation {
+        " (the layer: apt-get install vulkan-validationlayers)"
+    } else {
+        ""
+    };
+    format!(
+        "cannot create a Vulkan instance for the {} scene{hint}",
+        req.scene
+    )
+})?;
 ```
 
 # Valid usage
@@ -626,7 +620,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 - 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names*/
     #[doc(alias = "vkQueueBindSparse")]
     #[inline]
-    pub unsafe fn queue_bind_sparse<'a>(
+    pub unsafe fn bind_sparse<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
@@ -640,21 +634,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
         };
         crate::hooks::queue_bind_sparse_checks(self, bind_info, fence)?;
         {
-            let r = self.validate_queue_bind_sparse(bind_info, fence);
+            let r = self.validate_bind_sparse(bind_info, fence);
             r?;
         }
         let _held = crate::hooks::queue_bind_sparse_gate(self, bind_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.queue_bind_sparse_unchecked(bind_info, fence) }
+        unsafe { self.bind_sparse_unchecked(bind_info, fence) }
     }
     /**`vkQueueBindSparse` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, `VUID-vkQueueBindSparse-pWaitSemaphores-03245`, `VUID-vkQueueBindSparse-pWaitSemaphores-01117`, `VUID-vkQueueBindSparse-pSignalSemaphores-01115`, `VUID-vkQueueBindSparse-pWaitSemaphores-01116`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, `VUID-vkQueueBindSparse-pWaitSemaphores-03245`, `VUID-vkQueueBindSparse-pWaitSemaphores-01117`, `VUID-vkQueueBindSparse-pSignalSemaphores-01115`, `VUID-vkQueueBindSparse-pWaitSemaphores-01116`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn queue_bind_sparse_unchecked<'a>(
+    pub unsafe fn bind_sparse_unchecked<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
         fence: &Fence,
@@ -712,7 +706,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
 - 4: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkQueueSubmit")]
     #[inline]
-    pub fn queue_submit<'a>(
+    pub fn submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: Option<&Fence>,
@@ -728,21 +722,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
         };
         crate::hooks::queue_submit_checks(self, submits, fence)?;
         {
-            let r = self.validate_queue_submit(submits, fence);
+            let r = self.validate_submit(submits, fence);
             r?;
         }
         let _held = crate::hooks::queue_submit_gate(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.queue_submit_unchecked(submits, fence) }
+        unsafe { self.submit_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, `VUID-vkQueueSubmit-pWaitSemaphores-03238`, `VUID-VkSubmitInfo-pWaitDstStageMask-00078`, `VUID-VkSubmitInfo-pWaitDstStageMask-04090`, `VUID-VkSubmitInfo-pWaitDstStageMask-04091`, `VUID-VkSubmitInfo-pWaitDstStageMask-03937`, `VUID-vkQueueSubmit-pWaitDstStageMask-00066`, `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`, `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`, `VUID-vkQueueSubmit-pSignalSemaphores-00067`, `VUID-vkQueueSubmit-pWaitSemaphores-00069`, `VUID-vkQueueSubmit-pWaitSemaphores-00068`, `VUID-vkQueueSubmit-pCommandBuffers-00074`, `VUID-vkQueueSubmit-queue-06448`, `VUID-VkSubmitInfo-pNext-04120`, `VUID-VkSubmitInfo-pNext-04148`, `VUID-vkQueueSubmit-pCommandBuffers-00065`, `VUID-VkSubmitInfo-pSignalSemaphores-03242`, `VUID-VkSubmitInfo-pWaitSemaphores-03243`, `VUID-VkSubmitInfo-pSignalSemaphores-03244`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::submit`] checks at run time: `VUID-vkQueueSubmit-commonparent`, `VUID-vkQueueSubmit-fence-00063`, `VUID-vkQueueSubmit-fence-00064`, `VUID-VkSubmitInfo-pCommandBuffers-00075`, `VUID-vkQueueSubmit-pCommandBuffers-00070`, `VUID-vkQueueSubmit-pCommandBuffers-00071`, `VUID-vkQueueSubmit-pCommandBuffers-00072`, `VUID-vkQueueSubmit-pCommandBuffers-00073`, `VUID-VkSubmitInfo-pWaitSemaphores-03239`, `VUID-VkSubmitInfo-pNext-03240`, `VUID-VkSubmitInfo-pNext-03241`, `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`, `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`, `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`, `VUID-vkQueueSubmit-pWaitSemaphores-03238`, `VUID-VkSubmitInfo-pWaitDstStageMask-00078`, `VUID-VkSubmitInfo-pWaitDstStageMask-04090`, `VUID-VkSubmitInfo-pWaitDstStageMask-04091`, `VUID-VkSubmitInfo-pWaitDstStageMask-03937`, `VUID-vkQueueSubmit-pWaitDstStageMask-00066`, `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`, `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`, `VUID-vkQueueSubmit-pSignalSemaphores-00067`, `VUID-vkQueueSubmit-pWaitSemaphores-00069`, `VUID-vkQueueSubmit-pWaitSemaphores-00068`, `VUID-vkQueueSubmit-pCommandBuffers-00074`, `VUID-vkQueueSubmit-queue-06448`, `VUID-VkSubmitInfo-pNext-04120`, `VUID-VkSubmitInfo-pNext-04148`, `VUID-vkQueueSubmit-pCommandBuffers-00065`, `VUID-VkSubmitInfo-pSignalSemaphores-03242`, `VUID-VkSubmitInfo-pWaitSemaphores-03243`, `VUID-VkSubmitInfo-pSignalSemaphores-03244`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn queue_submit_unchecked<'a>(
+    pub unsafe fn submit_unchecked<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: Option<&Fence>,
@@ -781,7 +775,7 @@ The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.o
 - `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
     #[doc(alias = "vkQueueWaitIdle")]
     #[inline]
-    pub fn queue_wait_idle(&self) -> Result<()> {
+    pub fn wait_idle(&self) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -811,10 +805,7 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
 - `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
     #[doc(alias = "vkResetCommandBuffer")]
     #[inline]
-    pub fn reset_command_buffer(
-        &mut self,
-        flags: vk::CommandBufferResetFlags,
-    ) -> Result<()> {
+    pub fn reset(&mut self, flags: vk::CommandBufferResetFlags) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -824,20 +815,20 @@ The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khro
         };
         crate::hooks::reset_command_buffer_checks(self)?;
         {
-            let r = self.validate_reset_command_buffer(flags);
+            let r = self.validate_reset(flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.reset_command_buffer_unchecked(flags) }
+        unsafe { self.reset_unchecked(flags) }
     }
     /**`vkResetCommandBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_buffer`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, `VUID-vkResetCommandBuffer-commandBuffer-00045`, `VUID-vkResetCommandBuffer-commandBuffer-00046`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset`] checks at run time: `VUID-vkResetCommandBuffer-flags-parameter`, `VUID-vkResetCommandBuffer-commandBuffer-00045`, `VUID-vkResetCommandBuffer-commandBuffer-00046`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn reset_command_buffer_unchecked(
+    pub unsafe fn reset_unchecked(
         &mut self,
         flags: vk::CommandBufferResetFlags,
     ) -> Result<()> {

@@ -35,7 +35,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29.
 - 25: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBeginQuery")]
     #[inline]
-    pub unsafe fn cmd_begin_query(
+    pub unsafe fn begin_query(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -43,20 +43,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 29.
     ) -> Result<()> {
         crate::hooks::begin_query_checks(self, query_pool, query)?;
         {
-            let r = self.validate_cmd_begin_query(query_pool, flags);
+            let r = self.validate_begin_query(query_pool, flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_begin_query_unchecked(query_pool, query, flags) }
+        unsafe { self.begin_query_unchecked(query_pool, query, flags) }
     }
     /**`vkCmdBeginQuery` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_query_unchecked(
+    pub unsafe fn begin_query_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -100,27 +100,27 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 - 3: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdEndQuery")]
     #[inline]
-    pub unsafe fn cmd_end_query(
+    pub unsafe fn end_query(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
     ) -> Result<()> {
         crate::hooks::end_query_checks(self, query_pool, query)?;
         {
-            let r = self.validate_cmd_end_query(query_pool);
+            let r = self.validate_end_query(query_pool);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_query_unchecked(query_pool, query) }
+        unsafe { self.end_query_unchecked(query_pool, query) }
     }
     /**`vkCmdEndQuery` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_query_unchecked(
+    pub unsafe fn end_query_unchecked(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -142,7 +142,7 @@ The caller upholds the rules that [`Self::cmd_end_query`] checks at run time: `V
 Called, as `examples/src/bin/compute.rs` (line 184) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_pipeline_barrier(
+rec.pipeline_barrier(
     vk::PipelineStageFlags::COMPUTE_SHADER,
     vk::PipelineStageFlags::HOST,
     vk::DependencyFlags::empty(),
@@ -191,7 +191,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 - 18: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdPipelineBarrier")]
     #[inline]
-    pub fn cmd_pipeline_barrier<'a>(
+    pub fn pipeline_barrier<'a>(
         &mut self,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
@@ -211,7 +211,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
         )?;
         {
             let r = self
-                .validate_cmd_pipeline_barrier(
+                .validate_pipeline_barrier(
                     src_stage_mask,
                     dst_stage_mask,
                     dependency_flags,
@@ -224,7 +224,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_pipeline_barrier_unchecked(
+            self.pipeline_barrier_unchecked(
                 src_stage_mask,
                 dst_stage_mask,
                 dependency_flags,
@@ -238,9 +238,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier-srcStageMask-04090`, `VUID-vkCmdPipelineBarrier-srcStageMask-04091`, `VUID-vkCmdPipelineBarrier-dstStageMask-04090`, `VUID-vkCmdPipelineBarrier-dstStageMask-04091`, `VUID-VkImageMemoryBarrier-oldLayout-01197`, `VUID-vkCmdPipelineBarrier-pDependencies-02285`, `VUID-vkCmdPipelineBarrier-image-04073`, `VUID-VkImageMemoryBarrier-oldLayout-01208`, `VUID-VkImageMemoryBarrier-oldLayout-01209`, `VUID-VkImageMemoryBarrier-oldLayout-01210`, `VUID-VkImageMemoryBarrier-oldLayout-01211`, `VUID-VkImageMemoryBarrier-oldLayout-01212`, `VUID-VkImageMemoryBarrier-oldLayout-01213`, `VUID-VkImageMemoryBarrier-oldLayout-01658`, `VUID-VkImageMemoryBarrier-oldLayout-01659`, `VUID-VkImageMemoryBarrier-newLayout-01198`, `VUID-VkImageMemoryBarrier-image-01671`, `VUID-VkImageMemoryBarrier-image-03319`, `VUID-VkImageMemoryBarrier-image-03320`, `VUID-VkImageMemoryBarrier-image-04072`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070`, `VUID-VkBufferMemoryBarrier-buffer-04089`, `VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087`, `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`, `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`, `VUID-vkCmdPipelineBarrier-dependencyFlags-01186`, `VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178`, `VUID-vkCmdPipelineBarrier-oldLayout-01181`, `VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182`, `VUID-vkCmdPipelineBarrier-None-06191`, `VUID-vkCmdPipelineBarrier-srcStageMask-03937`, `VUID-vkCmdPipelineBarrier-dstStageMask-03937`, `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817`, `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818`, `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819`, `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820`, `VUID-VkImageMemoryBarrier-image-04071`, `VUID-VkImageMemoryBarrier-synchronization2-03857`, `VUID-VkBufferMemoryBarrier-buffer-04088`, `VUID-VkBufferMemoryBarrier-synchronization2-03853`, `VUID-VkImageMemoryBarrier-image-01672`, `VUID-VkImageMemoryBarrier-image-01673`, `VUID-vkCmdPipelineBarrier-srcStageMask-06461`, `VUID-vkCmdPipelineBarrier-dstStageMask-06462`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time: `VUID-vkCmdPipelineBarrier-srcStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dstStageMask-parameter`, `VUID-vkCmdPipelineBarrier-dependencyFlags-parameter`, `VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier-srcStageMask-04090`, `VUID-vkCmdPipelineBarrier-srcStageMask-04091`, `VUID-vkCmdPipelineBarrier-dstStageMask-04090`, `VUID-vkCmdPipelineBarrier-dstStageMask-04091`, `VUID-VkImageMemoryBarrier-oldLayout-01197`, `VUID-vkCmdPipelineBarrier-pDependencies-02285`, `VUID-vkCmdPipelineBarrier-image-04073`, `VUID-VkImageMemoryBarrier-oldLayout-01208`, `VUID-VkImageMemoryBarrier-oldLayout-01209`, `VUID-VkImageMemoryBarrier-oldLayout-01210`, `VUID-VkImageMemoryBarrier-oldLayout-01211`, `VUID-VkImageMemoryBarrier-oldLayout-01212`, `VUID-VkImageMemoryBarrier-oldLayout-01213`, `VUID-VkImageMemoryBarrier-oldLayout-01658`, `VUID-VkImageMemoryBarrier-oldLayout-01659`, `VUID-VkImageMemoryBarrier-newLayout-01198`, `VUID-VkImageMemoryBarrier-image-01671`, `VUID-VkImageMemoryBarrier-image-03319`, `VUID-VkImageMemoryBarrier-image-03320`, `VUID-VkImageMemoryBarrier-image-04072`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068`, `VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070`, `VUID-VkBufferMemoryBarrier-buffer-04089`, `VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087`, `VUID-vkCmdPipelineBarrier-srcAccessMask-02815`, `VUID-vkCmdPipelineBarrier-dstAccessMask-02816`, `VUID-vkCmdPipelineBarrier-dependencyFlags-01186`, `VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178`, `VUID-vkCmdPipelineBarrier-oldLayout-01181`, `VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182`, `VUID-vkCmdPipelineBarrier-None-06191`, `VUID-vkCmdPipelineBarrier-srcStageMask-03937`, `VUID-vkCmdPipelineBarrier-dstStageMask-03937`, `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817`, `VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818`, `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819`, `VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820`, `VUID-VkImageMemoryBarrier-image-04071`, `VUID-VkImageMemoryBarrier-synchronization2-03857`, `VUID-VkBufferMemoryBarrier-buffer-04088`, `VUID-VkBufferMemoryBarrier-synchronization2-03853`, `VUID-VkImageMemoryBarrier-image-01672`, `VUID-VkImageMemoryBarrier-image-01673`, `VUID-vkCmdPipelineBarrier-srcStageMask-06461`, `VUID-vkCmdPipelineBarrier-dstStageMask-06462`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_pipeline_barrier_unchecked<'a>(
+    pub unsafe fn pipeline_barrier_unchecked<'a>(
         &mut self,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
@@ -344,7 +344,7 @@ The rules are on [`vkCmdWaitEvents`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 33 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdWaitEvents")]
     #[inline]
-    pub unsafe fn cmd_wait_events<'a>(
+    pub unsafe fn wait_events<'a>(
         &mut self,
         events: &[&Event],
         src_stage_mask: vk::PipelineStageFlags,
@@ -360,7 +360,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
         )?;
         {
             let r = self
-                .validate_cmd_wait_events(
+                .validate_wait_events(
                     events,
                     src_stage_mask,
                     dst_stage_mask,
@@ -373,7 +373,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_wait_events_unchecked(
+            self.wait_events_unchecked(
                 events,
                 src_stage_mask,
                 dst_stage_mask,
@@ -387,9 +387,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 33 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_wait_events_unchecked<'a>(
+    pub unsafe fn wait_events_unchecked<'a>(
         &mut self,
         events: &[&Event],
         src_stage_mask: vk::PipelineStageFlags,
@@ -487,29 +487,29 @@ The rules are on [`vkCmdWriteTimestamp`'s reference page](https://registry.khron
 Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdWriteTimestamp")]
     #[inline]
-    pub unsafe fn cmd_write_timestamp(
+    pub unsafe fn write_timestamp(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
         query: u32,
     ) {
         {
-            let r = self.validate_cmd_write_timestamp(pipeline_stage, query_pool);
+            let r = self.validate_write_timestamp(pipeline_stage, query_pool);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_write_timestamp_unchecked(pipeline_stage, query_pool, query) }
+        unsafe { self.write_timestamp_unchecked(pipeline_stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_timestamp_unchecked(
+    pub unsafe fn write_timestamp_unchecked(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,

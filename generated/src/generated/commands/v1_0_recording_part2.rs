@@ -10,7 +10,7 @@ impl<'c> Recorder<'c, Outside> {
 Called, as `examples/src/render.rs` (line 216) does; the example programs run in CI:
 
 ```ignore
-let mut rec = frame.record()?.cmd_begin_render_pass(
+let mut rec = frame.record()?.begin_render_pass(
     &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(area)
         // Without a depth attachment, only the color is cleared.
@@ -44,7 +44,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
 - 3: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBeginRenderPass")]
     #[inline]
-    pub fn cmd_begin_render_pass<'a>(
+    pub fn begin_render_pass<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
@@ -57,7 +57,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
         {
             let r = always
                 .and_then(|()| {
-                    self.validate_cmd_begin_render_pass(render_pass_begin, contents)
+                    self.validate_begin_render_pass(render_pass_begin, contents)
                 });
             if !self.accept(r) {
                 self.skip_begin(true);
@@ -67,15 +67,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 10.
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_begin_render_pass_unchecked(render_pass_begin, contents) }
+        unsafe { self.begin_render_pass_unchecked(render_pass_begin, contents) }
     }
     /**`vkCmdBeginRenderPass` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, `VUID-VkRenderPassBeginInfo-framebuffer-03207`, `VUID-VkRenderPassBeginInfo-framebuffer-03208`, `VUID-VkRenderPassBeginInfo-framebuffer-03209`, `VUID-VkRenderPassBeginInfo-framebuffer-04627`, `VUID-VkRenderPassBeginInfo-framebuffer-03211`, `VUID-VkRenderPassBeginInfo-framebuffer-03212`, `VUID-VkRenderPassBeginInfo-framebuffer-03213`, `VUID-VkRenderPassBeginInfo-framebuffer-03214`, `VUID-VkRenderPassBeginInfo-framebuffer-03216`, `VUID-VkRenderPassBeginInfo-framebuffer-03217`, `VUID-VkRenderPassBeginInfo-renderPass-00904`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`, `VUID-VkRenderPassBeginInfo-framebuffer-02780`, `VUID-VkRenderPassBeginInfo-framebuffer-03215`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114`, `VUID-vkCmdBeginRenderPass-framebuffer-02532`, `VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843`, `VUID-vkCmdBeginRenderPass-srcStageMask-06451`, `VUID-vkCmdBeginRenderPass-dstStageMask-06452`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`, `VUID-VkRenderPassBeginInfo-pNext-02856`, `VUID-VkRenderPassBeginInfo-pNext-02857`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`, `VUID-VkRenderPassBeginInfo-clearValueCount-04962`, `VUID-vkCmdBeginRenderPass-initialLayout-00897`, `VUID-vkCmdBeginRenderPass-initialLayout-00898`, `VUID-vkCmdBeginRenderPass-initialLayout-00899`, `VUID-vkCmdBeginRenderPass-initialLayout-00895`, `VUID-vkCmdBeginRenderPass-initialLayout-01758`, `VUID-vkCmdBeginRenderPass-initialLayout-02842`, `VUID-VkRenderPassBeginInfo-pNext-02850`, `VUID-VkRenderPassBeginInfo-pNext-02851`, `VUID-VkRenderPassBeginInfo-pNext-02852`, `VUID-VkRenderPassBeginInfo-pNext-02853`, `VUID-VkRenderPassBeginInfo-clearValueCount-00902`, `VUID-vkCmdBeginRenderPass-initialLayout-00900`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_render_pass`] checks at run time: `VUID-vkCmdBeginRenderPass-contents-parameter`, `VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass-bufferlevel`, `VUID-VkRenderPassBeginInfo-framebuffer-03207`, `VUID-VkRenderPassBeginInfo-framebuffer-03208`, `VUID-VkRenderPassBeginInfo-framebuffer-03209`, `VUID-VkRenderPassBeginInfo-framebuffer-04627`, `VUID-VkRenderPassBeginInfo-framebuffer-03211`, `VUID-VkRenderPassBeginInfo-framebuffer-03212`, `VUID-VkRenderPassBeginInfo-framebuffer-03213`, `VUID-VkRenderPassBeginInfo-framebuffer-03214`, `VUID-VkRenderPassBeginInfo-framebuffer-03216`, `VUID-VkRenderPassBeginInfo-framebuffer-03217`, `VUID-VkRenderPassBeginInfo-renderPass-00904`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`, `VUID-VkRenderPassBeginInfo-framebuffer-02780`, `VUID-VkRenderPassBeginInfo-framebuffer-03215`, `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114`, `VUID-vkCmdBeginRenderPass-framebuffer-02532`, `VUID-vkCmdBeginRenderPass-stencilInitialLayout-02843`, `VUID-vkCmdBeginRenderPass-srcStageMask-06451`, `VUID-vkCmdBeginRenderPass-dstStageMask-06452`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`, `VUID-VkRenderPassBeginInfo-pNext-02856`, `VUID-VkRenderPassBeginInfo-pNext-02857`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`, `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`, `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907`, `VUID-VkRenderPassBeginInfo-clearValueCount-04962`, `VUID-vkCmdBeginRenderPass-initialLayout-00897`, `VUID-vkCmdBeginRenderPass-initialLayout-00898`, `VUID-vkCmdBeginRenderPass-initialLayout-00899`, `VUID-vkCmdBeginRenderPass-initialLayout-00895`, `VUID-vkCmdBeginRenderPass-initialLayout-01758`, `VUID-vkCmdBeginRenderPass-initialLayout-02842`, `VUID-VkRenderPassBeginInfo-pNext-02850`, `VUID-VkRenderPassBeginInfo-pNext-02851`, `VUID-VkRenderPassBeginInfo-pNext-02852`, `VUID-VkRenderPassBeginInfo-pNext-02853`, `VUID-VkRenderPassBeginInfo-clearValueCount-00902`, `VUID-vkCmdBeginRenderPass-initialLayout-00900`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_render_pass_unchecked<'a>(
+    pub unsafe fn begin_render_pass_unchecked<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
@@ -182,7 +182,7 @@ The rules are on [`vkCmdBlitImage`'s reference page](https://registry.khronos.or
 Left to the caller (listed one by one in the crate's `validation.json`): 27 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBlitImage")]
     #[inline]
-    pub unsafe fn cmd_blit_image(
+    pub unsafe fn blit_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -203,7 +203,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 27 (exp
         )?;
         {
             let r = self
-                .validate_cmd_blit_image(
+                .validate_blit_image(
                     src_image,
                     src_image_layout,
                     dst_image,
@@ -216,7 +216,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 27 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_blit_image_unchecked(
+            self.blit_image_unchecked(
                 src_image,
                 src_image_layout,
                 dst_image,
@@ -230,9 +230,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 27 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_blit_image_unchecked(
+    pub unsafe fn blit_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -313,7 +313,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
 - 10: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdClearColorImage")]
     #[inline]
-    pub unsafe fn cmd_clear_color_image(
+    pub unsafe fn clear_color_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -325,22 +325,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
             crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
         )?;
         {
-            let r = self.validate_cmd_clear_color_image(image, image_layout, ranges);
+            let r = self.validate_clear_color_image(image, image_layout, ranges);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_clear_color_image_unchecked(image, image_layout, color, ranges)
-        }
+        unsafe { self.clear_color_image_unchecked(image, image_layout, color, ranges) }
     }
     /**`vkCmdClearColorImage` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_clear_color_image_unchecked(
+    pub unsafe fn clear_color_image_unchecked(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -413,7 +411,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16.
 - 14: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdClearDepthStencilImage")]
     #[inline]
-    pub unsafe fn cmd_clear_depth_stencil_image(
+    pub unsafe fn clear_depth_stencil_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -426,7 +424,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16.
         )?;
         {
             let r = self
-                .validate_cmd_clear_depth_stencil_image(
+                .validate_clear_depth_stencil_image(
                     image,
                     image_layout,
                     depth_stencil,
@@ -437,7 +435,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_clear_depth_stencil_image_unchecked(
+            self.clear_depth_stencil_image_unchecked(
                 image,
                 image_layout,
                 depth_stencil,
@@ -449,9 +447,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 16.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_clear_depth_stencil_image_unchecked(
+    pub unsafe fn clear_depth_stencil_image_unchecked(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -517,7 +515,7 @@ The rules are on [`vkCmdCopyBuffer`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyBuffer")]
     #[inline]
-    pub unsafe fn cmd_copy_buffer(
+    pub unsafe fn copy_buffer(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -525,20 +523,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<()> {
         crate::hooks::cmd_copy_buffer_checks(self, src_buffer, dst_buffer, regions)?;
         {
-            let r = self.validate_cmd_copy_buffer(src_buffer, dst_buffer, regions);
+            let r = self.validate_copy_buffer(src_buffer, dst_buffer, regions);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
+        unsafe { self.copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
     }
     /**`vkCmdCopyBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer_unchecked(
+    pub unsafe fn copy_buffer_unchecked(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -625,7 +623,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 - 4: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdCopyBufferToImage")]
     #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image(
+    pub unsafe fn copy_buffer_to_image(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -642,7 +640,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
         )?;
         {
             let r = self
-                .validate_cmd_copy_buffer_to_image(
+                .validate_copy_buffer_to_image(
                     src_buffer,
                     dst_image,
                     dst_image_layout,
@@ -659,7 +657,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_buffer_to_image_unchecked(
+            self.copy_buffer_to_image_unchecked(
                 src_buffer,
                 dst_image,
                 dst_image_layout,
@@ -671,9 +669,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image_unchecked(
+    pub unsafe fn copy_buffer_to_image_unchecked(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -799,7 +797,7 @@ The rules are on [`vkCmdCopyImage`'s reference page](https://registry.khronos.or
 Left to the caller (listed one by one in the crate's `validation.json`): 56 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyImage")]
     #[inline]
-    pub unsafe fn cmd_copy_image(
+    pub unsafe fn copy_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -819,7 +817,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
         )?;
         {
             let r = self
-                .validate_cmd_copy_image(
+                .validate_copy_image(
                     src_image,
                     src_image_layout,
                     dst_image,
@@ -831,7 +829,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_image_unchecked(
+            self.copy_image_unchecked(
                 src_image,
                 src_image_layout,
                 dst_image,
@@ -844,9 +842,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 56 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, `VUID-vkCmdCopyImage-srcImageLayout-00128`, `VUID-vkCmdCopyImage-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, `VUID-vkCmdCopyImage-srcImageLayout-00128`, `VUID-vkCmdCopyImage-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_image_unchecked(
+    pub unsafe fn copy_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -891,7 +889,7 @@ The caller upholds the rules that [`Self::cmd_copy_image`] checks at run time: `
 Called, as `examples/src/render.rs` (line 252) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_copy_image_to_buffer(
+rec.copy_image_to_buffer(
     image,
     vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
     buffer,
@@ -963,7 +961,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 - 3: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdCopyImageToBuffer")]
     #[inline]
-    pub fn cmd_copy_image_to_buffer(
+    pub fn copy_image_to_buffer(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -980,7 +978,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
         )?;
         {
             let r = self
-                .validate_cmd_copy_image_to_buffer(
+                .validate_copy_image_to_buffer(
                     src_image,
                     src_image_layout,
                     dst_buffer,
@@ -997,7 +995,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_image_to_buffer_unchecked(
+            self.copy_image_to_buffer_unchecked(
                 src_image,
                 src_image_layout,
                 dst_buffer,
@@ -1009,9 +1007,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`, `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`, `VUID-vkCmdCopyImageToBuffer-pRegions-07274`, `VUID-vkCmdCopyImageToBuffer-pRegions-07275`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`, `VUID-vkCmdCopyImageToBuffer-pRegions-07273`, `VUID-vkCmdCopyImageToBuffer-srcImage-04053`, `VUID-vkCmdCopyImageToBuffer-pRegions-07277`, `VUID-vkCmdCopyImageToBuffer-srcImage-00188`, `VUID-vkCmdCopyImageToBuffer-pRegions-00184`, `VUID-vkCmdCopyImageToBuffer-srcImage-00201`, `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`, `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`, `VUID-vkCmdCopyImageToBuffer-srcImage-00199`, `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`, `VUID-vkCmdCopyImageToBuffer-pRegions-06220`, `VUID-vkCmdCopyImageToBuffer-pRegions-07276`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`, `VUID-vkCmdCopyImageToBuffer-pRegions-07740`, `VUID-vkCmdCopyImageToBuffer-pRegions-07741`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`, `VUID-vkCmdCopyImageToBuffer-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`, `VUID-VkImageSubresourceLayers-aspectMask-00167`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`, `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`, `VUID-vkCmdCopyImageToBuffer-pRegions-07274`, `VUID-vkCmdCopyImageToBuffer-pRegions-07275`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`, `VUID-vkCmdCopyImageToBuffer-pRegions-07273`, `VUID-vkCmdCopyImageToBuffer-srcImage-04053`, `VUID-vkCmdCopyImageToBuffer-pRegions-07277`, `VUID-vkCmdCopyImageToBuffer-srcImage-00188`, `VUID-vkCmdCopyImageToBuffer-pRegions-00184`, `VUID-vkCmdCopyImageToBuffer-srcImage-00201`, `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`, `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`, `VUID-vkCmdCopyImageToBuffer-srcImage-00199`, `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`, `VUID-vkCmdCopyImageToBuffer-pRegions-06220`, `VUID-vkCmdCopyImageToBuffer-pRegions-07276`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`, `VUID-vkCmdCopyImageToBuffer-pRegions-07740`, `VUID-vkCmdCopyImageToBuffer-pRegions-07741`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`, `VUID-vkCmdCopyImageToBuffer-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`, `VUID-VkImageSubresourceLayers-aspectMask-00167`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer_unchecked(
+    pub unsafe fn copy_image_to_buffer_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1080,7 +1078,7 @@ The rules are on [`vkCmdCopyQueryPoolResults`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyQueryPoolResults")]
     #[inline]
-    pub unsafe fn cmd_copy_query_pool_results(
+    pub unsafe fn copy_query_pool_results(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1092,7 +1090,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
     ) {
         {
             let r = self
-                .validate_cmd_copy_query_pool_results(
+                .validate_copy_query_pool_results(
                     query_pool,
                     dst_buffer,
                     dst_offset,
@@ -1106,7 +1104,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_copy_query_pool_results_unchecked(
+            self.copy_query_pool_results_unchecked(
                 query_pool,
                 first_query,
                 query_count,
@@ -1121,9 +1119,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 11 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_query_pool_results_unchecked(
+    pub unsafe fn copy_query_pool_results_unchecked(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1158,7 +1156,7 @@ The caller upholds the rules that [`Self::cmd_copy_query_pool_results`] checks a
 Called, as `examples/src/bin/compute.rs` (line 180) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_dispatch(args.count.div_ceil(GROUP), 1, 1)?;
+rec.dispatch(args.count.div_ceil(GROUP), 1, 1)?;
 ```
 
 # Valid usage
@@ -1198,7 +1196,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 48.
 - 32: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDispatch")]
     #[inline]
-    pub fn cmd_dispatch(
+    pub fn dispatch(
         &mut self,
         group_count_x: u32,
         group_count_y: u32,
@@ -1234,23 +1232,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 48.
             ],
         )?;
         {
-            let r = self
-                .validate_cmd_dispatch(group_count_x, group_count_y, group_count_z);
+            let r = self.validate_dispatch(group_count_x, group_count_y, group_count_z);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_dispatch_unchecked(group_count_x, group_count_y, group_count_z)
-        }
+        unsafe { self.dispatch_unchecked(group_count_x, group_count_y, group_count_z) }
     }
     /**`vkCmdDispatch` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-None-02859`, `VUID-vkCmdDispatch-commandBuffer-02701`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, `VUID-vkCmdDispatch-magFilter-04553`, `VUID-vkCmdDispatch-mipmapMode-04770`, `VUID-vkCmdDispatch-None-02702`, `VUID-vkCmdDispatch-None-02703`, `VUID-vkCmdDispatch-None-02704`, `VUID-vkCmdDispatch-None-04115`, `VUID-vkCmdDispatch-OpImageWrite-04469`, `VUID-vkCmdDispatch-OpTypeImage-07029`, `VUID-vkCmdDispatch-OpTypeImage-07030`, `VUID-vkCmdDispatch-None-06550`, `VUID-vkCmdDispatch-ConstOffset-06551`, `VUID-vkCmdDispatch-commandBuffer-02712`, `VUID-vkCmdDispatch-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::dispatch`] checks at run time: `VUID-vkCmdDispatch-commandBuffer-cmdpool`, `VUID-vkCmdDispatch-groupCountX-00386`, `VUID-vkCmdDispatch-groupCountY-00387`, `VUID-vkCmdDispatch-groupCountZ-00388`, `VUID-vkCmdDispatch-None-02700`, `VUID-vkCmdDispatch-None-02697`, `VUID-vkCmdDispatch-None-02859`, `VUID-vkCmdDispatch-commandBuffer-02701`, `VUID-vkCmdDispatch-viewType-07752`, `VUID-vkCmdDispatch-format-07753`, `VUID-vkCmdDispatch-None-02699`, `VUID-vkCmdDispatch-maintenance4-06425`, `VUID-vkCmdDispatch-None-02691`, `VUID-vkCmdDispatch-None-06479`, `VUID-vkCmdDispatch-OpTypeImage-07027`, `VUID-vkCmdDispatch-OpTypeImage-07028`, `VUID-vkCmdDispatch-commandBuffer-02707`, `VUID-vkCmdDispatch-magFilter-04553`, `VUID-vkCmdDispatch-mipmapMode-04770`, `VUID-vkCmdDispatch-None-02702`, `VUID-vkCmdDispatch-None-02703`, `VUID-vkCmdDispatch-None-02704`, `VUID-vkCmdDispatch-None-04115`, `VUID-vkCmdDispatch-OpImageWrite-04469`, `VUID-vkCmdDispatch-OpTypeImage-07029`, `VUID-vkCmdDispatch-OpTypeImage-07030`, `VUID-vkCmdDispatch-None-06550`, `VUID-vkCmdDispatch-ConstOffset-06551`, `VUID-vkCmdDispatch-commandBuffer-02712`, `VUID-vkCmdDispatch-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_dispatch_unchecked(
+    pub unsafe fn dispatch_unchecked(
         &mut self,
         group_count_x: u32,
         group_count_y: u32,
@@ -1311,7 +1306,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47.
 - 32: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDispatchIndirect")]
     #[inline]
-    pub unsafe fn cmd_dispatch_indirect(
+    pub unsafe fn dispatch_indirect(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -1346,20 +1341,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 47.
             ],
         )?;
         {
-            let r = self.validate_cmd_dispatch_indirect(buffer, offset);
+            let r = self.validate_dispatch_indirect(buffer, offset);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_dispatch_indirect_unchecked(buffer, offset) }
+        unsafe { self.dispatch_indirect_unchecked(buffer, offset) }
     }
     /**`vkCmdDispatchIndirect` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-None-02859`, `VUID-vkCmdDispatchIndirect-commandBuffer-02701`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-None-02859`, `VUID-vkCmdDispatchIndirect-commandBuffer-02701`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_dispatch_indirect_unchecked(
+    pub unsafe fn dispatch_indirect_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -1404,7 +1399,7 @@ The rules are on [`vkCmdFillBuffer`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdFillBuffer")]
     #[inline]
-    pub unsafe fn cmd_fill_buffer(
+    pub unsafe fn fill_buffer(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -1413,20 +1408,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
     ) -> Result<()> {
         crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
         {
-            let r = self.validate_cmd_fill_buffer(dst_buffer);
+            let r = self.validate_fill_buffer(dst_buffer);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
+        unsafe { self.fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
     }
     /**`vkCmdFillBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_fill_buffer_unchecked(
+    pub unsafe fn fill_buffer_unchecked(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -1467,7 +1462,7 @@ The rules are on [`vkCmdResetQueryPool`'s reference page](https://registry.khron
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdResetQueryPool")]
     #[inline]
-    pub unsafe fn cmd_reset_query_pool(
+    pub unsafe fn reset_query_pool(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1480,22 +1475,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
             query_count,
         )?;
         {
-            let r = self.validate_cmd_reset_query_pool(query_pool);
+            let r = self.validate_reset_query_pool(query_pool);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_reset_query_pool_unchecked(query_pool, first_query, query_count)
-        }
+        unsafe { self.reset_query_pool_unchecked(query_pool, first_query, query_count) }
     }
     /**`vkCmdResetQueryPool` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_reset_query_pool_unchecked(
+    pub unsafe fn reset_query_pool_unchecked(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1573,7 +1566,7 @@ The rules are on [`vkCmdResolveImage`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdResolveImage")]
     #[inline]
-    pub unsafe fn cmd_resolve_image(
+    pub unsafe fn resolve_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1593,7 +1586,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
         )?;
         {
             let r = self
-                .validate_cmd_resolve_image(
+                .validate_resolve_image(
                     src_image,
                     src_image_layout,
                     dst_image,
@@ -1605,7 +1598,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_resolve_image_unchecked(
+            self.resolve_image_unchecked(
                 src_image,
                 src_image_layout,
                 dst_image,
@@ -1618,9 +1611,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20 (exp
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_resolve_image_unchecked(
+    pub unsafe fn resolve_image_unchecked(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1691,7 +1684,7 @@ The rules are on [`vkCmdUpdateBuffer`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdUpdateBuffer")]
     #[inline]
-    pub unsafe fn cmd_update_buffer(
+    pub unsafe fn update_buffer(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -1699,20 +1692,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<()> {
         crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
         {
-            let r = self.validate_cmd_update_buffer(dst_buffer, data);
+            let r = self.validate_update_buffer(dst_buffer, data);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_update_buffer_unchecked(dst_buffer, dst_offset, data) }
+        unsafe { self.update_buffer_unchecked(dst_buffer, dst_offset, data) }
     }
     /**`vkCmdUpdateBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_update_buffer_unchecked(
+    pub unsafe fn update_buffer_unchecked(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,

@@ -10,7 +10,7 @@ impl<'c, S: State> Recorder<'c, S> {
 Called, as `examples/src/bin/compute.rs` (line 173) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
 ```
 
 # Valid usage
@@ -42,7 +42,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 - 3: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBindDescriptorSets")]
     #[inline]
-    pub fn cmd_bind_descriptor_sets(
+    pub fn bind_descriptor_sets(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -60,7 +60,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
         )?;
         {
             let r = self
-                .validate_cmd_bind_descriptor_sets(
+                .validate_bind_descriptor_sets(
                     pipeline_bind_point,
                     layout,
                     descriptor_sets,
@@ -70,7 +70,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_bind_descriptor_sets_unchecked(
+            self.bind_descriptor_sets_unchecked(
                 pipeline_bind_point,
                 layout,
                 first_set,
@@ -83,9 +83,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_descriptor_sets_unchecked(
+    pub unsafe fn bind_descriptor_sets_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
@@ -133,7 +133,7 @@ The caller upholds the rules that [`Self::cmd_bind_descriptor_sets`] checks at r
 Called, as `examples/src/scenes/bezier.rs` (line 142) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
+rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
 ```
 
 # Valid usage
@@ -155,7 +155,7 @@ The rules are on [`vkCmdBindIndexBuffer`'s reference page](https://registry.khro
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBindIndexBuffer")]
     #[inline]
-    pub fn cmd_bind_index_buffer(
+    pub fn bind_index_buffer(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -163,20 +163,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
     ) -> Result<()> {
         crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset, index_type)?;
         {
-            let r = self.validate_cmd_bind_index_buffer(buffer, index_type);
+            let r = self.validate_bind_index_buffer(buffer, index_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_bind_index_buffer_unchecked(buffer, offset, index_type) }
+        unsafe { self.bind_index_buffer_unchecked(buffer, offset, index_type) }
     }
     /**`vkCmdBindIndexBuffer` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00432`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00432`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_index_buffer_unchecked(
+    pub unsafe fn bind_index_buffer_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -199,7 +199,7 @@ The caller upholds the rules that [`Self::cmd_bind_index_buffer`] checks at run 
 Called, as `examples/src/bin/compute.rs` (line 172) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
+rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
 ```
 
 # Valid usage
@@ -223,27 +223,27 @@ Left to the caller (listed one by one in the crate's `validation.json`): 17.
 - 15: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBindPipeline")]
     #[inline]
-    pub fn cmd_bind_pipeline(
+    pub fn bind_pipeline(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) -> Result<()> {
         crate::hooks::cmd_bind_pipeline_checks(self, pipeline_bind_point, pipeline)?;
         {
-            let r = self.validate_cmd_bind_pipeline(pipeline_bind_point, pipeline);
+            let r = self.validate_bind_pipeline(pipeline_bind_point, pipeline);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
+        unsafe { self.bind_pipeline_unchecked(pipeline_bind_point, pipeline) }
     }
     /**`vkCmdBindPipeline` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipeline-00781`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipeline-00781`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_pipeline_unchecked(
+    pub unsafe fn bind_pipeline_unchecked(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
@@ -265,7 +265,7 @@ The caller upholds the rules that [`Self::cmd_bind_pipeline`] checks at run time
 Called, as `examples/src/scenes/teapots.rs` (line 160) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
 ```
 
 # Valid usage
@@ -292,7 +292,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
 - 1: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBindVertexBuffers")]
     #[inline]
-    pub fn cmd_bind_vertex_buffers(
+    pub fn bind_vertex_buffers(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -314,22 +314,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2.
             offsets,
         )?;
         {
-            let r = self.validate_cmd_bind_vertex_buffers(first_binding, buffers);
+            let r = self.validate_bind_vertex_buffers(first_binding, buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_bind_vertex_buffers_unchecked(first_binding, buffers, offsets)
-        }
+        unsafe { self.bind_vertex_buffers_unchecked(first_binding, buffers, offsets) }
     }
     /**`vkCmdBindVertexBuffers` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers_unchecked(
+    pub unsafe fn bind_vertex_buffers_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -425,26 +423,26 @@ The rules are on [`vkCmdExecuteCommands`'s reference page](https://registry.khro
 Left to the caller (listed one by one in the crate's `validation.json`): 50 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdExecuteCommands")]
     #[inline]
-    pub unsafe fn cmd_execute_commands(
+    pub unsafe fn execute_commands(
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
         crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
         {
-            let r = self.validate_cmd_execute_commands(command_buffers);
+            let r = self.validate_execute_commands(command_buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_execute_commands_unchecked(command_buffers) }
+        unsafe { self.execute_commands_unchecked(command_buffers) }
     }
     /**`vkCmdExecuteCommands` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_execute_commands_unchecked(
+    pub unsafe fn execute_commands_unchecked(
         &mut self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
@@ -478,7 +476,7 @@ The caller upholds the rules that [`Self::cmd_execute_commands`] checks at run t
 Called, as `examples/src/bin/compute.rs` (line 174) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_push_constants(
+rec.push_constants(
     &layout,
     vk::ShaderStageFlags::COMPUTE,
     0,
@@ -508,7 +506,7 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
 - `VUID-vkCmdPushConstants-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
     #[doc(alias = "vkCmdPushConstants")]
     #[inline]
-    pub fn cmd_push_constants(
+    pub fn push_constants(
         &mut self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
@@ -523,20 +521,20 @@ The rules are on [`vkCmdPushConstants`'s reference page](https://registry.khrono
             values,
         )?;
         {
-            let r = self.validate_cmd_push_constants(layout, stage_flags, values);
+            let r = self.validate_push_constants(layout, stage_flags, values);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_push_constants_unchecked(layout, stage_flags, offset, values) }
+        unsafe { self.push_constants_unchecked(layout, stage_flags, offset, values) }
     }
     /**`vkCmdPushConstants` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_push_constants_unchecked(
+    pub unsafe fn push_constants_unchecked(
         &mut self,
         layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
@@ -573,24 +571,24 @@ The rules are on [`vkCmdSetBlendConstants`'s reference page](https://registry.kh
 - `VUID-vkCmdSetBlendConstants-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetBlendConstants")]
     #[inline]
-    pub fn cmd_set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
+    pub fn set_blend_constants(&mut self, blend_constants: &[f32; 4usize]) {
         {
-            let r = self.validate_cmd_set_blend_constants();
+            let r = self.validate_set_blend_constants();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_blend_constants_unchecked(blend_constants) }
+        unsafe { self.set_blend_constants_unchecked(blend_constants) }
     }
     /**`vkCmdSetBlendConstants` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_blend_constants`] checks at run time: `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_blend_constants`] checks at run time: `VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_blend_constants_unchecked(
+    pub unsafe fn set_blend_constants_unchecked(
         &mut self,
         blend_constants: &[f32; 4usize],
     ) {
@@ -616,14 +614,14 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetDepthBias-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetDepthBias")]
     #[inline]
-    pub fn cmd_set_depth_bias(
+    pub fn set_depth_bias(
         &mut self,
         depth_bias_constant_factor: f32,
         depth_bias_clamp: f32,
         depth_bias_slope_factor: f32,
     ) {
         {
-            let r = self.validate_cmd_set_depth_bias(depth_bias_clamp);
+            let r = self.validate_set_depth_bias(depth_bias_clamp);
             if !self.accept(r) {
                 return;
             }
@@ -631,7 +629,7 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_depth_bias_unchecked(
+            self.set_depth_bias_unchecked(
                 depth_bias_constant_factor,
                 depth_bias_clamp,
                 depth_bias_slope_factor,
@@ -642,9 +640,9 @@ The rules are on [`vkCmdSetDepthBias`'s reference page](https://registry.khronos
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bias`] checks at run time: `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`, `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_bias`] checks at run time: `VUID-vkCmdSetDepthBias-commandBuffer-cmdpool`, `VUID-vkCmdSetDepthBias-depthBiasClamp-00790`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_bias_unchecked(
+    pub unsafe fn set_depth_bias_unchecked(
         &mut self,
         depth_bias_constant_factor: f32,
         depth_bias_clamp: f32,
@@ -682,31 +680,24 @@ The rules are on [`vkCmdSetDepthBounds`'s reference page](https://registry.khron
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthBounds")]
     #[inline]
-    pub fn cmd_set_depth_bounds(
-        &mut self,
-        min_depth_bounds: f32,
-        max_depth_bounds: f32,
-    ) {
+    pub fn set_depth_bounds(&mut self, min_depth_bounds: f32, max_depth_bounds: f32) {
         {
-            let r = self
-                .validate_cmd_set_depth_bounds(min_depth_bounds, max_depth_bounds);
+            let r = self.validate_set_depth_bounds(min_depth_bounds, max_depth_bounds);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds)
-        }
+        unsafe { self.set_depth_bounds_unchecked(min_depth_bounds, max_depth_bounds) }
     }
     /**`vkCmdSetDepthBounds` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bounds`] checks at run time: `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`, `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`, `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_bounds`] checks at run time: `VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool`, `VUID-vkCmdSetDepthBounds-minDepthBounds-02508`, `VUID-vkCmdSetDepthBounds-maxDepthBounds-02509`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_bounds_unchecked(
+    pub unsafe fn set_depth_bounds_unchecked(
         &mut self,
         min_depth_bounds: f32,
         max_depth_bounds: f32,
@@ -733,24 +724,24 @@ The rules are on [`vkCmdSetLineWidth`'s reference page](https://registry.khronos
 - `VUID-vkCmdSetLineWidth-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetLineWidth")]
     #[inline]
-    pub fn cmd_set_line_width(&mut self, line_width: f32) {
+    pub fn set_line_width(&mut self, line_width: f32) {
         {
-            let r = self.validate_cmd_set_line_width(line_width);
+            let r = self.validate_set_line_width(line_width);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_line_width_unchecked(line_width) }
+        unsafe { self.set_line_width_unchecked(line_width) }
     }
     /**`vkCmdSetLineWidth` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, `VUID-vkCmdSetLineWidth-lineWidth-00788`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_line_width`] checks at run time: `VUID-vkCmdSetLineWidth-commandBuffer-cmdpool`, `VUID-vkCmdSetLineWidth-lineWidth-00788`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_line_width_unchecked(&mut self, line_width: f32) {
+    pub unsafe fn set_line_width_unchecked(&mut self, line_width: f32) {
         let fp = self.device().fns().fp_v1_0().cmd_set_line_width;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), line_width) };
@@ -767,7 +758,7 @@ The caller upholds the rules that [`Self::cmd_set_line_width`] checks at run tim
 Called, as `examples/src/render.rs` (line 234) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_set_scissor(0, &[area])?;
+rec.set_scissor(0, &[area])?;
 ```
 
 # Valid usage
@@ -790,27 +781,27 @@ The rules are on [`vkCmdSetScissor`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetScissor")]
     #[inline]
-    pub fn cmd_set_scissor(
+    pub fn set_scissor(
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
         crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
         {
-            let r = self.validate_cmd_set_scissor(scissors);
+            let r = self.validate_set_scissor(scissors);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_scissor_unchecked(first_scissor, scissors) }
+        unsafe { self.set_scissor_unchecked(first_scissor, scissors) }
     }
     /**`vkCmdSetScissor` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_scissor`] checks at run time: `VUID-vkCmdSetScissor-commandBuffer-cmdpool`, `VUID-vkCmdSetScissor-scissorCount-arraylength`, `VUID-vkCmdSetScissor-firstScissor-00592`, `VUID-vkCmdSetScissor-firstScissor-00593`, `VUID-vkCmdSetScissor-scissorCount-00594`, `VUID-vkCmdSetScissor-x-00595`, `VUID-vkCmdSetScissor-offset-00596`, `VUID-vkCmdSetScissor-offset-00597`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_scissor_unchecked(
+    pub unsafe fn set_scissor_unchecked(
         &mut self,
         first_scissor: u32,
         scissors: &[vk::Rect2D],
@@ -848,28 +839,28 @@ The rules are on [`vkCmdSetStencilCompareMask`'s reference page](https://registr
 - `VUID-vkCmdSetStencilCompareMask-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetStencilCompareMask")]
     #[inline]
-    pub fn cmd_set_stencil_compare_mask(
+    pub fn set_stencil_compare_mask(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
     ) {
         {
-            let r = self.validate_cmd_set_stencil_compare_mask(face_mask);
+            let r = self.validate_set_stencil_compare_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
+        unsafe { self.set_stencil_compare_mask_unchecked(face_mask, compare_mask) }
     }
     /**`vkCmdSetStencilCompareMask` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_compare_mask`] checks at run time: `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`, `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_stencil_compare_mask`] checks at run time: `VUID-vkCmdSetStencilCompareMask-faceMask-parameter`, `VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_stencil_compare_mask_unchecked(
+    pub unsafe fn set_stencil_compare_mask_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         compare_mask: u32,
@@ -897,28 +888,28 @@ The rules are on [`vkCmdSetStencilReference`'s reference page](https://registry.
 - `VUID-vkCmdSetStencilReference-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetStencilReference")]
     #[inline]
-    pub fn cmd_set_stencil_reference(
+    pub fn set_stencil_reference(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         reference: u32,
     ) {
         {
-            let r = self.validate_cmd_set_stencil_reference(face_mask);
+            let r = self.validate_set_stencil_reference(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_stencil_reference_unchecked(face_mask, reference) }
+        unsafe { self.set_stencil_reference_unchecked(face_mask, reference) }
     }
     /**`vkCmdSetStencilReference` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_reference`] checks at run time: `VUID-vkCmdSetStencilReference-faceMask-parameter`, `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_stencil_reference`] checks at run time: `VUID-vkCmdSetStencilReference-faceMask-parameter`, `VUID-vkCmdSetStencilReference-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilReference-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_stencil_reference_unchecked(
+    pub unsafe fn set_stencil_reference_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         reference: u32,
@@ -946,28 +937,28 @@ The rules are on [`vkCmdSetStencilWriteMask`'s reference page](https://registry.
 - `VUID-vkCmdSetStencilWriteMask-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
     #[doc(alias = "vkCmdSetStencilWriteMask")]
     #[inline]
-    pub fn cmd_set_stencil_write_mask(
+    pub fn set_stencil_write_mask(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
     ) {
         {
-            let r = self.validate_cmd_set_stencil_write_mask(face_mask);
+            let r = self.validate_set_stencil_write_mask(face_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_stencil_write_mask_unchecked(face_mask, write_mask) }
+        unsafe { self.set_stencil_write_mask_unchecked(face_mask, write_mask) }
     }
     /**`vkCmdSetStencilWriteMask` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at run time: `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`, `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run time: `VUID-vkCmdSetStencilWriteMask-faceMask-parameter`, `VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_stencil_write_mask_unchecked(
+    pub unsafe fn set_stencil_write_mask_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         write_mask: u32,
@@ -989,7 +980,7 @@ The caller upholds the rules that [`Self::cmd_set_stencil_write_mask`] checks at
 Called, as `examples/src/render.rs` (line 223) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_set_viewport(
+rec.set_viewport(
     0,
     &[vk::Viewport {
         x: 0.0,
@@ -1019,27 +1010,27 @@ The rules are on [`vkCmdSetViewport`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewport")]
     #[inline]
-    pub fn cmd_set_viewport(
+    pub fn set_viewport(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
         crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
         {
-            let r = self.validate_cmd_set_viewport(viewports);
+            let r = self.validate_set_viewport(viewports);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_viewport_unchecked(first_viewport, viewports) }
+        unsafe { self.set_viewport_unchecked(first_viewport, viewports) }
     }
     /**`vkCmdSetViewport` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport`] checks at run time: `VUID-vkCmdSetViewport-commandBuffer-cmdpool`, `VUID-vkCmdSetViewport-viewportCount-arraylength`, `VUID-vkCmdSetViewport-firstViewport-01223`, `VUID-vkCmdSetViewport-firstViewport-01224`, `VUID-vkCmdSetViewport-viewportCount-01225`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_unchecked(
+    pub unsafe fn set_viewport_unchecked(
         &mut self,
         first_viewport: u32,
         viewports: &[vk::Viewport],

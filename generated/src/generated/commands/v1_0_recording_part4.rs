@@ -38,28 +38,28 @@ The rules are on [`vkCmdClearAttachments`'s reference page](https://registry.khr
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdClearAttachments")]
     #[inline]
-    pub unsafe fn cmd_clear_attachments(
+    pub unsafe fn clear_attachments(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
     ) {
         {
-            let r = self.validate_cmd_clear_attachments(attachments, rects);
+            let r = self.validate_clear_attachments(attachments, rects);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_clear_attachments_unchecked(attachments, rects) }
+        unsafe { self.clear_attachments_unchecked(attachments, rects) }
     }
     /**`vkCmdClearAttachments` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, `VUID-vkCmdClearAttachments-layerCount-01934`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, `VUID-vkCmdClearAttachments-layerCount-01934`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_clear_attachments_unchecked(
+    pub unsafe fn clear_attachments_unchecked(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
@@ -84,7 +84,7 @@ The caller upholds the rules that [`Self::cmd_clear_attachments`] checks at run 
 Called, as `examples/src/scenes/textured_quad.rs` (line 145) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_draw(4, 1, 0, 0)
+rec.draw(4, 1, 0, 0)
 ```
 
 # Valid usage
@@ -160,7 +160,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 - 128: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDraw")]
     #[inline]
-    pub fn cmd_draw(
+    pub fn draw(
         &mut self,
         vertex_count: u32,
         instance_count: u32,
@@ -257,13 +257,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
             },
         )?;
         {
-            let r = self.validate_cmd_draw();
+            let r = self.validate_draw();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_unchecked(
+            self.draw_unchecked(
                 vertex_count,
                 instance_count,
                 first_vertex,
@@ -275,9 +275,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-commandBuffer-02712`, `VUID-vkCmdDraw-commandBuffer-02713`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-None-02691`, `VUID-vkCmdDraw-None-06479`, `VUID-vkCmdDraw-OpTypeImage-07027`, `VUID-vkCmdDraw-OpTypeImage-07028`, `VUID-vkCmdDraw-commandBuffer-02707`, `VUID-vkCmdDraw-magFilter-04553`, `VUID-vkCmdDraw-mipmapMode-04770`, `VUID-vkCmdDraw-None-02702`, `VUID-vkCmdDraw-None-02703`, `VUID-vkCmdDraw-None-02704`, `VUID-vkCmdDraw-None-04115`, `VUID-vkCmdDraw-OpImageWrite-04469`, `VUID-vkCmdDraw-OpTypeImage-07029`, `VUID-vkCmdDraw-OpTypeImage-07030`, `VUID-vkCmdDraw-None-06550`, `VUID-vkCmdDraw-ConstOffset-06551`, `VUID-vkCmdDraw-None-07748`, `VUID-vkCmdDraw-OpTypeImage-07468`, `VUID-vkCmdDraw-None-07469`, `VUID-vkCmdDraw-None-06537`, `VUID-vkCmdDraw-None-06538`, `VUID-vkCmdDraw-None-06539`, `VUID-vkCmdDraw-blendEnable-04727`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw`] checks at run time: `VUID-vkCmdDraw-commandBuffer-cmdpool`, `VUID-vkCmdDraw-None-02721`, `VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDraw-commandBuffer-02712`, `VUID-vkCmdDraw-commandBuffer-02713`, `VUID-vkCmdDraw-None-02700`, `VUID-vkCmdDraw-None-02697`, `VUID-vkCmdDraw-None-04007`, `VUID-vkCmdDraw-renderPass-02684`, `VUID-vkCmdDraw-subpass-02685`, `VUID-vkCmdDraw-commandBuffer-02701`, `VUID-vkCmdDraw-None-02859`, `VUID-vkCmdDraw-primitiveTopology-03420`, `VUID-vkCmdDraw-pStrides-04884`, `VUID-vkCmdDraw-None-04876`, `VUID-vkCmdDraw-None-04877`, `VUID-vkCmdDraw-None-04879`, `VUID-vkCmdDraw-None-04008`, `VUID-vkCmdDraw-viewMask-06178`, `VUID-vkCmdDraw-colorAttachmentCount-06179`, `VUID-vkCmdDraw-colorAttachmentCount-06180`, `VUID-vkCmdDraw-colorAttachmentCount-07616`, `VUID-vkCmdDraw-pDepthAttachment-06181`, `VUID-vkCmdDraw-pDepthAttachment-07617`, `VUID-vkCmdDraw-pStencilAttachment-06182`, `VUID-vkCmdDraw-pStencilAttachment-07618`, `VUID-vkCmdDraw-viewType-07752`, `VUID-vkCmdDraw-format-07753`, `VUID-vkCmdDraw-None-02699`, `VUID-vkCmdDraw-maintenance4-06425`, `VUID-vkCmdDraw-None-02691`, `VUID-vkCmdDraw-None-06479`, `VUID-vkCmdDraw-OpTypeImage-07027`, `VUID-vkCmdDraw-OpTypeImage-07028`, `VUID-vkCmdDraw-commandBuffer-02707`, `VUID-vkCmdDraw-magFilter-04553`, `VUID-vkCmdDraw-mipmapMode-04770`, `VUID-vkCmdDraw-None-02702`, `VUID-vkCmdDraw-None-02703`, `VUID-vkCmdDraw-None-02704`, `VUID-vkCmdDraw-None-04115`, `VUID-vkCmdDraw-OpImageWrite-04469`, `VUID-vkCmdDraw-OpTypeImage-07029`, `VUID-vkCmdDraw-OpTypeImage-07030`, `VUID-vkCmdDraw-None-06550`, `VUID-vkCmdDraw-ConstOffset-06551`, `VUID-vkCmdDraw-None-07748`, `VUID-vkCmdDraw-OpTypeImage-07468`, `VUID-vkCmdDraw-None-07469`, `VUID-vkCmdDraw-None-06537`, `VUID-vkCmdDraw-None-06538`, `VUID-vkCmdDraw-None-06539`, `VUID-vkCmdDraw-blendEnable-04727`, `VUID-vkCmdDraw-viewportCount-03417`, `VUID-vkCmdDraw-scissorCount-03418`, `VUID-vkCmdDraw-viewportCount-03419`, `VUID-vkCmdDraw-None-06886`, `VUID-vkCmdDraw-None-06887`, `VUID-vkCmdDraw-imageView-06172`, `VUID-vkCmdDraw-imageView-06173`, `VUID-vkCmdDraw-imageView-06174`, `VUID-vkCmdDraw-imageView-06175`, `VUID-vkCmdDraw-imageView-06176`, `VUID-vkCmdDraw-imageView-06177`, `VUID-vkCmdDraw-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_unchecked(
+    pub unsafe fn draw_unchecked(
         &mut self,
         vertex_count: u32,
         instance_count: u32,
@@ -307,7 +307,7 @@ The caller upholds the rules that [`Self::cmd_draw`] checks at run time: `VUID-v
 Called, as `examples/src/scenes/bezier.rs` (line 148) does; the example programs run in CI:
 
 ```ignore
-rec.cmd_draw_indexed(16, 1, patch * 16, 0, 0)?;
+rec.draw_indexed(16, 1, patch * 16, 0, 0)?;
 ```
 
 # Valid usage
@@ -385,7 +385,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 - 128: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDrawIndexed")]
     #[inline]
-    pub fn cmd_draw_indexed(
+    pub fn draw_indexed(
         &mut self,
         index_count: u32,
         instance_count: u32,
@@ -498,13 +498,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
             },
         )?;
         {
-            let r = self.validate_cmd_draw_indexed();
+            let r = self.validate_draw_indexed();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_indexed_unchecked(
+            self.draw_indexed_unchecked(
                 index_count,
                 instance_count,
                 first_index,
@@ -517,9 +517,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 147.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-None-02721`, `VUID-vkCmdDrawIndexed-commandBuffer-02712`, `VUID-vkCmdDrawIndexed-commandBuffer-02713`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-None-02691`, `VUID-vkCmdDrawIndexed-None-06479`, `VUID-vkCmdDrawIndexed-OpTypeImage-07027`, `VUID-vkCmdDrawIndexed-OpTypeImage-07028`, `VUID-vkCmdDrawIndexed-commandBuffer-02707`, `VUID-vkCmdDrawIndexed-magFilter-04553`, `VUID-vkCmdDrawIndexed-mipmapMode-04770`, `VUID-vkCmdDrawIndexed-None-02702`, `VUID-vkCmdDrawIndexed-None-02703`, `VUID-vkCmdDrawIndexed-None-02704`, `VUID-vkCmdDrawIndexed-None-04115`, `VUID-vkCmdDrawIndexed-OpImageWrite-04469`, `VUID-vkCmdDrawIndexed-OpTypeImage-07029`, `VUID-vkCmdDrawIndexed-OpTypeImage-07030`, `VUID-vkCmdDrawIndexed-None-06550`, `VUID-vkCmdDrawIndexed-ConstOffset-06551`, `VUID-vkCmdDrawIndexed-None-07748`, `VUID-vkCmdDrawIndexed-OpTypeImage-07468`, `VUID-vkCmdDrawIndexed-None-07469`, `VUID-vkCmdDrawIndexed-None-06537`, `VUID-vkCmdDrawIndexed-None-06538`, `VUID-vkCmdDrawIndexed-None-06539`, `VUID-vkCmdDrawIndexed-blendEnable-04727`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indexed`] checks at run time: `VUID-vkCmdDrawIndexed-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexed-None-02700`, `VUID-vkCmdDrawIndexed-None-02697`, `VUID-vkCmdDrawIndexed-None-07312`, `VUID-vkCmdDrawIndexed-None-04007`, `VUID-vkCmdDrawIndexed-robustBufferAccess2-07825`, `VUID-vkCmdDrawIndexed-maxMultiviewInstanceIndex-02688`, `VUID-vkCmdDrawIndexed-None-02721`, `VUID-vkCmdDrawIndexed-commandBuffer-02712`, `VUID-vkCmdDrawIndexed-commandBuffer-02713`, `VUID-vkCmdDrawIndexed-renderPass-02684`, `VUID-vkCmdDrawIndexed-subpass-02685`, `VUID-vkCmdDrawIndexed-commandBuffer-02701`, `VUID-vkCmdDrawIndexed-None-02859`, `VUID-vkCmdDrawIndexed-primitiveTopology-03420`, `VUID-vkCmdDrawIndexed-pStrides-04884`, `VUID-vkCmdDrawIndexed-None-04876`, `VUID-vkCmdDrawIndexed-None-04877`, `VUID-vkCmdDrawIndexed-None-04879`, `VUID-vkCmdDrawIndexed-None-04008`, `VUID-vkCmdDrawIndexed-viewMask-06178`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexed-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexed-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexed-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexed-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexed-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexed-viewType-07752`, `VUID-vkCmdDrawIndexed-format-07753`, `VUID-vkCmdDrawIndexed-None-02699`, `VUID-vkCmdDrawIndexed-maintenance4-06425`, `VUID-vkCmdDrawIndexed-None-02691`, `VUID-vkCmdDrawIndexed-None-06479`, `VUID-vkCmdDrawIndexed-OpTypeImage-07027`, `VUID-vkCmdDrawIndexed-OpTypeImage-07028`, `VUID-vkCmdDrawIndexed-commandBuffer-02707`, `VUID-vkCmdDrawIndexed-magFilter-04553`, `VUID-vkCmdDrawIndexed-mipmapMode-04770`, `VUID-vkCmdDrawIndexed-None-02702`, `VUID-vkCmdDrawIndexed-None-02703`, `VUID-vkCmdDrawIndexed-None-02704`, `VUID-vkCmdDrawIndexed-None-04115`, `VUID-vkCmdDrawIndexed-OpImageWrite-04469`, `VUID-vkCmdDrawIndexed-OpTypeImage-07029`, `VUID-vkCmdDrawIndexed-OpTypeImage-07030`, `VUID-vkCmdDrawIndexed-None-06550`, `VUID-vkCmdDrawIndexed-ConstOffset-06551`, `VUID-vkCmdDrawIndexed-None-07748`, `VUID-vkCmdDrawIndexed-OpTypeImage-07468`, `VUID-vkCmdDrawIndexed-None-07469`, `VUID-vkCmdDrawIndexed-None-06537`, `VUID-vkCmdDrawIndexed-None-06538`, `VUID-vkCmdDrawIndexed-None-06539`, `VUID-vkCmdDrawIndexed-blendEnable-04727`, `VUID-vkCmdDrawIndexed-viewportCount-03417`, `VUID-vkCmdDrawIndexed-scissorCount-03418`, `VUID-vkCmdDrawIndexed-viewportCount-03419`, `VUID-vkCmdDrawIndexed-None-06886`, `VUID-vkCmdDrawIndexed-None-06887`, `VUID-vkCmdDrawIndexed-imageView-06172`, `VUID-vkCmdDrawIndexed-imageView-06173`, `VUID-vkCmdDrawIndexed-imageView-06174`, `VUID-vkCmdDrawIndexed-imageView-06175`, `VUID-vkCmdDrawIndexed-imageView-06176`, `VUID-vkCmdDrawIndexed-imageView-06177`, `VUID-vkCmdDrawIndexed-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indexed_unchecked(
+    pub unsafe fn draw_indexed_unchecked(
         &mut self,
         index_count: u32,
         instance_count: u32,
@@ -636,7 +636,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 152.
 - 133: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDrawIndexedIndirect")]
     #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect(
+    pub unsafe fn draw_indexed_indirect(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -739,22 +739,22 @@ Left to the caller (listed one by one in the crate's `validation.json`): 152.
             },
         )?;
         {
-            let r = self.validate_cmd_draw_indexed_indirect(buffer, offset, draw_count);
+            let r = self.validate_draw_indexed_indirect(buffer, offset, draw_count);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
+            self.draw_indexed_indirect_unchecked(buffer, offset, draw_count, stride)
         }
     }
     /**`vkCmdDrawIndexedIndirect` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-None-02691`, `VUID-vkCmdDrawIndexedIndirect-None-06479`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`, `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`, `VUID-vkCmdDrawIndexedIndirect-None-02702`, `VUID-vkCmdDrawIndexedIndirect-None-02703`, `VUID-vkCmdDrawIndexedIndirect-None-02704`, `VUID-vkCmdDrawIndexedIndirect-None-04115`, `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`, `VUID-vkCmdDrawIndexedIndirect-None-06550`, `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`, `VUID-vkCmdDrawIndexedIndirect-None-07748`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`, `VUID-vkCmdDrawIndexedIndirect-None-07469`, `VUID-vkCmdDrawIndexedIndirect-None-06537`, `VUID-vkCmdDrawIndexedIndirect-None-06538`, `VUID-vkCmdDrawIndexedIndirect-None-06539`, `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indexed_indirect`] checks at run time: `VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirect-commonparent`, `VUID-vkCmdDrawIndexedIndirect-buffer-02708`, `VUID-vkCmdDrawIndexedIndirect-buffer-02709`, `VUID-vkCmdDrawIndexedIndirect-offset-02710`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02718`, `VUID-vkCmdDrawIndexedIndirect-drawCount-02719`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndexedIndirect-None-02700`, `VUID-vkCmdDrawIndexedIndirect-None-02697`, `VUID-vkCmdDrawIndexedIndirect-None-07312`, `VUID-vkCmdDrawIndexedIndirect-None-04007`, `VUID-vkCmdDrawIndexedIndirect-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirect-subpass-02685`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirect-None-02859`, `VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirect-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirect-None-04876`, `VUID-vkCmdDrawIndexedIndirect-None-04877`, `VUID-vkCmdDrawIndexedIndirect-None-04879`, `VUID-vkCmdDrawIndexedIndirect-None-04008`, `VUID-vkCmdDrawIndexedIndirect-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirect-viewType-07752`, `VUID-vkCmdDrawIndexedIndirect-format-07753`, `VUID-vkCmdDrawIndexedIndirect-None-02699`, `VUID-vkCmdDrawIndexedIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirect-None-02691`, `VUID-vkCmdDrawIndexedIndirect-None-06479`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirect-magFilter-04553`, `VUID-vkCmdDrawIndexedIndirect-mipmapMode-04770`, `VUID-vkCmdDrawIndexedIndirect-None-02702`, `VUID-vkCmdDrawIndexedIndirect-None-02703`, `VUID-vkCmdDrawIndexedIndirect-None-02704`, `VUID-vkCmdDrawIndexedIndirect-None-04115`, `VUID-vkCmdDrawIndexedIndirect-OpImageWrite-04469`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07029`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07030`, `VUID-vkCmdDrawIndexedIndirect-None-06550`, `VUID-vkCmdDrawIndexedIndirect-ConstOffset-06551`, `VUID-vkCmdDrawIndexedIndirect-None-07748`, `VUID-vkCmdDrawIndexedIndirect-OpTypeImage-07468`, `VUID-vkCmdDrawIndexedIndirect-None-07469`, `VUID-vkCmdDrawIndexedIndirect-None-06537`, `VUID-vkCmdDrawIndexedIndirect-None-06538`, `VUID-vkCmdDrawIndexedIndirect-None-06539`, `VUID-vkCmdDrawIndexedIndirect-blendEnable-04727`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirect-None-06886`, `VUID-vkCmdDrawIndexedIndirect-None-06887`, `VUID-vkCmdDrawIndexedIndirect-imageView-06172`, `VUID-vkCmdDrawIndexedIndirect-imageView-06173`, `VUID-vkCmdDrawIndexedIndirect-imageView-06174`, `VUID-vkCmdDrawIndexedIndirect-imageView-06175`, `VUID-vkCmdDrawIndexedIndirect-imageView-06176`, `VUID-vkCmdDrawIndexedIndirect-imageView-06177`, `VUID-vkCmdDrawIndexedIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect_unchecked(
+    pub unsafe fn draw_indexed_indirect_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -860,7 +860,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 151.
 - 132: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDrawIndirect")]
     #[inline]
-    pub unsafe fn cmd_draw_indirect(
+    pub unsafe fn draw_indirect(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -962,20 +962,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 151.
             },
         )?;
         {
-            let r = self.validate_cmd_draw_indirect(buffer, offset, draw_count);
+            let r = self.validate_draw_indirect(buffer, offset, draw_count);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_draw_indirect_unchecked(buffer, offset, draw_count, stride) }
+        unsafe { self.draw_indirect_unchecked(buffer, offset, draw_count, stride) }
     }
     /**`vkCmdDrawIndirect` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-None-02691`, `VUID-vkCmdDrawIndirect-None-06479`, `VUID-vkCmdDrawIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndirect-magFilter-04553`, `VUID-vkCmdDrawIndirect-mipmapMode-04770`, `VUID-vkCmdDrawIndirect-None-02702`, `VUID-vkCmdDrawIndirect-None-02703`, `VUID-vkCmdDrawIndirect-None-02704`, `VUID-vkCmdDrawIndirect-None-04115`, `VUID-vkCmdDrawIndirect-OpImageWrite-04469`, `VUID-vkCmdDrawIndirect-OpTypeImage-07029`, `VUID-vkCmdDrawIndirect-OpTypeImage-07030`, `VUID-vkCmdDrawIndirect-None-06550`, `VUID-vkCmdDrawIndirect-ConstOffset-06551`, `VUID-vkCmdDrawIndirect-None-07748`, `VUID-vkCmdDrawIndirect-OpTypeImage-07468`, `VUID-vkCmdDrawIndirect-None-07469`, `VUID-vkCmdDrawIndirect-None-06537`, `VUID-vkCmdDrawIndirect-None-06538`, `VUID-vkCmdDrawIndirect-None-06539`, `VUID-vkCmdDrawIndirect-blendEnable-04727`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indirect`] checks at run time: `VUID-vkCmdDrawIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirect-commonparent`, `VUID-vkCmdDrawIndirect-buffer-02708`, `VUID-vkCmdDrawIndirect-buffer-02709`, `VUID-vkCmdDrawIndirect-offset-02710`, `VUID-vkCmdDrawIndirect-drawCount-02718`, `VUID-vkCmdDrawIndirect-drawCount-02719`, `VUID-vkCmdDrawIndirect-commandBuffer-02711`, `VUID-vkCmdDrawIndirect-None-02700`, `VUID-vkCmdDrawIndirect-None-02697`, `VUID-vkCmdDrawIndirect-None-04007`, `VUID-vkCmdDrawIndirect-renderPass-02684`, `VUID-vkCmdDrawIndirect-subpass-02685`, `VUID-vkCmdDrawIndirect-commandBuffer-02701`, `VUID-vkCmdDrawIndirect-None-02859`, `VUID-vkCmdDrawIndirect-primitiveTopology-03420`, `VUID-vkCmdDrawIndirect-pStrides-04884`, `VUID-vkCmdDrawIndirect-None-04876`, `VUID-vkCmdDrawIndirect-None-04877`, `VUID-vkCmdDrawIndirect-None-04879`, `VUID-vkCmdDrawIndirect-None-04008`, `VUID-vkCmdDrawIndirect-viewMask-06178`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirect-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirect-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirect-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirect-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirect-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirect-viewType-07752`, `VUID-vkCmdDrawIndirect-format-07753`, `VUID-vkCmdDrawIndirect-None-02699`, `VUID-vkCmdDrawIndirect-maintenance4-06425`, `VUID-vkCmdDrawIndirect-None-02691`, `VUID-vkCmdDrawIndirect-None-06479`, `VUID-vkCmdDrawIndirect-OpTypeImage-07027`, `VUID-vkCmdDrawIndirect-OpTypeImage-07028`, `VUID-vkCmdDrawIndirect-commandBuffer-02707`, `VUID-vkCmdDrawIndirect-magFilter-04553`, `VUID-vkCmdDrawIndirect-mipmapMode-04770`, `VUID-vkCmdDrawIndirect-None-02702`, `VUID-vkCmdDrawIndirect-None-02703`, `VUID-vkCmdDrawIndirect-None-02704`, `VUID-vkCmdDrawIndirect-None-04115`, `VUID-vkCmdDrawIndirect-OpImageWrite-04469`, `VUID-vkCmdDrawIndirect-OpTypeImage-07029`, `VUID-vkCmdDrawIndirect-OpTypeImage-07030`, `VUID-vkCmdDrawIndirect-None-06550`, `VUID-vkCmdDrawIndirect-ConstOffset-06551`, `VUID-vkCmdDrawIndirect-None-07748`, `VUID-vkCmdDrawIndirect-OpTypeImage-07468`, `VUID-vkCmdDrawIndirect-None-07469`, `VUID-vkCmdDrawIndirect-None-06537`, `VUID-vkCmdDrawIndirect-None-06538`, `VUID-vkCmdDrawIndirect-None-06539`, `VUID-vkCmdDrawIndirect-blendEnable-04727`, `VUID-vkCmdDrawIndirect-viewportCount-03417`, `VUID-vkCmdDrawIndirect-scissorCount-03418`, `VUID-vkCmdDrawIndirect-viewportCount-03419`, `VUID-vkCmdDrawIndirect-None-06886`, `VUID-vkCmdDrawIndirect-None-06887`, `VUID-vkCmdDrawIndirect-imageView-06172`, `VUID-vkCmdDrawIndirect-imageView-06173`, `VUID-vkCmdDrawIndirect-imageView-06174`, `VUID-vkCmdDrawIndirect-imageView-06175`, `VUID-vkCmdDrawIndirect-imageView-06176`, `VUID-vkCmdDrawIndirect-imageView-06177`, `VUID-vkCmdDrawIndirect-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indirect_unchecked(
+    pub unsafe fn draw_indirect_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -1000,7 +1000,7 @@ impl<'c> Recorder<'c, InRenderPass> {
 Called, as `examples/src/render.rs` (line 236) does; the example programs run in CI:
 
 ```ignore
-let mut rec = rec.cmd_end_render_pass();
+let mut rec = rec.end_render_pass();
 ```
 
 # Valid usage
@@ -1015,18 +1015,18 @@ The rules are on [`vkCmdEndRenderPass`'s reference page](https://registry.khrono
 - `VUID-vkCmdEndRenderPass-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRenderPass-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndRenderPass-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdEndRenderPass-None-06170`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
+- `VUID-vkCmdEndRenderPass-None-06170`: static (the method exists only on a recorder inside a render pass begun with `begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndRenderPass")]
     #[inline]
-    pub fn cmd_end_render_pass(mut self) -> Recorder<'c, Outside> {
+    pub fn end_render_pass(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_render_pass_checks(
             &mut self,
             ("VUID-vkCmdEndRenderPass-None-00910", "VUID-vkCmdEndRenderPass-None-07004"),
         );
         {
-            let r = always.and_then(|()| self.validate_cmd_end_render_pass());
+            let r = always.and_then(|()| self.validate_end_render_pass());
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -1034,15 +1034,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_render_pass_unchecked() }
+        unsafe { self.end_render_pass_unchecked() }
     }
     /**`vkCmdEndRenderPass` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, `VUID-vkCmdEndRenderPass-None-00910`, `VUID-vkCmdEndRenderPass-None-07004`, `VUID-vkCmdEndRenderPass-None-06170`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_render_pass`] checks at run time: `VUID-vkCmdEndRenderPass-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass-bufferlevel`, `VUID-vkCmdEndRenderPass-None-00910`, `VUID-vkCmdEndRenderPass-None-07004`, `VUID-vkCmdEndRenderPass-None-06170`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
+    pub unsafe fn end_render_pass_unchecked(mut self) -> Recorder<'c, Outside> {
         let fp = self.device().fns().fp_v1_0().cmd_end_render_pass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
@@ -1067,13 +1067,13 @@ The rules are on [`vkCmdNextSubpass`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdNextSubpass")]
     #[inline]
-    pub fn cmd_next_subpass(&mut self, contents: vk::SubpassContents) {
+    pub fn next_subpass(&mut self, contents: vk::SubpassContents) {
         let always: Result<()> = crate::hooks::next_subpass_checks(
             self,
             "VUID-vkCmdNextSubpass-None-00909",
         );
         {
-            let r = always.and_then(|()| self.validate_cmd_next_subpass(contents));
+            let r = always.and_then(|()| self.validate_next_subpass(contents));
             if r.is_err() {
                 let _ = self.accept(r);
                 return;
@@ -1084,15 +1084,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_next_subpass_unchecked(contents) }
+        unsafe { self.next_subpass_unchecked(contents) }
     }
     /**`vkCmdNextSubpass` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, `VUID-vkCmdNextSubpass-None-00909`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::next_subpass`] checks at run time: `VUID-vkCmdNextSubpass-contents-parameter`, `VUID-vkCmdNextSubpass-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass-bufferlevel`, `VUID-vkCmdNextSubpass-None-00909`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
+    pub unsafe fn next_subpass_unchecked(&mut self, contents: vk::SubpassContents) {
         let fp = self.device().fns().fp_v1_0().cmd_next_subpass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), contents) };
@@ -1131,28 +1131,28 @@ The rules are on [`vkCmdResetEvent`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdResetEvent")]
     #[inline]
-    pub unsafe fn cmd_reset_event(
+    pub unsafe fn reset_event(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
         {
-            let r = self.validate_cmd_reset_event(event, stage_mask);
+            let r = self.validate_reset_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_reset_event_unchecked(event, stage_mask) }
+        unsafe { self.reset_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_reset_event_unchecked(
+    pub unsafe fn reset_event_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
@@ -1192,28 +1192,28 @@ The rules are on [`vkCmdSetEvent`'s reference page](https://registry.khronos.org
 Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetEvent")]
     #[inline]
-    pub unsafe fn cmd_set_event(
+    pub unsafe fn set_event(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
     ) {
         {
-            let r = self.validate_cmd_set_event(event, stage_mask);
+            let r = self.validate_set_event(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_event_unchecked(event, stage_mask) }
+        unsafe { self.set_event_unchecked(event, stage_mask) }
     }
     /**`vkCmdSetEvent` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, `VUID-vkCmdSetEvent-stageMask-04090`, `VUID-vkCmdSetEvent-stageMask-04091`, `VUID-vkCmdSetEvent-stageMask-01149`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, `VUID-vkCmdSetEvent-stageMask-04090`, `VUID-vkCmdSetEvent-stageMask-04091`, `VUID-vkCmdSetEvent-stageMask-01149`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_event_unchecked(
+    pub unsafe fn set_event_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,

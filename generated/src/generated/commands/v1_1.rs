@@ -425,7 +425,7 @@ The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https:/
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetDeviceGroupPeerMemoryFeatures")]
     #[inline]
-    pub unsafe fn get_device_group_peer_memory_features(
+    pub unsafe fn get_group_peer_memory_features(
         &self,
         heap_index: u32,
         local_device_index: u32,
@@ -450,26 +450,23 @@ The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos
 - `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
     #[doc(alias = "vkGetDeviceQueue2")]
     #[inline]
-    pub fn get_device_queue2<'a>(
-        &self,
-        queue_info: &DeviceQueueInfo2<'a>,
-    ) -> Result<Queue> {
+    pub fn get_queue2<'a>(&self, queue_info: &DeviceQueueInfo2<'a>) -> Result<Queue> {
         crate::hooks::get_device_queue2_checks(self, queue_info)?;
         {
-            let r = self.validate_get_device_queue2(queue_info);
+            let r = self.validate_get_queue2(queue_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        Ok(unsafe { self.get_device_queue2_unchecked(queue_info) })
+        Ok(unsafe { self.get_queue2_unchecked(queue_info) })
     }
     /**`vkGetDeviceQueue2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_queue2`] checks at run time: `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`, `VUID-VkDeviceQueueInfo2-flags-06225`, `VUID-VkDeviceQueueInfo2-queueIndex-01843`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_queue2`] checks at run time: `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`, `VUID-VkDeviceQueueInfo2-flags-06225`, `VUID-VkDeviceQueueInfo2-queueIndex-01843`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_device_queue2_unchecked<'a>(
+    pub unsafe fn get_queue2_unchecked<'a>(
         &self,
         queue_info: &DeviceQueueInfo2<'a>,
     ) -> Queue {
@@ -761,22 +758,19 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
 - `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceExternalBufferProperties")]
     #[inline]
-    pub fn get_physical_device_external_buffer_properties<'a>(
+    pub fn get_external_buffer_properties<'a>(
         &self,
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_get_physical_device_external_buffer_properties(
-                    external_buffer_info,
-                );
+            let r = self.validate_get_external_buffer_properties(external_buffer_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_external_buffer_properties_unchecked(
+            self.get_external_buffer_properties_unchecked(
                 external_buffer_info,
                 external_buffer_properties,
             )
@@ -787,9 +781,9 @@ The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_external_buffer_properties`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_external_buffer_properties`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_external_buffer_properties_unchecked<'a>(
+    pub unsafe fn get_external_buffer_properties_unchecked<'a>(
         &self,
         external_buffer_info: &PhysicalDeviceExternalBufferInfo<'a>,
         external_buffer_properties: &mut ExternalBufferProperties<'a>,
@@ -820,22 +814,19 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
 - `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceExternalFenceProperties")]
     #[inline]
-    pub fn get_physical_device_external_fence_properties<'a>(
+    pub fn get_external_fence_properties<'a>(
         &self,
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_get_physical_device_external_fence_properties(
-                    external_fence_info,
-                );
+            let r = self.validate_get_external_fence_properties(external_fence_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_external_fence_properties_unchecked(
+            self.get_external_fence_properties_unchecked(
                 external_fence_info,
                 external_fence_properties,
             )
@@ -846,9 +837,9 @@ The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_external_fence_properties`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_external_fence_properties`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_external_fence_properties_unchecked<'a>(
+    pub unsafe fn get_external_fence_properties_unchecked<'a>(
         &self,
         external_fence_info: &PhysicalDeviceExternalFenceInfo<'a>,
         external_fence_properties: &mut ExternalFenceProperties<'a>,
@@ -879,22 +870,20 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
 - `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceExternalSemaphoreProperties")]
     #[inline]
-    pub fn get_physical_device_external_semaphore_properties<'a>(
+    pub fn get_external_semaphore_properties<'a>(
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_get_physical_device_external_semaphore_properties(
-                    external_semaphore_info,
-                );
+                .validate_get_external_semaphore_properties(external_semaphore_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_external_semaphore_properties_unchecked(
+            self.get_external_semaphore_properties_unchecked(
                 external_semaphore_info,
                 external_semaphore_properties,
             )
@@ -905,9 +894,9 @@ The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_external_semaphore_properties`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_external_semaphore_properties`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_external_semaphore_properties_unchecked<'a>(
+    pub unsafe fn get_external_semaphore_properties_unchecked<'a>(
         &self,
         external_semaphore_info: &PhysicalDeviceExternalSemaphoreInfo<'a>,
         external_semaphore_properties: &mut ExternalSemaphoreProperties<'a>,
@@ -938,10 +927,7 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
 - `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceFeatures2")]
     #[inline]
-    pub fn get_physical_device_features2<'a>(
-        &self,
-        features: &mut PhysicalDeviceFeatures2<'a>,
-    ) {
+    pub fn get_features2<'a>(&self, features: &mut PhysicalDeviceFeatures2<'a>) {
         let fp = self.parent().fns().fp_v1_1().get_physical_device_features2;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe {
@@ -959,36 +945,27 @@ The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https
 - `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceFormatProperties2")]
     #[inline]
-    pub fn get_physical_device_format_properties2<'a>(
+    pub fn get_format_properties2<'a>(
         &self,
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_get_physical_device_format_properties2(
-                    format,
-                    format_properties,
-                );
+            let r = self.validate_get_format_properties2(format, format_properties);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_format_properties2_unchecked(
-                format,
-                format_properties,
-            )
-        };
+        unsafe { self.get_format_properties2_unchecked(format, format_properties) };
         Ok(())
     }
     /**`vkGetPhysicalDeviceFormatProperties2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_format_properties2`] checks at run time: `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_format_properties2_unchecked<'a>(
+    pub unsafe fn get_format_properties2_unchecked<'a>(
         &self,
         format: vk::Format,
         format_properties: &mut FormatProperties2<'a>,
@@ -1016,14 +993,14 @@ The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties2")]
     #[inline]
-    pub fn get_physical_device_image_format_properties2<'a>(
+    pub fn get_image_format_properties2<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
     ) -> Result<()> {
         {
             let r = self
-                .validate_get_physical_device_image_format_properties2(
+                .validate_get_image_format_properties2(
                     image_format_info,
                     image_format_properties,
                 );
@@ -1032,7 +1009,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_physical_device_image_format_properties2_unchecked(
+            self.get_image_format_properties2_unchecked(
                 image_format_info,
                 image_format_properties,
             )
@@ -1042,9 +1019,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_image_format_properties2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_image_format_properties2`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_image_format_properties2_unchecked<'a>(
+    pub unsafe fn get_image_format_properties2_unchecked<'a>(
         &self,
         image_format_info: &PhysicalDeviceImageFormatInfo2<'a>,
         image_format_properties: &mut ImageFormatProperties2<'a>,
@@ -1078,29 +1055,26 @@ The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https
 - `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceMemoryProperties2")]
     #[inline]
-    pub fn get_physical_device_memory_properties2<'a>(
+    pub fn get_memory_properties2<'a>(
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) -> Result<()> {
         {
-            let r = self
-                .validate_get_physical_device_memory_properties2(memory_properties);
+            let r = self.validate_get_memory_properties2(memory_properties);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_memory_properties2_unchecked(memory_properties)
-        };
+        unsafe { self.get_memory_properties2_unchecked(memory_properties) };
         Ok(())
     }
     /**`vkGetPhysicalDeviceMemoryProperties2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_memory_properties2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_memory_properties2`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_memory_properties2_unchecked<'a>(
+    pub unsafe fn get_memory_properties2_unchecked<'a>(
         &self,
         memory_properties: &mut PhysicalDeviceMemoryProperties2<'a>,
     ) {
@@ -1123,26 +1097,26 @@ The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://reg
 - `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
     #[doc(alias = "vkGetPhysicalDeviceProperties2")]
     #[inline]
-    pub fn get_physical_device_properties2<'a>(
+    pub fn get_properties2<'a>(
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_get_physical_device_properties2(properties);
+            let r = self.validate_get_properties2(properties);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_physical_device_properties2_unchecked(properties) };
+        unsafe { self.get_properties2_unchecked(properties) };
         Ok(())
     }
     /**`vkGetPhysicalDeviceProperties2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_properties2`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_properties2`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn get_physical_device_properties2_unchecked<'a>(
+    pub unsafe fn get_properties2_unchecked<'a>(
         &self,
         properties: &mut PhysicalDeviceProperties2<'a>,
     ) {
@@ -1163,7 +1137,7 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
 - `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties2")]
     #[inline]
-    pub fn get_physical_device_queue_family_properties2(
+    pub fn get_queue_family_properties2(
         &self,
     ) -> Result<Vec<vk::QueueFamilyProperties2<'static>>> {
         let fp = self
@@ -1195,33 +1169,26 @@ The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference 
 - `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties2")]
     #[inline]
-    pub fn get_physical_device_sparse_image_format_properties2<'a>(
+    pub fn get_sparse_image_format_properties2<'a>(
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {
         {
-            let r = self
-                .validate_get_physical_device_sparse_image_format_properties2(
-                    format_info,
-                );
+            let r = self.validate_get_sparse_image_format_properties2(format_info);
             r?;
         }
         crate::hooks::sparse_samples2(self, format_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_physical_device_sparse_image_format_properties2_unchecked(
-                format_info,
-            )
-        }
+        unsafe { self.get_sparse_image_format_properties2_unchecked(format_info) }
     }
     /**`vkGetPhysicalDeviceSparseImageFormatProperties2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_physical_device_sparse_image_format_properties2`] checks at run time: `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_sparse_image_format_properties2`] checks at run time: `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn get_physical_device_sparse_image_format_properties2_unchecked<'a>(
+    pub unsafe fn get_sparse_image_format_properties2_unchecked<'a>(
         &self,
         format_info: &PhysicalDeviceSparseImageFormatInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageFormatProperties2<'static>>> {

@@ -49,7 +49,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55.
 - 36: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDispatchBase")]
     #[inline]
-    pub unsafe fn cmd_dispatch_base(
+    pub unsafe fn dispatch_base(
         &mut self,
         base_group_x: u32,
         base_group_y: u32,
@@ -89,13 +89,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55.
         )?;
         {
             let r = self
-                .validate_cmd_dispatch_base(base_group_x, base_group_y, base_group_z);
+                .validate_dispatch_base(base_group_x, base_group_y, base_group_z);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_dispatch_base_unchecked(
+            self.dispatch_base_unchecked(
                 base_group_x,
                 base_group_y,
                 base_group_z,
@@ -109,9 +109,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 55.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-None-02859`, `VUID-vkCmdDispatchBase-commandBuffer-02701`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-None-02859`, `VUID-vkCmdDispatchBase-commandBuffer-02701`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_dispatch_base_unchecked(
+    pub unsafe fn dispatch_base_unchecked(
         &mut self,
         base_group_x: u32,
         base_group_y: u32,
@@ -162,24 +162,24 @@ The rules are on [`vkCmdSetDeviceMask`'s reference page](https://registry.khrono
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDeviceMask")]
     #[inline]
-    pub unsafe fn cmd_set_device_mask(&mut self, device_mask: u32) {
+    pub unsafe fn set_device_mask(&mut self, device_mask: u32) {
         {
-            let r = self.validate_cmd_set_device_mask(device_mask);
+            let r = self.validate_set_device_mask(device_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_device_mask_unchecked(device_mask) }
+        unsafe { self.set_device_mask_unchecked(device_mask) }
     }
     /**`vkCmdSetDeviceMask` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, `VUID-vkCmdSetDeviceMask-deviceMask-00109`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, `VUID-vkCmdSetDeviceMask-deviceMask-00109`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_device_mask_unchecked(&mut self, device_mask: u32) {
+    pub unsafe fn set_device_mask_unchecked(&mut self, device_mask: u32) {
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), device_mask) };

@@ -415,10 +415,10 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
 
 # Example
 
-Called, as `examples/src/window.rs` (line 386) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 379) does; the example programs run in CI:
 
 ```ignore
-match gpu.queue.queue_present_khr(
+match gpu.queue.present_khr(
     &tuff::PresentInfoKHR::new()
         .wait_semaphores(&signals)
         .swapchains(&swapchains, &indices)?,

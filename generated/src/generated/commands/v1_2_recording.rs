@@ -31,7 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9.
 - 2: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBeginRenderPass2")]
     #[inline]
-    pub fn cmd_begin_render_pass2<'a>(
+    pub fn begin_render_pass2<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
@@ -45,7 +45,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9.
             let r = always
                 .and_then(|()| {
                     self
-                        .validate_cmd_begin_render_pass2(
+                        .validate_begin_render_pass2(
                             render_pass_begin,
                             subpass_begin_info,
                         )
@@ -59,16 +59,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
+            self.begin_render_pass2_unchecked(render_pass_begin, subpass_begin_info)
         }
     }
     /**`vkCmdBeginRenderPass2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, `VUID-vkCmdBeginRenderPass2-framebuffer-02779`, `VUID-vkCmdBeginRenderPass2-framebuffer-02533`, `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`, `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`, `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`, `VUID-vkCmdBeginRenderPass2-initialLayout-03097`, `VUID-vkCmdBeginRenderPass2-initialLayout-03098`, `VUID-vkCmdBeginRenderPass2-initialLayout-03099`, `VUID-vkCmdBeginRenderPass2-initialLayout-03094`, `VUID-vkCmdBeginRenderPass2-initialLayout-03096`, `VUID-vkCmdBeginRenderPass2-initialLayout-02844`, `VUID-vkCmdBeginRenderPass2-initialLayout-03100`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_render_pass2`] checks at run time: `VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdBeginRenderPass2-bufferlevel`, `VUID-vkCmdBeginRenderPass2-framebuffer-02779`, `VUID-vkCmdBeginRenderPass2-framebuffer-02533`, `VUID-vkCmdBeginRenderPass2-stencilInitialLayout-02845`, `VUID-vkCmdBeginRenderPass2-srcStageMask-06453`, `VUID-vkCmdBeginRenderPass2-dstStageMask-06454`, `VUID-vkCmdBeginRenderPass2-initialLayout-03097`, `VUID-vkCmdBeginRenderPass2-initialLayout-03098`, `VUID-vkCmdBeginRenderPass2-initialLayout-03099`, `VUID-vkCmdBeginRenderPass2-initialLayout-03094`, `VUID-vkCmdBeginRenderPass2-initialLayout-03096`, `VUID-vkCmdBeginRenderPass2-initialLayout-02844`, `VUID-vkCmdBeginRenderPass2-initialLayout-03100`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_render_pass2_unchecked<'a>(
+    pub unsafe fn begin_render_pass2_unchecked<'a>(
         mut self,
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
@@ -203,7 +203,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
 - 137: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDrawIndexedIndirectCount")]
     #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect_count(
+    pub unsafe fn draw_indexed_indirect_count(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -309,7 +309,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
         )?;
         {
             let r = self
-                .validate_cmd_draw_indexed_indirect_count(
+                .validate_draw_indexed_indirect_count(
                     buffer,
                     offset,
                     count_buffer,
@@ -320,7 +320,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_indexed_indirect_count_unchecked(
+            self.draw_indexed_indirect_count_unchecked(
                 buffer,
                 offset,
                 count_buffer,
@@ -334,9 +334,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 155.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-None-04008`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndexedIndirectCount-format-07753`, `VUID-vkCmdDrawIndexedIndirectCount-None-02699`, `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirectCount-None-02691`, `VUID-vkCmdDrawIndexedIndirectCount-None-06479`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`, `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`, `VUID-vkCmdDrawIndexedIndirectCount-None-02702`, `VUID-vkCmdDrawIndexedIndirectCount-None-02703`, `VUID-vkCmdDrawIndexedIndirectCount-None-02704`, `VUID-vkCmdDrawIndexedIndirectCount-None-04115`, `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`, `VUID-vkCmdDrawIndexedIndirectCount-None-06550`, `VUID-vkCmdDrawIndexedIndirectCount-ConstOffset-06551`, `VUID-vkCmdDrawIndexedIndirectCount-None-07748`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`, `VUID-vkCmdDrawIndexedIndirectCount-None-07469`, `VUID-vkCmdDrawIndexedIndirectCount-None-06537`, `VUID-vkCmdDrawIndexedIndirectCount-None-06538`, `VUID-vkCmdDrawIndexedIndirectCount-None-06539`, `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`, `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirectCount-None-06886`, `VUID-vkCmdDrawIndexedIndirectCount-None-06887`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06174`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`, `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indexed_indirect_count`] checks at run time: `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndexedIndirectCount-commonparent`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndexedIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndexedIndirectCount-offset-02710`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02711`, `VUID-vkCmdDrawIndexedIndirectCount-None-02700`, `VUID-vkCmdDrawIndexedIndirectCount-None-02697`, `VUID-vkCmdDrawIndexedIndirectCount-None-07312`, `VUID-vkCmdDrawIndexedIndirectCount-None-04007`, `VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndexedIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndexedIndirectCount-None-02859`, `VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndexedIndirectCount-None-04876`, `VUID-vkCmdDrawIndexedIndirectCount-None-04877`, `VUID-vkCmdDrawIndexedIndirectCount-None-04879`, `VUID-vkCmdDrawIndexedIndirectCount-None-04008`, `VUID-vkCmdDrawIndexedIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndexedIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndexedIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndexedIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndexedIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndexedIndirectCount-format-07753`, `VUID-vkCmdDrawIndexedIndirectCount-None-02699`, `VUID-vkCmdDrawIndexedIndirectCount-maintenance4-06425`, `VUID-vkCmdDrawIndexedIndirectCount-None-02691`, `VUID-vkCmdDrawIndexedIndirectCount-None-06479`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07027`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07028`, `VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02707`, `VUID-vkCmdDrawIndexedIndirectCount-magFilter-04553`, `VUID-vkCmdDrawIndexedIndirectCount-mipmapMode-04770`, `VUID-vkCmdDrawIndexedIndirectCount-None-02702`, `VUID-vkCmdDrawIndexedIndirectCount-None-02703`, `VUID-vkCmdDrawIndexedIndirectCount-None-02704`, `VUID-vkCmdDrawIndexedIndirectCount-None-04115`, `VUID-vkCmdDrawIndexedIndirectCount-OpImageWrite-04469`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07029`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07030`, `VUID-vkCmdDrawIndexedIndirectCount-None-06550`, `VUID-vkCmdDrawIndexedIndirectCount-ConstOffset-06551`, `VUID-vkCmdDrawIndexedIndirectCount-None-07748`, `VUID-vkCmdDrawIndexedIndirectCount-OpTypeImage-07468`, `VUID-vkCmdDrawIndexedIndirectCount-None-07469`, `VUID-vkCmdDrawIndexedIndirectCount-None-06537`, `VUID-vkCmdDrawIndexedIndirectCount-None-06538`, `VUID-vkCmdDrawIndexedIndirectCount-None-06539`, `VUID-vkCmdDrawIndexedIndirectCount-blendEnable-04727`, `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03417`, `VUID-vkCmdDrawIndexedIndirectCount-scissorCount-03418`, `VUID-vkCmdDrawIndexedIndirectCount-viewportCount-03419`, `VUID-vkCmdDrawIndexedIndirectCount-None-06886`, `VUID-vkCmdDrawIndexedIndirectCount-None-06887`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06172`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06173`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06174`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06175`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06176`, `VUID-vkCmdDrawIndexedIndirectCount-imageView-06177`, `VUID-vkCmdDrawIndexedIndirectCount-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indexed_indirect_count_unchecked(
+    pub unsafe fn draw_indexed_indirect_count_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -461,7 +461,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154.
 - 136: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdDrawIndirectCount")]
     #[inline]
-    pub unsafe fn cmd_draw_indirect_count(
+    pub unsafe fn draw_indirect_count(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -566,7 +566,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154.
         )?;
         {
             let r = self
-                .validate_cmd_draw_indirect_count(
+                .validate_draw_indirect_count(
                     buffer,
                     offset,
                     count_buffer,
@@ -577,7 +577,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154.
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_draw_indirect_count_unchecked(
+            self.draw_indirect_count_unchecked(
                 buffer,
                 offset,
                 count_buffer,
@@ -591,9 +591,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 154.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-None-04008`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndirectCount-format-07753`, `VUID-vkCmdDrawIndirectCount-None-02699`, `VUID-vkCmdDrawIndirectCount-maintenance4-06425`, `VUID-vkCmdDrawIndirectCount-None-02691`, `VUID-vkCmdDrawIndirectCount-None-06479`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`, `VUID-vkCmdDrawIndirectCount-magFilter-04553`, `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`, `VUID-vkCmdDrawIndirectCount-None-02702`, `VUID-vkCmdDrawIndirectCount-None-02703`, `VUID-vkCmdDrawIndirectCount-None-02704`, `VUID-vkCmdDrawIndirectCount-None-04115`, `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`, `VUID-vkCmdDrawIndirectCount-None-06550`, `VUID-vkCmdDrawIndirectCount-ConstOffset-06551`, `VUID-vkCmdDrawIndirectCount-None-07748`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`, `VUID-vkCmdDrawIndirectCount-None-07469`, `VUID-vkCmdDrawIndirectCount-None-06537`, `VUID-vkCmdDrawIndirectCount-None-06538`, `VUID-vkCmdDrawIndirectCount-None-06539`, `VUID-vkCmdDrawIndirectCount-blendEnable-04727`, `VUID-vkCmdDrawIndirectCount-viewportCount-03417`, `VUID-vkCmdDrawIndirectCount-scissorCount-03418`, `VUID-vkCmdDrawIndirectCount-viewportCount-03419`, `VUID-vkCmdDrawIndirectCount-None-06886`, `VUID-vkCmdDrawIndirectCount-None-06887`, `VUID-vkCmdDrawIndirectCount-imageView-06172`, `VUID-vkCmdDrawIndirectCount-imageView-06173`, `VUID-vkCmdDrawIndirectCount-imageView-06174`, `VUID-vkCmdDrawIndirectCount-imageView-06175`, `VUID-vkCmdDrawIndirectCount-imageView-06176`, `VUID-vkCmdDrawIndirectCount-imageView-06177`, `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indirect_count`] checks at run time: `VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectCount-commonparent`, `VUID-vkCmdDrawIndirectCount-buffer-02708`, `VUID-vkCmdDrawIndirectCount-buffer-02709`, `VUID-vkCmdDrawIndirectCount-offset-02710`, `VUID-vkCmdDrawIndirectCount-countBuffer-02714`, `VUID-vkCmdDrawIndirectCount-countBuffer-02715`, `VUID-vkCmdDrawIndirectCount-countBufferOffset-02716`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02711`, `VUID-vkCmdDrawIndirectCount-None-02700`, `VUID-vkCmdDrawIndirectCount-None-02697`, `VUID-vkCmdDrawIndirectCount-None-04007`, `VUID-vkCmdDrawIndirectCount-renderPass-02684`, `VUID-vkCmdDrawIndirectCount-subpass-02685`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02701`, `VUID-vkCmdDrawIndirectCount-None-02859`, `VUID-vkCmdDrawIndirectCount-primitiveTopology-03420`, `VUID-vkCmdDrawIndirectCount-pStrides-04884`, `VUID-vkCmdDrawIndirectCount-None-04876`, `VUID-vkCmdDrawIndirectCount-None-04877`, `VUID-vkCmdDrawIndirectCount-None-04879`, `VUID-vkCmdDrawIndirectCount-None-04008`, `VUID-vkCmdDrawIndirectCount-viewMask-06178`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06179`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-06180`, `VUID-vkCmdDrawIndirectCount-colorAttachmentCount-07616`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-06181`, `VUID-vkCmdDrawIndirectCount-pDepthAttachment-07617`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-06182`, `VUID-vkCmdDrawIndirectCount-pStencilAttachment-07618`, `VUID-vkCmdDrawIndirectCount-viewType-07752`, `VUID-vkCmdDrawIndirectCount-format-07753`, `VUID-vkCmdDrawIndirectCount-None-02699`, `VUID-vkCmdDrawIndirectCount-maintenance4-06425`, `VUID-vkCmdDrawIndirectCount-None-02691`, `VUID-vkCmdDrawIndirectCount-None-06479`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07027`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07028`, `VUID-vkCmdDrawIndirectCount-commandBuffer-02707`, `VUID-vkCmdDrawIndirectCount-magFilter-04553`, `VUID-vkCmdDrawIndirectCount-mipmapMode-04770`, `VUID-vkCmdDrawIndirectCount-None-02702`, `VUID-vkCmdDrawIndirectCount-None-02703`, `VUID-vkCmdDrawIndirectCount-None-02704`, `VUID-vkCmdDrawIndirectCount-None-04115`, `VUID-vkCmdDrawIndirectCount-OpImageWrite-04469`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07029`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07030`, `VUID-vkCmdDrawIndirectCount-None-06550`, `VUID-vkCmdDrawIndirectCount-ConstOffset-06551`, `VUID-vkCmdDrawIndirectCount-None-07748`, `VUID-vkCmdDrawIndirectCount-OpTypeImage-07468`, `VUID-vkCmdDrawIndirectCount-None-07469`, `VUID-vkCmdDrawIndirectCount-None-06537`, `VUID-vkCmdDrawIndirectCount-None-06538`, `VUID-vkCmdDrawIndirectCount-None-06539`, `VUID-vkCmdDrawIndirectCount-blendEnable-04727`, `VUID-vkCmdDrawIndirectCount-viewportCount-03417`, `VUID-vkCmdDrawIndirectCount-scissorCount-03418`, `VUID-vkCmdDrawIndirectCount-viewportCount-03419`, `VUID-vkCmdDrawIndirectCount-None-06886`, `VUID-vkCmdDrawIndirectCount-None-06887`, `VUID-vkCmdDrawIndirectCount-imageView-06172`, `VUID-vkCmdDrawIndirectCount-imageView-06173`, `VUID-vkCmdDrawIndirectCount-imageView-06174`, `VUID-vkCmdDrawIndirectCount-imageView-06175`, `VUID-vkCmdDrawIndirectCount-imageView-06176`, `VUID-vkCmdDrawIndirectCount-imageView-06177`, `VUID-vkCmdDrawIndirectCount-rasterizationSamples-04740`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_draw_indirect_count_unchecked(
+    pub unsafe fn draw_indirect_count_unchecked(
         &mut self,
         buffer: &Buffer,
         offset: vk::DeviceSize,
@@ -639,12 +639,12 @@ The rules are on [`vkCmdEndRenderPass2`'s reference page](https://registry.khron
 - `VUID-vkCmdEndRenderPass2-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
 - `VUID-vkCmdEndRenderPass2-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
 - `VUID-vkCmdEndRenderPass2-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-- `VUID-vkCmdEndRenderPass2-None-06171`: static (the method exists only on a recorder inside a render pass begun with `cmd_begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
+- `VUID-vkCmdEndRenderPass2-None-06171`: static (the method exists only on a recorder inside a render pass begun with `begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary)
 
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndRenderPass2")]
     #[inline]
-    pub fn cmd_end_render_pass2<'a>(
+    pub fn end_render_pass2<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
@@ -657,7 +657,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         );
         {
             let r = always
-                .and_then(|()| self.validate_cmd_end_render_pass2(subpass_end_info));
+                .and_then(|()| self.validate_end_render_pass2(subpass_end_info));
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -665,15 +665,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_render_pass2_unchecked(subpass_end_info) }
+        unsafe { self.end_render_pass2_unchecked(subpass_end_info) }
     }
     /**`vkCmdEndRenderPass2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, `VUID-vkCmdEndRenderPass2-None-03103`, `VUID-vkCmdEndRenderPass2-None-07005`, `VUID-vkCmdEndRenderPass2-None-06171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_render_pass2`] checks at run time: `VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool`, `VUID-vkCmdEndRenderPass2-bufferlevel`, `VUID-vkCmdEndRenderPass2-None-03103`, `VUID-vkCmdEndRenderPass2-None-07005`, `VUID-vkCmdEndRenderPass2-None-06171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_render_pass2_unchecked<'a>(
+    pub unsafe fn end_render_pass2_unchecked<'a>(
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
@@ -704,7 +704,7 @@ The rules are on [`vkCmdNextSubpass2`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdNextSubpass2")]
     #[inline]
-    pub fn cmd_next_subpass2<'a>(
+    pub fn next_subpass2<'a>(
         &mut self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
@@ -716,7 +716,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         {
             let r = always
                 .and_then(|()| {
-                    self.validate_cmd_next_subpass2(subpass_begin_info, subpass_end_info)
+                    self.validate_next_subpass2(subpass_begin_info, subpass_end_info)
                 });
             if r.is_err() {
                 let _ = self.accept(r);
@@ -728,15 +728,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
+        unsafe { self.next_subpass2_unchecked(subpass_begin_info, subpass_end_info) }
     }
     /**`vkCmdNextSubpass2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_next_subpass2`] checks at run time: `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass2-bufferlevel`, `VUID-vkCmdNextSubpass2-None-03102`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::next_subpass2`] checks at run time: `VUID-vkCmdNextSubpass2-commandBuffer-cmdpool`, `VUID-vkCmdNextSubpass2-bufferlevel`, `VUID-vkCmdNextSubpass2-None-03102`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_next_subpass2_unchecked<'a>(
+    pub unsafe fn next_subpass2_unchecked<'a>(
         &mut self,
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,

@@ -360,7 +360,7 @@ The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://
 - `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
     #[doc(alias = "vkGetPhysicalDeviceToolProperties")]
     #[inline]
-    pub fn get_physical_device_tool_properties(
+    pub fn get_tool_properties(
         &self,
     ) -> Result<Vec<vk::PhysicalDeviceToolProperties<'static>>> {
         let fp = self.parent().fns().fp_v1_3().get_physical_device_tool_properties;
@@ -419,7 +419,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
 - 7: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkQueueSubmit2")]
     #[inline]
-    pub unsafe fn queue_submit2<'a>(
+    pub unsafe fn submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,
@@ -435,21 +435,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 12.
         };
         crate::hooks::queue_submit2_checks(self, submits, fence)?;
         {
-            let r = self.validate_queue_submit2(submits, fence);
+            let r = self.validate_submit2(submits, fence);
             r?;
         }
         let _held = crate::hooks::queue_submit2_gate(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.queue_submit2_unchecked(submits, fence) }
+        unsafe { self.submit2_unchecked(submits, fence) }
     }
     /**`vkQueueSubmit2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::queue_submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, `VUID-vkQueueSubmit2-semaphore-03873`, `VUID-vkQueueSubmit2-semaphore-03868`, `VUID-vkQueueSubmit2-semaphore-03872`, `VUID-vkQueueSubmit2-semaphore-03871`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, `VUID-vkQueueSubmit2-semaphore-03873`, `VUID-vkQueueSubmit2-semaphore-03868`, `VUID-vkQueueSubmit2-semaphore-03872`, `VUID-vkQueueSubmit2-semaphore-03871`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn queue_submit2_unchecked<'a>(
+    pub unsafe fn submit2_unchecked<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,

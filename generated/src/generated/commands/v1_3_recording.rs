@@ -76,7 +76,7 @@ The rules are on [`vkCmdBeginRendering`'s reference page](https://registry.khron
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBeginRendering")]
     #[inline]
-    pub unsafe fn cmd_begin_rendering<'a>(
+    pub unsafe fn begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
@@ -85,8 +85,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
             rendering_info,
         );
         {
-            let r = always
-                .and_then(|()| self.validate_cmd_begin_rendering(rendering_info));
+            let r = always.and_then(|()| self.validate_begin_rendering(rendering_info));
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -95,15 +94,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_begin_rendering_unchecked(rendering_info) }
+        unsafe { self.begin_rendering_unchecked(rendering_info) }
     }
     /**`vkCmdBeginRendering` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, `VUID-VkSubmitInfo-pCommandBuffers-06193`, `VUID-VkSubmitInfo-pCommandBuffers-06014`, `VUID-VkSubmitInfo-pCommandBuffers-06015`, `VUID-VkSubmitInfo-pCommandBuffers-06016`, `VUID-VkSubmitInfo2KHR-commandBuffer-06192`, `VUID-VkSubmitInfo2KHR-commandBuffer-06010`, `VUID-VkSubmitInfo2KHR-commandBuffer-06011`, `VUID-VkSubmitInfo2KHR-commandBuffer-06012`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, `VUID-VkSubmitInfo-pCommandBuffers-06193`, `VUID-VkSubmitInfo-pCommandBuffers-06014`, `VUID-VkSubmitInfo-pCommandBuffers-06015`, `VUID-VkSubmitInfo-pCommandBuffers-06016`, `VUID-VkSubmitInfo2KHR-commandBuffer-06192`, `VUID-VkSubmitInfo2KHR-commandBuffer-06010`, `VUID-VkSubmitInfo2KHR-commandBuffer-06011`, `VUID-VkSubmitInfo2KHR-commandBuffer-06012`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_begin_rendering_unchecked<'a>(
+    pub unsafe fn begin_rendering_unchecked<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
@@ -172,7 +171,7 @@ The rules are on [`vkCmdBlitImage2`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdBlitImage2")]
     #[inline]
-    pub unsafe fn cmd_blit_image2<'a>(
+    pub unsafe fn blit_image2<'a>(
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
@@ -181,20 +180,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             crate::hooks::Names::BlitImage2(blit_image_info),
         )?;
         {
-            let r = self.validate_cmd_blit_image2(blit_image_info);
+            let r = self.validate_blit_image2(blit_image_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_blit_image2_unchecked(blit_image_info) }
+        unsafe { self.blit_image2_unchecked(blit_image_info) }
     }
     /**`vkCmdBlitImage2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, `VUID-VkBlitImageInfo2-srcImageLayout-00221`, `VUID-VkBlitImageInfo2-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, `VUID-VkBlitImageInfo2-srcImageLayout-00221`, `VUID-VkBlitImageInfo2-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_blit_image2_unchecked<'a>(
+    pub unsafe fn blit_image2_unchecked<'a>(
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
@@ -252,27 +251,24 @@ The rules are on [`vkCmdCopyBuffer2`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyBuffer2")]
     #[inline]
-    pub unsafe fn cmd_copy_buffer2<'a>(
-        &mut self,
-        copy_buffer_info: &CopyBufferInfo2<'a>,
-    ) {
+    pub unsafe fn copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
         {
-            let r = self.validate_cmd_copy_buffer2(copy_buffer_info);
+            let r = self.validate_copy_buffer2(copy_buffer_info);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_buffer2_unchecked(copy_buffer_info) }
+        unsafe { self.copy_buffer2_unchecked(copy_buffer_info) }
     }
     /**`vkCmdCopyBuffer2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer2_unchecked<'a>(
+    pub unsafe fn copy_buffer2_unchecked<'a>(
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) {
@@ -320,7 +316,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
 - 3: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[doc(alias = "vkCmdCopyBufferToImage2")]
     #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image2<'a>(
+    pub unsafe fn copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
@@ -329,21 +325,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 6.
             crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
         )?;
         {
-            let r = self.validate_cmd_copy_buffer_to_image2(copy_buffer_to_image_info);
+            let r = self.validate_copy_buffer_to_image2(copy_buffer_to_image_info);
             r?;
         }
         crate::hooks::cmd_copy_buffer_to_image2_checks(self, copy_buffer_to_image_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
+        unsafe { self.copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
     }
     /**`vkCmdCopyBufferToImage2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`, `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`, `VUID-VkCopyBufferToImageInfo2-pRegions-07274`, `VUID-VkCopyBufferToImageInfo2-pRegions-07275`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`, `VUID-VkCopyBufferToImageInfo2-pRegions-07273`, `VUID-VkCopyBufferToImageInfo2-srcImage-04053`, `VUID-VkCopyBufferToImageInfo2-pRegions-07277`, `VUID-VkCopyBufferToImageInfo2-dstImage-00179`, `VUID-VkCopyBufferToImageInfo2-pRegions-00173`, `VUID-VkCopyBufferToImageInfo2-srcImage-00199`, `VUID-VkCopyBufferToImageInfo2-srcImage-00201`, `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`, `VUID-VkCopyBufferToImageInfo2-pRegions-00172`, `VUID-VkCopyBufferToImageInfo2-pRegions-07276`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`, `VUID-VkCopyBufferToImageInfo2-pRegions-07740`, `VUID-VkCopyBufferToImageInfo2-pRegions-07741`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`, `VUID-VkCopyBufferToImageInfo2-dstImage-01997`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`, `VUID-VkBufferImageCopy2-bufferRowLength-00195`, `VUID-VkBufferImageCopy2-bufferImageHeight-00196`, `VUID-VkBufferImageCopy2-aspectMask-00212`, `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`, `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`, `VUID-VkCopyBufferToImageInfo2-pRegions-07274`, `VUID-VkCopyBufferToImageInfo2-pRegions-07275`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`, `VUID-VkCopyBufferToImageInfo2-pRegions-07273`, `VUID-VkCopyBufferToImageInfo2-srcImage-04053`, `VUID-VkCopyBufferToImageInfo2-pRegions-07277`, `VUID-VkCopyBufferToImageInfo2-dstImage-00179`, `VUID-VkCopyBufferToImageInfo2-pRegions-00173`, `VUID-VkCopyBufferToImageInfo2-srcImage-00199`, `VUID-VkCopyBufferToImageInfo2-srcImage-00201`, `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`, `VUID-VkCopyBufferToImageInfo2-pRegions-00172`, `VUID-VkCopyBufferToImageInfo2-pRegions-07276`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`, `VUID-VkCopyBufferToImageInfo2-pRegions-07740`, `VUID-VkCopyBufferToImageInfo2-pRegions-07741`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`, `VUID-VkCopyBufferToImageInfo2-dstImage-01997`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`, `VUID-VkBufferImageCopy2-bufferRowLength-00195`, `VUID-VkBufferImageCopy2-bufferImageHeight-00196`, `VUID-VkBufferImageCopy2-aspectMask-00212`, `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_buffer_to_image2_unchecked<'a>(
+    pub unsafe fn copy_buffer_to_image2_unchecked<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
@@ -449,7 +445,7 @@ The rules are on [`vkCmdCopyImage2`'s reference page](https://registry.khronos.o
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdCopyImage2")]
     #[inline]
-    pub unsafe fn cmd_copy_image2<'a>(
+    pub unsafe fn copy_image2<'a>(
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
@@ -458,20 +454,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             crate::hooks::Names::CopyImage2(copy_image_info),
         )?;
         {
-            let r = self.validate_cmd_copy_image2(copy_image_info);
+            let r = self.validate_copy_image2(copy_image_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_image2_unchecked(copy_image_info) }
+        unsafe { self.copy_image2_unchecked(copy_image_info) }
     }
     /**`vkCmdCopyImage2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, `VUID-VkCopyImageInfo2-srcImageLayout-00128`, `VUID-VkCopyImageInfo2-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, `VUID-VkCopyImageInfo2-srcImageLayout-00128`, `VUID-VkCopyImageInfo2-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_image2_unchecked<'a>(
+    pub unsafe fn copy_image2_unchecked<'a>(
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
@@ -522,7 +518,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
 - 2: checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel*/
     #[doc(alias = "vkCmdCopyImageToBuffer2")]
     #[inline]
-    pub fn cmd_copy_image_to_buffer2<'a>(
+    pub fn copy_image_to_buffer2<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
@@ -531,21 +527,21 @@ Left to the caller (listed one by one in the crate's `validation.json`): 5.
             crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
         )?;
         {
-            let r = self.validate_cmd_copy_image_to_buffer2(copy_image_to_buffer_info);
+            let r = self.validate_copy_image_to_buffer2(copy_image_to_buffer_info);
             r?;
         }
         crate::hooks::cmd_copy_image_to_buffer2_checks(self, copy_image_to_buffer_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
+        unsafe { self.copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
     }
     /**`vkCmdCopyImageToBuffer2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`, `VUID-VkCopyImageToBufferInfo2-bufferImageHeight-00204`, `VUID-VkCopyImageToBufferInfo2-pRegions-07274`, `VUID-VkCopyImageToBufferInfo2-pRegions-07275`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00207`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00208`, `VUID-VkCopyImageToBufferInfo2-pRegions-07273`, `VUID-VkCopyImageToBufferInfo2-srcImage-04053`, `VUID-VkCopyImageToBufferInfo2-pRegions-07277`, `VUID-VkCopyImageToBufferInfo2-srcImage-00188`, `VUID-VkCopyImageToBufferInfo2-pRegions-00184`, `VUID-VkCopyImageToBufferInfo2-srcImage-00199`, `VUID-VkCopyImageToBufferInfo2-srcImage-00201`, `VUID-VkCopyImageToBufferInfo2-baseArrayLayer-00213`, `VUID-VkCopyImageToBufferInfo2-pRegions-00182`, `VUID-VkCopyImageToBufferInfo2-pRegions-07276`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00209`, `VUID-VkCopyImageToBufferInfo2-pRegions-07740`, `VUID-VkCopyImageToBufferInfo2-pRegions-07741`, `VUID-VkCopyImageToBufferInfo2-bufferOffset-01559`, `VUID-VkCopyImageToBufferInfo2-bufferOffset-01558`, `VUID-VkCopyImageToBufferInfo2-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`, `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image_to_buffer2`] checks at run time: `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool`, `VUID-VkCopyImageToBufferInfo2-bufferRowLength-00203`, `VUID-VkCopyImageToBufferInfo2-bufferImageHeight-00204`, `VUID-VkCopyImageToBufferInfo2-pRegions-07274`, `VUID-VkCopyImageToBufferInfo2-pRegions-07275`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00207`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00208`, `VUID-VkCopyImageToBufferInfo2-pRegions-07273`, `VUID-VkCopyImageToBufferInfo2-srcImage-04053`, `VUID-VkCopyImageToBufferInfo2-pRegions-07277`, `VUID-VkCopyImageToBufferInfo2-srcImage-00188`, `VUID-VkCopyImageToBufferInfo2-pRegions-00184`, `VUID-VkCopyImageToBufferInfo2-srcImage-00199`, `VUID-VkCopyImageToBufferInfo2-srcImage-00201`, `VUID-VkCopyImageToBufferInfo2-baseArrayLayer-00213`, `VUID-VkCopyImageToBufferInfo2-pRegions-00182`, `VUID-VkCopyImageToBufferInfo2-pRegions-07276`, `VUID-VkCopyImageToBufferInfo2-imageExtent-00209`, `VUID-VkCopyImageToBufferInfo2-pRegions-07740`, `VUID-VkCopyImageToBufferInfo2-pRegions-07741`, `VUID-VkCopyImageToBufferInfo2-bufferOffset-01559`, `VUID-VkCopyImageToBufferInfo2-bufferOffset-01558`, `VUID-VkCopyImageToBufferInfo2-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833`, `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189`, `VUID-VkCopyImageToBufferInfo2-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_copy_image_to_buffer2_unchecked<'a>(
+    pub unsafe fn copy_image_to_buffer2_unchecked<'a>(
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
@@ -624,7 +620,7 @@ The rules are on [`vkCmdResolveImage2`'s reference page](https://registry.khrono
 Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdResolveImage2")]
     #[inline]
-    pub unsafe fn cmd_resolve_image2<'a>(
+    pub unsafe fn resolve_image2<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
@@ -633,20 +629,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
             crate::hooks::Names::ResolveImage2(resolve_image_info),
         )?;
         {
-            let r = self.validate_cmd_resolve_image2(resolve_image_info);
+            let r = self.validate_resolve_image2(resolve_image_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_resolve_image2_unchecked(resolve_image_info) }
+        unsafe { self.resolve_image2_unchecked(resolve_image_info) }
     }
     /**`vkCmdResolveImage2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, `VUID-VkResolveImageInfo2-srcImageLayout-00260`, `VUID-VkResolveImageInfo2-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, `VUID-VkResolveImageInfo2-srcImageLayout-00260`, `VUID-VkResolveImageInfo2-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_resolve_image2_unchecked<'a>(
+    pub unsafe fn resolve_image2_unchecked<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
@@ -719,7 +715,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 - 2: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdBindVertexBuffers2")]
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers2(
+    pub unsafe fn bind_vertex_buffers2(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -762,13 +758,13 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
             (sizes, strides),
         )?;
         {
-            let r = self.validate_cmd_bind_vertex_buffers2(first_binding, buffers);
+            let r = self.validate_bind_vertex_buffers2(first_binding, buffers);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_bind_vertex_buffers2_unchecked(
+            self.bind_vertex_buffers2_unchecked(
                 first_binding,
                 buffers,
                 offsets,
@@ -781,9 +777,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_bind_vertex_buffers2_unchecked(
+    pub unsafe fn bind_vertex_buffers2_unchecked(
         &mut self,
         first_binding: u32,
         buffers: &[&Buffer],
@@ -846,24 +842,24 @@ The rules are on [`vkCmdSetCullMode`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetCullMode")]
     #[inline]
-    pub fn cmd_set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
+    pub fn set_cull_mode(&mut self, cull_mode: vk::CullModeFlags) {
         {
-            let r = self.validate_cmd_set_cull_mode(cull_mode);
+            let r = self.validate_set_cull_mode(cull_mode);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_cull_mode_unchecked(cull_mode) }
+        unsafe { self.set_cull_mode_unchecked(cull_mode) }
     }
     /**`vkCmdSetCullMode` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_cull_mode`] checks at run time: `VUID-vkCmdSetCullMode-cullMode-parameter`, `VUID-vkCmdSetCullMode-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
+    pub unsafe fn set_cull_mode_unchecked(&mut self, cull_mode: vk::CullModeFlags) {
         let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), cull_mode) };
@@ -887,27 +883,24 @@ The rules are on [`vkCmdSetDepthBiasEnable`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthBiasEnable")]
     #[inline]
-    pub fn cmd_set_depth_bias_enable(&mut self, depth_bias_enable: bool) {
+    pub fn set_depth_bias_enable(&mut self, depth_bias_enable: bool) {
         {
-            let r = self.validate_cmd_set_depth_bias_enable();
+            let r = self.validate_set_depth_bias_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_bias_enable_unchecked(depth_bias_enable) }
+        unsafe { self.set_depth_bias_enable_unchecked(depth_bias_enable) }
     }
     /**`vkCmdSetDepthBiasEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_bias_enable`] checks at run time: `VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_bias_enable_unchecked(
-        &mut self,
-        depth_bias_enable: bool,
-    ) {
+    pub unsafe fn set_depth_bias_enable_unchecked(&mut self, depth_bias_enable: bool) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_bias_enable;
         let depth_bias_enable = vk::Bool32::from(depth_bias_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -932,26 +925,24 @@ The rules are on [`vkCmdSetDepthBoundsTestEnable`'s reference page](https://regi
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthBoundsTestEnable")]
     #[inline]
-    pub fn cmd_set_depth_bounds_test_enable(&mut self, depth_bounds_test_enable: bool) {
+    pub fn set_depth_bounds_test_enable(&mut self, depth_bounds_test_enable: bool) {
         {
-            let r = self.validate_cmd_set_depth_bounds_test_enable();
+            let r = self.validate_set_depth_bounds_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable)
-        }
+        unsafe { self.set_depth_bounds_test_enable_unchecked(depth_bounds_test_enable) }
     }
     /**`vkCmdSetDepthBoundsTestEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_bounds_test_enable`] checks at run time: `VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_bounds_test_enable_unchecked(
+    pub unsafe fn set_depth_bounds_test_enable_unchecked(
         &mut self,
         depth_bounds_test_enable: bool,
     ) {
@@ -980,24 +971,24 @@ The rules are on [`vkCmdSetDepthCompareOp`'s reference page](https://registry.kh
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthCompareOp")]
     #[inline]
-    pub fn cmd_set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
+    pub fn set_depth_compare_op(&mut self, depth_compare_op: vk::CompareOp) {
         {
-            let r = self.validate_cmd_set_depth_compare_op(depth_compare_op);
+            let r = self.validate_set_depth_compare_op(depth_compare_op);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_compare_op_unchecked(depth_compare_op) }
+        unsafe { self.set_depth_compare_op_unchecked(depth_compare_op) }
     }
     /**`vkCmdSetDepthCompareOp` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_compare_op`] checks at run time: `VUID-vkCmdSetDepthCompareOp-depthCompareOp-parameter`, `VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_compare_op_unchecked(
+    pub unsafe fn set_depth_compare_op_unchecked(
         &mut self,
         depth_compare_op: vk::CompareOp,
     ) {
@@ -1024,27 +1015,24 @@ The rules are on [`vkCmdSetDepthTestEnable`'s reference page](https://registry.k
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthTestEnable")]
     #[inline]
-    pub fn cmd_set_depth_test_enable(&mut self, depth_test_enable: bool) {
+    pub fn set_depth_test_enable(&mut self, depth_test_enable: bool) {
         {
-            let r = self.validate_cmd_set_depth_test_enable();
+            let r = self.validate_set_depth_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_test_enable_unchecked(depth_test_enable) }
+        unsafe { self.set_depth_test_enable_unchecked(depth_test_enable) }
     }
     /**`vkCmdSetDepthTestEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_test_enable`] checks at run time: `VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_test_enable_unchecked(
-        &mut self,
-        depth_test_enable: bool,
-    ) {
+    pub unsafe fn set_depth_test_enable_unchecked(&mut self, depth_test_enable: bool) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_test_enable;
         let depth_test_enable = vk::Bool32::from(depth_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -1070,27 +1058,24 @@ The rules are on [`vkCmdSetDepthWriteEnable`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetDepthWriteEnable")]
     #[inline]
-    pub fn cmd_set_depth_write_enable(&mut self, depth_write_enable: bool) {
+    pub fn set_depth_write_enable(&mut self, depth_write_enable: bool) {
         {
-            let r = self.validate_cmd_set_depth_write_enable();
+            let r = self.validate_set_depth_write_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_depth_write_enable_unchecked(depth_write_enable) }
+        unsafe { self.set_depth_write_enable_unchecked(depth_write_enable) }
     }
     /**`vkCmdSetDepthWriteEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_depth_write_enable`] checks at run time: `VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_depth_write_enable_unchecked(
-        &mut self,
-        depth_write_enable: bool,
-    ) {
+    pub unsafe fn set_depth_write_enable_unchecked(&mut self, depth_write_enable: bool) {
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_write_enable;
         let depth_write_enable = vk::Bool32::from(depth_write_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -1117,24 +1102,24 @@ The rules are on [`vkCmdSetFrontFace`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetFrontFace")]
     #[inline]
-    pub fn cmd_set_front_face(&mut self, front_face: vk::FrontFace) {
+    pub fn set_front_face(&mut self, front_face: vk::FrontFace) {
         {
-            let r = self.validate_cmd_set_front_face(front_face);
+            let r = self.validate_set_front_face(front_face);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_front_face_unchecked(front_face) }
+        unsafe { self.set_front_face_unchecked(front_face) }
     }
     /**`vkCmdSetFrontFace` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_front_face`] checks at run time: `VUID-vkCmdSetFrontFace-frontFace-parameter`, `VUID-vkCmdSetFrontFace-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
+    pub unsafe fn set_front_face_unchecked(&mut self, front_face: vk::FrontFace) {
         let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), front_face) };
@@ -1158,26 +1143,24 @@ The rules are on [`vkCmdSetPrimitiveRestartEnable`'s reference page](https://reg
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetPrimitiveRestartEnable")]
     #[inline]
-    pub fn cmd_set_primitive_restart_enable(&mut self, primitive_restart_enable: bool) {
+    pub fn set_primitive_restart_enable(&mut self, primitive_restart_enable: bool) {
         {
-            let r = self.validate_cmd_set_primitive_restart_enable();
+            let r = self.validate_set_primitive_restart_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.cmd_set_primitive_restart_enable_unchecked(primitive_restart_enable)
-        }
+        unsafe { self.set_primitive_restart_enable_unchecked(primitive_restart_enable) }
     }
     /**`vkCmdSetPrimitiveRestartEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_primitive_restart_enable`] checks at run time: `VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_primitive_restart_enable_unchecked(
+    pub unsafe fn set_primitive_restart_enable_unchecked(
         &mut self,
         primitive_restart_enable: bool,
     ) {
@@ -1206,27 +1189,24 @@ The rules are on [`vkCmdSetPrimitiveTopology`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetPrimitiveTopology")]
     #[inline]
-    pub fn cmd_set_primitive_topology(
-        &mut self,
-        primitive_topology: vk::PrimitiveTopology,
-    ) {
+    pub fn set_primitive_topology(&mut self, primitive_topology: vk::PrimitiveTopology) {
         {
-            let r = self.validate_cmd_set_primitive_topology(primitive_topology);
+            let r = self.validate_set_primitive_topology(primitive_topology);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_primitive_topology_unchecked(primitive_topology) }
+        unsafe { self.set_primitive_topology_unchecked(primitive_topology) }
     }
     /**`vkCmdSetPrimitiveTopology` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_primitive_topology`] checks at run time: `VUID-vkCmdSetPrimitiveTopology-primitiveTopology-parameter`, `VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_primitive_topology_unchecked(
+    pub unsafe fn set_primitive_topology_unchecked(
         &mut self,
         primitive_topology: vk::PrimitiveTopology,
     ) {
@@ -1253,12 +1233,9 @@ The rules are on [`vkCmdSetRasterizerDiscardEnable`'s reference page](https://re
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetRasterizerDiscardEnable")]
     #[inline]
-    pub fn cmd_set_rasterizer_discard_enable(
-        &mut self,
-        rasterizer_discard_enable: bool,
-    ) {
+    pub fn set_rasterizer_discard_enable(&mut self, rasterizer_discard_enable: bool) {
         {
-            let r = self.validate_cmd_set_rasterizer_discard_enable();
+            let r = self.validate_set_rasterizer_discard_enable();
             if !self.accept(r) {
                 return;
             }
@@ -1266,16 +1243,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
+            self.set_rasterizer_discard_enable_unchecked(rasterizer_discard_enable)
         }
     }
     /**`vkCmdSetRasterizerDiscardEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_rasterizer_discard_enable`] checks at run time: `VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_rasterizer_discard_enable_unchecked(
+    pub unsafe fn set_rasterizer_discard_enable_unchecked(
         &mut self,
         rasterizer_discard_enable: bool,
     ) {
@@ -1311,23 +1288,23 @@ The rules are on [`vkCmdSetScissorWithCount`'s reference page](https://registry.
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetScissorWithCount")]
     #[inline]
-    pub fn cmd_set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
+    pub fn set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
         crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
         {
-            let r = self.validate_cmd_set_scissor_with_count(scissors);
+            let r = self.validate_set_scissor_with_count(scissors);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_scissor_with_count_unchecked(scissors) }
+        unsafe { self.set_scissor_with_count_unchecked(scissors) }
     }
     /**`vkCmdSetScissorWithCount` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_scissor_with_count`] checks at run time: `VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetScissorWithCount-scissorCount-arraylength`, `VUID-vkCmdSetScissorWithCount-scissorCount-03397`, `VUID-vkCmdSetScissorWithCount-scissorCount-03398`, `VUID-vkCmdSetScissorWithCount-x-03399`, `VUID-vkCmdSetScissorWithCount-offset-03400`, `VUID-vkCmdSetScissorWithCount-offset-03401`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_scissor_with_count_unchecked(
+    pub unsafe fn set_scissor_with_count_unchecked(
         &mut self,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
@@ -1364,7 +1341,7 @@ The rules are on [`vkCmdSetStencilOp`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetStencilOp")]
     #[inline]
-    pub fn cmd_set_stencil_op(
+    pub fn set_stencil_op(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         fail_op: vk::StencilOp,
@@ -1374,7 +1351,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     ) {
         {
             let r = self
-                .validate_cmd_set_stencil_op(
+                .validate_set_stencil_op(
                     face_mask,
                     fail_op,
                     pass_op,
@@ -1388,7 +1365,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.cmd_set_stencil_op_unchecked(
+            self.set_stencil_op_unchecked(
                 face_mask,
                 fail_op,
                 pass_op,
@@ -1401,9 +1378,9 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_stencil_op`] checks at run time: `VUID-vkCmdSetStencilOp-faceMask-parameter`, `VUID-vkCmdSetStencilOp-faceMask-requiredbitmask`, `VUID-vkCmdSetStencilOp-failOp-parameter`, `VUID-vkCmdSetStencilOp-passOp-parameter`, `VUID-vkCmdSetStencilOp-depthFailOp-parameter`, `VUID-vkCmdSetStencilOp-compareOp-parameter`, `VUID-vkCmdSetStencilOp-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_stencil_op_unchecked(
+    pub unsafe fn set_stencil_op_unchecked(
         &mut self,
         face_mask: vk::StencilFaceFlags,
         fail_op: vk::StencilOp,
@@ -1440,24 +1417,24 @@ The rules are on [`vkCmdSetStencilTestEnable`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetStencilTestEnable")]
     #[inline]
-    pub fn cmd_set_stencil_test_enable(&mut self, stencil_test_enable: bool) {
+    pub fn set_stencil_test_enable(&mut self, stencil_test_enable: bool) {
         {
-            let r = self.validate_cmd_set_stencil_test_enable();
+            let r = self.validate_set_stencil_test_enable();
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_stencil_test_enable_unchecked(stencil_test_enable) }
+        unsafe { self.set_stencil_test_enable_unchecked(stencil_test_enable) }
     }
     /**`vkCmdSetStencilTestEnable` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_stencil_test_enable`] checks at run time: `VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_stencil_test_enable_unchecked(
+    pub unsafe fn set_stencil_test_enable_unchecked(
         &mut self,
         stencil_test_enable: bool,
     ) {
@@ -1490,26 +1467,23 @@ The rules are on [`vkCmdSetViewportWithCount`'s reference page](https://registry
 Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetViewportWithCount")]
     #[inline]
-    pub fn cmd_set_viewport_with_count(
-        &mut self,
-        viewports: &[vk::Viewport],
-    ) -> Result<()> {
+    pub fn set_viewport_with_count(&mut self, viewports: &[vk::Viewport]) -> Result<()> {
         crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
         {
-            let r = self.validate_cmd_set_viewport_with_count(viewports);
+            let r = self.validate_set_viewport_with_count(viewports);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_viewport_with_count_unchecked(viewports) }
+        unsafe { self.set_viewport_with_count_unchecked(viewports) }
     }
     /**`vkCmdSetViewportWithCount` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_viewport_with_count`] checks at run time: `VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool`, `VUID-vkCmdSetViewportWithCount-viewportCount-arraylength`, `VUID-vkCmdSetViewportWithCount-viewportCount-03394`, `VUID-vkCmdSetViewportWithCount-viewportCount-03395`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_viewport_with_count_unchecked(
+    pub unsafe fn set_viewport_with_count_unchecked(
         &mut self,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
@@ -1546,10 +1520,10 @@ The rules are on [`vkCmdEndRendering`'s reference page](https://registry.khronos
 Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdEndRendering")]
     #[inline]
-    pub fn cmd_end_rendering(mut self) -> Recorder<'c, Outside> {
+    pub fn end_rendering(mut self) -> Recorder<'c, Outside> {
         let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
         {
-            let r = always.and_then(|()| self.validate_cmd_end_rendering());
+            let r = always.and_then(|()| self.validate_end_rendering());
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -1557,15 +1531,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_end_rendering_unchecked() }
+        unsafe { self.end_rendering_unchecked() }
     }
     /**`vkCmdEndRendering` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, `VUID-vkCmdEndRendering-None-06999`, `VUID-vkCmdEndRendering-None-06161`, `VUID-vkCmdEndRendering-commandBuffer-06162`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_rendering`] checks at run time: `VUID-vkCmdEndRendering-commandBuffer-cmdpool`, `VUID-vkCmdEndRendering-None-06999`, `VUID-vkCmdEndRendering-None-06161`, `VUID-vkCmdEndRendering-commandBuffer-06162`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
+    pub unsafe fn end_rendering_unchecked(mut self) -> Recorder<'c, Outside> {
         let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
@@ -1632,26 +1606,26 @@ The rules are on [`vkCmdPipelineBarrier2`'s reference page](https://registry.khr
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdPipelineBarrier2")]
     #[inline]
-    pub unsafe fn cmd_pipeline_barrier2<'a>(
+    pub unsafe fn pipeline_barrier2<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) -> Result<()> {
         crate::hooks::dependency_checks(self, core::slice::from_ref(dependency_info))?;
         {
-            let r = self.validate_cmd_pipeline_barrier2(dependency_info);
+            let r = self.validate_pipeline_barrier2(dependency_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_pipeline_barrier2_unchecked(dependency_info) }
+        unsafe { self.pipeline_barrier2_unchecked(dependency_info) }
     }
     /**`vkCmdPipelineBarrier2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, `VUID-VkImageMemoryBarrier2-oldLayout-01197`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, `VUID-VkImageMemoryBarrier2-oldLayout-01197`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_pipeline_barrier2_unchecked<'a>(
+    pub unsafe fn pipeline_barrier2_unchecked<'a>(
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) -> Result<()> {
@@ -1741,7 +1715,7 @@ The rules are on [`vkCmdWaitEvents2`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdWaitEvents2")]
     #[inline]
-    pub unsafe fn cmd_wait_events2<'a>(
+    pub unsafe fn wait_events2<'a>(
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
@@ -1757,20 +1731,20 @@ Left to the caller (listed one by one in the crate's `validation.json`): 9 (expl
         }
         crate::hooks::dependency_checks(self, dependency_infos)?;
         {
-            let r = self.validate_cmd_wait_events2(events, dependency_infos);
+            let r = self.validate_wait_events2(events, dependency_infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_wait_events2_unchecked(events, dependency_infos) }
+        unsafe { self.wait_events2_unchecked(events, dependency_infos) }
     }
     /**`vkCmdWaitEvents2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_wait_events2_unchecked<'a>(
+    pub unsafe fn wait_events2_unchecked<'a>(
         &mut self,
         events: &[&Event],
         dependency_infos: &[DependencyInfo<'a>],
@@ -1845,29 +1819,29 @@ Left to the caller (listed one by one in the crate's `validation.json`): 20.
 - 18: explicit rule; the wrappers do not check it*/
     #[doc(alias = "vkCmdWriteTimestamp2")]
     #[inline]
-    pub unsafe fn cmd_write_timestamp2(
+    pub unsafe fn write_timestamp2(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
         query: u32,
     ) {
         {
-            let r = self.validate_cmd_write_timestamp2(stage, query_pool);
+            let r = self.validate_write_timestamp2(stage, query_pool);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_write_timestamp2_unchecked(stage, query_pool, query) }
+        unsafe { self.write_timestamp2_unchecked(stage, query_pool, query) }
     }
     /**`vkCmdWriteTimestamp2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_write_timestamp2_unchecked(
+    pub unsafe fn write_timestamp2_unchecked(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
@@ -1910,28 +1884,28 @@ The rules are on [`vkCmdResetEvent2`'s reference page](https://registry.khronos.
 Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdResetEvent2")]
     #[inline]
-    pub unsafe fn cmd_reset_event2(
+    pub unsafe fn reset_event2(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
     ) {
         {
-            let r = self.validate_cmd_reset_event2(event, stage_mask);
+            let r = self.validate_reset_event2(event, stage_mask);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_reset_event2_unchecked(event, stage_mask) }
+        unsafe { self.reset_event2_unchecked(event, stage_mask) }
     }
     /**`vkCmdResetEvent2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_reset_event2_unchecked(
+    pub unsafe fn reset_event2_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
@@ -1999,28 +1973,28 @@ The rules are on [`vkCmdSetEvent2`'s reference page](https://registry.khronos.or
 Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
     #[doc(alias = "vkCmdSetEvent2")]
     #[inline]
-    pub unsafe fn cmd_set_event2<'a>(
+    pub unsafe fn set_event2<'a>(
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
     ) {
         {
-            let r = self.validate_cmd_set_event2(event, dependency_info);
+            let r = self.validate_set_event2(event, dependency_info);
             if !self.accept(r) {
                 return;
             }
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.cmd_set_event2_unchecked(event, dependency_info) }
+        unsafe { self.set_event2_unchecked(event, dependency_info) }
     }
     /**`vkCmdSetEvent2` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::cmd_set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn cmd_set_event2_unchecked<'a>(
+    pub unsafe fn set_event2_unchecked<'a>(
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,

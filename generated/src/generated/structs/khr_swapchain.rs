@@ -6,10 +6,10 @@ use super::*;
 
 # Example
 
-Made, as `examples/src/window.rs` (line 385) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 378) does; the example programs run in CI:
 
 ```ignore
-match gpu.queue.queue_present_khr(
+match gpu.queue.present_khr(
     &tuff::PresentInfoKHR::new()
         .wait_semaphores(&signals)
         .swapchains(&swapchains, &indices)?,
@@ -82,7 +82,7 @@ impl<'a> PresentInfoKHR<'a> {
 
 # Example
 
-Made, as `examples/src/window.rs` (line 283) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 276) does; the example programs run in CI:
 
 ```ignore
 let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)

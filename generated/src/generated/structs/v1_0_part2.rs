@@ -986,7 +986,7 @@ impl<'a> QueryPoolCreateInfo<'a> {
 Made, as `examples/src/render.rs` (line 217) does; the example programs run in CI:
 
 ```ignore
-let mut rec = frame.record()?.cmd_begin_render_pass(
+let mut rec = frame.record()?.begin_render_pass(
     &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(area)
         // Without a depth attachment, only the color is cleared.
@@ -1315,7 +1315,7 @@ impl<'a> SamplerCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/window.rs` (line 186) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 181) does; the example programs run in CI:
 
 ```ignore
 gpu.device
@@ -1687,7 +1687,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 18.
 
 - 2: checked by the safe methods in every build (against the semaphore's possible values, from the value the host last saw to the largest signalled, and the values of its pending operations), but no test breaks it: lavapipe's maxTimelineSemaphoreValueDifference is the largest 64-bit value
 - 2: checked by the safe methods in every build (the pool's protected flag, recorded at its creation, against the batch's VkProtectedSubmitInfo), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected, and a protected batch is refused for its queue first
-- 4: checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
+- 4: checked by the safe methods in every build: the safe `begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
 - 10: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -2393,7 +2393,7 @@ The rules are on [`VkSubmitInfo2`'s reference page](https://registry.khronos.org
 
 Left to the caller (listed one by one in the crate's `validation.json`): 11.
 
-- 4: checked by the safe methods in every build: the safe `cmd_begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
+- 4: checked by the safe methods in every build: the safe `begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance
 - 7: explicit rule; the wrappers do not check it*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
