@@ -932,7 +932,7 @@ fn sets_in_use_are_not_rewritten() {
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX)
             .expect("the gated batch"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     // Complete now: the set may be written, which leaves the buffer invalid again.
     d.update_descriptor_sets(&[write], &[])
@@ -1058,7 +1058,7 @@ fn settle(s: &Setup, submitted: tuff::Result<()>, fence: &tuff::Fence) {
             .device
             .wait_for_fences(&[fence], true, u64::MAX)
             .expect("wait");
-        assert_eq!(waited, vk::Result::SUCCESS);
+        assert_eq!(waited, tuff::SuccessOrTimeout::Success);
         s.device.reset_fences(&[fence]).expect("reset");
     }
 }
@@ -1201,7 +1201,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .expect("a dispatch of a GENERAL image");
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     assert_silent(&s.messages);
 }

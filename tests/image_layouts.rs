@@ -536,7 +536,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
         .device
         .wait_for_fences(&[&fence], true, u64::MAX)
         .expect("wait");
-    assert_eq!(waited, vk::Result::SUCCESS);
+    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
     Ok(())
 }
 

@@ -2385,7 +2385,7 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
         )
         .expect("submit");
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
-    assert_eq!(status, vk::Result::SUCCESS);
+    assert_eq!(status, tuff::SuccessOrTimeout::Success);
     let pixel = pipelines::access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = pipelines::COLOR
         .iter()

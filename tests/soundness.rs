@@ -95,7 +95,7 @@ fn wait(s: &Setup, fence: &tuff::Fence) {
         .device
         .wait_for_fences(&[fence], true, u64::MAX)
         .expect("wait");
-    assert_eq!(r, vk::Result::SUCCESS);
+    assert_eq!(r, tuff::SuccessOrTimeout::Success);
 }
 
 /// A submission without a fence (Vulkan allows none): the queue holds what it uses
@@ -1349,7 +1349,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         .expect("one value per semaphore");
     assert_eq!(
         s.device.wait_semaphores(&wait_one, u64::MAX).expect("wait"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     assert_eq!(
         s.device
@@ -1578,7 +1578,7 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         s.device
             .wait_semaphores(&wait_info, u64::MAX)
             .expect("wait"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     assert_eq!(
         s.device.live_object_count(),
@@ -3098,7 +3098,7 @@ fn pipeline_creation_reads_inside_its_arrays() {
     let (_pipelines, r) = d
         .create_graphics_pipelines(None, &[graphics(2, false)])
         .expect("viewports and scissors both dynamic");
-    assert_eq!(r, vk::Result::SUCCESS);
+    assert_eq!(r, tuff::SuccessOrPipelineCompileRequired::Success);
     assert_silent(&s.messages);
 
     s.messages.abort_on_error(true);

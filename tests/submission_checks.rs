@@ -87,7 +87,7 @@ fn timeline_signals_rise() {
     assert_eq!(vuid(s.queue.submit(&submit, Some(&other))), rule);
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 8);
     assert_silent(&s.messages);

@@ -304,7 +304,7 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         drop(buffer);
         drop(memory);
         let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
-        assert_eq!(status, vk::Result::SUCCESS);
+        assert_eq!(status, tuff::SuccessOrTimeout::Success);
         d.reset_fences(&[&fence]).expect("reset");
     }
     assert_silent(&s.messages);
@@ -323,6 +323,45 @@ fn a_submitted_buffer_is_written() {
     assert!(
         bytes.iter().all(|b| *b == 0xA5),
         "the fill reached the buffer"
+    );
+    assert_silent(&s.messages);
+}
+
+/// A command with several success codes answers with its status enum: a wait that
+/// times out is `Timeout`, not an `Ok(())`, and a fence's and an event's states are
+/// variants of their own.
+#[test]
+fn several_success_codes_are_typed() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    assert_eq!(
+        d.wait_for_fences(&[&fence], true, 0).expect("wait"),
+        tuff::SuccessOrTimeout::Timeout
+    );
+    assert_eq!(
+        d.get_fence_status(&fence).expect("status"),
+        tuff::SuccessOrNotReady::NotReady
+    );
+    let event = d
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    assert_eq!(
+        d.get_event_status(&event).expect("status"),
+        tuff::EventSetOrEventReset::EventReset
+    );
+    d.set_event(&event).expect("set");
+    assert_eq!(
+        d.get_event_status(&event).expect("status"),
+        tuff::EventSetOrEventReset::EventSet
+    );
+    // The code a status stands for.
+    assert_eq!(
+        vk::Result::from(tuff::SuccessOrTimeout::Timeout),
+        vk::Result::TIMEOUT
     );
     assert_silent(&s.messages);
 }
@@ -348,7 +387,8 @@ fn present_one_frame(
         .acquire_next_image_khr(swapchain, u64::MAX, Some(&acquired), None)
         .expect("acquire");
     assert!(
-        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        r == tuff::SuccessTimeoutNotReadyOrSuboptimal::Success
+            || r == tuff::SuccessTimeoutNotReadyOrSuboptimal::Suboptimal,
         "{r:?}"
     );
     let image = &images[index as usize];
@@ -449,7 +489,7 @@ fn present_one_frame(
         )
         .expect("present");
     assert!(
-        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        r == tuff::SuccessOrSuboptimal::Success || r == tuff::SuccessOrSuboptimal::Suboptimal,
         "{r:?}"
     );
     // Presentation has no fence here: the queue going idle covers it.
@@ -733,7 +773,7 @@ fn pipelines_draw_and_dispatch() {
         )
         .expect("submit");
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
-    assert_eq!(status, vk::Result::SUCCESS);
+    assert_eq!(status, tuff::SuccessOrTimeout::Success);
     let pixel = access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = COLOR.iter().map(|c| (c * 255.0).round() as u8).collect();
     for (got, want) in pixel.iter().zip(&expected) {
@@ -808,7 +848,7 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
         .expect("submit");
     drop(kept);
     let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
-    assert_eq!(status, vk::Result::SUCCESS);
+    assert_eq!(status, tuff::SuccessOrTimeout::Success);
 }
 
 #[test]
@@ -1345,7 +1385,7 @@ fn acquire_and_present_take_binary_semaphores() {
         s.device
             .wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     let waits = tuff::HandleSlice::new(&[&timeline]);
     let swapchains = tuff::HandleSlice::new(&[&swapchain]);
@@ -1396,7 +1436,7 @@ fn only_acquired_images_in_the_present_layout_are_presented() {
         s.device
             .wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     let rule = "VUID-VkPresentInfoKHR-pImageIndices-01296";
     let swapchains = tuff::HandleSlice::new(&[&swapchain]);
@@ -1440,7 +1480,7 @@ fn acquire_for_present(
     assert_eq!(
         d.wait_for_fences(&[&fence], true, u64::MAX)
             .expect("acquired"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     let mut cb = d
         .allocate_command_buffers(
@@ -1487,7 +1527,7 @@ fn acquire_for_present(
         .expect("submit");
     assert_eq!(
         d.wait_for_fences(&[&done], true, u64::MAX).expect("moved"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     index
 }
@@ -1582,7 +1622,7 @@ fn device_group_presentations_are_checked_and_the_layer_agrees() {
         .push_next(&mut group);
     let r = s.queue.present_khr(&present).expect("present");
     assert!(
-        r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+        r == tuff::SuccessOrSuboptimal::Success || r == tuff::SuccessOrSuboptimal::Suboptimal,
         "{r:?}"
     );
     s.queue.wait_idle().expect("idle");
@@ -1684,7 +1724,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     assert_eq!(
         d.wait_for_fences(&[&done], true, u64::MAX)
             .expect("acquired"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     d.reset_fences(&[&done]).expect("reset");
     // A wait on it is pending while a timeline wait holds its batch back.
@@ -1736,7 +1776,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     assert_eq!(
         d.wait_for_fences(&[&done], true, u64::MAX)
             .expect("the gated batch"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     // A signal of a semaphore already signaled.
     let twice = semaphore();
@@ -1829,7 +1869,8 @@ fn an_acquire_that_cannot_progress_may_not_wait_forever() {
             .acquire_next_image_khr(&swapchain, 1_000_000_000, None, Some(&f))
             .expect("acquire");
         assert!(
-            r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR,
+            r == tuff::SuccessTimeoutNotReadyOrSuboptimal::Success
+                || r == tuff::SuccessTimeoutNotReadyOrSuboptimal::Suboptimal,
             "an image within the count is acquired ({r:?})"
         );
         fences.push(f);
@@ -1849,7 +1890,7 @@ fn an_acquire_that_cannot_progress_may_not_wait_forever() {
     let all: Vec<&tuff::Fence> = fences.iter().collect();
     assert_eq!(
         d.wait_for_fences(&all, true, u64::MAX).expect("acquired"),
-        vk::Result::SUCCESS
+        tuff::SuccessOrTimeout::Success
     );
     drop(swapchain);
     drop(surface);

@@ -338,9 +338,14 @@ impl<S: Scene> Live<S> {
                 .device
                 .acquire_next_image_khr(swapchain, u64::MAX, Some(acquired), None)
             {
-                Ok((index, r)) => {
-                    self.stale |= r == vk::Result::SUBOPTIMAL_KHR;
+                Ok((index, tuff::SuccessTimeoutNotReadyOrSuboptimal::Success)) => index as usize,
+                Ok((index, tuff::SuccessTimeoutNotReadyOrSuboptimal::Suboptimal)) => {
+                    self.stale = true;
                     index as usize
+                }
+                // No timeout was asked for, so no image is a driver fault.
+                Ok((_, status)) => {
+                    anyhow::bail!("acquiring an image without a timeout: {status:?}")
                 }
                 Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => {
                     self.stale = true;
@@ -379,7 +384,7 @@ impl<S: Scene> Live<S> {
                 .wait_semaphores(&signals)
                 .swapchains(&swapchains, &indices)?,
         ) {
-            Ok(r) => self.stale |= r == vk::Result::SUBOPTIMAL_KHR,
+            Ok(status) => self.stale |= status == tuff::SuccessOrSuboptimal::Suboptimal,
             Err(tuff::Error::Vk(vk::Result::ERROR_OUT_OF_DATE_KHR)) => self.stale = true,
             Err(e) => return Err(e.into()),
         }

@@ -16,7 +16,7 @@ use crate::structs::{
     CommandBufferAllocateInfo, CommandBufferBeginInfo, CommandPoolCreateInfo, FenceCreateInfo,
     SubmitInfo,
 };
-use crate::{Error, HandleSlice, Result};
+use crate::{Error, HandleSlice, Result, SuccessOrTimeout};
 use ash::vk;
 use smallvec::SmallVec;
 
@@ -145,8 +145,9 @@ impl FramesInFlight {
 /// Waits without timeout for all of `fences`.
 fn wait(device: &Device, fences: &[&Fence]) -> Result<()> {
     match device.wait_for_fences(fences, true, u64::MAX)? {
-        vk::Result::SUCCESS => Ok(()),
-        other => Err(Error::Vk(other)),
+        SuccessOrTimeout::Success => Ok(()),
+        // No timeout was asked for; a driver that reports one anyway fails here.
+        SuccessOrTimeout::Timeout => Err(Error::Vk(vk::Result::TIMEOUT)),
     }
 }
 

@@ -181,6 +181,9 @@ mod helpers;
 #[path = "generated/reach.rs"]
 #[rustfmt::skip]
 mod reach;
+#[path = "generated/status.rs"]
+#[rustfmt::skip]
+pub mod status;
 #[path = "generated/structs/mod.rs"]
 #[rustfmt::skip]
 pub mod structs;
@@ -219,6 +222,7 @@ pub use recorder::{
     State,
 };
 pub use spirv::spirv_words;
+pub use status::*;
 pub use structs::*;
 pub use support::*;
 pub use tuff_runtime as runtime;

@@ -14,7 +14,9 @@ use crate::structs::{
     BufferCreateInfo, CommandBufferAllocateInfo, CommandBufferBeginInfo, CommandPoolCreateInfo,
     FenceCreateInfo, ImageMemoryBarrier, SubmitInfo,
 };
-use crate::{Error, Handle as _, HandleSlice, Image, MemoryLocation, Queue, Result};
+use crate::{
+    Error, Handle as _, HandleSlice, Image, MemoryLocation, Queue, Result, SuccessOrTimeout,
+};
 use ash::vk;
 use tuff_runtime::Allocator;
 
@@ -194,8 +196,10 @@ impl Queue {
             // caller upholds the rules of this submission.
             unsafe { self.submit(&[SubmitInfo::new().command_buffers(&submitted)], Some(&fence)) }?;
             match device.wait_for_fences(&[&fence], true, u64::MAX)? {
-                vk::Result::SUCCESS => Ok(out),
-                other => Err(Error::Vk(other)),
+                SuccessOrTimeout::Success => Ok(out),
+                // No timeout was asked for; a driver that reports one anyway fails
+                // here.
+                SuccessOrTimeout::Timeout => Err(Error::Vk(vk::Result::TIMEOUT)),
             }
         }
     }

@@ -7,17 +7,17 @@ use crate::structs::{
     ComputePipelineCreateInfo, DescriptorSetAllocateInfo, GraphicsPipelineCreateInfo,
 };
 use crate::{DescriptorPool, DescriptorSet, DescriptorSetLayout, Device, Error, HandleSlice};
-use crate::{Pipeline, PipelineCache, Result};
+use crate::{Pipeline, PipelineCache, Result, SuccessOrPipelineCompileRequired};
 use ash::vk;
 
 /// The one pipeline of a creation of one: an error when the driver made none (a
 /// `VK_PIPELINE_COMPILE_REQUIRED` answer to `FAIL_ON_PIPELINE_COMPILE_REQUIRED`).
-fn one(created: (Vec<Pipeline>, vk::Result)) -> Result<Pipeline> {
-    let (mut pipelines, result) = created;
-    match (pipelines.pop(), result) {
-        (Some(p), vk::Result::SUCCESS) => Ok(p),
-        (_, vk::Result::SUCCESS) => Err(Error::Vk(vk::Result::ERROR_UNKNOWN)),
-        (_, other) => Err(Error::Vk(other)),
+fn one(created: (Vec<Pipeline>, SuccessOrPipelineCompileRequired)) -> Result<Pipeline> {
+    let (mut pipelines, status) = created;
+    match (pipelines.pop(), status) {
+        (Some(p), SuccessOrPipelineCompileRequired::Success) => Ok(p),
+        (_, SuccessOrPipelineCompileRequired::Success) => Err(Error::Vk(vk::Result::ERROR_UNKNOWN)),
+        (_, other) => Err(Error::Vk(other.code())),
     }
 }
 

@@ -246,7 +246,7 @@ fn settle(b: &Bench) {
         b.s.device
             .wait_for_fences(&fences, true, u64::MAX)
             .expect("wait");
-    assert_eq!(waited, vk::Result::SUCCESS);
+    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
     b.s.device.reset_fences(&fences).expect("reset");
 }
 

@@ -675,17 +675,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         post.push(quote!(self.state_changed();));
     }
     let fp = quote!(fp);
-    let success: Vec<String> = cmd
-        .successcodes
-        .as_deref()
-        .unwrap_or("VK_SUCCESS")
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let multi_success = cmd.return_type == "VkResult"
-        && success
-            .iter()
-            .any(|s| s != "VK_SUCCESS" && s != "VK_INCOMPLETE");
+    let status = crate::plan::status::of(model, &plan.name).map(|s| ident(&s.name));
     let count_ty = cmd
         .params
         .iter()
@@ -726,15 +716,22 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             Some(c) => hook(&c, &ret_expr),
             None => quote!(Error::Vk(r)),
         };
-        let ok = if multi_success && ret_ty.to_string() == "()" {
-            // Nothing else to return: the success code alone (SUBOPTIMAL_KHR, say).
-            ret_ty = quote!(vk::Result);
-            quote!(Ok(r))
-        } else if multi_success {
-            ret_ty = quote!((#ret_ty, vk::Result));
-            quote!(Ok((#ret_expr, r)))
-        } else {
-            quote!(Ok(#ret_expr))
+        // A code outside the command's success codes is the driver's error; what
+        // the call made is still retained above, and dropped with the error.
+        let ok = match &status {
+            Some(s) if ret_ty.to_string() == "()" => {
+                // Nothing else to return: the status alone (`Suboptimal`, say).
+                ret_ty = quote!(crate::status::#s);
+                quote!(crate::status::#s::from_code(r).ok_or(Error::Vk(r)))
+            }
+            Some(s) => {
+                ret_ty = quote!((#ret_ty, crate::status::#s));
+                quote! {
+                    let status = crate::status::#s::from_code(r).ok_or(Error::Vk(r))?;
+                    Ok((#ret_expr, status))
+                }
+            }
+            None => quote!(Ok(#ret_expr)),
         };
         quote! {
             #(#pre)*

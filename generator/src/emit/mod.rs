@@ -11,6 +11,7 @@ pub mod formats;
 pub mod handles;
 pub mod helpers;
 pub mod reach;
+pub mod status;
 pub mod structs;
 pub mod sync;
 
@@ -379,6 +380,13 @@ pub fn emit(plans: &Plans) -> Emission {
         ("features.rs".to_owned(), features::emit(cx.model)),
         ("formats.rs".to_owned(), formats::emit(cx.model)),
         ("helpers.rs".to_owned(), helpers::emit(plans)),
+        (
+            "status.rs".to_owned(),
+            status::emit(
+                cx,
+                &crate::plan::status::all(cx.model, ok.iter().map(|p| p.name.as_str())),
+            ),
+        ),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

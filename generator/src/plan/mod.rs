@@ -16,6 +16,7 @@ pub mod reach;
 pub mod safety;
 pub mod settle;
 pub mod shape;
+pub mod status;
 pub mod sync;
 pub mod types;
 

@@ -47,7 +47,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 13 (exp
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[MicromapBuildInfoEXT<'a>],
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self.validate_build_micromaps_ext(deferred_operation, infos);
             r?;
@@ -66,7 +66,7 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[MicromapBuildInfoEXT<'a>],
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .ext_opacity_micromap
@@ -85,7 +85,8 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyMemoryToMicromapEXT`
 
@@ -120,7 +121,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self.validate_copy_memory_to_micromap_ext(deferred_operation, info);
             r?;
@@ -139,7 +140,7 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .ext_opacity_micromap
@@ -157,7 +158,8 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyMicromapEXT`
 
@@ -193,7 +195,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self.validate_copy_micromap_ext(deferred_operation, info);
             r?;
@@ -212,7 +214,7 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .ext_opacity_micromap
@@ -230,7 +232,8 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyMicromapToMemoryEXT`
 
@@ -264,7 +267,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self.validate_copy_micromap_to_memory_ext(deferred_operation, info);
             r?;
@@ -283,7 +286,7 @@ The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks a
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .ext_opacity_micromap
@@ -301,7 +304,8 @@ The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCreateMicromapEXT`
 

@@ -31,7 +31,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 54.
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self
                 .validate_build_acceleration_structures_khr(deferred_operation, infos);
@@ -58,7 +58,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .khr_acceleration_structure
@@ -78,7 +78,8 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyAccelerationStructureKHR`
 
@@ -98,7 +99,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self
                 .validate_copy_acceleration_structure_khr(deferred_operation, info);
@@ -120,7 +121,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .khr_acceleration_structure
@@ -138,7 +139,8 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyAccelerationStructureToMemoryKHR`
 
@@ -158,7 +160,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self
                 .validate_copy_acceleration_structure_to_memory_khr(
@@ -186,7 +188,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .khr_acceleration_structure
@@ -204,7 +206,8 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCopyMemoryToAccelerationStructureKHR`
 
@@ -224,7 +227,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
             let r = self
                 .validate_copy_memory_to_acceleration_structure_khr(
@@ -252,7 +255,7 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
             .khr_acceleration_structure
@@ -270,7 +273,8 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOperationDeferredOrOperationNotDeferred::from_code(r)
+            .ok_or(Error::Vk(r))
     }
     /**`vkCreateAccelerationStructureKHR`
 

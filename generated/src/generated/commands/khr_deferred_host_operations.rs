@@ -44,7 +44,7 @@ The rules are on [`vkDeferredOperationJoinKHR`'s reference page](https://registr
     pub fn deferred_operation_join_khr(
         &self,
         operation: &DeferredOperationKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessThreadDoneOrThreadIdle> {
         {
             let r = self.validate_deferred_operation_join_khr(operation);
             r?;
@@ -62,7 +62,7 @@ The caller upholds the rules that [`Self::deferred_operation_join_khr`] checks a
     pub unsafe fn deferred_operation_join_khr_unchecked(
         &self,
         operation: &DeferredOperationKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessThreadDoneOrThreadIdle> {
         let fp = self
             .ext()
             .khr_deferred_host_operations
@@ -74,7 +74,7 @@ The caller upholds the rules that [`Self::deferred_operation_join_khr`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessThreadDoneOrThreadIdle::from_code(r).ok_or(Error::Vk(r))
     }
     /**`vkGetDeferredOperationMaxConcurrencyKHR`
 
@@ -134,7 +134,7 @@ The rules are on [`vkGetDeferredOperationResultKHR`'s reference page](https://re
     pub fn get_deferred_operation_result_khr(
         &self,
         operation: &DeferredOperationKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrNotReady> {
         {
             let r = self.validate_get_deferred_operation_result_khr(operation);
             r?;
@@ -152,7 +152,7 @@ The caller upholds the rules that [`Self::get_deferred_operation_result_khr`] ch
     pub unsafe fn get_deferred_operation_result_khr_unchecked(
         &self,
         operation: &DeferredOperationKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrNotReady> {
         let fp = self
             .ext()
             .khr_deferred_host_operations
@@ -164,6 +164,6 @@ The caller upholds the rules that [`Self::get_deferred_operation_result_khr`] ch
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOrNotReady::from_code(r).ok_or(Error::Vk(r))
     }
 }

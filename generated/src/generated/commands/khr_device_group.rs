@@ -29,7 +29,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
     pub unsafe fn acquire_next_image2_khr<'a>(
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
-    ) -> Result<(u32, vk::Result)> {
+    ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
         crate::hooks::acquire_next_image2_khr_checks(self, acquire_info)?;
         {
             let r = self.validate_acquire_next_image2_khr(acquire_info);
@@ -48,7 +48,7 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
     pub unsafe fn acquire_next_image2_khr_unchecked<'a>(
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
-    ) -> Result<(u32, vk::Result)> {
+    ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
         let fp = self
             .ext()
             .khr_swapchain
@@ -68,7 +68,9 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
             return Err(Error::Vk(r));
         }
         crate::hooks::acquire_next_image2_khr_done(self, acquire_info, out, r);
-        Ok((out, r))
+        let status = crate::status::SuccessTimeoutNotReadyOrSuboptimal::from_code(r)
+            .ok_or(Error::Vk(r))?;
+        Ok((out, status))
     }
 }
 #[cfg(

@@ -22,7 +22,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
         swapchain: &SwapchainKHR,
         present_id: u64,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessTimeoutOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -48,7 +48,7 @@ The caller upholds the rules that [`Self::wait_for_present_khr`] checks at run t
         swapchain: &SwapchainKHR,
         present_id: u64,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessTimeoutOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -66,6 +66,6 @@ The caller upholds the rules that [`Self::wait_for_present_khr`] checks at run t
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessTimeoutOrSuboptimal::from_code(r).ok_or(Error::Vk(r))
     }
 }

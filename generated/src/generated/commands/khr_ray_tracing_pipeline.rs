@@ -261,7 +261,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 8 (expl
         deferred_operation: Option<&DeferredOperationKHR>,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<
+        (
+            Vec<Pipeline>,
+            crate::status::SuccessOperationDeferredOperationNotDeferredOrPipelineCompileRequired,
+        ),
+    > {
         {
             let r = self
                 .validate_create_ray_tracing_pipelines_khr(
@@ -292,7 +297,12 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
         deferred_operation: Option<&DeferredOperationKHR>,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<
+        (
+            Vec<Pipeline>,
+            crate::status::SuccessOperationDeferredOperationNotDeferredOrPipelineCompileRequired,
+        ),
+    > {
         let fp = self
             .ext()
             .khr_ray_tracing_pipeline
@@ -315,6 +325,10 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let status = crate::status::SuccessOperationDeferredOperationNotDeferredOrPipelineCompileRequired::from_code(
+                r,
+            )
+            .ok_or(Error::Vk(r))?;
         Ok((
             out
                 .into_iter()
@@ -342,7 +356,7 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
                     true,
                 ))
                 .collect(),
-            r,
+            status,
         ))
     }
     /**`vkGetRayTracingCaptureReplayShaderGroupHandlesKHR`

@@ -18,7 +18,7 @@ The rules are on [`vkGetSwapchainStatusKHR`'s reference page](https://registry.k
     pub fn get_swapchain_status_khr(
         &self,
         swapchain: &SwapchainKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -42,7 +42,7 @@ The caller upholds the rules that [`Self::get_swapchain_status_khr`] checks at r
     pub unsafe fn get_swapchain_status_khr_unchecked(
         &self,
         swapchain: &SwapchainKHR,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -60,6 +60,6 @@ The caller upholds the rules that [`Self::get_swapchain_status_khr`] checks at r
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOrSuboptimal::from_code(r).ok_or(Error::Vk(r))
     }
 }

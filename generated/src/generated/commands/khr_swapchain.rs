@@ -47,7 +47,7 @@ The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khr
         timeout: u64,
         semaphore: Option<&Semaphore>,
         fence: Option<&Fence>,
-    ) -> Result<(u32, vk::Result)> {
+    ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -89,7 +89,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
         timeout: u64,
         semaphore: Option<&Semaphore>,
         fence: Option<&Fence>,
-    ) -> Result<(u32, vk::Result)> {
+    ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -131,7 +131,9 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
             out,
             r,
         );
-        Ok((out, r))
+        let status = crate::status::SuccessTimeoutNotReadyOrSuboptimal::from_code(r)
+            .ok_or(Error::Vk(r))?;
+        Ok((out, status))
     }
     /**`vkCreateSwapchainKHR`
 
@@ -317,7 +319,7 @@ impl Queue {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 377) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 382) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
@@ -349,7 +351,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
     pub fn present_khr<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -408,7 +410,7 @@ The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUI
     pub unsafe fn present_khr_unchecked<'a>(
         &self,
         present_info: &PresentInfoKHR<'a>,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrSuboptimal> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -463,6 +465,6 @@ The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUI
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOrSuboptimal::from_code(r).ok_or(Error::Vk(r))
     }
 }

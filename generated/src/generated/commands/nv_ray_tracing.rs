@@ -195,7 +195,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoNV<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         {
             let r = self
                 .validate_create_ray_tracing_pipelines_nv(pipeline_cache, create_infos);
@@ -217,7 +217,7 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] chec
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoNV<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         let fp = self
             .ext()
             .nv_ray_tracing
@@ -239,6 +239,8 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] chec
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let status = crate::status::SuccessOrPipelineCompileRequired::from_code(r)
+            .ok_or(Error::Vk(r))?;
         Ok((
             out
                 .into_iter()
@@ -266,7 +268,7 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] chec
                     true,
                 ))
                 .collect(),
-            r,
+            status,
         ))
     }
     /**`vkGetAccelerationStructureHandleNV`

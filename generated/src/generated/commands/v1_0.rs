@@ -640,7 +640,7 @@ The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         crate::hooks::create_compute_pipelines_checks(self, create_infos)?;
         {
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
@@ -661,7 +661,7 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         let fp = self.fns().fp_v1_0().create_compute_pipelines;
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -678,6 +678,8 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let status = crate::status::SuccessOrPipelineCompileRequired::from_code(r)
+            .ok_or(Error::Vk(r))?;
         Ok((
             crate::hooks::compute_pipelines_created(
                 self,
@@ -709,7 +711,7 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
                     .collect(),
                 create_infos,
             ),
-            r,
+            status,
         ))
     }
     /**`vkCreateDescriptorPool`
@@ -1098,7 +1100,7 @@ The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         crate::hooks::create_graphics_pipelines_checks(self, create_infos)?;
         {
             let r = self
@@ -1121,7 +1123,7 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         &self,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
-    ) -> Result<(Vec<Pipeline>, vk::Result)> {
+    ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
         let fp = self.fns().fp_v1_0().create_graphics_pipelines;
         let mut out = vec![vk::Pipeline::null(); create_infos.len()];
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -1138,6 +1140,8 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        let status = crate::status::SuccessOrPipelineCompileRequired::from_code(r)
+            .ok_or(Error::Vk(r))?;
         Ok((
             crate::hooks::graphics_pipelines_created(
                 self,
@@ -1169,7 +1173,7 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
                     .collect(),
                 create_infos,
             ),
-            r,
+            status,
         ))
     }
     /**`vkCreateImage`
@@ -2122,7 +2126,10 @@ The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[doc(alias = "vkGetEventStatus")]
     #[inline]
-    pub fn get_event_status(&self, event: &Event) -> Result<vk::Result> {
+    pub fn get_event_status(
+        &self,
+        event: &Event,
+    ) -> Result<crate::status::EventSetOrEventReset> {
         crate::hooks::host_event(self, event, "VUID-vkGetEventStatus-event-03940")?;
         {
             let r = self.validate_get_event_status(event);
@@ -2141,14 +2148,14 @@ The caller upholds the rules that [`Self::get_event_status`] checks at run time:
     pub unsafe fn get_event_status_unchecked(
         &self,
         event: &Event,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::EventSetOrEventReset> {
         let fp = self.fns().fp_v1_0().get_event_status;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), event.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::EventSetOrEventReset::from_code(r).ok_or(Error::Vk(r))
     }
     /**`vkGetFenceStatus`
 
@@ -2161,7 +2168,10 @@ The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.
 - `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
     #[doc(alias = "vkGetFenceStatus")]
     #[inline]
-    pub fn get_fence_status(&self, fence: &Fence) -> Result<vk::Result> {
+    pub fn get_fence_status(
+        &self,
+        fence: &Fence,
+    ) -> Result<crate::status::SuccessOrNotReady> {
         {
             let r = self.validate_get_fence_status(fence);
             r?;
@@ -2179,7 +2189,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
     pub unsafe fn get_fence_status_unchecked(
         &self,
         fence: &Fence,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrNotReady> {
         let fp = self.fns().fp_v1_0().get_fence_status;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), fence.raw()) };
@@ -2187,7 +2197,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
             return Err(Error::Vk(r));
         }
         crate::hooks::get_fence_status_done(fence, r);
-        Ok(r)
+        crate::status::SuccessOrNotReady::from_code(r).ok_or(Error::Vk(r))
     }
     /**`vkGetImageMemoryRequirements`
 
@@ -2427,7 +2437,7 @@ Left to the caller (listed one by one in the crate's `validation.json`): 7 (expl
         data: &mut [u8],
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrNotReady> {
         crate::hooks::get_query_pool_results_checks(
             self,
             query_pool,
@@ -2468,7 +2478,7 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         data: &mut [u8],
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrNotReady> {
         let fp = self.fns().fp_v1_0().get_query_pool_results;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
@@ -2486,7 +2496,7 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(r)
+        crate::status::SuccessOrNotReady::from_code(r).ok_or(Error::Vk(r))
     }
     /**`vkGetRenderAreaGranularity`
 
@@ -3036,7 +3046,7 @@ The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.o
         fences: &[&Fence],
         wait_all: bool,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrTimeout> {
         {
             let r = self.validate_wait_for_fences(fences);
             r?;
@@ -3056,7 +3066,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         fences: &[&Fence],
         wait_all: bool,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrTimeout> {
         let fp = self.fns().fp_v1_0().wait_for_fences;
         let fences_raw: smallvec::SmallVec<[vk::Fence; 8]> = fences
             .iter()
@@ -3071,6 +3081,6 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
             return Err(Error::Vk(r));
         }
         crate::hooks::wait_for_fences_done(self, fences, wait_all, r);
-        Ok(r)
+        crate::status::SuccessOrTimeout::from_code(r).ok_or(Error::Vk(r))
     }
 }

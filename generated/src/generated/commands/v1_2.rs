@@ -415,7 +415,7 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
 
 # Example
 
-Called, as `examples/src/window.rs` (line 379) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 384) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
@@ -439,7 +439,7 @@ The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.
         &self,
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrTimeout> {
         crate::hooks::wait_semaphores_checks(self, wait_info)?;
         {
             let r = self.validate_wait_semaphores(wait_info);
@@ -459,7 +459,7 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         &self,
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
-    ) -> Result<vk::Result> {
+    ) -> Result<crate::status::SuccessOrTimeout> {
         let fp = self.fns().fp_v1_2().wait_semaphores;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
@@ -473,6 +473,6 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
             return Err(Error::Vk(r));
         }
         crate::hooks::wait_semaphores_done(self, wait_info, r);
-        Ok(r)
+        crate::status::SuccessOrTimeout::from_code(r).ok_or(Error::Vk(r))
     }
 }

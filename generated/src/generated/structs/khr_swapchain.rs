@@ -6,7 +6,7 @@ use super::*;
 
 # Example
 
-Made, as `examples/src/window.rs` (line 378) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 383) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
